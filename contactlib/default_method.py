@@ -1,0 +1,206 @@
+"""The default method: continuous c/a, piecewise-linear tractions, k from the physics.
+
+Discretization (units E* = a = R = 1)
+-------------------------------------
+* Pressure p(r): continuous piecewise linear on a mesh with a node at c, graded
+  toward c (both sides) and toward a; p(a) = 0 (smooth edge).
+* Shear q(r) = shape(r) phi(r) with phi piecewise linear on the same mesh:
+  shape = r for the sphere (q ~ r at the axis, as the paper's r/a elements),
+  shape = 1 for the cylinder (phi(0) = 0: q is odd in x); q(a) = 0.
+* Collocation at every node: w = delta - r^2/2 (normal, delta unknown); in the
+  stick zone (nodes 1..M, node M at c) u = C r^2 with C unknown (the
+  self-similar adherence condition, paper Eq. 8); in the slip zone (nodes
+  M..N-1) q = k p (Coulomb, traction ratio).
+
+With k given, these equations are square; both conditions at c make the
+shear continuous and bounded there.
+
+What fixes k
+------------
+In the exact self-similar problem the traction difference t = q - k p in the
+stick zone behaves like B (c - r)^(1/2 + theta) near c, and the slip rate in
+the slip zone like -B' (r - c)^(1/2 + theta) (theta -> 0 as k beta -> 0): for
+B > 0 the stick zone violates |q| <= k p, for B < 0 the slip near c runs the
+wrong way. Only B = 0 is physical; equivalently the *rate* of the stick
+traction, t - r t', must vanish at c (no stress-intensity factor in the
+incremental problem). On the piecewise-linear mesh this reads t'(c-) = 0,
+i.e. t = 0 at the last node inside the stick zone, whose distance to c shrinks
+like 1/N^2 on the graded mesh. This is one scalar equation g(k) = 0, solved by
+Newton's method with the derivative from the same LU factorization.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import linalg
+
+from .elements import Mesh, graded_mesh
+from .geometry import Geometry
+from .influence import difference_operator, element_integrals
+from .theory import uncoupled_friction
+
+__all__ = ["DiscreteSolution", "solve_default", "operators"]
+
+
+@dataclass
+class DiscreteSolution:
+    """Nodal solution on a mesh (units E* = a = R = 1)."""
+
+    geometry: Geometry
+    mesh: Mesh
+    p: np.ndarray  # nodal pressure, p[-1] = 0
+    phi: np.ndarray  # nodal shear coefficient, q = shape * phi, phi[-1] = 0
+    delta: float
+    k: float
+    converged: bool
+    residual_norm: float
+    iterations: int
+    message: str = ""
+
+    @property
+    def stick_ratio(self) -> float:
+        return float(self.mesh.nodes[self.mesh.stick_index])
+
+    def pressure(self, x: np.ndarray) -> np.ndarray:
+        return np.interp(x, self.mesh.nodes, self.p)
+
+    def shear(self, x: np.ndarray) -> np.ndarray:
+        return self.geometry.shear_shape(x) * np.interp(x, self.mesh.nodes, self.phi)
+
+    def displacements(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(w, u, du/dx) at points x."""
+        pw, qw = operators(self.geometry, self.mesh.nodes, x)
+        return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in range(3))
+
+
+def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):
+    """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
+
+    Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
+    w (k = 0), u (1) and du/dx (2) at the points ``x``.
+    """
+    d = difference_operator(nodes)
+    gp = element_integrals(geometry.pressure_kernel, x, nodes)
+    gq = element_integrals(geometry.shear_kernel, x, nodes)
+    return np.einsum("kij,jl->kil", gp, d), np.einsum("kij,jl->kil", gq, d)
+
+
+def _tie_columns(geometry: Geometry, q_ops: np.ndarray) -> np.ndarray:
+    """Columns for phi_1..phi_{N-1}: phi_0 = phi_1 (sphere) or phi_0 = 0 (cylinder)."""
+    cols = q_ops[..., 1:-1].copy()
+    if geometry.name == "sphere":
+        cols[..., 0] += q_ops[..., 0]
+    return cols
+
+
+def _expand_phi(geometry: Geometry, f: np.ndarray) -> np.ndarray:
+    """Nodal phi (N + 1 values) from phi_1..phi_{N-1}."""
+    first = f[0] if geometry.name == "sphere" else 0.0
+    return np.concatenate([[first], f, [0.0]])
+
+
+def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: float = 2.0,
+                  k_guess: float | None = None, tol: float = 1e-9,
+                  max_iter: int = 30) -> DiscreteSolution:
+    """Solve the self-similar partial-slip problem for a given stick ratio.
+
+    Parameters
+    ----------
+    geometry : Geometry
+    stick_ratio : float
+        c/a in [0, 1]; 0 is frictionless (k = 0), 1 full adhesion (k = inf).
+    n : int
+        Number of elements across the half-contact.
+    power : float
+        Mesh grading exponent.
+    k_guess : float, optional
+        Starting value for Newton's method on k (default: the uncoupled
+        closed form).
+    tol : float
+        Relative tolerance on the k-equation.
+    max_iter : int
+        Newton iterations allowed.
+
+    Returns
+    -------
+    DiscreteSolution
+    """
+    mesh = graded_mesh(n, stick_ratio, power=power)
+    r = mesh.nodes
+    nn, m = mesh.n, mesh.stick_index
+    pw, qw = operators(geometry, r, r)
+    rhs_normal = -0.5 * r**2
+    ones = np.ones((nn + 1, 1))
+
+    if m == 0:  # frictionless: q = 0
+        a = np.hstack([pw[0][:, :-1], -ones])
+        x = linalg.solve(a, rhs_normal)
+        res = np.linalg.norm(a @ x - rhs_normal) / np.linalg.norm(rhs_normal)
+        p = np.append(x[:nn], 0.0)
+        return DiscreteSolution(geometry, mesh, p, np.zeros(nn + 1), float(x[nn]), 0.0,
+                                True, float(res), 1)
+
+    qx = _tie_columns(geometry, qw)  # (3, N+1, N-1): phi_1..phi_{N-1}
+    shape = geometry.shear_shape(r)
+    stick_rows = np.arange(1, m + 1)
+
+    if m == nn:  # full adhesion: phi_1..phi_{N-1} free, phi_N = 0
+        top = np.hstack([pw[0][:, :-1], -ones, qx[0], np.zeros((nn + 1, 1))])
+        bot = np.hstack([pw[1][stick_rows, :-1], np.zeros((m, 1)), qx[1][stick_rows],
+                         -(r[stick_rows] ** 2)[:, None]])
+        a = np.vstack([top, bot])
+        b = np.concatenate([rhs_normal, np.zeros(m)])
+        x = linalg.solve(a, b)
+        res = np.linalg.norm(a @ x - b) / np.linalg.norm(b)
+        p = np.append(x[:nn], 0.0)
+        phi = _expand_phi(geometry, x[nn + 1:2 * nn])
+        return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), np.inf, True,
+                                float(res), 1)
+
+    # partial slip: x = [p_0..p_{N-1}, delta, phi_1..phi_{M-1}, C]
+    stick_cols = slice(0, m - 1)  # phi_1..phi_{M-1} in qx columns
+    slip_nodes = np.arange(m, nn)  # phi_i = k p_i / shape_i
+    slip_cols = slip_nodes - 1
+    size = nn + 1 + (m - 1) + 1
+    a0 = np.zeros((size, size))
+    a1 = np.zeros((size, size))
+    nr = nn + 1
+    a0[:nr, :nn] = pw[0][:, :-1]
+    a0[:nr, nn] = -1.0
+    a0[:nr, nn + 1:nn + m] = qx[0][:, stick_cols]
+    a1[:nr, slip_nodes] = qx[0][:, slip_cols] / shape[slip_nodes]
+    a0[nr:, :nn] = pw[1][stick_rows, :-1]
+    a0[nr:, nn + 1:nn + m] = qx[1][stick_rows][:, stick_cols]
+    a0[nr:, nn + m] = -(r[stick_rows] ** 2)
+    a1[nr:, slip_nodes] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
+    b = np.concatenate([rhs_normal, np.zeros(m)])
+
+    j = m - 1  # last node inside the stick zone: t_j = shape_j phi_j - k p_j = 0
+    k = float(uncoupled_friction(geometry.name, geometry.nu, r[m])) if k_guess is None \
+        else float(k_guess)
+    converged, it, g = False, 0, np.inf
+    x = None
+    for it in range(1, max_iter + 1):
+        a = a0 + k * a1
+        lu = linalg.lu_factor(a, check_finite=False)
+        x = linalg.lu_solve(lu, b, check_finite=False)
+        g = shape[j] * x[nn + j] - k * x[j]
+        xk = -linalg.lu_solve(lu, a1 @ x, check_finite=False)
+        dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
+        step = g / dg
+        k -= step
+        if abs(step) <= tol * max(1.0, abs(k)):
+            converged = True
+            break
+    a = a0 + k * a1
+    x = linalg.solve(a, b, check_finite=False)
+    g = shape[j] * x[nn + j] - k * x[j]
+    res = float(np.linalg.norm(a @ x - b) / np.linalg.norm(b) + abs(g) / max(abs(x[j]), 1e-300))
+    p = np.append(x[:nn], 0.0)
+    phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
+    phi[m:nn] = k * p[m:nn] / shape[m:nn]
+    msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
+    return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
+                            it, msg)

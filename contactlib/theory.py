@@ -1,0 +1,61 @@
+"""Closed-form references: Hertz and the uncoupled partial-slip limit.
+
+Units throughout the package: E* = 1, contact radius (half-width) a = 1,
+indenter radius R = 1, so that lengths are r/a, tractions are in E* a/R and
+displacements in a^2/R.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy import special
+
+__all__ = ["beta_of_nu", "hertz_p0", "hertz_load", "hertz_pressure",
+           "uncoupled_friction", "small_k_work_sphere"]
+
+
+def beta_of_nu(nu: float) -> float:
+    """Dundurs-type coupling beta = (1 - 2 nu) / (2 (1 - nu)) for a rigid indenter."""
+    return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
+
+
+def hertz_p0(geometry: str) -> float:
+    """Hertz peak pressure in units E* a / R: 2/pi (sphere), 1/2 (cylinder)."""
+    return 2.0 / np.pi if geometry == "sphere" else 0.5
+
+
+def hertz_load(geometry: str) -> float:
+    """Hertz load: 4/3 (sphere, E* a^3/R) or pi/4 (cylinder, E* a^2/R per length)."""
+    return 4.0 / 3.0 if geometry == "sphere" else np.pi / 4.0
+
+
+def hertz_pressure(xi):
+    """p / p0 = sqrt(1 - xi^2) inside the contact, 0 outside."""
+    xi = np.asarray(xi, dtype=float)
+    return np.sqrt(np.clip(1.0 - xi**2, 0.0, None))
+
+
+def uncoupled_friction(geometry: str, nu: float, gamma):
+    """Friction coefficient of the uncoupled limit (exact as beta -> 0).
+
+    Sphere: k = beta artanh(g) / (g K'(g)); cylinder on a half-plane:
+    k = beta K(g) / K'(g), with K the complete elliptic integral of modulus g
+    and K'(g) = K(sqrt(1 - g^2)) (Spence 1973, 1975).
+    """
+    g = np.asarray(gamma, dtype=float)
+    b = beta_of_nu(nu)
+    kp = special.ellipk(1.0 - g**2)
+    if geometry == "sphere":
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.where(g > 0, np.arctanh(g) / np.where(g > 0, g, 1.0), 1.0)
+        return b * ratio / kp
+    return b * special.ellipk(g**2) / kp
+
+
+def small_k_work_sphere(nu: float, k: float) -> float:
+    """Small-k asymptote of the sphere's loading work, V R^2 / (E* a^5).
+
+    V ~ (16 / (5 pi)) (pi/4 - 2/3) k beta: the frictionless Hertz slip with
+    q = k p everywhere.
+    """
+    return 16.0 / (5.0 * np.pi) * (np.pi / 4.0 - 2.0 / 3.0) * k * beta_of_nu(nu)

@@ -69,10 +69,26 @@ class DiscreteSolution:
     def shear(self, x: np.ndarray) -> np.ndarray:
         return self.geometry.shear_shape(x) * np.interp(x, self.mesh.nodes, self.phi)
 
+    def slip_samples(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(x, weights, q, s) at Gauss points of the slip elements.
+
+        s = 2u - xi du/dxi is the self-similar slip rate, with du/dxi from the
+        exact derivative kernels (4 points an element up to 256 elements, 2 above).
+        """
+        return _slip_samples(self, 4 if self.mesh.n <= 256 else 2)
+
     def displacements(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(w, u, du/dx) at points x."""
         pw, qw = operators(self.geometry, self.mesh.nodes, x)
         return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in range(3))
+
+
+def _slip_samples(sol: "DiscreteSolution", order: int):
+    """Gauss points of the slip elements, weights, shear and exact slip rate."""
+    from .energy import slip_points
+    xs, ws = slip_points(sol.mesh.nodes, sol.mesh.stick_index, order)
+    _, u, du = sol.displacements(xs)
+    return xs, ws, sol.shear(xs), 2.0 * u - xs * du
 
 
 def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):

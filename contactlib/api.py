@@ -1,0 +1,299 @@
+"""Public entry points: validate, solve, post-process, sweep.
+
+Examples
+--------
+>>> from contactlib import solve
+>>> sol = solve("sphere", 0.3, stick_ratio=0.0, n=64)
+>>> abs(sol.load_ratio - 1.0) < 1e-3
+True
+"""
+
+from __future__ import annotations
+
+import math
+from numbers import Integral, Real
+from typing import Callable, Sequence
+
+import numpy as np
+from scipy import optimize
+
+from . import checks, energy
+from .default_method import DiscreteSolution, solve_default
+from .geometry import Geometry
+from .paper_method import PaperSolution, solve_paper
+from .result import Solution
+from .theory import beta_of_nu, uncoupled_friction
+
+__all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
+           "output_grid"]
+
+GEOMETRIES = ("sphere", "cylinder")
+METHODS = ("default", "paper", "paper-literal")
+DEFAULT_N = {"default": 128, "paper": 16, "paper-literal": 16}
+MAX_N = 4096
+_OUTPUT_POINTS = 201
+
+
+def output_grid() -> np.ndarray:
+    """The common xi grid of every dataset: 201 equally spaced points on [0, 1]."""
+    return np.linspace(0.0, 1.0, _OUTPUT_POINTS)
+
+
+# ----------------------------------------------------------------------------- validation
+def _number(name: str, value, lo: float | None = None, hi: float | None = None,
+            lo_open: bool = False, hi_open: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise ValueError(f"{name} must be a number, got {value!r}")
+    v = float(value)
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    bad = (lo is not None and (v < lo or (lo_open and v == lo))) or \
+          (hi is not None and (v > hi or (hi_open and v == hi)))
+    if bad:
+        lb = "(" if lo_open else "["
+        rb = ")" if hi_open else "]"
+        raise ValueError(f"{name} must be in {lb}{lo}, {hi}{rb}, got {value!r}")
+    return v
+
+
+def _validate_common(geometry, nu, n, method, slab_ratio) -> tuple[Geometry, int, str]:
+    if geometry not in GEOMETRIES:
+        raise ValueError(f"geometry must be one of {', '.join(GEOMETRIES)}, got {geometry!r}")
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
+    nu = _number("nu", nu, -1.0, 0.5, lo_open=True)
+    slab = _number("slab_ratio", slab_ratio, 0.0, None)
+    if geometry == "sphere" and slab != 0.0:
+        raise ValueError(f"slab_ratio applies to the cylinder only, got {slab_ratio!r} for a sphere")
+    if n is None:
+        n = DEFAULT_N[method]
+    if isinstance(n, bool) or not isinstance(n, Integral):
+        if isinstance(n, Real) and float(n).is_integer():
+            n = int(n)
+        else:
+            raise ValueError(f"n must be an integer, got {n!r}")
+    n = int(n)
+    if n < 2 or n > MAX_N:
+        raise ValueError(f"n must be in [2, {MAX_N}], got {n}")
+    if method == "default" and n < 16:
+        raise ValueError(f"n must be at least 16 for the default method, got {n}")
+    return Geometry(geometry, nu, slab), n, method
+
+
+# ----------------------------------------------------------------------------- post-processing
+def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
+            want_energy: bool, message: str = "") -> Solution:
+    """Profiles on the output grid, load, flags and work of a discrete solution."""
+    xi = output_grid()
+    nodes, m = d.mesh.nodes, d.mesh.stick_index
+    nn = d.mesh.n
+    k = d.k
+    partial = 0 < m < nn
+    u_xi = d.displacements(xi)[1]
+    if partial:
+        xs, ws, q_slip, s_slip = d.slip_samples()
+    else:
+        xs = ws = q_slip = s_slip = np.empty(0)
+
+    # stick-zone points: element midpoints (and nodes for continuous tractions)
+    mids = 0.5 * (nodes[:m] + nodes[1:m + 1])
+    stick_pts = mids if isinstance(d, PaperSolution) else np.concatenate([nodes[1:m], mids])
+    fl = checks.flags(d.shear(stick_pts), d.pressure(stick_pts), k, q_slip, s_slip)
+    if partial and want_energy:
+        work = energy.frictional_work(xs, ws, q_slip, s_slip, geom.work_factor,
+                                      geom.work_weight_power)
+    elif want_energy:
+        work = 0.0  # frictionless (k = 0) or full adhesion (no slip)
+    else:
+        work = float("nan")
+    load = d.load() if isinstance(d, PaperSolution) else geom.load(nodes, d.p)
+    msg = "; ".join(x for x in (message, d.message) if x)
+    return Solution(
+        geometry=geom.name, nu=geom.nu, method=method, n=n, slab_ratio=geom.slab_ratio,
+        stick_ratio=float(nodes[m]), friction_coefficient=float(k), xi=xi,
+        pressure=d.pressure(xi) / geom.p0, shear=d.shear(xi) / geom.p0,
+        tangential_displacement=u_xi, load_ratio=load / geom.hertz_load,
+        frictional_work=work, slip_direction_ok=fl["slip_direction_ok"],
+        stick_admissible=fl["stick_admissible"], consistent=fl["consistent"],
+        converged=bool(d.converged), residual_norm=float(d.residual_norm),
+        iterations=int(d.iterations), message=msg,
+        extra={"stick_violation": fl["stick_violation"], "slip_violation": fl["slip_violation"],
+               "indentation": getattr(d, "delta", float("nan"))})
+
+
+def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | None = None):
+    """Solve one stick ratio with the chosen method (no post-processing)."""
+    if method == "default":
+        return solve_default(geom, c, n, k_guess=k_guess)
+    m = int(round(c * n))
+    if abs(m - c * n) > 1e-9 * n:
+        raise ValueError(f"stick_ratio must be a multiple of 1/n = 1/{n} for the paper method, "
+                         f"got {c!r}")
+    coulomb = "coefficient" if method == "paper-literal" else "resultant"
+    return solve_paper(geom, m, n, coulomb=coulomb)
+
+
+def _uncoupled_message(geom: Geometry) -> str:
+    return ("nu = 0.5: the normal and tangential problems decouple; no shear arises (q = 0) "
+            "and every stick ratio is consistent with any k >= 0")
+
+
+# ----------------------------------------------------------------------------- inverse problem
+def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
+                             xtol: float = 1e-10) -> tuple[float, DiscreteSolution]:
+    """Stick ratio c/a that a friction coefficient k produces (default method).
+
+    k(c) increases monotonically from 0 (c = 0) to infinity (c -> 1); the root
+    of k(c) = friction is bracketed from the uncoupled estimate and refined by
+    Brent's method, warm-starting Newton on k from the last solve.
+    """
+    cache: dict[float, DiscreteSolution] = {}
+    last = {"k": None}
+
+    def f(c: float) -> float:
+        d = solve_default(geometry, c, n, k_guess=last["k"])
+        cache[c] = d
+        last["k"] = d.k
+        return d.k - friction
+
+    gam = np.linspace(1e-4, 1 - 1e-9, 4001)
+    k_unc = uncoupled_friction(geometry.name, geometry.nu, gam)
+    c0 = float(np.interp(friction, k_unc, gam))
+    lo, hi = max(c0 * 0.8, 1e-3), min(c0 + 0.2 * (1 - c0), 1 - 1e-6)
+    flo = f(lo)
+    while flo > 0 and lo > 1e-6:
+        hi, lo = lo, lo * 0.3
+        flo = f(lo)
+    fhi = f(hi)
+    while fhi < 0 and hi < 1 - 1e-7:
+        lo, hi = hi, 1 - (1 - hi) * 0.1
+        fhi = f(hi)
+    if flo > 0:
+        raise ValueError(f"friction {friction!r} is below the smallest resolvable k "
+                         f"({flo + friction:.3g} at c/a = {lo:.3g}); use friction 0 for Hertz")
+    if fhi < 0:
+        raise ValueError(f"friction {friction!r} is too large: the stick zone covers more than "
+                         f"{hi:.7f} of the contact; use stick_ratio 1 (full adhesion)")
+    c = optimize.brentq(f, lo, hi, xtol=xtol)
+    d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"])
+    return c, d
+
+
+# ----------------------------------------------------------------------------- public API
+def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
+          friction: float | None = None, n: int | None = None, method: str = "default",
+          slab_ratio: float = 0.0, energy: bool = True) -> Solution:
+    """Solve one partial-slip case, for a given stick ratio or friction coefficient.
+
+    Parameters
+    ----------
+    geometry : {"sphere", "cylinder"}
+        Rigid sphere on a half-space, or rigid cylinder on a slab/half-plane.
+    nu : float
+        Poisson's ratio of the elastic body, in (-1, 0.5].
+    stick_ratio : float, optional
+        c/a in [0, 1] (0: frictionless, 1: full adhesion). Exactly one of
+        ``stick_ratio`` and ``friction`` must be given.
+    friction : float, optional
+        Friction coefficient k >= 0 (``inf`` for full adhesion).
+    n : int, optional
+        Number of elements (default 128 for ``"default"``, 16 for the paper).
+    method : {"default", "paper", "paper-literal"}
+        ``"paper"``: the printed scheme (c/a restricted to m/n).
+    slab_ratio : float
+        a/h of the slab under a cylinder; 0 is the half-plane.
+    energy : bool
+        Integrate the frictional work of the loading half-cycle.
+
+    Returns
+    -------
+    Solution
+        Profiles and scalars in the scalings of DESIGN.md section 2.
+
+    Raises
+    ------
+    ValueError
+        For invalid input; the message names the argument.
+    """
+    geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
+    if (stick_ratio is None) == (friction is None):
+        raise ValueError("give exactly one of stick_ratio and friction")
+    if stick_ratio is not None:
+        c = _number("stick_ratio", stick_ratio, 0.0, 1.0)
+        if beta_of_nu(geom.nu) == 0.0 and c > 0.0:
+            # no coupling: the Hertz pressure and q = 0 for every stick ratio
+            sol = _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
+                          _uncoupled_message(geom))
+            sol.stick_ratio = c
+            sol.friction_coefficient = np.inf if c == 1.0 else 0.0
+            return sol
+        return _finish(geom, _discrete(geom, c, n, method), method, n, energy)
+
+    if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
+        return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
+                     energy=energy)
+    k = _number("friction", friction, 0.0, None)
+    if k == 0.0:
+        return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy)
+    if beta_of_nu(geom.nu) == 0.0:
+        d = _discrete(geom, 0.0, n, method)
+        sol = _finish(geom, d, method, n, energy,
+                      _uncoupled_message(geom) + "; nothing tends to slip, so the whole "
+                      "contact sticks (c/a = 1)")
+        sol.stick_ratio, sol.friction_coefficient = 1.0, k
+        return sol
+    if method == "default":
+        c, d = stick_ratio_for_friction(geom, k, n)
+        return _finish(geom, d, method, n, energy)
+    # paper method: c/a only at m/n; pick the m/n whose k is nearest
+    ks = []
+    for m in range(0, n):
+        ks.append(_discrete(geom, m / n, n, method).k)
+    ks = np.array(ks)
+    m = int(np.argmin(np.abs(ks - k)))
+    c_interp = float(np.interp(k, ks, np.arange(n) / n)) if np.all(np.diff(ks) > 0) else m / n
+    return _finish(geom, _discrete(geom, m / n, n, method), method, n, energy,
+                   f"paper method: c/a restricted to m/n; nearest m/n = {m}/{n} has "
+                   f"k = {ks[m]:.6g}; linear interpolation in the k(m/n) table gives "
+                   f"c/a = {c_interp:.6g} for k = {k:.6g}")
+
+
+def _parse_ratios(stick_ratios, n: int) -> list[float]:
+    if isinstance(stick_ratios, str):
+        if stick_ratios != "all":
+            raise ValueError(f"stick_ratios must be 'all' or a list of numbers, got {stick_ratios!r}")
+        return [m / n for m in range(1, n)]
+    try:
+        values = list(stick_ratios)
+    except TypeError:
+        raise ValueError(f"stick_ratios must be 'all' or a list of numbers, got {stick_ratios!r}") \
+            from None
+    if not values:
+        raise ValueError("stick_ratios must not be empty")
+    return [_number("stick_ratios", v, 0.0, 1.0) for v in values]
+
+
+def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
+          n: int | None = None, method: str = "default", slab_ratio: float = 0.0,
+          energy: bool = True,
+          progress: Callable[[int, int], None] | None = None) -> list[Solution]:
+    """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
+
+    Newton's method on k starts each point from the uncoupled closed form,
+    which is within a few per cent of the answer. A point that fails to converge is kept and flagged (``converged = False``), never dropped.
+    ``progress(i, total)`` is called after each point.
+
+    Returns
+    -------
+    list of Solution
+        One per stick ratio, all on the same ``xi`` grid.
+    """
+    geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
+    ratios = _parse_ratios(stick_ratios, n)
+    out = []
+    for i, c in enumerate(ratios):
+        out.append(solve(geometry, geom.nu, stick_ratio=c, n=n, method=method,
+                         slab_ratio=geom.slab_ratio, energy=energy))
+        if progress is not None:
+            progress(i + 1, len(ratios))
+    return out

@@ -29,7 +29,7 @@ __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS",
 
 GEOMETRIES = ("sphere", "cylinder")
 METHODS = ("default", "paper", "paper-literal")
-DEFAULT_N = {"default": 128, "paper": 16, "paper-literal": 16}
+DEFAULT_N = {"default": 256, "paper": 16, "paper-literal": 16}
 MAX_N = 4096
 _OUTPUT_POINTS = 201
 
@@ -197,7 +197,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     friction : float, optional
         Friction coefficient k >= 0 (``inf`` for full adhesion).
     n : int, optional
-        Number of elements (default 128 for ``"default"``, 16 for the paper).
+        Number of elements (default 256 for ``"default"``, 16 for the paper).
     method : {"default", "paper", "paper-literal"}
         ``"paper"``: the printed scheme (c/a restricted to m/n).
     slab_ratio : float

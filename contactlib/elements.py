@@ -62,7 +62,13 @@ def graded_mesh(n: int, stick_ratio: float, power: float = 2.0,
         nodes = _toward_end(t, power)
         nodes[0], nodes[-1] = 0.0, 1.0
         return Mesh(nodes, 0 if c <= 0.0 else n)
-    m = int(np.clip(round(n * np.sqrt(c) * 0.5 + n * c * 0.5), min_stick, n - min_stick))
+    frac = 0.25 + 0.5 * c  # share of elements in the stick zone
+    if n % 16 == 0:  # nested family: the share is fixed in sixteenths, so refining
+        # by 2 halves every element and convergence is smooth
+        m = (n // 16) * int(np.clip(round(16 * frac), 1, 15))
+    else:
+        m = int(round(n * frac))
+    m = int(np.clip(m, min_stick, n - min_stick))
     stick = c * _toward_end(np.linspace(0.0, 1.0, m + 1), power)
     slip = c + (1.0 - c) * _toward_both(np.linspace(0.0, 1.0, n - m + 1), power)
     nodes = np.concatenate([stick[:-1], slip])

@@ -1,0 +1,171 @@
+"""Sphere on a half-space: the default method and the paper's scheme against exact limits."""
+
+import numpy as np
+import pytest
+
+from contactlib import solve, sweep
+from contactlib.default_method import DiscreteSolution, solve_default
+from contactlib.energy import slip_points
+from contactlib.geometry import Geometry
+from contactlib.theory import hertz_pressure, small_k_work_sphere, uncoupled_friction
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.499])
+def test_frictionless_is_hertz(nu):
+    sol = solve("sphere", nu, stick_ratio=0.0)
+    assert sol.friction_coefficient == 0.0
+    assert np.max(np.abs(sol.pressure - hertz_pressure(sol.xi))) <= 1e-3
+    assert abs(sol.load_ratio - 1.0) <= 1e-4
+    assert np.all(sol.shear == 0.0)
+
+
+def test_frictionless_hertz_displacement():
+    """Radial displacement of Hertz (Johnson 3.41a): u = -(4 beta/(3 pi xi))(1-(1-xi^2)^1.5)."""
+    nu = 0.3
+    sol = solve("sphere", nu, stick_ratio=0.0)
+    b = (1 - 2 * nu) / (2 * (1 - nu))
+    xi = sol.xi[1:]
+    exact = -(4 * b / (3 * np.pi * xi)) * (1 - (1 - xi**2) ** 1.5)
+    assert np.max(np.abs(sol.tangential_displacement[1:] - exact)) <= 1e-4 * np.max(np.abs(exact))
+
+
+def test_paper_scheme_frictionless_error_is_first_order_and_not_0p3_percent():
+    """Trap 1: Eq. 9 alone does not exclude a flat-punch mode; load ~4 % high at n = 16."""
+    errs = [solve("sphere", 0.3, stick_ratio=0.0, method="paper", n=n).load_ratio - 1
+            for n in (8, 16, 32, 64)]
+    assert all(e > 0 for e in errs)
+    assert 0.02 < errs[1] < 0.06  # the paper claims 0.3 % at n = 16
+    orders = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
+    assert np.all((orders > 0.8) & (orders < 1.2))
+
+
+@pytest.mark.parametrize("nu,tol", [(0.499, 1e-3), (0.49, 1e-2)])
+@pytest.mark.parametrize("c", [0.2, 0.5, 0.8])
+def test_uncoupled_limit(nu, tol, c):
+    k = solve_default(Geometry("sphere", nu), c, 128).k
+    assert abs(k / uncoupled_friction("sphere", nu, c) - 1) < tol
+
+
+def test_coupled_differs_from_uncoupled_at_nu_0p3():
+    k = solve_default(Geometry("sphere", 0.3), 0.5, 128).k
+    assert k / uncoupled_friction("sphere", 0.3, 0.5) - 1 > 0.02
+
+
+def test_spence_published_point():
+    """Spence (1975): nu = 0, k = 0.2986 gives c/a = 0.5, central pressure ~1.31 p0."""
+    sol = solve("sphere", 0.0, friction=0.2986)
+    assert abs(sol.stick_ratio - 0.5) < 1e-3
+    # central pressure against Hertz p0 at the same load: p0 scales like P^(1/3)
+    assert abs(sol.pressure[0] / sol.load_ratio ** (1 / 3) - 1.31) < 0.01
+    k = solve("sphere", 0.0, stick_ratio=0.5).friction_coefficient
+    assert abs(k - 0.2986) / 0.2986 < 1e-3
+
+
+def test_k_curve_monotonic_flags_and_convergence_order():
+    ratios = [0.02, 0.1, 0.3, 0.5, 0.7, 0.9, 0.98]
+    sols = sweep("sphere", 0.3, ratios, n=128, energy=False)
+    k = np.array([s.friction_coefficient for s in sols])
+    assert np.all(np.diff(k) > 0)
+    assert all(s.converged for s in sols)
+    assert all(s.consistent and s.slip_direction_ok and s.stick_admissible for s in sols)
+    g = Geometry("sphere", 0.3)
+    for c in (0.1, 0.5, 0.9):
+        ks = [solve_default(g, c, n).k for n in (32, 64, 128)]
+        order = np.log2(abs(ks[1] - ks[0]) / abs(ks[2] - ks[1]))
+        assert order >= 1.5
+
+
+def test_full_adhesion_and_limits():
+    full = solve("sphere", 0.3, stick_ratio=1.0)
+    assert full.friction_coefficient == np.inf
+    assert full.frictional_work == 0.0
+    # k grows without bound as c -> 1 and tends to 0 as c -> 0
+    k98 = solve("sphere", 0.3, stick_ratio=0.98, energy=False).friction_coefficient
+    k999 = solve("sphere", 0.3, stick_ratio=0.999, energy=False).friction_coefficient
+    assert k999 > 1.5 * k98
+    # the partial-slip shear approaches the no-slip shear inside the contact
+    near = solve("sphere", 0.3, stick_ratio=0.999, energy=False)
+    inner = full.xi < 0.9
+    assert np.max(np.abs(near.shear[inner] - full.shear[inner])) < 0.02 * np.max(full.shear)
+    k_small = solve("sphere", 0.3, stick_ratio=0.005, energy=False).friction_coefficient
+    assert 0 < k_small < 0.05
+
+
+def test_inverse_round_trip():
+    sol = solve("sphere", 0.3, stick_ratio=0.4, energy=False)
+    back = solve("sphere", 0.3, friction=sol.friction_coefficient, energy=False)
+    assert abs(back.stick_ratio - 0.4) < 1e-8
+
+
+def test_nu_half_has_no_coupling():
+    sol = solve("sphere", 0.5, stick_ratio=0.5)
+    assert np.all(sol.shear == 0.0)
+    assert sol.friction_coefficient == 0.0
+    assert "decouple" in sol.message
+    inv = solve("sphere", 0.5, friction=0.3)
+    assert inv.stick_ratio == 1.0
+
+
+def test_small_k_work_asymptote():
+    """q = k p with the frictionless slip rate gives V = (16/5pi)(pi/4 - 2/3) k beta exactly."""
+    nu, k = 0.3, 1e-3
+    g = Geometry("sphere", nu)
+    base = solve_default(g, 0.0, 256)
+    pure_p = DiscreteSolution(g, base.mesh, base.p, np.zeros_like(base.p), base.delta, k,
+                              True, 0.0, 1)
+    xs, ws = slip_points(base.mesh.nodes, 0, 4)
+    _, u, du = pure_p.displacements(xs)
+    s = 2 * u - xs * du
+    q = k * base.pressure(xs)
+    work = g.work_factor * np.sum(ws * xs * q * (-s))
+    assert abs(work / small_k_work_sphere(nu, k) - 1) < 1e-4
+
+
+def test_work_positive_and_converges():
+    ws = [solve("sphere", 0.3, stick_ratio=0.3, n=n).frictional_work for n in (64, 128, 256)]
+    assert all(w > 0 for w in ws)
+    assert abs(ws[2] - ws[1]) < 0.5 * abs(ws[1] - ws[0]) + 1e-12
+
+
+def test_paper_method_runs_and_flags_inconsistency():
+    sols = sweep("sphere", 0.3, "all", method="paper", n=16, energy=True)
+    assert len(sols) == 15
+    k = np.array([s.friction_coefficient for s in sols])
+    assert np.all(np.diff(k) > 0)
+    # Newton from the paper's trial vector converges up to m/n = 13/16; a failure
+    # is kept and flagged, with its residual
+    assert all(s.converged for s in sols[:13])
+    assert all(s.converged or s.residual_norm > 1e-8 for s in sols)
+    # the printed scheme's own energy changes sign near m/n = 0.3 (its "breakdown")
+    work = np.array([s.frictional_work for s in sols])
+    assert work[3] > 0 and work[4] < 0
+    assert not sols[-1].slip_direction_ok
+
+
+def test_identical_requests_identical_results():
+    a = solve("sphere", 0.3, stick_ratio=0.37, n=64)
+    b = solve("sphere", 0.3, stick_ratio=0.37, n=64)
+    for name in ("pressure", "shear", "tangential_displacement"):
+        assert np.array_equal(getattr(a, name), getattr(b, name))
+    assert a.friction_coefficient == b.friction_coefficient
+
+
+@pytest.mark.parametrize("kwargs,name", [
+    (dict(geometry="sphere", nu=0.7, stick_ratio=0.3), "nu"),
+    (dict(geometry="sphere", nu=-1.0, stick_ratio=0.3), "nu"),
+    (dict(geometry="sphere", nu="abc", stick_ratio=0.3), "nu"),
+    (dict(geometry="sphere", nu=float("nan"), stick_ratio=0.3), "nu"),
+    (dict(geometry="sphere", nu=0.3, stick_ratio=0.3, n=1), "n"),
+    (dict(geometry="sphere", nu=0.3, stick_ratio=0.3, n=2.5), "n"),
+    (dict(geometry="sphere", nu=0.3, stick_ratio=1.7), "stick_ratio"),
+    (dict(geometry="sphere", nu=0.3, friction=-0.1), "friction"),
+    (dict(geometry="cone", nu=0.3, stick_ratio=0.3), "geometry"),
+    (dict(geometry="sphere", nu=0.3, stick_ratio=0.3, method="foo"), "method"),
+    (dict(geometry="sphere", nu=0.3), "stick_ratio"),
+    (dict(geometry="sphere", nu=0.3, stick_ratio=0.3, friction=0.2), "stick_ratio"),
+    (dict(geometry="sphere", nu=0.3, stick_ratio=0.3, method="paper"), "stick_ratio"),
+    (dict(geometry="cylinder", nu=0.3, stick_ratio=0.3, slab_ratio=-1), "slab_ratio"),
+])
+def test_bad_input_raises_value_error_naming_argument(kwargs, name):
+    with pytest.raises(ValueError, match=name):
+        solve(**kwargs)

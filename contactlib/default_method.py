@@ -38,7 +38,7 @@ from scipy import linalg
 
 from .elements import Mesh, graded_mesh
 from .geometry import Geometry
-from .influence import difference_operator, element_integrals
+from .influence import apply_difference, element_integrals
 from .theory import uncoupled_friction
 
 __all__ = ["DiscreteSolution", "solve_default", "operators"]
@@ -58,6 +58,8 @@ class DiscreteSolution:
     residual_norm: float
     iterations: int
     message: str = ""
+    nodal_u: np.ndarray | None = None  # u at the nodes (from the solve's own operators)
+    nodal_du: np.ndarray | None = None  # du/dx at the nodes
 
     @property
     def stick_ratio(self) -> float:
@@ -73,9 +75,12 @@ class DiscreteSolution:
         """(x, weights, q, s) at Gauss points of the slip elements.
 
         s = 2u - xi du/dxi is the self-similar slip rate, with du/dxi from the
-        exact derivative kernels (4 points an element up to 256 elements, 2 above).
+        exact derivative kernels: 4 Gauss points an element up to 256
+        elements, 2 up to 1024; above, the nodes with the trapezoid rule (its
+        error, ~1e-4 (256/n)^2 relative, is then below the method's own).
         """
-        return _slip_samples(self, 4 if self.mesh.n <= 256 else 2)
+        n = self.mesh.n
+        return _slip_samples(self, 4 if n <= 256 else (2 if n <= 1024 else 0))
 
     def displacements(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(w, u, du/dx) at points x."""
@@ -84,9 +89,16 @@ class DiscreteSolution:
 
 
 def _slip_samples(sol: "DiscreteSolution", order: int):
-    """Gauss points of the slip elements, weights, shear and exact slip rate."""
+    """Slip-zone samples: Gauss points (order > 0) or the nodes (order 0, trapezoid)."""
     from .energy import slip_points
-    xs, ws = slip_points(sol.mesh.nodes, sol.mesh.stick_index, order)
+    if order == 0 and sol.nodal_u is not None:
+        r, m = sol.mesh.nodes, sol.mesh.stick_index
+        xs = r[m:]
+        h = np.diff(xs)
+        ws = np.concatenate([[0.0], h]) * 0.5 + np.concatenate([h, [0.0]]) * 0.5
+        u, du = sol.nodal_u[m:], sol.nodal_du[m:]
+        return xs, ws, sol.shear(xs), 2.0 * u - xs * du
+    xs, ws = slip_points(sol.mesh.nodes, sol.mesh.stick_index, max(order, 2))
     _, u, du = sol.displacements(xs)
     return xs, ws, sol.shear(xs), 2.0 * u - xs * du
 
@@ -97,10 +109,9 @@ def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):
     Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
     w (k = 0), u (1) and du/dx (2) at the points ``x``.
     """
-    d = difference_operator(nodes)
     gp = element_integrals(geometry.pressure_kernel, x, nodes)
     gq = element_integrals(geometry.shear_kernel, x, nodes)
-    return np.einsum("kij,jl->kil", gp, d), np.einsum("kij,jl->kil", gq, d)
+    return apply_difference(gp, nodes), apply_difference(gq, nodes)
 
 
 def _tie_columns(geometry: Geometry, q_ops: np.ndarray) -> np.ndarray:
@@ -135,7 +146,9 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         Starting value for Newton's method on k (default: the uncoupled
         closed form).
     tol : float
-        Relative tolerance on the k-equation.
+        Relative size of a Newton step still counted as converged when the
+        iteration stagnates at round-off (normally Newton stops after a step
+        below 1e-6, which leaves an error in k near 1e-10).
     max_iter : int
         Newton iterations allowed.
 
@@ -155,8 +168,9 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         x = linalg.solve(a, rhs_normal)
         res = np.linalg.norm(a @ x - rhs_normal) / np.linalg.norm(rhs_normal)
         p = np.append(x[:nn], 0.0)
-        return DiscreteSolution(geometry, mesh, p, np.zeros(nn + 1), float(x[nn]), 0.0,
-                                True, float(res), 1)
+        phi = np.zeros(nn + 1)
+        return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), 0.0, True, float(res), 1,
+                                "", pw[1] @ p, pw[2] @ p)
 
     qx = _tie_columns(geometry, qw)  # (3, N+1, N-1): phi_1..phi_{N-1}
     shape = geometry.shear_shape(r)
@@ -173,7 +187,8 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         p = np.append(x[:nn], 0.0)
         phi = _expand_phi(geometry, x[nn + 1:2 * nn])
         return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), np.inf, True,
-                                float(res), 1)
+                                float(res), 1, "", pw[1] @ p + qw[1] @ phi,
+                                pw[2] @ p + qw[2] @ phi)
 
     # partial slip: x = [p_0..p_{N-1}, delta, phi_1..phi_{M-1}, C]
     stick_cols = slice(0, m - 1)  # phi_1..phi_{M-1} in qx columns
@@ -194,24 +209,42 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     b = np.concatenate([rhs_normal, np.zeros(m)])
 
     j = m - 1  # last node inside the stick zone: t_j = shape_j phi_j - k p_j = 0
-    k = float(uncoupled_friction(geometry.name, geometry.nu, r[m])) if k_guess is None \
-        else float(k_guess)
+    if k_guess is not None:
+        k = float(k_guess)
+    elif n > 128:  # Richardson-extrapolated coarse solves (O(h^2)) put Newton within
+        # ~1e-6 of the answer: one or two fine factorizations
+        k64 = solve_default(geometry, stick_ratio, 64, power=power).k
+        k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64).k
+        k = k128 + (k128 - k64) / 3.0
+    else:
+        k = float(uncoupled_friction(geometry.name, geometry.nu, r[m]))
     converged, it, g = False, 0, np.inf
     x = None
+    prev_step = np.inf
+    # equilibrate rows and columns (the graded mesh has elements ~1/N^2 long):
+    # solve (R A C) y = R b, x = C y
+    rs = 1.0 / np.max(np.abs(a0 + k * a1), axis=1)
+    cs = 1.0 / np.max(np.abs((a0 + k * a1) * rs[:, None]), axis=0)
+    a0s, a1s, bs = a0 * rs[:, None] * cs, a1 * rs[:, None] * cs, b * rs
     for it in range(1, max_iter + 1):
-        a = a0 + k * a1
-        lu = linalg.lu_factor(a, check_finite=False)
-        x = linalg.lu_solve(lu, b, check_finite=False)
+        lu = linalg.lu_factor(a0s + k * a1s, check_finite=False)
+        x = cs * linalg.lu_solve(lu, bs, check_finite=False)
         g = shape[j] * x[nn + j] - k * x[j]
-        xk = -linalg.lu_solve(lu, a1 @ x, check_finite=False)
+        xk = -cs * linalg.lu_solve(lu, rs * (a1 @ x), check_finite=False)
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg
         k -= step
-        if abs(step) <= tol * max(1.0, abs(k)):
-            converged = True
+        size_step = abs(step) / max(abs(k), 1e-12)
+        # Newton converges quadratically (error after a step ~ 1e3 step^2 here):
+        # stop after a step below 1e-6 relative, or at the round-off floor
+        if size_step <= 1e-6 or abs(step) > 0.5 * prev_step:
+            converged = size_step <= 1e-6 or size_step <= tol
             break
+        prev_step = abs(step)
+    # x at the final k from the last factorization: x(k) is smooth in k and the
+    # last step is at round-off level, so the first-order update is exact to it
+    x = x - step * xk
     a = a0 + k * a1
-    x = linalg.solve(a, b, check_finite=False)
     g = shape[j] * x[nn + j] - k * x[j]
     res = float(np.linalg.norm(a @ x - b) / np.linalg.norm(b) + abs(g) / max(abs(x[j]), 1e-300))
     p = np.append(x[:nn], 0.0)
@@ -219,4 +252,4 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     phi[m:nn] = k * p[m:nn] / shape[m:nn]
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
     return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
-                            it, msg)
+                            it, msg, pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi)

@@ -1,0 +1,413 @@
+"""Command line interface: ``contactlib solve`` and ``contactlib sweep``.
+
+Every option value is parsed and range-checked here, before any numerics run,
+so that bad input ends with exit status 2 and exactly one line on stderr::
+
+    contactlib: error: --nu must be a number in (-1, 0.5], got 'abc'
+
+Errors raised by the library as :class:`ValueError` are reported the same way
+(status 2); any other exception gives one line and status 1 (``--debug``
+adds the traceback). Output files are written only after success.
+
+Examples
+--------
+>>> from contactlib.cli import main
+>>> main(["solve", "--geometry", "cone", "--nu", "0.3", "--stick-ratio", "0.5"])
+2
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import sys
+import traceback
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from types import ModuleType
+from typing import Any, NoReturn, TextIO
+
+from contactlib.result import Solution
+
+__all__ = ["main", "build_parser", "UsageError"]
+
+PROG = "contactlib"
+GEOMETRIES = ("sphere", "cylinder")
+DEFAULT_METHODS = ("default", "paper")
+_INT_RE = re.compile(r"^\s*\+?[0-9]+\s*$")
+
+
+class UsageError(Exception):
+    """Bad command-line input; the message is one line naming the option."""
+
+
+# --------------------------------------------------------------------------
+# value parsing (no argparse ``type=``: we want our own one-line messages)
+# --------------------------------------------------------------------------
+
+
+def _number(option: str, text: str, requirement: str) -> float:
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        value = math.nan
+    if math.isnan(value):
+        raise UsageError(f"{option} must be {requirement}, got {text!r}")
+    return value
+
+
+def parse_nu(text: str) -> float:
+    """Poisson's ratio in (-1, 0.5]."""
+    req = "a number in (-1, 0.5]"
+    value = _number("--nu", text, req)
+    if not -1.0 < value <= 0.5:
+        raise UsageError(f"--nu must be {req}, got {text!r}")
+    return value
+
+
+def parse_fraction(option: str, text: str) -> float:
+    """A ratio in [0, 1] (stick ratio c/a)."""
+    req = "a number in [0, 1]"
+    value = _number(option, text, req)
+    if not 0.0 <= value <= 1.0:
+        raise UsageError(f"{option} must be {req}, got {text!r}")
+    return value
+
+
+def parse_friction(text: str) -> float:
+    """Friction coefficient k >= 0 (``inf`` allowed: full adhesion)."""
+    req = "a number >= 0 (inf for full adhesion)"
+    value = _number("--friction", text, req)
+    if value < 0.0:
+        raise UsageError(f"--friction must be {req}, got {text!r}")
+    return value
+
+
+def parse_slab_ratio(text: str) -> float:
+    """Slab ratio a/h, finite and >= 0 (0 = half-plane)."""
+    req = "a finite number >= 0 (0 = half-plane)"
+    value = _number("--slab-ratio", text, req)
+    if not (math.isfinite(value) and value >= 0.0):
+        raise UsageError(f"--slab-ratio must be {req}, got {text!r}")
+    return value
+
+
+def parse_n(text: str) -> int:
+    """Number of elements, an integer >= 2."""
+    req = "an integer >= 2"
+    if not _INT_RE.match(text) or int(text) < 2:
+        raise UsageError(f"--n must be {req}, got {text!r}")
+    return int(text)
+
+
+def parse_stick_ratios(text: str) -> str | list[float]:
+    """``all`` or a comma-separated list of distinct numbers in [0, 1]."""
+    if text.strip().lower() == "all":
+        return "all"
+    req = "'all' or a comma-separated list of distinct numbers in [0, 1]"
+    items = text.split(",")
+    values: list[float] = []
+    for item in items:
+        try:
+            values.append(parse_fraction("--stick-ratios", item))
+        except UsageError:
+            raise UsageError(f"--stick-ratios must be {req}, got {text!r}") from None
+    if len(set(values)) != len(values):
+        raise UsageError(f"--stick-ratios must be {req}, got {text!r} (duplicates)")
+    return values
+
+
+def _known_methods(api: ModuleType | None = None) -> tuple[str, ...]:
+    """Method names accepted by the library (``api.METHODS`` when provided)."""
+    methods = getattr(api, "METHODS", None) if api is not None else None
+    if methods:
+        return tuple(str(m) for m in methods)
+    return DEFAULT_METHODS
+
+
+# --------------------------------------------------------------------------
+# parser
+# --------------------------------------------------------------------------
+
+
+class _Parser(argparse.ArgumentParser):
+    """ArgumentParser whose errors are one line, raised as UsageError."""
+
+    def error(self, message: str) -> NoReturn:
+        raise UsageError(" ".join(message.split()))
+
+
+def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
+    sub.add_argument("--geometry", required=True, metavar="{sphere,cylinder}",
+                     help="rigid indenter: sphere (axisymmetric) or cylinder "
+                          "(plane strain)")
+    sub.add_argument("--nu", required=True, metavar="NU",
+                     help="Poisson's ratio of the elastic body, in (-1, 0.5]")
+    sub.add_argument("--n", metavar="N", default=None,
+                     help="number of elements across the half-contact "
+                          "(integer >= 2; library default if omitted)")
+    sub.add_argument("--method", metavar="NAME", default="default",
+                     help="discretization: 'default' or 'paper' "
+                          "(the paper's scheme as printed); default: %(default)s")
+    sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
+                     help="cylinder only: contact half-width over layer "
+                          "thickness, a/h >= 0 (0 = half-plane); default: 0")
+    sub.add_argument("--output", metavar="FILE.nc", required=output_required,
+                     default=None, help="write the netCDF dataset here")
+    sub.add_argument("--no-energy", action="store_true",
+                     help="skip the frictional-work integration "
+                          "(frictional_work is NaN)")
+    sub.add_argument("--debug", action="store_true",
+                     help="print a traceback on unexpected errors")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Build the ``contactlib`` argument parser.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        Numeric options are kept as strings; :func:`main` validates them.
+    """
+    parser = _Parser(
+        prog=PROG,
+        allow_abbrev=False,
+        description="Partial slip of a rigid sphere or cylinder pressed into an "
+                    "elastic body (self-similar loading).",
+    )
+    subs = parser.add_subparsers(dest="command", metavar="{solve,sweep}",
+                                 parser_class=_Parser)
+    subs.required = True
+
+    solve = subs.add_parser(
+        "solve", help="solve one case", allow_abbrev=False,
+        description="Solve one case for a given stick ratio c/a or friction "
+                    "coefficient k; print a summary, optionally write a dataset.")
+    _common(solve, output_required=False)
+    which = solve.add_mutually_exclusive_group(required=True)
+    which.add_argument("--stick-ratio", metavar="G",
+                       help="stick ratio c/a in [0, 1] (0 frictionless, "
+                            "1 full adhesion)")
+    which.add_argument("--friction", metavar="K",
+                       help="friction coefficient k >= 0; solve for c/a")
+
+    sweep = subs.add_parser(
+        "sweep", help="solve a sweep over c/a", allow_abbrev=False,
+        description="Solve a sweep over stick ratios c/a and write one dataset.")
+    _common(sweep, output_required=True)
+    sweep.add_argument("--stick-ratios", metavar="LIST|all", default="all",
+                       help="comma-separated c/a values, or 'all' for m/n, "
+                            "m = 1 ... n-1; default: all")
+    return parser
+
+
+# --------------------------------------------------------------------------
+# validation of a parsed namespace
+# --------------------------------------------------------------------------
+
+
+def _validate(args: argparse.Namespace) -> dict[str, Any]:
+    """Turn raw option strings into checked keyword arguments.
+
+    The method name is checked separately (:func:`_check_method`), since the
+    list of methods belongs to the library.
+    """
+    if args.geometry not in GEOMETRIES:
+        raise UsageError(
+            f"--geometry must be one of {', '.join(GEOMETRIES)}, got {args.geometry!r}")
+    kwargs: dict[str, Any] = {
+        "geometry": args.geometry,
+        "nu": parse_nu(args.nu),
+        "n": None if args.n is None else parse_n(args.n),
+        "method": args.method,
+        "slab_ratio": parse_slab_ratio(args.slab_ratio),
+        "energy": not args.no_energy,
+    }
+    if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
+        raise UsageError(
+            f"--slab-ratio applies only to --geometry cylinder, got {args.slab_ratio!r}")
+    if args.command == "solve":
+        if args.stick_ratio is not None:
+            kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
+        else:
+            kwargs["friction"] = parse_friction(args.friction)
+    else:
+        kwargs["stick_ratios"] = parse_stick_ratios(args.stick_ratios)
+    if args.output is not None and (args.output.strip() == "" or Path(args.output).is_dir()):
+        raise UsageError(f"--output must be a file path, got {args.output!r}")
+    return kwargs
+
+
+def _check_method(method: str, api: ModuleType) -> None:
+    methods = _known_methods(api)
+    if method not in methods:
+        raise UsageError(f"--method must be one of {', '.join(methods)}, got {method!r}")
+
+
+# --------------------------------------------------------------------------
+# output formatting
+# --------------------------------------------------------------------------
+
+
+def _yes(flag: bool) -> str:
+    return "yes" if flag else "no"
+
+
+def _g(value: float, digits: int = 6) -> str:
+    return "inf" if math.isinf(value) else f"{value:.{digits}g}"
+
+
+def format_summary(sol: Solution) -> str:
+    """Human-readable summary of one solution (several lines)."""
+    work_scale = "V R^2/(E* a^5)" if sol.geometry == "sphere" else "V R^2/(E* a^4)"
+    head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
+    if sol.geometry == "cylinder":
+        head += f", a/h = {sol.slab_ratio:g}"
+    lines = [
+        head,
+        f"  c/a    = {_g(sol.stick_ratio)}",
+        f"  k      = {_g(sol.friction_coefficient)}",
+        f"  P/P_H  = {_g(sol.load_ratio)}",
+        f"  V      = {_g(sol.frictional_work)}   ({work_scale})",
+        f"  slip direction ok: {_yes(sol.slip_direction_ok)}, "
+        f"stick admissible: {_yes(sol.stick_admissible)}, "
+        f"consistent: {_yes(sol.consistent)}",
+        f"  converged: {_yes(sol.converged)} "
+        f"(residual {sol.residual_norm:.3g}, {sol.iterations} iterations)",
+    ]
+    if sol.message:
+        lines.append(f"  message: {sol.message}")
+    return "\n".join(lines)
+
+
+def format_table(solutions: Sequence[Solution]) -> str:
+    """Compact table of a sweep, one row per stick ratio."""
+    if not solutions:
+        return "(no points)"
+    s0 = solutions[0]
+    head = f"{s0.geometry}, nu = {s0.nu:g}, method = {s0.method}, n = {s0.n}"
+    if s0.geometry == "cylinder":
+        head += f", a/h = {s0.slab_ratio:g}"
+    cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
+            f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9}")
+    rows = [head, cols]
+    for s in solutions:
+        row = (f"{s.stick_ratio:8.4f} {_g(s.friction_coefficient):>11} "
+               f"{_g(s.load_ratio):>11} {_g(s.frictional_work):>11} "
+               f"{_yes(s.slip_direction_ok):>4} {_yes(s.stick_admissible):>5} "
+               f"{_yes(s.consistent):>4} {_yes(s.converged):>4} "
+               f"{s.residual_norm:9.2e}")
+        if s.message:
+            row += f"  {s.message}"
+        rows.append(row)
+    return "\n".join(rows)
+
+
+def _progress_printer(stream: TextIO) -> Callable[[int, int], None] | None:
+    """A ``progress(i, total)`` callback with ``\\r`` updates, TTY only."""
+    try:
+        tty = stream.isatty()
+    except (AttributeError, ValueError):
+        tty = False
+    if not tty:
+        return None
+
+    def progress(i: int, total: int) -> None:
+        stream.write(f"\rsweep: {i}/{total}")
+        stream.flush()
+
+    return progress
+
+
+# --------------------------------------------------------------------------
+# commands
+# --------------------------------------------------------------------------
+
+
+def _api() -> ModuleType:
+    """Import the library API lazily (so ``--help`` never needs it)."""
+    from contactlib import api
+
+    return api
+
+
+def _write(obj: Solution | Sequence[Solution], output: str) -> None:
+    from contactlib import io
+
+    io.write_dataset(io.to_dataset(obj), output)
+
+
+def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType) -> int:
+    try:
+        sol = api.solve(**kwargs)
+    except ValueError as exc:  # the library's own input validation
+        raise UsageError(str(exc)) from exc
+    print(format_summary(sol))
+    if output is not None:
+        _write(sol, output)
+        print(f"  wrote {output}")
+    return 0
+
+
+def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
+    ratios = kwargs.pop("stick_ratios")
+    progress = _progress_printer(sys.stderr)
+    try:
+        sols = api.sweep(kwargs.pop("geometry"), kwargs.pop("nu"), ratios,
+                         progress=progress, **kwargs)
+    except ValueError as exc:  # the library's own input validation
+        raise UsageError(str(exc)) from exc
+    finally:
+        if progress is not None:
+            sys.stderr.write("\r\033[K")
+            sys.stderr.flush()
+    print(format_table(sols))
+    _write(sols, output)
+    print(f"wrote {output}")
+    return 0
+
+
+def _fail(message: str) -> None:
+    print(f"{PROG}: error: {' '.join(str(message).split())}", file=sys.stderr)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments without the program name; ``sys.argv[1:]`` by default.
+
+    Returns
+    -------
+    int
+        0 on success, 2 on bad input (one line on stderr), 1 on an
+        unexpected error, 130 when interrupted.
+    """
+    argv = list(sys.argv[1:] if argv is None else argv)
+    debug = "--debug" in argv
+    try:
+        try:
+            args = build_parser().parse_args(argv)
+        except SystemExit as exc:  # --help
+            return int(exc.code or 0) if not isinstance(exc.code, str) else 2
+        debug = bool(getattr(args, "debug", False))
+        kwargs = _validate(args)  # before importing the numerics
+        api = _api()
+        _check_method(args.method, api)
+        if args.command == "solve":
+            return _run_solve(kwargs, args.output, api)
+        return _run_sweep(kwargs, args.output, api)
+    except UsageError as exc:
+        _fail(str(exc))
+        return 2
+    except KeyboardInterrupt:
+        _fail("interrupted")
+        return 130
+    except Exception as exc:  # noqa: BLE001 - last-resort, one line
+        _fail(f"{type(exc).__name__}: {exc}")
+        if debug:
+            traceback.print_exc()
+        return 1

@@ -1,0 +1,337 @@
+"""netCDF input/output for :class:`~contactlib.result.Solution` objects.
+
+This is the only module of :mod:`contactlib` that touches the disk. It turns
+solutions into a CF-annotated :class:`xarray.Dataset` (variable names and
+scalings of DESIGN.md section 2), writes it atomically and reproducibly, and
+reads it back.
+
+Examples
+--------
+>>> import numpy as np
+>>> from contactlib.result import Solution
+>>> from contactlib.io import to_dataset
+>>> xi = np.linspace(0.0, 1.0, 5)
+>>> sol = Solution("sphere", 0.3, "default", 4, 0.0, 0.5, 0.2, xi,
+...                np.sqrt(1 - xi**2), 0.1 * xi, 0.5 * xi, 1.0)
+>>> ds = to_dataset(sol)
+>>> ds["pressure"].dims, float(ds["stick_ratio"])
+(('xi',), 0.5)
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from contactlib.result import Solution
+
+__all__ = ["to_dataset", "write_dataset", "read_dataset"]
+
+CONVENTIONS = "CF-1.10"
+COMPRESSION: dict[str, Any] = {"zlib": True, "complevel": 4, "shuffle": True}
+
+_BOOL_FLAGS: dict[str, Any] = {
+    "flag_values": np.array([0, 1], dtype=np.int8),
+    "flag_meanings": "false true",
+}
+
+# name -> (long_name, comment); every variable here is dimensionless (units "1").
+_PROFILE_ATTRS: dict[str, tuple[str, str]] = {
+    "pressure": (
+        "contact pressure over Hertz peak pressure",
+        "p / p0, p0 = Hertz peak pressure at the same contact radius; "
+        "positive in compression",
+    ),
+    "shear": (
+        "shear traction over Hertz peak pressure",
+        "q / p0, traction on the elastic body, positive away from the axis",
+    ),
+    "tangential_displacement": (
+        "scaled tangential surface displacement",
+        "u R / a**2, surface displacement, positive away from the axis",
+    ),
+}
+
+_WORK_COMMENT = {
+    "sphere": "V R**2 / (E* a**5); loading 0 -> a; NaN when not computed",
+    "cylinder": (
+        "V R**2 / (E* a**4), V per unit length over the whole contact "
+        "(both sides of the axis); loading 0 -> a; NaN when not computed"
+    ),
+}
+
+_POINT_FLOAT_ATTRS: dict[str, tuple[str, str]] = {
+    "friction_coefficient": (
+        "coefficient of friction",
+        "k; inf at full adhesion (stick_ratio = 1), 0 when frictionless",
+    ),
+    "load_ratio": (
+        "normal load over Hertz load",
+        "P / P_Hertz(a) at the same contact radius",
+    ),
+    "frictional_work": ("scaled frictional work of the loading half-cycle", ""),
+    "residual_norm": ("norm of the final solver residual", "solver status"),
+}
+
+_POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
+    "slip_direction_ok": (
+        "slip opposes shear at every slip point",
+        "consistency flag",
+    ),
+    "stick_admissible": (
+        "abs(q) <= k p at every stick point",
+        "consistency flag",
+    ),
+    "consistent": (
+        "slip direction and stick admissibility both hold",
+        "consistency flag",
+    ),
+    "converged": ("solver converged", "solver status; failed cases are kept"),
+}
+
+_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio")
+
+
+def _version() -> str:
+    """Return the contactlib version from its single source."""
+    try:
+        import contactlib
+
+        return str(contactlib.__version__)
+    except (ImportError, AttributeError):  # pragma: no cover - defensive
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            return version("contactlib")
+        except PackageNotFoundError:
+            return "unknown"
+
+
+def _same(a: Any, b: Any) -> bool:
+    if isinstance(a, float) and isinstance(b, float):
+        return a == b or (math.isnan(a) and math.isnan(b))
+    return bool(a == b)
+
+
+def _check(sols: list[Solution]) -> np.ndarray:
+    """Validate that ``sols`` can share one dataset; return the common xi."""
+    first = sols[0]
+    xi = np.asarray(first.xi, dtype=float)
+    if xi.ndim != 1:
+        raise ValueError(f"xi must be one-dimensional, got shape {xi.shape}")
+    for i, sol in enumerate(sols):
+        if not isinstance(sol, Solution):
+            raise TypeError(f"solutions[{i}] is not a Solution: {type(sol).__name__}")
+        for name in _SHARED_FIELDS:
+            if not _same(getattr(sol, name), getattr(first, name)):
+                raise ValueError(
+                    f"solutions[{i}].{name} = {getattr(sol, name)!r} differs from "
+                    f"solutions[0].{name} = {getattr(first, name)!r}"
+                )
+        if not np.array_equal(np.asarray(sol.xi, dtype=float), xi):
+            raise ValueError(f"solutions[{i}].xi differs from solutions[0].xi")
+        for name in _PROFILE_ATTRS:
+            shape = np.shape(getattr(sol, name))
+            if shape != xi.shape:
+                raise ValueError(
+                    f"solutions[{i}].{name} has shape {shape}, expected {xi.shape}"
+                )
+    return xi
+
+
+def _attrs(long_name: str, comment: str = "", **extra: Any) -> dict[str, Any]:
+    attrs: dict[str, Any] = {"units": "1", "long_name": long_name}
+    if comment:
+        attrs["comment"] = comment
+    attrs.update(extra)
+    return attrs
+
+
+def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
+    """Convert one solution or a sweep of solutions to a dataset.
+
+    Parameters
+    ----------
+    solutions : Solution or sequence of Solution
+        A single solution gives a dataset with a scalar ``stick_ratio``
+        coordinate and profiles on ``(xi,)``. A sequence (a sweep) gives a
+        ``stick_ratio`` dimension, in the given order, and profiles on
+        ``(stick_ratio, xi)``. All members must share geometry, nu, method,
+        n, slab_ratio and xi.
+
+    Returns
+    -------
+    xarray.Dataset
+        Variables and scalings of DESIGN.md section 2, each with CF
+        ``units`` (``"1"``: everything is dimensionless) and ``long_name``.
+        Flags are booleans (stored as int8 with ``flag_values`` and
+        ``flag_meanings``). A ``message`` variable is added when any solution
+        carries a non-empty message.
+
+    Raises
+    ------
+    ValueError
+        If the sequence is empty or its members are inconsistent.
+    TypeError
+        If a member is not a :class:`Solution`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from contactlib.result import Solution
+    >>> xi = np.linspace(0.0, 1.0, 3)
+    >>> sols = [Solution("cylinder", 0.3, "default", 2, 0.0, g, g, xi,
+    ...                  1 - xi**2, 0 * xi, 0 * xi, 1.0) for g in (0.2, 0.4)]
+    >>> to_dataset(sols)["shear"].dims
+    ('stick_ratio', 'xi')
+    """
+    single = isinstance(solutions, Solution)
+    sols = [solutions] if single else list(solutions)  # type: ignore[list-item]
+    if not sols:
+        raise ValueError("solutions must contain at least one Solution")
+    xi = _check(sols)
+    first = sols[0]
+    geometry = str(first.geometry)
+    axis = "r/a" if geometry == "sphere" else "x/a"
+    dims = ("stick_ratio",)
+
+    coords = {
+        "xi": (
+            "xi",
+            xi,
+            _attrs(
+                f"position over contact radius ({axis})",
+                "0 on the axis, 1 at the contact edge",
+            ),
+        ),
+        "stick_ratio": (
+            dims,
+            np.array([float(s.stick_ratio) for s in sols]),
+            _attrs(
+                "stick zone radius over contact radius (c/a)",
+                "0 frictionless, 1 full adhesion",
+            ),
+        ),
+    }
+    data: dict[str, Any] = {}
+    for name, (long_name, comment) in _PROFILE_ATTRS.items():
+        values = np.stack([np.asarray(getattr(s, name), dtype=float) for s in sols])
+        data[name] = (dims + ("xi",), values, _attrs(long_name, comment))
+    for name, (long_name, comment) in _POINT_FLOAT_ATTRS.items():
+        if name == "frictional_work":
+            comment = _WORK_COMMENT.get(geometry, "")
+        values = np.array([float(getattr(s, name)) for s in sols])
+        data[name] = (dims, values, _attrs(long_name, comment))
+    data["iterations"] = (
+        dims,
+        np.array([int(s.iterations) for s in sols], dtype=np.int32),
+        _attrs("solver iterations", "solver status"),
+    )
+    for name, (long_name, comment) in _POINT_BOOL_ATTRS.items():
+        values = np.array([bool(getattr(s, name)) for s in sols], dtype=bool)
+        data[name] = (dims, values, _attrs(long_name, comment, **_BOOL_FLAGS))
+    messages = [str(s.message or "") for s in sols]
+    if any(messages):
+        data["message"] = (
+            dims,
+            np.array(messages, dtype=object),
+            {"long_name": "solver message", "comment": "empty when none"},
+        )
+
+    attrs: dict[str, Any] = {
+        "title": f"contactlib partial-slip solution ({geometry})",
+        "geometry": geometry,
+        "poisson_ratio": float(first.nu),
+        "elements": int(first.n),
+        "method": str(first.method),
+    }
+    if geometry == "cylinder":
+        attrs["slab_ratio"] = float(first.slab_ratio)
+    attrs["contactlib_version"] = _version()
+    attrs["Conventions"] = CONVENTIONS
+
+    ds = xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+    if single:
+        ds = ds.isel(stick_ratio=0)
+    return ds
+
+
+def _encoding(ds: xr.Dataset) -> dict[str, dict[str, Any]]:
+    """Per-variable netCDF encoding: no fill on coordinates, zlib on data."""
+    encoding: dict[str, dict[str, Any]] = {}
+    for name in ds.coords:
+        encoding[str(name)] = {"_FillValue": None}
+    for name, var in ds.data_vars.items():
+        if var.dtype.kind in "biuf" and var.ndim > 0:
+            encoding[str(name)] = dict(COMPRESSION)
+    return encoding
+
+
+def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
+    """Write ``ds`` to a netCDF-4 file, atomically and reproducibly.
+
+    The data go to a temporary file in the destination folder, which then
+    replaces ``path`` with :func:`os.replace`; on any failure the temporary
+    file is removed and ``path`` is left as it was. Parent folders are
+    created. Data variables are zlib-compressed, coordinates get no
+    ``_FillValue``. Identical datasets give byte-identical files.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        Typically the result of :func:`to_dataset`.
+    path : str or os.PathLike
+        Destination file.
+
+    Returns
+    -------
+    pathlib.Path
+        The destination path.
+    """
+    path = Path(path)
+    if path.is_dir():
+        raise IsADirectoryError(f"output path is a directory: {path}")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp_name = tempfile.mkstemp(
+        prefix=f".{path.name}.", suffix=".tmp", dir=path.parent
+    )
+    os.close(fd)
+    tmp = Path(tmp_name)
+    try:
+        ds.to_netcdf(
+            tmp, mode="w", format="NETCDF4", engine="netcdf4", encoding=_encoding(ds)
+        )
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path
+
+
+def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
+    """Read a dataset written by :func:`write_dataset` into memory.
+
+    The file is closed before returning, so it may be replaced afterwards.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A netCDF file.
+
+    Returns
+    -------
+    xarray.Dataset
+        Fully loaded; flags decode back to booleans.
+    """
+    with xr.open_dataset(path, engine="netcdf4") as ds:
+        return ds.load()

@@ -1,0 +1,652 @@
+r"""Plane-strain surface displacements under uniform strip loads.
+
+Two bodies: the elastic half-plane (``h = inf``) and an elastic layer (slab) of
+thickness ``h`` resting on a smooth (frictionless) rigid base. Two loadings,
+each on a strip of half-width ``s`` centred at the origin:
+
+``pressure_strip``
+    uniform unit pressure p = 1 (compressive) on ``|x'| < s``;
+``shear_strip``
+    outward unit shear: traction +1 (in +x) on ``0 < x' < s`` and -1 on
+    ``-s < x' < 0`` (self-equilibrated).
+
+Units and conventions
+---------------------
+Plane strain, ``E* = E / (1 - nu**2) = 1``; lengths in any unit (the caller
+uses the contact half-width a = 1, so the slab thickness is ``h = 1/slab_ratio``).
+``w`` is the normal surface displacement, positive INTO the body (the direction
+of a compressive pressure); ``u`` is the tangential surface displacement,
+positive in +x; ``du`` is ``du/dx``. ``beta = (1 - 2 nu) / (2 (1 - nu))`` (so
+that ``(1 - 2 nu)(1 + nu) / (2 E) = beta / E*``). Displacements scale like
+(load per unit area) * length / E*.
+
+Half-plane (Flamant)
+--------------------
+Unit line loads at the origin, surface displacement at ``xi = x - x'``:
+
+* normal load (compressive):   ``w = -(2/pi) ln|xi|``, ``u = -beta sgn(xi)``;
+* tangential load (in +x):     ``u = -(2/pi) ln|xi|``, ``w = +beta sgn(xi)``
+
+(Johnson, *Contact Mechanics*, eqs 2.19-2.20; Betti fixes the cross signs).
+The logarithm uses a unit reference length: the half-plane ``w`` is only
+defined up to an additive constant, and this module takes the constant that
+makes the strip kernels the exact integrals of the line-load kernels above.
+Integrating over the strips (``F(t) = t ln|t|``, with ``0 ln 0 = 0``):
+
+* pressure: ``w = (2/pi) [2s - F(x+s) + F(x-s)]``,
+  ``u = -beta (|x+s| - |x-s|)`` (``-2 beta x`` inside, ``-+2 beta s`` outside:
+  exactly constant outside), ``du = -beta (sgn(x+s) - sgn(x-s))``;
+* shear: ``u = (2/pi) [F(x+s) + F(x-s) - 2 F(x)]`` (odd, no free constant;
+  ``~ (2/pi) s^2/x`` for ``|x| >> s``), ``du = (2/pi) ln|1 - s^2/x^2|``,
+  ``w = -beta (|x+s| + |x-s| - 2|x|) = -2 beta (s - |x|)`` inside, 0 outside
+  (outward shear lifts the surface: sign fixed by Betti).
+
+For ``|x| > 2s`` the forms ``log1p(2s/(|x|-s))`` and ``log1p(-s^2/x^2)`` replace
+the differences of logarithms, so the far field has no cancellation.
+
+Slab on a smooth rigid base: derivation
+---------------------------------------
+Layer ``0 < z < h`` (``z`` into the body). With ``f(x) = (1/2pi) int f^(k)
+e^{ikx} dk``, take the Airy function ``phi = e^{ikx} [(A + Bz) cosh kz + (C +
+Dz) sinh kz]``, ``sxx = phi_zz``, ``szz = phi_xx``, ``sxz = -phi_xz``, and the
+displacements from plane-strain Hooke's law (``u_x = exx/(ik)``, ``u_z`` from
+``2 exz``). Boundary conditions: at ``z = 0`` ``szz = -p``, ``sxz = -q`` (surface
+tractions p into the body and q in +x); at ``z = h`` ``u_z = 0`` and ``sxz = 0``.
+Solving the 4x4 system gives, with ``t = |k| h`` and ``D(t) = sinh 2t + 2t``::
+
+    w^ = (2/|k|) (cosh 2t - 1)/D  p^  -  (i/k) g(t) q^
+    u^ = (i/k) g(t) p^  +  (2/|k|) (cosh 2t + 1)/D  q^
+    g(t) = [(1 - 2nu) sinh 2t - 2t] / [(1 - nu) D] = 2 beta - 4t/D
+
+The cross terms are equal and opposite (Betti). As ``t -> inf`` the
+coefficients tend to ``2/|k|`` and ``2 i beta/k``: the half-plane (the Flamant
+kernels above). As ``t -> 0`` (thin layer): ``w^ -> h p^`` (uniaxial stress,
+``szz = -p``, ``sxx = 0``), ``u^ -> -i nu/((1-nu) k) p^`` (lateral Poisson
+expansion ``du/dx = nu/(1-nu) p``), ``u^ -> [1/(k^2 h) + 2h/3 + O(k^2 h^3)] q^``
+(membrane stretching ``h u'' = -q`` plus a local shear term ``2h q/3``) and
+``w^ -> i nu/((1-nu) k) q^`` (Poisson thinning, ``w = -nu/(1-nu) int_{-inf}^x q``).
+
+Remainders. The slab line-load kernels minus the half-plane ones are smooth
+functions of ``eta = xi/h`` (their transforms decay like ``exp(-2t)``) and do
+not depend on ``nu``:
+
+* normal load, ``w``:  ``A(eta) + (2/pi) ln h`` with ``A(eta) = w1(eta) + (2/pi)
+  ln|eta|`` and ``w1(eta) = (2/pi) int_0^inf (cosh 2t - 1)/(t D) cos(t eta) dt``
+  the slab's absolute ``w`` (``w1 -> 0`` as ``|eta| -> inf``; ``int w1 = 1``);
+* normal load, ``u``:  ``B(eta) = (4/pi) int_0^inf sin(t eta)/D dt``;
+* tangential load, ``w``: ``-B(eta)``;
+* tangential load, ``u``: ``C(eta) = (2/pi) int_0^inf (cosh 2t + 1 - D)/(t D)
+  (cos t eta - 1) dt``. A tangential line load on a layer over a smooth base is
+  unbalanced (``u ~ -|xi|/(2h)``, defined up to a rigid translation); the
+  normalisation ``C(0) = 0`` is arbitrary and cancels in the self-equilibrated
+  shear strip.
+
+With the antiderivatives ``A1, B1, C1`` (``X1(eta) = int_0^eta X``), ``e0 = x/h``,
+``e+- = (x +- s)/h``, the strip kernels are the half-plane ones plus::
+
+    pressure: w += h [A1(e+) - A1(e-)] + (4 s/pi) ln h
+              u += h [B1(e+) - B1(e-)],          du += B(e+) - B(e-)
+    shear:    u += h [2 C1(e0) - C1(e+) - C1(e-)], du += 2 C(e0) - C(e+) - C(e-)
+              w -= h [2 B1(e0) - B1(e+) - B1(e-)]
+
+The ``(2/pi) ln h`` term converts the half-plane's unit reference length so
+that the slab's ``w`` is absolute: it tends to 0 far from the load (the slab's
+line-load ``w`` decays exponentially and integrates to ``h``). Far field
+(``|eta| -> inf``; corrections ``O(exp(-2.106 |eta|))`` from the zero of ``D``
+at ``t = 1.1254 + 2.1062 i``), for ``eta > 0`` (``A1, B, C1`` odd; ``A, B1, C``
+even)::
+
+    A  -> (2/pi) ln eta,            A1 -> (2/pi)(eta ln eta - eta) + 1/2
+    B  -> 1/2,                      B1 -> eta/2 + b1,   b1 = (4/pi) int_0^inf (1/D - 1/(4t)) dt/t
+    C  -> -eta/2 + (2/pi) ln eta + c0,
+    C1 -> -eta^2/4 + (2/pi)(eta ln eta - eta) + c0 eta + 1/3,
+    c0 = (2/pi) (1 - ln 2 - int_0^inf f3 dt),  f3 = (cosh 2t + 1 - D)/(t^2 D) - exp(-2t)/(2 t^2)
+
+So far from the strip the slab's ``u`` under pressure tends to
+``+-s nu/(1-nu)`` (instead of the half-plane's ``-+2 beta s``).
+
+Numerics of the slab. ``A1, B1, C1`` and their first two derivatives are
+computed once per process (``functools.lru_cache``, ~0.2 s; the tables depend
+on neither ``nu`` nor ``h``) on the nodes ``eta = 0, 0.02, ..., 20`` by
+composite 20-point Gauss-Legendre quadrature of the transform integrals
+(``0 < t < 25``, 50 panels), after subtracting known transforms (``exp(-2t)``
+terms) so that every integrand is regular at ``t = 0``; numerators that cancel
+are summed as series of ``expm1`` tails. ``b1 = -0.3277425951...`` and
+``c0 = 0.5516261035...`` come from the same quadrature. Evaluation: piecewise
+quintic Hermite interpolation on ``-20 <= eta <= 20`` (C2; ``B`` and ``C`` are
+the derivatives of the ``B1`` and ``C1`` interpolants), with the pairs
+(A1, B1) and (C1, B1) packed as complex numbers so one gather fetches both;
+interpolation error < 1e-14 (values) and ~1e-12 (derivatives) in ``eta``
+units. Beyond ``|eta| = 20`` the far-field forms are used, and where every
+argument is beyond it the thin-layer closed forms of ``_layer_far`` (in which
+the half-plane logarithms cancel analytically) replace the sum. Evaluation is
+chunked (16384 points) to stay in cache; for the shear the terms at ``x/h``
+are evaluated once on ``x``'s own shape when ``x`` is broadcast against a
+larger ``s``.
+
+Removable points and limits: ``x = +-s`` (``F(0) = 0``), ``x = 0`` and ``s = 0``
+(all outputs 0) are exact. ``du`` of the pressure strip jumps at ``x = +-s``:
+the value there is the mean of the one-sided limits. ``du`` of the shear strip
+has integrable logarithmic singularities at ``x = 0`` (``+inf``) and
+``x = +-s`` (``-inf``), returned as such.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from math import factorial
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = ["pressure_strip", "shear_strip"]
+
+_TWO_PI = 2.0 / np.pi
+
+# --- slab tables -------------------------------------------------------------
+_ETA_MAX = 20.0  # tabulated range of |eta|; beyond: far-field forms (error ~ e^-42)
+_N_PIECES = 1000  # pieces on each side of eta = 0
+_DELTA = _ETA_MAX / _N_PIECES
+_INV_DELTA = 1.0 / _DELTA
+_T_MAX = 25.0  # transform integrands are O(t^2 exp(-2t)) beyond
+_PANEL = 0.5
+_GL_ORDER = 20
+_CHUNK = 16384  # points per chunk (keeps temporaries in cache)
+
+
+def _beta(nu: float) -> float:
+    """beta = (1 - 2 nu) / (2 (1 - nu))."""
+    return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
+
+
+def _exp_tail(m: int, x: NDArray[np.float64]) -> NDArray[np.float64]:
+    """sum_{n >= m} x**n / n!, accurate for |x| small (series) and large (expm1)."""
+    out = np.empty_like(x)
+    small = np.abs(x) < 2.0
+    xs = x[small]
+    term = xs**m / factorial(m)
+    acc = term.copy()
+    for n in range(m + 1, m + 40):  # 2**40 / 40! ~ 1e-36
+        term = term * xs / n
+        acc += term
+    out[small] = acc
+    xl = x[~small]
+    r = np.expm1(xl)
+    for n in range(1, m):
+        r -= xl**n / factorial(n)
+    out[~small] = r
+    return out
+
+
+def _sinh_tail(x: NDArray[np.float64]) -> NDArray[np.float64]:
+    """sinh(x) - x without cancellation."""
+    out = np.empty_like(x)
+    small = np.abs(x) < 2.0
+    xs = x[small]
+    term = xs**3 / 6.0
+    acc = term.copy()
+    for n in range(5, 80, 2):
+        term = term * xs * xs / ((n - 1) * n)
+        acc += term
+    out[small] = acc
+    out[~small] = np.sinh(x[~small]) - x[~small]
+    return out
+
+
+def _gauss_panels() -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Composite Gauss-Legendre nodes and weights on 0 < t < _T_MAX."""
+    g, w = np.polynomial.legendre.leggauss(_GL_ORDER)
+    edges = np.arange(0.0, _T_MAX + 0.5 * _PANEL, _PANEL)
+    lo, hi = edges[:-1, None], edges[1:, None]
+    t = (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel()
+    wt = (0.5 * (hi - lo) * w).ravel()
+    return t, wt
+
+
+def _integrand_parts(t: NDArray[np.float64]):
+    """Regularised transform factors a2(t), b(t), f3(t) (see ``_remainder_exact``)."""
+    D = np.sinh(2.0 * t) + 2.0 * t
+    # a2 = (cosh2t - 1)/D - 1 + exp(-2t)
+    a2 = (_exp_tail(2, -2 * t) - 0.5 * _exp_tail(2, -4 * t) + 2 * t * _exp_tail(1, -2 * t)) / D
+    # b = 1/D - exp(-2t)/(4t)
+    b = (0.5 * _exp_tail(2, -4 * t) - 2 * t * _exp_tail(1, -2 * t)) / (4.0 * t * D)
+    # f3 = (cosh2t + 1 - D)/(t^2 D) - exp(-2t)/(2t^2)
+    f3 = 0.5 * _exp_tail(3, -4 * t) / (2.0 * t * t * D)
+    return D, a2, b, f3
+
+
+def _remainder_exact(eta: ArrayLike) -> dict[str, NDArray[np.float64]]:
+    """Remainder functions by quadrature (slow path; for tabulation and tests).
+
+    Parameters
+    ----------
+    eta : array_like
+        Points ``eta = xi/h >= 0`` (at most a few thousand).
+
+    Returns
+    -------
+    dict
+        ``A, dA, A1, B, dB, B1, C, dC, C1`` at ``eta`` (see the module notes;
+        ``dX = X'``, ``X1 = int_0^eta X``).
+
+    Notes
+    -----
+    Identities used (``c > 0``): ``int_0^inf exp(-ct) sin(bt)/t dt = atan(b/c)``,
+    ``int_0^inf exp(-ct)(1 - cos bt)/t dt = ln(1 + b^2/c^2)/2``,
+    ``int_0^inf exp(-ct)(1 - cos bt)/t^2 dt = b atan(b/c) - (c/2) ln(1 + b^2/c^2)``
+    and Frullani's ``ln|eta| = ln 2 + int_0^inf (exp(-2t) - cos t eta)/t dt``.
+    """
+    t, wt = _gauss_panels()
+    _, a2, b, f3 = _integrand_parts(t)
+    e = np.atleast_1d(np.asarray(eta, dtype=float))
+    te = t * e[:, None]
+    cs = np.cos(te)
+    sn = np.sin(te)
+    hs2 = 2.0 * np.sin(0.5 * te) ** 2  # 1 - cos
+    at = np.arctan(0.5 * e)
+    lg = np.log1p(0.25 * e * e)
+    ln2 = np.log(2.0)
+    pi = np.pi
+    out = {}
+    out["A"] = _TWO_PI * (cs @ (wt * a2 / t) + 0.5 * lg + ln2)
+    out["dA"] = _TWO_PI * (-(sn @ (wt * a2)) + e / (4.0 + e * e))
+    out["A1"] = _TWO_PI * (sn @ (wt * a2 / t**2) + 0.5 * (e * lg - 2.0 * e + 4.0 * at) + e * ln2)
+    out["B"] = (4.0 / pi) * (sn @ (wt * b)) + at / pi
+    out["dB"] = (4.0 / pi) * (cs @ (wt * t * b)) + (2.0 / pi) / (4.0 + e * e)
+    out["B1"] = (4.0 / pi) * (hs2 @ (wt * b / t)) + (e * at - lg) / pi
+    out["C"] = _TWO_PI * (-0.5 * (e * at - lg) - hs2 @ (wt * f3))
+    out["dC"] = _TWO_PI * (-0.5 * at - sn @ (wt * t * f3))
+    g = (0.5 * e * e - 2.0) * at + e - e * lg
+    out["C1"] = _TWO_PI * (-0.5 * g + (sn / t - e[:, None]) @ (wt * f3))
+    return out
+
+
+def _far_constants() -> tuple[float, float]:
+    """(b1, c0) of the far-field forms, by the same quadrature."""
+    t, wt = _gauss_panels()
+    D, _, _, f3 = _integrand_parts(t)
+    # (1/D - 1/(4t))/t = -(sinh 2t - 2t)/(4 t^2 D); tail beyond T_MAX: -1/(4t^2)
+    b1 = (4.0 / np.pi) * (-(_sinh_tail(2.0 * t) / (4.0 * t * t * D)) @ wt - 0.25 / _T_MAX)
+    c0 = _TWO_PI * (1.0 - np.log(2.0) - f3 @ wt)
+    return float(b1), float(c0)
+
+
+@dataclass(frozen=True)
+class _SlabTable:
+    """Packed piecewise-quintic coefficients on -_ETA_MAX <= eta <= _ETA_MAX.
+
+    ``pres[k]`` (k = 0..5) holds the u**k coefficients of A1 + i B1 and
+    ``shear[k]`` those of C1 + i B1, one complex number per piece, so that one
+    gather fetches two functions.
+    """
+
+    pres: tuple[NDArray[np.complex128], ...]
+    shear: tuple[NDArray[np.complex128], ...]
+    b1_const: float
+    c0_const: float
+
+
+def _quintic_hermite(f, df, d2f) -> list[NDArray[np.float64]]:
+    """Monomial coefficients in u in [0, 1] on each piece from nodal f, f', f''."""
+    d = _DELTA
+    f0, f1 = f[:-1], f[1:]
+    g0, g1 = d * df[:-1], d * df[1:]
+    k0, k1 = d * d * d2f[:-1], d * d * d2f[1:]
+    c0, c1, c2 = f0, g0, 0.5 * k0
+    r0 = f1 - (c0 + c1 + c2)
+    r1 = g1 - (c1 + 2.0 * c2)
+    r2 = k1 - 2.0 * c2
+    c3 = 10.0 * r0 - 4.0 * r1 + 0.5 * r2
+    c4 = -15.0 * r0 + 7.0 * r1 - r2
+    c5 = 6.0 * r0 - 3.0 * r1 + 0.5 * r2
+    return [c0, c1, c2, c3, c4, c5]
+
+
+@functools.lru_cache(maxsize=1)
+def _slab_table() -> _SlabTable:
+    """Build (once per process) the interpolation tables of A1, B1, C1."""
+    pos = np.linspace(0.0, _ETA_MAX, _N_PIECES + 1)
+    r = _remainder_exact(pos)
+
+    def full(v, odd):  # extend from eta >= 0 to eta <= 0 by parity
+        neg = -v[:0:-1] if odd else v[:0:-1]
+        return np.concatenate([neg, v])
+
+    parity = {"A1": True, "A": False, "dA": True, "B1": False, "B": True, "dB": False,
+              "C1": True, "C": False, "dC": True}
+    r = {k: full(v, parity[k]) for k, v in r.items()}
+    a1 = _quintic_hermite(r["A1"], r["A"], r["dA"])
+    b1 = _quintic_hermite(r["B1"], r["B"], r["dB"])
+    c1 = _quintic_hermite(r["C1"], r["C"], r["dC"])
+    b1c, c0c = _far_constants()
+    return _SlabTable(
+        pres=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(a1, b1)),
+        shear=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(c1, b1)),
+        b1_const=b1c,
+        c0_const=c0c,
+    )
+
+
+def _far_pair(kind: str, eta: NDArray[np.float64], tab: _SlabTable):
+    """Far-field forms (|eta| > _ETA_MAX): values and derivatives of the packed pair."""
+    ae = np.abs(eta)
+    sg = np.sign(eta)
+    la = np.log(ae)
+    xl = ae * la - ae
+    b1 = 0.5 * ae + tab.b1_const
+    b = 0.5 * sg
+    if kind == "pressure":
+        f1 = sg * (_TWO_PI * xl + 0.5)  # A1
+        f = _TWO_PI * la  # A
+    else:
+        f1 = sg * (-0.25 * ae * ae + _TWO_PI * xl + tab.c0_const * ae + 1.0 / 3.0)  # C1
+        f = -0.5 * ae + _TWO_PI * la + tab.c0_const  # C
+    return f1, b1, f, b
+
+
+def _pair(kind: str, eta: NDArray[np.float64], tab: _SlabTable):
+    """Packed values (F1, B1) and one derivative at eta (1-D, contiguous).
+
+    Returns ``val`` (complex: F1 + i B1, with F1 = A1 for the pressure and C1
+    for the shear), ``der`` (real: B = B1' for the pressure, C = C1' for the
+    shear) and the mask of points beyond the table (far-field forms used).
+    """
+    pressure = kind == "pressure"
+    coef = tab.pres if pressure else tab.shear
+    comp = 1 if pressure else 0  # component whose derivative is needed
+    v = eta * _INV_DELTA
+    v += _N_PIECES
+    vc = np.clip(v, 0.0, 2.0 * _N_PIECES)
+    far = vc != v
+    idx = vc.astype(np.intp)
+    np.minimum(idx, 2 * _N_PIECES - 1, out=idx)
+    vc -= idx
+    u2 = np.empty(2 * vc.size)
+    u2[0::2] = vc
+    u2[1::2] = vc
+    p = coef[5].take(idx)
+    pf = p.view(np.float64)
+    dp = pf[comp::2].copy()
+    pf *= u2
+    pf += coef[4].take(idx).view(np.float64)
+    for k in (3, 2, 1, 0):
+        dp *= vc
+        dp += pf[comp::2]
+        pf *= u2
+        pf += coef[k].take(idx).view(np.float64)
+    dp *= _INV_DELTA
+    if far.any():
+        f1, b1, f, b = _far_pair(kind, eta[far], tab)
+        p[far] = f1 + 1j * b1
+        dp[far] = b if pressure else f
+    return p, dp, far
+
+
+def _eta_only(kind: str, eta: NDArray[np.float64], tab: _SlabTable):
+    """``_pair`` for an array of any shape (used for the x-only terms)."""
+    flat = np.ascontiguousarray(eta, dtype=float).ravel()
+    p, dp, far = _pair(kind, flat, tab)
+    return p.reshape(eta.shape), dp.reshape(eta.shape), far.reshape(eta.shape)
+
+
+# --- half-plane pieces (chunk level) -------------------------------------------
+def _hp_pressure(x, s, b):
+    a = np.abs(x)
+    d = a - s
+    ad = np.abs(d)
+    m = np.minimum(a, s)
+    lp = np.log(a + s)
+    q = np.log1p(2.0 * m / ad)  # ln((a+s)/|a-s|), accurate for all a
+    w = 1.0 - lp
+    w *= 2.0 * s
+    w -= d * q
+    edge = ad == 0.0
+    if edge.any():  # (a - s) ln|a - s| -> 0
+        w[edge] = 2.0 * s[edge] * (1.0 - lp[edge])
+    w *= _TWO_PI
+    u = np.copysign(m, x)
+    u *= -2.0 * b
+    du = (a < s).astype(np.float64)
+    du += a <= s
+    du *= -b
+    return w, u, du
+
+
+def _hp_shear(x, s, b):
+    a = np.abs(x)
+    d = a - s
+    ad = np.abs(d)
+    m = np.minimum(a, s)
+    q = np.log1p(2.0 * m / ad)  # ln((a+s)/|a-s|)
+    l1 = np.log((a + s) * ad / (a * a))  # ln|1 - s^2/x^2| (near field)
+    r = s / a
+    r *= r
+    far = a > 2.0 * s
+    np.copyto(l1, np.log1p(-r), where=far)  # far field, no cancellation
+    g = a * l1
+    g += s * q
+    bad = (a == 0.0) | (ad == 0.0)
+    if bad.any():  # removable points: g(0) = 0, g(s) = 2 s ln 2
+        g[bad] = np.where(a[bad] == 0.0, 0.0, 2.0 * np.log(2.0) * s[bad])
+    u = np.copysign(g, x)
+    u *= _TWO_PI
+    du = l1 * _TWO_PI
+    w = np.maximum(s - a, 0.0)
+    w *= -2.0 * b
+    return w, u, du
+
+
+# --- slab remainders (chunk level) ---------------------------------------------
+def _slab_pressure(x, s, h, tab, out_w, out_u, out_du):
+    inv_h = 1.0 / h
+    pp, dpp, farp = _pair("pressure", (x + s) * inv_h, tab)
+    pm, dpm, farm = _pair("pressure", (x - s) * inv_h, tab)
+    pp -= pm
+    dpp -= dpm
+    val = pp.view(np.float64)
+    val *= h
+    out_w += val[0::2]
+    out_w += s * (2.0 * _TWO_PI * np.log(h))
+    out_u += val[1::2]
+    out_du += dpp
+    return farp & farm
+
+
+def _slab_shear(x, s, h, tab, out_w, out_u, out_du, centre=None):
+    inv_h = 1.0 / h
+    if centre is None:
+        p0, dp0, far0 = _pair("shear", x * inv_h, tab)
+    else:
+        p0, dp0, far0 = centre
+    pp, dpp, farp = _pair("shear", (x + s) * inv_h, tab)
+    pm, dpm, farm = _pair("shear", (x - s) * inv_h, tab)
+    pp += pm
+    dpp += dpm
+    pp -= 2.0 * p0
+    dpp -= 2.0 * dp0  # now -(2 X(e0) - X(e+) - X(e-))
+    val = pp.view(np.float64)
+    val *= h
+    out_u -= val[0::2]
+    out_w += val[1::2]
+    out_du -= dpp
+    return farp & farm & far0
+
+
+def _layer_far(kind, x, s, h, nu):
+    """Exact slab kernels when every |eta| > _ETA_MAX (up to O(exp(-42))).
+
+    The far-field forms of the remainders cancel the half-plane logarithms
+    analytically; what is left is the thin-layer (membrane) answer::
+
+        pressure: w = (h/2)(sgn(x+s) - sgn(x-s)),  u = k (|x+s| - |x-s|),
+                  du = k (sgn(x+s) - sgn(x-s)),    k = nu / (2 (1 - nu))
+        shear:    u = -(2x|x| - (x+s)|x+s| - (x-s)|x-s|)/(4h)
+                      + (h/3)(2 sgn x - sgn(x+s) - sgn(x-s)),
+                  du = -(2|x| - |x+s| - |x-s|)/(2h),
+                  w = k (|x+s| + |x-s| - 2|x|)
+    """
+    k = nu / (2.0 * (1.0 - nu))
+    xp, xm = x + s, x - s
+    if kind == "pressure":
+        jump = np.sign(xp) - np.sign(xm)
+        return 0.5 * h * jump, k * (np.abs(xp) - np.abs(xm)), k * jump
+    ax, axp, axm = np.abs(x), np.abs(xp), np.abs(xm)
+    u = -(2.0 * x * ax - xp * axp - xm * axm) / (4.0 * h)
+    u += (h / 3.0) * (2.0 * np.sign(x) - np.sign(xp) - np.sign(xm))
+    du = -(2.0 * ax - axp - axm) / (2.0 * h)
+    w = k * (axp + axm - 2.0 * ax)
+    return w, u, du
+
+
+# --- driver --------------------------------------------------------------------
+def _validate(s: NDArray[np.float64], nu: float, h: float) -> float:
+    nu = float(nu)
+    if not -1.0 < nu <= 0.5:
+        raise ValueError(f"Poisson's ratio nu={nu!r} must satisfy -1 < nu <= 0.5")
+    h = float(h)
+    if not h > 0.0:  # also rejects NaN
+        raise ValueError(f"slab thickness h={h!r} must be > 0 (np.inf: half-plane)")
+    if np.any(s < 0.0):
+        raise ValueError("strip half-width s must be >= 0")
+    return h
+
+
+def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float):
+    x = np.asarray(x, dtype=float)
+    s = np.asarray(s, dtype=float)
+    h = _validate(s, nu, h)
+    b = _beta(nu)
+    slab = bool(np.isfinite(h))
+    tab = _slab_table() if slab else None
+    hp = _hp_pressure if kind == "pressure" else _hp_shear
+    ops: list = [x, s]
+    dtypes: list = [np.float64, np.float64]
+    centre = False
+    total = int(np.prod(np.broadcast_shapes(x.shape, s.shape), dtype=np.int64))
+    if slab and kind == "shear" and 8 * x.size <= total:
+        # x-only terms at eta0 = x/h are evaluated once on x's own shape
+        with np.errstate(divide="ignore", invalid="ignore"):
+            p0, dp0, far0 = _eta_only("shear", x / h, tab)
+        ops += [p0, dp0, far0]
+        dtypes += [np.complex128, np.float64, np.bool_]
+        centre = True
+    nin = len(ops)
+    it = np.nditer(
+        ops + [None, None, None],
+        flags=["external_loop", "buffered", "zerosize_ok"],
+        op_flags=[["readonly"]] * nin + [["writeonly", "allocate"]] * 3,
+        op_dtypes=dtypes + [np.float64] * 3,
+        buffersize=_CHUNK,
+    )
+    with it, np.errstate(divide="ignore", invalid="ignore"):
+        for chunk in it:
+            xc, sc = chunk[0], chunk[1]
+            wc, uc, dc = chunk[nin:]
+            w, u, du = hp(xc, sc, b)
+            if slab:
+                if centre:
+                    far = _slab_shear(xc, sc, h, tab, w, u, du, centre=chunk[2:5])
+                elif kind == "shear":
+                    far = _slab_shear(xc, sc, h, tab, w, u, du)
+                else:
+                    far = _slab_pressure(xc, sc, h, tab, w, u, du)
+                if far.any():
+                    wf, uf, df = _layer_far(kind, xc[far], sc[far], h, float(nu))
+                    w[far] = wf
+                    u[far] = uf
+                    du[far] = df
+            zero = sc == 0.0
+            if zero.any():
+                w[zero] = 0.0
+                u[zero] = 0.0
+                du[zero] = 0.0
+            wc[...] = w
+            uc[...] = u
+            dc[...] = du
+        return it.operands[nin], it.operands[nin + 1], it.operands[nin + 2]
+
+
+def pressure_strip(
+    x: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Surface displacements under a uniform unit pressure on ``|x'| < s``.
+
+    Parameters
+    ----------
+    x : array_like
+        Surface point (any real), in the length unit of the problem (contact
+        half-width a = 1 in contactlib).
+    s : array_like
+        Half-width of the loaded strip (>= 0); broadcast against ``x``.
+        ``s = 0`` gives zeros.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    h : float, optional
+        Thickness of the layer on a smooth rigid base, same unit; ``np.inf``
+        (default) is the half-plane.
+
+    Returns
+    -------
+    w, u, du : ndarray
+        Normal displacement (into the body), tangential displacement (+x) and
+        ``du/dx`` for p = 1 and E* = 1 (scale with p/E*; ``w``, ``u`` also
+        with the length unit). Half-plane ``w`` carries the constant of the
+        unit-reference-length Flamant kernel (see module notes); the slab's
+        ``w`` is absolute (-> 0 far away).
+
+    Notes
+    -----
+    Half-plane: ``w = (2/pi)[2s - (x+s) ln|x+s| + (x-s) ln|x-s|]``,
+    ``u = -beta (|x+s| - |x-s|)``, ``du = -beta (sgn(x+s) - sgn(x-s))``
+    (``-beta`` at ``x = +-s``). Slab: half-plane plus the remainders of the
+    module notes.
+
+    Examples
+    --------
+    >>> w, u, du = pressure_strip([0.0, 2.0], 1.0, 0.3)
+    >>> [round(float(v), 12) for v in u] == [0.0, round(-2 * 0.2857142857142857, 12)]
+    True
+    """
+    return _evaluate("pressure", x, s, nu, h)
+
+
+def shear_strip(
+    x: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Surface displacements under an outward unit shear on ``|x'| < s``.
+
+    The traction on the body is +1 (in +x) on ``0 < x' < s`` and -1 on
+    ``-s < x' < 0``.
+
+    Parameters
+    ----------
+    x : array_like
+        Surface point (any real).
+    s : array_like
+        Half-width of the loaded strip (>= 0); ``s = 0`` gives zeros.
+    nu : float
+        Poisson's ratio, -1 < nu <= 0.5.
+    h : float, optional
+        Layer thickness on a smooth rigid base; ``np.inf`` is the half-plane.
+
+    Returns
+    -------
+    w, u, du : ndarray
+        Normal displacement (into the body), tangential displacement (+x) and
+        ``du/dx`` for unit shear and E* = 1. ``u`` is odd in ``x`` (no free
+        constant); ``du`` is ``+inf`` at ``x = 0`` and ``-inf`` at ``x = +-s``
+        (integrable logarithmic singularities).
+
+    Notes
+    -----
+    Half-plane: ``u = (2/pi)[(x+s) ln|x+s| + (x-s) ln|x-s| - 2x ln|x|]``,
+    ``du = (2/pi) ln|1 - s^2/x^2|``, ``w = -2 beta max(s - |x|, 0)``.
+
+    Examples
+    --------
+    >>> w, u, du = shear_strip(1e4, 1.0, 0.3)    # far field: u ~ (2/pi) s^2/x
+    >>> abs(float(u) / (2 / 3.141592653589793 * 1e-4) - 1) < 1e-8
+    True
+    """
+    return _evaluate("shear", x, s, nu, h)

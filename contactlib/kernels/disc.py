@@ -34,6 +34,8 @@ from __future__ import annotations
 import numpy as np
 from scipy import special
 
+from ..theory import beta_of_nu
+
 __all__ = ["beta_of_nu", "pressure_disc", "shear_disc"]
 
 _SERIES_SWITCH = 0.25  # use power series for parameters below this
@@ -45,11 +47,6 @@ _k = np.ones(_n.size)
 for _i in range(1, _n.size):
     _k[_i] = _k[_i - 1] * ((2 * _i - 1) / (2 * _i)) ** 2
 _e = _k / (1.0 - 2.0 * _n)
-
-
-def beta_of_nu(nu: float) -> float:
-    """Coupling parameter beta = (1 - 2 nu) / (2 (1 - nu)) (0 at nu = 0.5)."""
-    return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
 
 
 def _series(coef: np.ndarray, m: np.ndarray) -> np.ndarray:

@@ -246,13 +246,11 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         c, d = stick_ratio_for_friction(geom, k, n)
         return _finish(geom, d, method, n, energy)
     # paper method: c/a only at m/n; pick the m/n whose k is nearest
-    ks = []
-    for m in range(0, n):
-        ks.append(_discrete(geom, m / n, n, method).k)
-    ks = np.array(ks)
+    table = [_discrete(geom, m / n, n, method) for m in range(0, n)]
+    ks = np.array([d.k for d in table])
     m = int(np.argmin(np.abs(ks - k)))
     c_interp = float(np.interp(k, ks, np.arange(n) / n)) if np.all(np.diff(ks) > 0) else m / n
-    return _finish(geom, _discrete(geom, m / n, n, method), method, n, energy,
+    return _finish(geom, table[m], method, n, energy,
                    f"paper method: c/a restricted to m/n; nearest m/n = {m}/{n} has "
                    f"k = {ks[m]:.6g}; linear interpolation in the k(m/n) table gives "
                    f"c/a = {c_interp:.6g} for k = {k:.6g}")

@@ -37,6 +37,7 @@ import numpy as np
 from scipy import linalg
 
 from .elements import Mesh, graded_mesh
+from .energy import slip_points
 from .geometry import Geometry
 from .influence import apply_difference, element_integrals
 from .theory import uncoupled_friction
@@ -91,7 +92,6 @@ class DiscreteSolution:
 
 def _slip_samples(sol: "DiscreteSolution", order: int):
     """Slip-zone samples: Gauss points (order > 0) or the nodes (order 0, trapezoid)."""
-    from .energy import slip_points
     if order == 0 and sol.nodal_u is not None:
         r, m = sol.mesh.nodes, sol.mesh.stick_index
         xs = r[m:]
@@ -149,7 +149,8 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         Mesh grading exponent.
     k_guess : float, optional
         Starting value for Newton's method on k (default: the uncoupled
-        closed form).
+        closed form for n <= 128, else the Richardson extrapolation of the
+        n = 64 and n = 128 solutions).
     tol : float
         Relative size of a Newton step still counted as converged when the
         iteration stagnates at round-off (normally Newton stops after a step
@@ -255,8 +256,8 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
             stagnated = size_step
             break
         prev_step = abs(step)
-    # x at the final k from the last factorization: x(k) is smooth in k and the
-    # last step is at round-off level, so the first-order update is exact to it
+    # x at the final k from the last factorization: x(k) is smooth in k, so the
+    # first-order update leaves an error of order step^2
     x = x - step * xk
     a = a0 + k * a1
     g = shape[j] * x[nn + j] - k * x[j]

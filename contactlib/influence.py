@@ -31,7 +31,7 @@ import numpy as np
 
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
-__all__ = ["element_integrals", "difference_operator", "apply_difference"]
+__all__ = ["element_integrals", "apply_difference"]
 
 _NEAR = 2.0  # distance/length below which an element is "near"
 _FAR = 24.0  # distance/length above which 3 points suffice
@@ -127,21 +127,11 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
     return out
 
 
-def difference_operator(nodes: np.ndarray) -> np.ndarray:
-    """Matrix D, shape (N, N + 1), with sigma = D @ phi, sigma_j = (phi_j - phi_{j+1}) / h_j."""
-    h = np.diff(np.asarray(nodes, dtype=float))
-    n = h.size
-    d = np.zeros((n, n + 1))
-    d[np.arange(n), np.arange(n)] = 1.0 / h
-    d[np.arange(n), np.arange(1, n + 1)] = -1.0 / h
-    return d
-
-
 def apply_difference(g: np.ndarray, nodes: np.ndarray) -> np.ndarray:
-    """``g @ difference_operator(nodes)`` over the last axis, in O(size) work.
+    """Element integrals (per unit sigma) -> operators on nodal values of phi.
 
-    Turns element integrals (per unit sigma) into operators on nodal values:
-    column l gets g[..., l] / h_l - g[..., l-1] / h_{l-1}.
+    ``sigma_j = (phi_j - phi_{j+1}) / h_j``, so column l of the result is
+    g[..., l] / h_l - g[..., l-1] / h_{l-1}; O(size) work, no dense product.
     """
     h = np.diff(np.asarray(nodes, dtype=float))
     scaled = g / h

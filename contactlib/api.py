@@ -17,10 +17,10 @@ from typing import Callable, Sequence
 import numpy as np
 from scipy import optimize
 
-from . import checks, energy
+from . import stages
 from .default_method import DiscreteSolution, solve_default
 from .geometry import Geometry
-from .paper_method import PaperSolution, solve_paper
+from .paper_method import PaperSolution
 from .result import Solution
 from .theory import beta_of_nu, uncoupled_friction
 
@@ -84,58 +84,24 @@ def _validate_common(geometry, nu, n, method, slab_ratio) -> tuple[Geometry, int
 def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
             want_energy: bool, message: str = "") -> Solution:
     """Profiles on the output grid, load, flags and work of a discrete solution."""
-    xi = output_grid()
-    nodes, m = d.mesh.nodes, d.mesh.stick_index
-    nn = d.mesh.n
-    k = d.k
-    partial = 0 < m < nn
-    u_xi = d.displacements(xi)[1]
-    if partial:
-        xs, ws, q_slip, s_slip = d.slip_samples()
-    else:
-        xs = ws = q_slip = s_slip = np.empty(0)
+    rec = stages._record(geom, d, samples=True)
+    return _from_record(geom, rec, method, n, want_energy, message)
 
-    # stick-zone points: element midpoints (and nodes for continuous tractions)
-    mids = 0.5 * (nodes[:m] + nodes[1:m + 1])
-    stick_pts = mids if isinstance(d, PaperSolution) else np.concatenate([nodes[1:m], mids])
-    fl = checks.flags(d.shear(stick_pts), d.pressure(stick_pts), k, q_slip, s_slip)
-    if partial and want_energy:
-        work = energy.frictional_work(xs, ws, q_slip, s_slip, geom.work_factor,
-                                      geom.work_weight_power)
-    elif want_energy:
-        work = 0.0  # frictionless (k = 0) or full adhesion (no slip)
-    else:
-        work = float("nan")
-    load = d.load() if isinstance(d, PaperSolution) else geom.load(nodes, d.p)
-    msg = "; ".join(x for x in (message, d.message) if x)
-    return Solution(
-        geometry=geom.name, nu=geom.nu, method=method, n=n, slab_ratio=geom.slab_ratio,
-        stick_ratio=float(nodes[m]), friction_coefficient=float(k), xi=xi,
-        pressure=d.pressure(xi) / geom.p0, shear=d.shear(xi) / geom.p0,
-        tangential_displacement=u_xi, load_ratio=load / geom.hertz_load,
-        frictional_work=work, slip_direction_ok=fl["slip_direction_ok"],
-        stick_admissible=fl["stick_admissible"], consistent=fl["consistent"],
-        converged=bool(d.converged), residual_norm=float(d.residual_norm),
-        iterations=int(d.iterations), message=msg,
-        extra={"stick_violation": fl["stick_violation"], "slip_violation": fl["slip_violation"],
-               "indentation": getattr(d, "delta", float("nan"))})
+
+def _from_record(geom: Geometry, rec: dict, method: str, n: int, want_energy: bool,
+                 message: str = "") -> Solution:
+    xi = output_grid()
+    work = stages.work_case(geom, rec) if want_energy else float("nan")
+    return stages.to_solution(geom, method, n, rec, xi, flags=stages.check_case(rec),
+                              work=work, profile=stages.profiles(geom, rec, xi),
+                              message=message)
 
 
 def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | None = None):
     """Solve one stick ratio with the chosen method (no post-processing)."""
     if method == "default":
         return solve_default(geom, c, n, k_guess=k_guess)
-    m = int(round(c * n))
-    if abs(m - c * n) > 1e-9 * n:
-        raise ValueError(f"stick_ratio must be a multiple of 1/n = 1/{n} for the paper method, "
-                         f"got {c!r}")
-    coulomb = "coefficient" if method == "paper-literal" else "resultant"
-    return solve_paper(geom, m, n, coulomb=coulomb)
-
-
-def _uncoupled_message(geom: Geometry) -> str:
-    return ("nu = 0.5: the normal and tangential problems decouple; no shear arises (q = 0) "
-            "and every stick ratio is consistent with any k >= 0")
+    return stages._discrete(geom, method, n, c, None, None)
 
 
 # ----------------------------------------------------------------------------- inverse problem
@@ -220,14 +186,10 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         raise ValueError("give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
         c = _number("stick_ratio", stick_ratio, 0.0, 1.0)
-        if beta_of_nu(geom.nu) == 0.0 and c > 0.0:
-            # no coupling: the Hertz pressure and q = 0 for every stick ratio
-            sol = _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
-                          _uncoupled_message(geom))
-            sol.stick_ratio = c
-            sol.friction_coefficient = np.inf if c == 1.0 else 0.0
-            return sol
-        return _finish(geom, _discrete(geom, c, n, method), method, n, energy)
+        if method != "default":
+            stages._paper_m(c, n)  # validate before solving
+        rec = stages.solve_cases(geom, method, n, [c])[0]
+        return _from_record(geom, rec, method, n, energy)
 
     if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
@@ -238,7 +200,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     if beta_of_nu(geom.nu) == 0.0:
         d = _discrete(geom, 0.0, n, method)
         sol = _finish(geom, d, method, n, energy,
-                      _uncoupled_message(geom) + "; nothing tends to slip, so the whole "
+                      stages.decoupled_message() + "; nothing tends to slip, so the whole "
                       "contact sticks (c/a = 1)")
         sol.stick_ratio, sol.friction_coefficient = 1.0, k
         return sol

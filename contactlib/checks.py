@@ -21,10 +21,10 @@ __all__ = ["stick_violation", "slip_violation", "flags"]
 
 
 def stick_violation(q: np.ndarray, p: np.ndarray, k: float) -> float:
-    """max(|q| - k p) over stick points, relative to max(k p) (<= 0 when admissible)."""
+    """max(|q| - k p) over stick points, relative to max|k p| (<= 0 when admissible)."""
     if q.size == 0 or not np.isfinite(k):
         return 0.0 if q.size == 0 else -np.inf
-    scale = max(float(np.max(k * p)), 1e-300)
+    scale = max(float(np.max(np.abs(k * p))), 1e-300)  # |.|: a scheme may give k < 0
     return float(np.max(np.abs(q) - k * p) / scale)
 
 

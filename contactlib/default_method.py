@@ -42,7 +42,7 @@ from .geometry import Geometry
 from .influence import apply_difference, element_integrals
 from .theory import uncoupled_friction
 
-__all__ = ["DiscreteSolution", "solve_default", "operators"]
+__all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part"]
 
 
 @dataclass
@@ -104,19 +104,35 @@ def _slip_samples(sol: "DiscreteSolution", order: int):
     return xs, ws, sol.shear(xs), 2.0 * u - xs * du
 
 
+def operator_part(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
+                  part: str) -> np.ndarray:
+    """One displacement operator on nodal values, shape (3, len(x), N + 1).
+
+    ``part="normal"``: of the nodal pressures p; ``part="shear"``: of the
+    nodal shear coefficients phi. Row k = 0, 1, 2 gives w, u and du/dx at the
+    points ``x`` (units E* = a = R = 1).
+    """
+    if part == "normal":
+        g = element_integrals(geometry.pressure_kernel, x, nodes)
+    elif part == "shear":
+        g = element_integrals(geometry.shear_kernel, x, nodes)
+    else:
+        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+    # du/dx of an odd strip shear is log-infinite on the axis for every element
+    # (the infinities cancel for a traction with q(0) = 0); it is never used
+    # there, so the resulting inf - inf is left as NaN without a warning
+    with np.errstate(invalid="ignore"):
+        return apply_difference(g, nodes)
+
+
 def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):
     """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
 
     Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
     w (k = 0), u (1) and du/dx (2) at the points ``x``.
     """
-    gp = element_integrals(geometry.pressure_kernel, x, nodes)
-    gq = element_integrals(geometry.shear_kernel, x, nodes)
-    # du/dx of an odd strip shear is log-infinite on the axis for every element
-    # (the infinities cancel for a traction with q(0) = 0); it is never used
-    # there, so the resulting inf - inf is left as NaN without a warning
-    with np.errstate(invalid="ignore"):
-        return apply_difference(gp, nodes), apply_difference(gq, nodes)
+    return (operator_part(geometry, nodes, x, "normal"),
+            operator_part(geometry, nodes, x, "shear"))
 
 
 def _tie_columns(geometry: Geometry, q_ops: np.ndarray) -> np.ndarray:
@@ -135,7 +151,8 @@ def _expand_phi(geometry: Geometry, f: np.ndarray) -> np.ndarray:
 
 def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: float = 2.0,
                   k_guess: float | None = None, tol: float = 1e-9,
-                  max_iter: int = 30) -> DiscreteSolution:
+                  max_iter: int = 30,
+                  ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> DiscreteSolution:
     """Solve the self-similar partial-slip problem for a given stick ratio.
 
     Parameters
@@ -157,6 +174,10 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         below 1e-6, which leaves an error in k near 1e-10).
     max_iter : int
         Newton iterations allowed.
+    ops : (P, Q), optional
+        Precomputed collocation operators ``operator_part(geometry, nodes,
+        nodes, "normal")`` and ``(..., "shear")`` on this mesh (Q may be None
+        when stick_ratio = 0); computed here when not given.
 
     Returns
     -------
@@ -165,9 +186,19 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     mesh = graded_mesh(n, stick_ratio, power=power)
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
-    pw, qw = operators(geometry, r, r)
+    if ops is None:
+        pw, qw = operators(geometry, r, r)
+    else:
+        pw = np.array(ops[0], dtype=float)  # copies: the axis row is edited below
+        qw = None if ops[1] is None else np.array(ops[1], dtype=float)
+        want = (3, nn + 1, nn + 1)
+        if pw.shape != want or (m > 0 and (qw is None or qw.shape != want)):
+            raise ValueError(f"precomputed operators must have shape {want} "
+                             f"(normal{' and shear' if m > 0 else ''})")
     if geometry.name == "cylinder":  # du/dx on the axis: unused, NaN (see operators)
-        pw[2][0] = qw[2][0] = 0.0
+        pw[2][0] = 0.0
+        if qw is not None:
+            qw[2][0] = 0.0
     rhs_normal = -0.5 * r**2
     ones = np.ones((nn + 1, 1))
 

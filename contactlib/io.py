@@ -32,7 +32,7 @@ import xarray as xr
 
 from contactlib.result import Solution
 
-__all__ = ["to_dataset", "write_dataset", "read_dataset"]
+__all__ = ["to_dataset", "write_dataset", "read_dataset", "write_arrays", "read_arrays", "write_figure"]
 
 CONVENTIONS = "CF-1.10"
 COMPRESSION: dict[str, Any] = {"zlib": True, "complevel": 4, "shuffle": True}
@@ -138,7 +138,10 @@ def _check(sols: list[Solution]) -> np.ndarray:
         if not np.array_equal(np.asarray(sol.xi, dtype=float), xi):
             raise ValueError(f"solutions[{i}].xi differs from solutions[0].xi")
         for name in _PROFILE_ATTRS:
-            shape = np.shape(getattr(sol, name))
+            value = getattr(sol, name)
+            if (value is None) != (getattr(first, name) is None):
+                raise ValueError(f"solutions[{i}].{name} is computed for some solutions only")
+            shape = xi.shape if value is None else np.shape(value)
             if shape != xi.shape:
                 raise ValueError(
                     f"solutions[{i}].{name} has shape {shape}, expected {xi.shape}"
@@ -222,6 +225,8 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     }
     data: dict[str, Any] = {}
     for name, (long_name, comment) in _PROFILE_ATTRS.items():
+        if getattr(first, name) is None:
+            continue  # not computed (a workflow scene that did not ask for it)
         values = np.stack([np.asarray(getattr(s, name), dtype=float) for s in sols])
         data[name] = (dims + ("xi",), values, _attrs(long_name, comment))
     for name, (long_name, comment) in _POINT_FLOAT_ATTRS.items():
@@ -272,6 +277,94 @@ def _encoding(ds: xr.Dataset) -> dict[str, dict[str, Any]]:
         if var.dtype.kind in "biuf" and var.ndim > 0:
             encoding[str(name)] = dict(COMPRESSION)
     return encoding
+
+
+def _atomic_target(path: str | os.PathLike[str]) -> tuple[Path, Path]:
+    """Destination and a fresh temporary file beside it (parents created)."""
+    path = Path(path)
+    if path.is_dir():
+        raise IsADirectoryError(f"output path is a directory: {path}")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    umask = os.umask(0)  # mkstemp makes the file 0600: give it the usual permissions
+    os.umask(umask)
+    os.chmod(tmp_name, 0o666 & ~umask)
+    return path, Path(tmp_name)
+
+
+def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) -> Path:
+    """Write named arrays (an intermediate of the workflow) to ``.npz``, atomically.
+
+    Used for influence matrices and case records between workflow stages.
+    Arrays are stored uncompressed (influence matrices do not compress) and
+    without pickling: only numeric, boolean and string arrays are allowed.
+
+    Parameters
+    ----------
+    arrays : dict of str to array_like
+    path : str or os.PathLike
+        Destination; must end in ``.npz``.
+
+    Returns
+    -------
+    pathlib.Path
+    """
+    if Path(path).suffix != ".npz":
+        raise ValueError(f"path must end in .npz, got {str(path)!r}")
+    data = {k: np.asarray(v) for k, v in arrays.items()}
+    for k, v in data.items():
+        if v.dtype.kind not in "biufUS":
+            raise TypeError(f"array {k!r} has dtype {v.dtype}, which needs pickling")
+    path, tmp = _atomic_target(path)
+    try:
+        with open(tmp, "wb") as fh:
+            np.savez(fh, **data)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path
+
+
+def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
+    """Read arrays written by :func:`write_arrays` (no pickles are loaded)."""
+    with np.load(path, allow_pickle=False) as data:
+        return {k: data[k] for k in data.files}
+
+
+def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
+                digits: int = 6) -> Path:
+    """Write rows of a table (dicts with the same keys) as CSV, atomically.
+
+    Floats get ``digits`` significant digits (NaN as an empty cell), so the
+    file is reproducible and readable in the report.
+    """
+    import csv
+    import io as _io
+
+    if not rows:
+        raise ValueError("rows must not be empty")
+    columns = list(rows[0])
+
+    def cell(v: Any) -> str:
+        if isinstance(v, float):
+            return "" if math.isnan(v) else f"{v:.{digits}g}"
+        return str(v)
+
+    buf = _io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(columns)
+    for row in rows:
+        writer.writerow([cell(row[c]) for c in columns])
+    path, tmp = _atomic_target(path)
+    try:
+        tmp.write_text(buf.getvalue())
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path
 
 
 def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
@@ -335,3 +428,69 @@ def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
     """
     with xr.open_dataset(path, engine="netcdf4") as ds:
         return ds.load()
+
+
+_FIGURE_METADATA: dict[str, dict[str, None]] = {
+    # keys the backends would otherwise fill with version strings or the time
+    "png": {"Software": None},
+    "pdf": {"Creator": None, "Producer": None, "CreationDate": None, "ModDate": None},
+}
+
+
+def write_figure(fig: Any, path: str | os.PathLike[str]) -> Path:
+    """Save a matplotlib figure as PNG or PDF, atomically and reproducibly.
+
+    The format follows the suffix (``.png`` or ``.pdf``, any case). The
+    figure is rendered into a temporary file in the destination folder,
+    which then replaces ``path`` with :func:`os.replace`; on any failure the
+    temporary file is removed and ``path`` is left as it was. Parent folders
+    are created. Saving happens inside the contactlib style
+    (:func:`contactlib.figures.style_path`: 150 dpi, TrueType fonts in PDF),
+    and the metadata that would carry a matplotlib version or the time is
+    dropped (PNG ``Software``; PDF ``Creator``, ``Producer``,
+    ``CreationDate``, ``ModDate``), so the same figure gives byte-identical
+    files on every save, in every process.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        Typically from :mod:`contactlib.figures`.
+    path : str or os.PathLike
+        Destination file, ending in ``.png`` or ``.pdf``.
+
+    Returns
+    -------
+    pathlib.Path
+        The destination path.
+
+    Raises
+    ------
+    ValueError
+        If the suffix is neither ``.png`` nor ``.pdf``.
+    IsADirectoryError
+        If ``path`` is an existing directory.
+    """
+    import matplotlib.style
+
+    from contactlib.figures import style_path
+
+    path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in _FIGURE_METADATA:
+        raise ValueError(f"figure path must end in .png or .pdf, got {path.name!r}")
+    if path.is_dir():
+        raise IsADirectoryError(f"output path is a directory: {path}")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    tmp = Path(tmp_name)
+    try:
+        with os.fdopen(fd, "wb") as handle, matplotlib.style.context(style_path()):
+            fig.savefig(handle, format=fmt, metadata=dict(_FIGURE_METADATA[fmt]))
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path

@@ -37,19 +37,34 @@ from scipy import linalg
 from .elements import Mesh, uniform_mesh
 from .geometry import Geometry
 
-__all__ = ["PaperSolution", "solve_paper"]
+__all__ = ["PaperSolution", "solve_paper", "ring_operator", "collocation_points"]
+
+
+def ring_operator(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
+                  part: str) -> np.ndarray:
+    """Displacements (3, len(x), n) of unit step pressures (``part="normal"``)
+    or unit shear elements (``part="shear"``) on the rings, at the points x."""
+    if part == "normal":
+        kernel = geometry.pressure_kernel
+    elif part == "shear":
+        kernel = geometry.shear_kernel
+    else:
+        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+    xx = np.asarray(x, dtype=float)[:, None]
+    with np.errstate(invalid="ignore"):  # du/dx is log-infinite on ring edges (unused there)
+        return np.stack(kernel(xx, nodes[None, 1:])) - np.stack(kernel(xx, nodes[None, :-1]))
 
 
 def _ring_operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):
     """Displacements (3, len(x), n) of unit step pressures and unit shear elements."""
-    xx = np.asarray(x, dtype=float)[:, None]
-    with np.errstate(invalid="ignore"):  # du/dx is log-infinite on ring edges (unused there)
-        outer = np.stack(geometry.pressure_kernel(xx, nodes[None, 1:]))
-        inner = np.stack(geometry.pressure_kernel(xx, nodes[None, :-1]))
-        pr = outer - inner
-        outer = np.stack(geometry.shear_kernel(xx, nodes[None, 1:]))
-        inner = np.stack(geometry.shear_kernel(xx, nodes[None, :-1]))
-        return pr, outer - inner
+    return (ring_operator(geometry, nodes, x, "normal"),
+            ring_operator(geometry, nodes, x, "shear"))
+
+
+def collocation_points(n: int) -> np.ndarray:
+    """The points the scheme evaluates displacements at: 0, a/2n and the ring edges."""
+    r = np.linspace(0.0, 1.0, n + 1)
+    return np.concatenate([[0.0, 0.5 / n], r[1:]])
 
 
 @dataclass
@@ -109,7 +124,8 @@ class PaperSolution:
 
 
 def solve_paper(geometry: Geometry, m: int, n: int, *, coulomb: str = "resultant",
-                max_iter: int = 50, tol: float = 1e-12) -> PaperSolution:
+                max_iter: int = 50, tol: float = 1e-12,
+                ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> PaperSolution:
     """Solve the paper's equations for stick ratio m/n.
 
     Parameters
@@ -121,19 +137,28 @@ def solve_paper(geometry: Geometry, m: int, n: int, *, coulomb: str = "resultant
         Number of rings.
     coulomb : {"resultant", "coefficient"}
         Reading of Eq. 11 (see the module docstring).
+    ops : (P, S), optional
+        Precomputed ``ring_operator(geometry, nodes, collocation_points(n),
+        part)`` for "normal" and "shear" (S may be None when m = 0).
     """
     mesh = uniform_mesh(n, m)
     r = mesh.nodes
-    pts = np.concatenate([[0.0, 0.5 / n], r[1:]])
-    pr, sh = _ring_operators(geometry, r, pts)
+    pts = collocation_points(n)
+    if ops is None:
+        pr, sh = _ring_operators(geometry, r, pts)
+    else:
+        pr, sh = ops
+        want = (3, n + 2, n)
+        if np.shape(pr) != want or (m > 0 and (sh is None or np.shape(sh) != want)):
+            raise ValueError(f"precomputed ring operators must have shape {want}")
     w_p = pr[0][2:] - pr[0][0]
-    w_q = sh[0][2:] - sh[0][0]
     rhs9 = -0.5 * r[1:] ** 2  # w positive into the body: w_i - w_0 = -r_i^2 / (2R)
     if m == 0:
         p = linalg.solve(w_p, rhs9)
         res = np.linalg.norm(w_p @ p - rhs9) / np.linalg.norm(rhs9)
         return PaperSolution(geometry, mesh, p, np.zeros(n), 0.0, True, float(res), 1)
 
+    w_q = sh[0][2:] - sh[0][0]
     u_p, u_q = pr[1], sh[1]
     # adherence rows: i = 2..m (Eq. 10) and i = 1/2
     idx = np.arange(2, m + 1) + 1  # row of r_i in pts is i + 1

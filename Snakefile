@@ -1,0 +1,34 @@
+# contactlib workflow: scenes -> influence matrices -> solutions -> checks, energy,
+# profiles -> one dataset a scene -> the paper's figures, a key-numbers table and
+# an HTML report (`snakemake --report results/report.html`).
+#
+#   snakemake --cores 2                       everything the config asks for
+#   snakemake --cores 2 --configfile my.yaml  with your own scenes (merged)
+#   snakemake -n                              what would run
+#
+# Layout, interface and habits: README.md ("Workflow") and DESIGN.md sections 1, 4.
+
+from snakemake.utils import min_version
+
+min_version("9.0")
+
+
+configfile: "config/config.yaml"
+
+
+report: "workflow/report/workflow.rst"
+
+
+include: "workflow/rules/common.smk"
+include: "workflow/rules/influence.smk"
+include: "workflow/rules/solve.smk"
+include: "workflow/rules/check.smk"
+include: "workflow/rules/energy.smk"
+include: "workflow/rules/assemble.smk"
+include: "workflow/rules/figures.smk"
+
+
+rule all:
+    input:
+        all_targets(),
+    default_target: True

@@ -1,0 +1,124 @@
+"""Scene-level stages of the workflow: arrays in, arrays (or a dataset) out.
+
+Each function here is what one Snakemake rule runs (the scripts in
+``workflow/scripts`` only read inputs and write outputs through
+:mod:`contactlib.io`). The numerics are those of :mod:`contactlib.stages`,
+which :func:`contactlib.solve` runs in one process, so a scene's dataset holds
+the same numbers as ``contactlib sweep`` with the same settings.
+
+Examples
+--------
+>>> from contactlib.scene import parse_scene
+>>> s = parse_scene("demo", {"geometry": "sphere", "nu": 0.3, "n": 32,
+...                          "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]})
+>>> parts = {p: influence(s.influence_spec(), p) for p in s.parts}
+>>> records = solve(s, parts["normal"], parts["shear"])
+>>> ds = assemble(s, records, checks=check(records))
+>>> sorted(v for v in ds.data_vars if v in ("pressure", "frictional_work", "consistent"))
+['consistent']
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Mapping, Sequence
+
+import numpy as np
+import xarray as xr
+
+from . import stages
+from .api import output_grid
+from .geometry import Geometry
+from .io import to_dataset
+from .scene import Scene
+
+__all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
+
+_FLAG_FIELDS = ("stick_admissible", "slip_direction_ok", "consistent")
+_VIOLATIONS = ("stick_violation", "slip_violation")
+
+
+def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
+    """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
+    geom = Geometry(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]))
+    return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
+
+
+def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
+          shear: dict[str, np.ndarray] | None = None,
+          progress: Callable[[int, int], None] | None = None) -> list[dict]:
+    """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
+    return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
+                              normal=normal, shear=shear, samples=scene.needs_samples,
+                              progress=progress)
+
+
+def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
+    """Consistency flags and violation measures, one value a case."""
+    flags = [stages.check_case(r) for r in records]
+    out = {name: np.array([f[name] for f in flags], dtype=bool) for name in _FLAG_FIELDS}
+    out.update({name: np.array([f[name] for f in flags], dtype=float) for name in _VIOLATIONS})
+    return out
+
+
+def energy(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
+    """Frictional work of the loading half-cycle, one value a case (DESIGN.md scaling)."""
+    geom = scene.geometry_object
+    return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
+
+
+def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
+    """Tangential displacement u R/a^2 on the output grid, shape (cases, xi)."""
+    geom, xi = scene.geometry_object, output_grid()
+    rows = [stages.profiles(geom, r, xi, stresses=False)["tangential_displacement"]
+            for r in records]
+    return {"xi": xi, "tangential_displacement": np.array(rows).reshape(len(records), xi.size)}
+
+
+def assemble(scene: Scene, records: Sequence[dict], *,
+             checks: Mapping[str, np.ndarray] | None = None,
+             work: Mapping[str, np.ndarray] | None = None,
+             profiles: Mapping[str, np.ndarray] | None = None) -> xr.Dataset:
+    """The scene's dataset: DESIGN.md variables for the outputs it asked for.
+
+    Always: ``friction_coefficient``, ``load_ratio`` and the solver status.
+    ``k_curve`` adds the consistency flags (needs ``checks``), ``stresses``
+    the pressure and shear, ``displacements`` the tangential displacement
+    (needs ``profiles``), ``energy`` the frictional work (needs ``work``).
+    Global attributes add ``scene`` and ``scene_config_hash`` (provenance).
+    """
+    geom, xi = scene.geometry_object, output_grid()
+    want = set(scene.outputs)
+    for name, given, needed in (("checks", checks, "k_curve"), ("work", work, "energy"),
+                                ("profiles", profiles, "displacements")):
+        if needed in want and given is None:
+            raise ValueError(f"scene {scene.name!r} asks for {needed}: {name} must be given")
+    if profiles is not None and not np.array_equal(profiles["xi"], xi):
+        raise ValueError("profiles were computed on another output grid")
+    sols = []
+    for i, rec in enumerate(records):
+        flags = None
+        if checks is not None:
+            flags = {name: checks[name][i] for name in _FLAG_FIELDS + _VIOLATIONS}
+        prof = stages.profiles(geom, rec, xi, displacements=False) if "stresses" in want else {}
+        if "displacements" in want:
+            prof["tangential_displacement"] = profiles["tangential_displacement"][i]
+        sols.append(stages.to_solution(
+            geom, scene.method, scene.n, rec, xi, flags=flags,
+            work=float(work["frictional_work"][i]) if "energy" in want else float("nan"),
+            profile=prof))
+    ds = to_dataset(sols)
+    drop = []
+    if "k_curve" not in want:
+        drop += list(_FLAG_FIELDS)
+    if "energy" not in want:
+        drop.append("frictional_work")
+    ds = ds.drop_vars(drop)
+    if "k_curve" in want:
+        for name in _VIOLATIONS:
+            ds[name] = ("stick_ratio", np.asarray(checks[name], dtype=float),
+                        {"units": "1", "long_name": name.replace("_", " "),
+                         "comment": "relative measure behind the flag; <= 1e-4 passes"})
+    ds.attrs["scene"] = scene.name
+    ds.attrs["scene_config_hash"] = scene.hash
+    ds.attrs["outputs"] = " ".join(scene.outputs)
+    return ds

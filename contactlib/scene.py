@@ -1,0 +1,179 @@
+"""Scenes: the named cases of a workflow configuration, validated and keyed.
+
+A scene (``config/config.yaml``, under ``scenes:``) names a geometry, a
+material, a method and resolution, the stick ratios to solve and the outputs
+it needs. This module turns one scene's mapping into a :class:`Scene`,
+validated with the library's own rules (the JSON schema of the workflow
+checks types and ranges first), and derives what the workflow needs from it:
+which influence parts to build and under which shared key, which stages to
+run, and a hash of the scene's configuration for provenance.
+
+It imports neither Snakemake nor anything that touches the disk.
+
+Examples
+--------
+>>> s = parse_scene("demo", {"geometry": "sphere", "nu": 0.3, "n": 32,
+...                          "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]})
+>>> s.parts, s.needs_samples, s.stages
+(('normal', 'shear'), True, ('check',))
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from . import api
+from .geometry import Geometry
+from .stages import OUTPUTS, _paper_m, parts_needed
+
+__all__ = ["Scene", "parse_scene", "parse_scenes", "config_hash"]
+
+_KEYS = ("geometry", "nu", "method", "n", "stick_ratios", "slab_ratio", "outputs")
+
+
+def config_hash(raw: Mapping[str, Any]) -> str:
+    """A short SHA-256 of a scene's mapping (canonical JSON, sorted keys)."""
+    text = json.dumps(raw, sort_keys=True, separators=(",", ":"), default=str)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def _ratio_digest(values: tuple[float, ...]) -> str:
+    text = ",".join(repr(float(v)) for v in sorted(set(values)))
+    return hashlib.sha256(text.encode()).hexdigest()[:10]
+
+
+@dataclass(frozen=True)
+class Scene:
+    """One validated scene.
+
+    Attributes
+    ----------
+    name : str
+    geometry : {"sphere", "cylinder"}
+    nu : float
+    method : {"default", "paper", "paper-literal"}
+    n : int
+        Elements across the half-contact.
+    stick_ratios : tuple of float
+        c/a values, in the configured order (``all`` expanded to m/n).
+    slab_ratio : float
+        a/h of the slab (cylinder; 0 = half-plane, and always 0 for a sphere).
+    outputs : tuple of str
+        Subset of ``k_curve``, ``stresses``, ``displacements``, ``energy``.
+    hash : str
+        :func:`config_hash` of the scene's mapping as configured.
+    """
+
+    name: str
+    geometry: str
+    nu: float
+    method: str
+    n: int
+    stick_ratios: tuple[float, ...]
+    slab_ratio: float
+    outputs: tuple[str, ...]
+    hash: str
+
+    @property
+    def geometry_object(self) -> Geometry:
+        return Geometry(self.geometry, self.nu, self.slab_ratio)
+
+    @property
+    def parts(self) -> tuple[str, ...]:
+        """Influence parts needed: no shear matrices for a frictionless (or nu = 0.5) scene."""
+        return parts_needed(self.geometry_object, self.stick_ratios)
+
+    @property
+    def influence_key(self) -> str:
+        """Name of the influence set this scene uses, shared by every scene with equal key.
+
+        The paper's rings do not depend on c/a; the default method's meshes
+        do (a node at c), so its key carries a digest of the stick ratios.
+        """
+        key = f"{self.geometry}-nu{self.nu!r}-{self.method}-n{self.n}"
+        if self.geometry == "cylinder":
+            key += f"-h{self.slab_ratio!r}"
+        if self.method == "default":
+            key += "-c" + _ratio_digest(self.solved_ratios)
+        return key
+
+    @property
+    def solved_ratios(self) -> tuple[float, ...]:
+        """The stick ratios whose meshes are needed (nu = 0.5 reduces all to 0)."""
+        if "shear" not in self.parts and self.geometry_object.nu == 0.5:
+            return (0.0,)
+        return tuple(sorted(set(self.stick_ratios)))
+
+    @property
+    def needs_samples(self) -> bool:
+        """Whether the solve stage must store slip/stick samples (checks or energy)."""
+        return "k_curve" in self.outputs or "energy" in self.outputs
+
+    @property
+    def stages(self) -> tuple[str, ...]:
+        """Post-processing stages beyond solve and assemble, in DAG order."""
+        out = []
+        if "k_curve" in self.outputs:
+            out.append("check")
+        if "energy" in self.outputs:
+            out.append("energy")
+        if "displacements" in self.outputs:
+            out.append("displacements")
+        return tuple(out)
+
+    def influence_spec(self) -> dict[str, Any]:
+        """What the influence stage needs (equal for every scene with the same key)."""
+        return {"geometry": self.geometry, "nu": self.nu, "method": self.method, "n": self.n,
+                "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios)}
+
+
+def parse_scene(name: str, raw: Mapping[str, Any]) -> Scene:
+    """Validate one scene mapping with the library's rules.
+
+    Raises
+    ------
+    ValueError
+        Naming the scene and the key, e.g. ``scenes.bad.nu: nu must be in
+        (-1.0, 0.5], got 0.7``.
+    """
+    def fail(key: str, message: str) -> ValueError:
+        return ValueError(f"scenes.{name}.{key}: {message}")
+
+    if not isinstance(raw, Mapping):
+        raise ValueError(f"scenes.{name}: must be a mapping, got {raw!r}")
+    unknown = sorted(set(raw) - set(_KEYS))
+    if unknown:
+        raise fail(unknown[0], f"unknown key (allowed: {', '.join(_KEYS)})")
+    for key in ("geometry", "nu", "stick_ratios"):
+        if key not in raw:
+            raise fail(key, "is required")
+    method = raw.get("method", "default")
+    try:
+        geom, n, method = api._validate_common(raw["geometry"], raw["nu"], raw.get("n"), method,
+                                               raw.get("slab_ratio", 0.0))
+    except ValueError as exc:
+        key = str(exc).split(" ", 1)[0]
+        raise fail(key if key in _KEYS else "scene", str(exc)) from None
+    try:
+        ratios = api._parse_ratios(raw["stick_ratios"], n)
+        if method != "default":
+            for c in ratios:
+                _paper_m(c, n)
+    except ValueError as exc:
+        raise fail("stick_ratios", str(exc)) from None
+    outputs = raw.get("outputs", list(OUTPUTS))
+    if isinstance(outputs, str) or not all(o in OUTPUTS for o in outputs) or not outputs:
+        raise fail("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
+    return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
+                 stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,
+                 outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw))
+
+
+def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, Scene]:
+    """Validate every scene of a configuration (see :func:`parse_scene`)."""
+    if not isinstance(scenes, Mapping) or not scenes:
+        raise ValueError("scenes: must be a non-empty mapping of scene names to scenes")
+    return {str(name): parse_scene(str(name), raw) for name, raw in scenes.items()}

@@ -1,0 +1,302 @@
+"""The computation in stages: influence -> solve -> check / energy / profiles.
+
+Each stage is a pure function of numpy arrays and plain values, so the
+Snakemake workflow can run one stage a rule and hand the arrays on through
+:mod:`contactlib.io`, while :func:`contactlib.solve` runs the same functions in
+one process: both give the same numbers.
+
+* :func:`influence` -- the collocation operators ("influence matrices") of one
+  part, ``"normal"`` (of the pressures) or ``"shear"`` (of the shears). The
+  paper's rings do not depend on c/a, so one set serves every m/n. The default
+  method puts a node at c, so its operators depend on c: the set holds one
+  mesh per distinct stick ratio.
+* :func:`solve_cases` -- Newton per stick ratio, giving one *case record*
+  each: a flat ``dict`` of the nodal solution, its status and, when asked,
+  the samples the checks and the energy need (slip rate at Gauss points of
+  the slip zone, tractions at stick-zone points).
+* :func:`check_case`, :func:`work_case`, :func:`profiles` -- the consistency
+  flags, the frictional work, and the profiles on the output grid.
+* :func:`to_solution` -- a :class:`~contactlib.result.Solution` from the pieces.
+
+Units inside: E* = a = R = 1 (see :mod:`contactlib.default_method`).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from . import checks, energy
+from .default_method import DiscreteSolution, operator_part, solve_default
+from .elements import Mesh, graded_mesh, uniform_mesh
+from .geometry import Geometry
+from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
+from .result import Solution
+from .theory import beta_of_nu
+
+__all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "check_case",
+           "work_case", "profiles", "to_solution", "pack", "unpack", "decoupled_message"]
+
+PARTS = ("normal", "shear")
+OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
+
+Record = dict[str, Any]
+
+
+def decoupled_message() -> str:
+    """The note attached to every nu = 0.5 case."""
+    return ("nu = 0.5: the normal and tangential problems decouple; no shear arises (q = 0) "
+            "and every stick ratio is consistent with any k >= 0")
+
+
+def _decoupled(geometry: Geometry) -> bool:
+    return beta_of_nu(geometry.nu) == 0.0
+
+
+def parts_needed(geometry: Geometry, stick_ratios: Sequence[float]) -> tuple[str, ...]:
+    """The influence parts a set of cases needs: no shear when frictionless or nu = 0.5."""
+    if _decoupled(geometry) or all(float(c) == 0.0 for c in stick_ratios):
+        return ("normal",)
+    return PARTS
+
+
+def _solved_ratio(geometry: Geometry, c: float) -> float:
+    """The stick ratio actually solved: nu = 0.5 reduces every case to Hertz (c = 0)."""
+    return 0.0 if _decoupled(geometry) else float(c)
+
+
+def _paper_m(c: float, n: int) -> int:
+    m = int(round(c * n))
+    if abs(m - c * n) > 1e-9 * n:
+        raise ValueError(f"stick_ratio must be a multiple of 1/n = 1/{n} for the paper method, "
+                         f"got {c!r}")
+    return m
+
+
+# ----------------------------------------------------------------------------- influence
+def influence(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[float],
+              part: str) -> dict[str, np.ndarray]:
+    """Collocation operators of one part for a set of cases.
+
+    Parameters
+    ----------
+    geometry : Geometry
+    method : {"default", "paper", "paper-literal"}
+    n : int
+        Elements across the half-contact.
+    stick_ratios : sequence of float
+        The c/a of the cases (the default method needs one mesh per value).
+    part : {"normal", "shear"}
+
+    Returns
+    -------
+    dict
+        Default method: ``stick_ratios`` (K,), ``nodes`` (K, n+1) and ``ops``
+        (K, 3, n+1, n+1), the w, u, du/dx at the nodes of nodal tractions.
+        Paper methods: ``nodes`` (n+1,) and ``ops`` (3, n+2, n) at
+        :func:`~contactlib.paper_method.collocation_points`. Memory:
+        24 (n+1)^2 bytes a mesh and part (1.6 MB at n = 256, 25 MB at 1024).
+    """
+    if part not in PARTS:
+        raise ValueError(f"part must be one of {', '.join(PARTS)}, got {part!r}")
+    if method == "default":
+        cs = np.unique([_solved_ratio(geometry, c) for c in stick_ratios])
+        meshes = [graded_mesh(n, c).nodes for c in cs]
+        ops = np.stack([operator_part(geometry, r, r, part) for r in meshes])
+        return {"stick_ratios": cs, "nodes": np.stack(meshes), "ops": ops}
+    r = uniform_mesh(n, 0).nodes
+    return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
+
+
+def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
+            nodes: np.ndarray) -> np.ndarray | None:
+    """The operator of one case from an influence set (None when not given)."""
+    if table is None:
+        return None
+    if method != "default":
+        if not np.array_equal(table["nodes"], nodes):
+            raise ValueError("influence matrices were built for another mesh")
+        return table["ops"]
+    hit = np.flatnonzero(table["stick_ratios"] == c)
+    if hit.size == 0 or not np.array_equal(table["nodes"][hit[0]], nodes):
+        raise ValueError(f"influence matrices hold no mesh for stick ratio {c!r}")
+    return table["ops"][hit[0]]
+
+
+# ----------------------------------------------------------------------------- solve
+def _discrete(geometry: Geometry, method: str, n: int, c: float, normal, shear):
+    if method == "default":
+        mesh = graded_mesh(n, c)
+        pw = _lookup(normal, method, c, mesh.nodes)
+        qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
+        ops = None if pw is None else (pw, qw)
+        return solve_default(geometry, c, n, ops=ops)
+    m = _paper_m(c, n)
+    r = uniform_mesh(n, m).nodes
+    pr = _lookup(normal, method, c, r)
+    sh = _lookup(shear, method, c, r) if m > 0 else None
+    ops = None if pr is None else (pr, sh)
+    coulomb = "coefficient" if method == "paper-literal" else "resultant"
+    return solve_paper(geometry, m, n, coulomb=coulomb, ops=ops)
+
+
+def _record(geometry: Geometry, d: DiscreteSolution | PaperSolution, samples: bool) -> Record:
+    nodes, m = d.mesh.nodes, d.mesh.stick_index
+    paper = isinstance(d, PaperSolution)
+    rec: Record = {
+        "kind": "paper" if paper else "default",
+        "stick_ratio": float(nodes[m]), "nodes": np.asarray(nodes, dtype=float),
+        "stick_index": int(m), "p": np.asarray(d.p, dtype=float),
+        "traction": np.asarray(d.qc if paper else d.phi, dtype=float),
+        "k": float(d.k), "delta": float(getattr(d, "delta", np.nan)),
+        "converged": bool(d.converged), "residual_norm": float(d.residual_norm),
+        "iterations": int(d.iterations), "message": str(d.message or ""),
+        "load": float(d.load() if paper else geometry.load(nodes, d.p)),
+    }
+    if not paper:
+        rec["nodal_u"] = np.asarray(d.nodal_u, dtype=float)
+        rec["nodal_du"] = np.asarray(d.nodal_du, dtype=float)
+    if samples:
+        if 0 < m < d.mesh.n:
+            xs, ws, q_slip, s_slip = d.slip_samples()
+        else:
+            xs = ws = q_slip = s_slip = np.empty(0)
+        # stick-zone points: element midpoints (and nodes for continuous tractions)
+        mids = 0.5 * (nodes[:m] + nodes[1:m + 1])
+        pts = mids if paper else np.concatenate([nodes[1:m], mids])
+        rec.update(slip_x=xs, slip_w=ws, slip_q=q_slip, slip_s=s_slip,
+                   stick_q=d.shear(pts), stick_p=d.pressure(pts))
+    return rec
+
+
+def _rebuild(geometry: Geometry, rec: Record) -> DiscreteSolution | PaperSolution:
+    mesh = Mesh(np.asarray(rec["nodes"], dtype=float), int(rec["stick_index"]))
+    common = dict(k=float(rec["k"]), converged=bool(rec["converged"]),
+                  residual_norm=float(rec["residual_norm"]),
+                  iterations=int(rec["iterations"]), message=str(rec["message"]))
+    if rec["kind"] == "paper":
+        return PaperSolution(geometry, mesh, rec["p"], rec["traction"], **common)
+    return DiscreteSolution(geometry, mesh, rec["p"], rec["traction"], float(rec["delta"]),
+                            nodal_u=rec.get("nodal_u"), nodal_du=rec.get("nodal_du"), **common)
+
+
+def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[float], *,
+                normal: dict[str, np.ndarray] | None = None,
+                shear: dict[str, np.ndarray] | None = None, samples: bool = True,
+                progress: Callable[[int, int], None] | None = None) -> list[Record]:
+    """Solve every stick ratio; one case record each, in the given order.
+
+    Parameters
+    ----------
+    geometry : Geometry
+    method : {"default", "paper", "paper-literal"}
+    n : int
+    stick_ratios : sequence of float
+        c/a values in [0, 1] (multiples of 1/n for the paper methods).
+    normal, shear : dict, optional
+        Influence sets from :func:`influence` (computed on the fly when not
+        given).
+    samples : bool
+        Also store the samples :func:`check_case` and :func:`work_case` need.
+    progress : callable, optional
+        ``progress(i, total)`` after each case.
+
+    Returns
+    -------
+    list of dict
+        Case records (see the module docstring). A case that fails to
+        converge is kept, with ``converged`` False and a message.
+    """
+    out = []
+    for i, c in enumerate(stick_ratios):
+        c = float(c)
+        solved = _solved_ratio(geometry, c)
+        rec = _record(geometry, _discrete(geometry, method, n, solved, normal, shear), samples)
+        if solved != c:  # nu = 0.5: Hertz for every stick ratio, k undetermined
+            rec["stick_ratio"] = c
+            rec["k"] = np.inf if c == 1.0 else 0.0
+            rec["message"] = decoupled_message()
+        out.append(rec)
+        if progress is not None:
+            progress(i + 1, len(stick_ratios))
+    return out
+
+
+# ----------------------------------------------------------------------------- post-processing
+def check_case(rec: Record) -> dict[str, Any]:
+    """Consistency flags of a case (see :mod:`contactlib.checks`)."""
+    return checks.flags(rec["stick_q"], rec["stick_p"], rec["k"], rec["slip_q"], rec["slip_s"])
+
+
+def work_case(geometry: Geometry, rec: Record) -> float:
+    """Frictional work of the loading half-cycle, scaled as in DESIGN.md (0 without slip)."""
+    if rec["slip_x"].size == 0:
+        return 0.0  # frictionless (k = 0), full adhesion, or nu = 0.5: nothing slips
+    return energy.frictional_work(rec["slip_x"], rec["slip_w"], rec["slip_q"], rec["slip_s"],
+                                  geometry.work_factor, geometry.work_weight_power)
+
+
+def profiles(geometry: Geometry, rec: Record, xi: np.ndarray, *, stresses: bool = True,
+             displacements: bool = True) -> dict[str, np.ndarray]:
+    """Profiles on ``xi`` in the DESIGN.md scalings (p/p0, q/p0, u R/a^2).
+
+    The tractions are interpolated from the nodal values; the displacement
+    needs the kernels at every ``xi`` (the costly part).
+    """
+    d = _rebuild(geometry, rec)
+    out: dict[str, np.ndarray] = {}
+    if stresses:
+        out["pressure"] = d.pressure(xi) / geometry.p0
+        out["shear"] = d.shear(xi) / geometry.p0
+    if displacements:
+        out["tangential_displacement"] = d.displacements(xi)[1]
+    return out
+
+
+def to_solution(geometry: Geometry, method: str, n: int, rec: Record, xi: np.ndarray, *,
+                flags: dict[str, Any] | None = None, work: float = float("nan"),
+                profile: dict[str, np.ndarray] | None = None,
+                message: str = "") -> Solution:
+    """Assemble a :class:`Solution`; profiles not computed are left as None."""
+    profile = profile or {}
+    fl = flags or {}
+    msg = "; ".join(x for x in (message, rec["message"]) if x)
+    return Solution(
+        geometry=geometry.name, nu=geometry.nu, method=method, n=n,
+        slab_ratio=geometry.slab_ratio, stick_ratio=float(rec["stick_ratio"]),
+        friction_coefficient=float(rec["k"]), xi=xi,
+        pressure=profile.get("pressure"), shear=profile.get("shear"),
+        tangential_displacement=profile.get("tangential_displacement"),
+        load_ratio=float(rec["load"]) / geometry.hertz_load, frictional_work=float(work),
+        slip_direction_ok=bool(fl.get("slip_direction_ok", True)),
+        stick_admissible=bool(fl.get("stick_admissible", True)),
+        consistent=bool(fl.get("consistent", True)),
+        converged=bool(rec["converged"]), residual_norm=float(rec["residual_norm"]),
+        iterations=int(rec["iterations"]), message=msg,
+        extra={"stick_violation": fl.get("stick_violation", float("nan")),
+               "slip_violation": fl.get("slip_violation", float("nan")),
+               "indentation": float(rec["delta"])})
+
+
+# ----------------------------------------------------------------------------- (de)serialisation
+def pack(records: Sequence[Record]) -> dict[str, np.ndarray]:
+    """Flatten case records into named arrays (``"<i>/<field>"``) for :mod:`contactlib.io`."""
+    out: dict[str, np.ndarray] = {"count": np.array(len(records))}
+    for i, rec in enumerate(records):
+        for key, value in rec.items():
+            out[f"{i}/{key}"] = np.asarray(value)
+    return out
+
+
+def unpack(arrays: dict[str, np.ndarray]) -> list[Record]:
+    """Inverse of :func:`pack` (0-d arrays come back as Python scalars)."""
+    count = int(arrays["count"])
+    records: list[Record] = [{} for _ in range(count)]
+    for name, value in arrays.items():
+        if name == "count":
+            continue
+        i, key = name.split("/", 1)
+        value = np.asarray(value)
+        records[int(i)][key] = value.item() if value.ndim == 0 else value
+    return records

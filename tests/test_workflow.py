@@ -1,0 +1,255 @@
+"""The Snakemake workflow: DAG per scene, schema rejections, a tiny end-to-end run, lint.
+
+Each test copies the workflow (Snakefile, workflow/, config/) into a temporary
+folder, writes its own config, and runs snakemake there as a subprocess.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+import contactlib
+from contactlib.io import read_dataset
+
+REPO = Path(__file__).resolve().parents[1]
+SNAKEMAKE = [sys.executable, "-m", "snakemake"]
+
+pytestmark = pytest.mark.skipif(shutil.which("snakemake") is None and
+                                subprocess.run(SNAKEMAKE + ["--version"],
+                                               capture_output=True).returncode != 0,
+                                reason="snakemake is not installed")
+
+
+def make_workdir(tmp: Path, config: dict | None = None) -> Path:
+    """A copy of the workflow in tmp, with the given config (default: the repo's)."""
+    shutil.copy(REPO / "Snakefile", tmp / "Snakefile")
+    shutil.copytree(REPO / "workflow", tmp / "workflow",
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(REPO / "config", tmp / "config")
+    if config is not None:
+        (tmp / "config" / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+    return tmp
+
+
+def run(workdir: Path, *args: str, check: bool = True) -> subprocess.CompletedProcess:
+    env = dict(os.environ, PYTHONHASHSEED="0")
+    proc = subprocess.run(SNAKEMAKE + ["--cores", "2", *args], cwd=workdir, env=env,
+                          capture_output=True, text=True, timeout=900)
+    if check and proc.returncode != 0:
+        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{proc.stdout}\n{proc.stderr}")
+    return proc
+
+
+def job_counts(workdir: Path, *args: str) -> dict[str, int]:
+    """Jobs a dry run would execute, by rule."""
+    out = run(workdir, "--dry-run", *args)
+    text = out.stdout + out.stderr
+    table = text[text.index("Job stats:"):]
+    counts = {}
+    for line in table.splitlines()[3:]:
+        parts = line.split()
+        if len(parts) != 2 or not parts[1].isdigit() or parts[0] == "total":
+            if parts and parts[0] == "total":
+                break
+            continue
+        counts[parts[0]] = int(parts[1])
+    return counts
+
+
+def nothing_to_do(workdir: Path) -> bool:
+    out = run(workdir, "--dry-run")
+    return "Nothing to be done" in out.stdout + out.stderr
+
+
+TINY = {
+    "scenes": {
+        "tiny-default": {"geometry": "sphere", "nu": 0.3, "method": "default", "n": 32,
+                         "stick_ratios": [0.0, 0.3, 0.6, 1.0],
+                         "outputs": ["k_curve", "stresses", "displacements", "energy"]},
+        "tiny-paper": {"geometry": "cylinder", "nu": 0.3, "method": "paper", "n": 8,
+                       "slab_ratio": 0.05, "stick_ratios": "all",
+                       "outputs": ["k_curve", "energy"]},
+    },
+    "figures": {"fig2": ["tiny-default", "tiny-paper"], "fig3": ["tiny-default"],
+                "fig4": ["tiny-default"], "fig5": ["tiny-default", "tiny-paper"]},
+}
+
+
+# ----------------------------------------------------------------------------- DAG
+def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
+    wd = make_workdir(tmp_path)
+    counts = job_counts(wd)
+    cfg = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    n_scenes = len(cfg["scenes"])
+    # every default scene has friction: a normal and a shear part per influence set
+    assert counts == {"influence": 2 * n_scenes, "solve": n_scenes, "check": n_scenes,
+                      "displacements": n_scenes, "energy": n_scenes, "assemble": n_scenes,
+                      "figure_fig2": 1, "figure_fig3": 1, "figure_fig4": 1, "figure_fig5": 1,
+                      "key_numbers": 1, "all": 1}
+
+
+def test_dag_builds_only_what_scenes_ask_for(tmp_path):
+    cfg = {"scenes": {
+        # frictionless: no shear matrices, no energy, no displacements
+        "hertz": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.0],
+                  "outputs": ["k_curve", "stresses"]},
+        # k-curve only: solve + check, nothing else
+        "curve": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.2, 0.5],
+                  "outputs": ["k_curve"]},
+        # the same influence set as "curve" (same geometry, nu, n, method, ratios)
+        "curve-again": {"geometry": "sphere", "nu": 0.3, "n": 32,
+                        "stick_ratios": [0.5, 0.2], "outputs": ["energy"]},
+        # two paper scenes with different m/n share one set (rings do not depend on c)
+        "paper-a": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": 8,
+                    "stick_ratios": [0.25], "outputs": ["stresses"]},
+        "paper-b": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": 8,
+                    "stick_ratios": "all", "outputs": ["displacements"]},
+    }, "figures": {}}
+    wd = make_workdir(tmp_path, cfg)
+    counts = job_counts(wd)
+    # influence: hertz normal; curve normal+shear (shared with curve-again);
+    # paper normal+shear (shared by paper-a and paper-b)
+    assert counts["influence"] == 1 + 2 + 2
+    assert counts["solve"] == 5 and counts["assemble"] == 5
+    assert counts["check"] == 2  # hertz, curve
+    assert counts["energy"] == 1  # curve-again
+    assert counts["displacements"] == 1  # paper-b
+    assert not any(rule.startswith("figure") for rule in counts)
+    dry = run(wd, "--dry-run").stdout
+    shear_jobs = re.findall(r"results/influence/([^/\s]+)/shear\.npz", dry)
+    assert not any(k.startswith("sphere-nu0.3-default-n32-c") and "hertz" in k
+                   for k in shear_jobs)
+    from contactlib.scene import parse_scenes
+    scenes = parse_scenes(cfg["scenes"])
+    assert f"{scenes['hertz'].influence_key}/shear.npz" not in dry
+    assert scenes["curve"].influence_key == scenes["curve-again"].influence_key
+    assert scenes["paper-a"].influence_key == scenes["paper-b"].influence_key
+
+
+# ----------------------------------------------------------------------------- schema
+@pytest.mark.parametrize("key, value", [
+    ("nu", 0.7), ("geometry", "cone"), ("n", 1), ("stick_ratios", [1.7]),
+    ("method", "fem"), ("slab_ratio", -1.0), ("outputs", ["pictures"]),
+])
+def test_bad_scene_is_refused_before_any_job_naming_the_key(tmp_path, key, value):
+    wd = make_workdir(tmp_path)
+    bad = {"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3]}
+    bad[key] = value
+    (tmp_path / "bad.yaml").write_text(yaml.safe_dump({"scenes": {"bad": bad}}))
+    proc = run(wd, "--configfile", "bad.yaml", check=False)
+    assert proc.returncode != 0
+    text = proc.stdout + proc.stderr
+    assert f"scenes.bad.{key}" in text, text
+    assert not (wd / "results").exists()  # nothing ran
+
+
+def test_library_rules_are_applied_after_the_schema(tmp_path):
+    wd = make_workdir(tmp_path)
+    cfg = {"scenes": {"bad": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": 16,
+                              "stick_ratios": [0.3]}}}
+    (tmp_path / "bad.yaml").write_text(yaml.safe_dump(cfg))
+    proc = run(wd, "--configfile", "bad.yaml", check=False)
+    assert proc.returncode != 0
+    assert "scenes.bad.stick_ratios" in proc.stderr + proc.stdout
+    assert "multiple of 1/n" in proc.stderr + proc.stdout
+
+
+def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
+    cfg = {"scenes": {"s": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.5],
+                            "outputs": ["k_curve"]}},
+           "figures": {"fig4": ["s"]}}
+    wd = make_workdir(tmp_path, cfg)
+    proc = run(wd, "--dry-run", check=False)
+    assert proc.returncode != 0
+    assert "figures.fig4" in proc.stderr + proc.stdout
+    assert "displacements" in proc.stderr + proc.stdout
+
+
+# ----------------------------------------------------------------------------- end to end
+@pytest.fixture(scope="module")
+def tiny_run(tmp_path_factory):
+    wd = make_workdir(tmp_path_factory.mktemp("tiny"), TINY)
+    run(wd)
+    return wd
+
+
+def test_tiny_run_datasets_match_the_library(tiny_run):
+    ds = read_dataset(tiny_run / "results/datasets/tiny-default.nc")
+    ref = contactlib.sweep("sphere", 0.3, [0.0, 0.3, 0.6, 1.0], n=32)
+    np.testing.assert_array_equal(ds["friction_coefficient"].values,
+                                  [s.friction_coefficient for s in ref])
+    np.testing.assert_allclose(ds["frictional_work"].values,
+                               [s.frictional_work for s in ref], rtol=1e-13, atol=0)
+    np.testing.assert_allclose(ds["tangential_displacement"].values,
+                               np.stack([s.tangential_displacement for s in ref]),
+                               rtol=1e-13, atol=1e-16)
+    assert ds["consistent"].values.all()
+    # physics, independently of the library: frictionless load is Hertz's
+    assert abs(float(ds["load_ratio"].values[0]) - 1.0) < 2e-3
+    assert ds.attrs["scene"] == "tiny-default"
+    assert ds.attrs["contactlib_version"] == contactlib.__version__
+    assert len(ds.attrs["scene_config_hash"]) == 16
+    for name in ds.variables:
+        assert "long_name" in ds[name].attrs and "units" in ds[name].attrs, name
+
+
+def test_tiny_run_datasets_hold_only_what_was_asked(tiny_run):
+    ds = read_dataset(tiny_run / "results/datasets/tiny-paper.nc")
+    assert "frictional_work" in ds and "consistent" in ds
+    assert "pressure" not in ds and "tangential_displacement" not in ds
+    np.testing.assert_allclose(ds["stick_ratio"].values, np.arange(1, 8) / 8)
+    assert not (tiny_run / "results/profiles/tiny-paper.npz").exists()
+
+
+def test_tiny_run_outputs_and_no_partial_files(tiny_run):
+    for fig in ("fig2", "fig3", "fig4", "fig5"):
+        for ext in ("png", "pdf"):
+            assert (tiny_run / f"results/figures/{fig}.{ext}").stat().st_size > 1000
+    assert (tiny_run / "results/tables/key-numbers.csv").read_text().startswith("scene,")
+    assert not list((tiny_run / "results").rglob("*.tmp"))
+
+
+def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_run, tmp_path):
+    wd = make_workdir(tmp_path, TINY)
+    shutil.copytree(tiny_run / "results", wd / "results")
+    shutil.copytree(tiny_run / ".snakemake", wd / ".snakemake")
+    assert nothing_to_do(wd)
+    cfg = yaml.safe_load((wd / "config/config.yaml").read_text())
+    cfg["scenes"]["tiny-paper"]["nu"] = 0.25
+    (wd / "config/config.yaml").write_text(yaml.safe_dump(cfg, sort_keys=False))
+    dry = run(wd, "--dry-run").stdout
+    jobs = re.findall(r"^rule (\w+):\n(?:.*\n)*?    output: (\S+)", dry, flags=re.M)
+    outputs = [o for _, o in jobs]
+    assert outputs, dry
+    # only tiny-paper's own jobs, plus the figures and table that read its dataset
+    for rule, out in jobs:
+        if rule.startswith("figure") or rule in ("key_numbers", "all"):
+            continue
+        assert "tiny-paper" in out or "cylinder-nu0.25-paper" in out, (rule, out)
+    assert not any("tiny-default" in o for o in outputs)
+    figs = {r for r, _ in jobs if r.startswith("figure")}
+    assert figs == {"figure_fig2", "figure_fig5"}  # the figures that draw tiny-paper
+
+
+def test_report_builds(tiny_run):
+    run(tiny_run, "--report", "results/report.html")
+    html = (tiny_run / "results/report.html").read_text(errors="replace")
+    assert len(html) > 10000
+
+
+# ----------------------------------------------------------------------------- lint
+def test_lint_is_clean(tmp_path):
+    wd = make_workdir(tmp_path)
+    proc = run(wd, "--lint", check=False)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, text
+    assert "Lints for" not in text, text

@@ -1,0 +1,23 @@
+# Consistency of every case: the slip opposes the shear at every slip point
+# (the paper's check) and abs(q) <= k p at every stick point (the one the paper
+# leaves out). Run for scenes that ask for the k-curve.
+
+
+rule check:
+    input:
+        solutions="results/solutions/{scene}.npz",
+    output:
+        "results/checks/{scene}.npz",
+    params:
+        scene=scene_params,
+        version=VERSION,
+    log:
+        "results/logs/check/{scene}.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    script:
+        "../scripts/check.py"

@@ -1,0 +1,152 @@
+# Validation, helpers and wildcard constraints shared by every rule.
+
+import json
+from pathlib import Path
+
+import jsonschema
+import yaml
+from snakemake.exceptions import WorkflowError
+from snakemake.utils import validate
+
+import contactlib
+from contactlib.scene import parse_scenes
+
+SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
+VERSION = contactlib.__version__
+FIGURES = ("fig2", "fig3", "fig4", "fig5")
+# outputs a figure draws from each of its scenes
+FIGURE_NEEDS = {
+    "fig2": ("k_curve",),
+    "fig3": ("stresses",),
+    "fig4": ("displacements",),
+    "fig5": ("k_curve", "energy"),
+}
+
+
+def _validate_config(cfg):
+    """Schema first (types and ranges), then the library's rules; one message per problem."""
+    with open(SCHEMA) as fh:
+        schema = yaml.safe_load(fh)
+    errors = sorted(
+        jsonschema.Draft202012Validator(schema).iter_errors(cfg), key=lambda e: list(e.absolute_path)
+    )
+    if errors:
+        lines = []
+        for e in errors:
+            where = ".".join(str(p) for p in e.absolute_path) or "(top level)"
+            if e.validator == "additionalProperties":
+                message = e.message
+            elif e.validator == "oneOf" and where.endswith("stick_ratios"):
+                message = f"must be 'all' or a list of numbers in [0, 1], got {e.instance!r}"
+            else:
+                message = e.message
+            lines.append(f"  {where}: {message}")
+        raise WorkflowError("invalid configuration:\n" + "\n".join(lines))
+    validate(cfg, str(SCHEMA))
+    try:
+        scenes = parse_scenes(cfg["scenes"])
+    except ValueError as exc:
+        raise WorkflowError(f"invalid configuration:\n  {exc}") from None
+    for fig, names in (cfg.get("figures") or {}).items():
+        for name in names:
+            if name not in scenes:
+                raise WorkflowError(
+                    f"invalid configuration:\n  figures.{fig}: no scene named {name!r}"
+                )
+            missing = [o for o in FIGURE_NEEDS[fig] if o not in scenes[name].outputs]
+            if missing:
+                raise WorkflowError(
+                    f"invalid configuration:\n  figures.{fig}: scene {name!r} does not ask "
+                    f"for {', '.join(missing)} (add it to scenes.{name}.outputs)"
+                )
+    return scenes
+
+
+SCENES = _validate_config(config)
+
+# influence sets, shared by every scene with the same key
+INFLUENCE = {}
+for _s in SCENES.values():
+    INFLUENCE.setdefault(_s.influence_key, _s.influence_spec())
+
+
+wildcard_constraints:
+    scene="|".join(sorted(SCENES)) or "NONE",
+    key="[^/]+",
+    part="normal|shear",
+
+
+# ----------------------------------------------------------------------------- helpers
+def scene_of(wildcards):
+    return SCENES[wildcards.scene]
+
+
+def scene_params(wildcards):
+    """Everything about a scene a rule's result depends on (so a change reruns it)."""
+    s = SCENES[wildcards.scene]
+    return {
+        "name": s.name,
+        "geometry": s.geometry,
+        "nu": s.nu,
+        "method": s.method,
+        "n": s.n,
+        "slab_ratio": s.slab_ratio,
+        "stick_ratios": list(s.stick_ratios),
+        "outputs": list(s.outputs),
+        "hash": s.hash,
+    }
+
+
+def influence_files(wildcards):
+    s = SCENES[wildcards.scene]
+    return {part: f"results/influence/{s.influence_key}/{part}.npz" for part in s.parts}
+
+
+def stage_files(wildcards):
+    """The post-processing results a scene's dataset is assembled from."""
+    s = SCENES[wildcards.scene]
+    files = {"solutions": f"results/solutions/{s.name}.npz"}
+    folders = {"check": "checks", "energy": "energy", "displacements": "profiles"}
+    for stage in s.stages:
+        files[stage] = f"results/{folders[stage]}/{s.name}.npz"
+    return files
+
+
+def figure_scenes(fig):
+    return list((config.get("figures") or {}).get(fig) or [])
+
+
+def all_targets():
+    out = [f"results/datasets/{name}.nc" for name in SCENES]
+    for fig in FIGURES:
+        if figure_scenes(fig):
+            out += [f"results/figures/{fig}.png", f"results/figures/{fig}.pdf"]
+    out.append("results/tables/key-numbers.csv")
+    return out
+
+
+def operator_mb(n, count=1):
+    """Memory of `count` dense operators (3 x (n+1)^2 float64) in MB."""
+    return count * 24 * (n + 1) ** 2 / 1e6
+
+
+def influence_spec(wildcards):
+    return INFLUENCE[wildcards.key]
+
+
+def mem_influence(wildcards, attempt):
+    spec = INFLUENCE[wildcards.key]
+    count = len(spec["stick_ratios"]) if spec["method"] == "default" else 1
+    return int(600 + 3 * operator_mb(spec["n"], count)) * attempt
+
+
+def mem_solve(wildcards, attempt):
+    s = SCENES[wildcards.scene]
+    return int(500 + 12 * operator_mb(s.n)) * attempt
+
+
+def runtime_solve(wildcards, attempt):
+    """Minutes: ~1 s a case at n = 256, growing like n^2 (kernels) to n^3 (LU)."""
+    s = SCENES[wildcards.scene]
+    per_case = max(1.0, (s.n / 256) ** 2.5)
+    return int(5 + len(s.stick_ratios) * per_case / 60 * 4) * attempt

@@ -1,0 +1,22 @@
+"""Rule assemble: the scene's dataset -> results/datasets/<scene>.nc (atomic)."""
+
+import sys
+
+sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
+
+from contactlib import io, pipeline, stages  # noqa: E402
+from contactlib.scene import parse_scene  # noqa: E402
+
+name = snakemake.params.scene["name"]  # noqa: F821
+scene = parse_scene(name, snakemake.config["scenes"][name])  # noqa: F821
+inp = snakemake.input  # noqa: F821
+records = stages.unpack(io.read_arrays(inp.solutions))
+ds = pipeline.assemble(
+    scene,
+    records,
+    checks=io.read_arrays(inp.check) if "check" in inp.keys() else None,
+    work=io.read_arrays(inp.energy) if "energy" in inp.keys() else None,
+    profiles=io.read_arrays(inp.displacements) if "displacements" in inp.keys() else None,
+)
+io.write_dataset(ds, snakemake.output[0])  # noqa: F821
+print(f"{name}: {ds.sizes['stick_ratio']} cases written", flush=True)

@@ -1,0 +1,10 @@
+"""Rule key_numbers: a table of key numbers of every scene (CSV, in the report)."""
+
+import sys
+
+sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
+
+from contactlib import io, summary  # noqa: E402
+
+table = summary.key_numbers([io.read_dataset(path) for path in snakemake.input])  # noqa: F821
+io.write_table(table, snakemake.output[0])  # noqa: F821

@@ -1,0 +1,23 @@
+"""Rule solve: Newton per stick ratio of a scene -> results/solutions/<scene>.npz."""
+
+import sys
+
+sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
+
+from contactlib import io, pipeline, stages  # noqa: E402
+from contactlib.scene import parse_scene  # noqa: E402
+
+name = snakemake.params.scene["name"]  # noqa: F821
+scene = parse_scene(name, snakemake.config["scenes"][name])  # noqa: F821
+parts = {name: io.read_arrays(path) for name, path in snakemake.input.items()}  # noqa: F821
+
+
+def progress(i, total):
+    print(f"{scene.name}: case {i}/{total} solved", flush=True)
+
+
+records = pipeline.solve(scene, parts.get("normal"), parts.get("shear"), progress)
+failed = [r["stick_ratio"] for r in records if not r["converged"]]
+if failed:
+    print(f"{scene.name}: not converged (kept, flagged): {failed}", flush=True)
+io.write_arrays(stages.pack(records), snakemake.output[0])  # noqa: F821

@@ -150,7 +150,7 @@ class _Case:
 
 
 def _fmt(x: float) -> str:
-    """Short number for labels: 0.3, 0.05, 1/16-style floats as %.3g."""
+    """Short number for labels (three significant digits)."""
     return f"{x:.3g}"
 
 
@@ -434,7 +434,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     >>> from contactlib.io import to_dataset
     >>> ds = to_dataset(contactlib.sweep("cylinder", 0.3, [0.2, 0.5, 1], n=32))
     >>> fig = fig2_friction([ds], k_max=0.8)
-    >>> fig.axes[0].get_ylim()[1]
+    >>> float(fig.axes[0].get_ylim()[1])
     0.8
     """
     if not (isinstance(k_max, Real) and math.isfinite(k_max) and k_max > 0):
@@ -658,7 +658,7 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
 
 def _case_label(case: _Case, i: int) -> str:
     """'c/a = 0.3, k = 0.117' plus [inconsistent, NOT CONVERGED] as they apply."""
-    label = f"c/a = {_fmt(float(case.stick[i]))}"
+    label = f"c/a = {float(case.stick[i]):.4g}"
     if "friction_coefficient" in case.ds:
         label += f", k = {_k_text(float(case.values('friction_coefficient')[i]))}"
     consistent = bool(case.flag("consistent")[i]) if "consistent" in case.ds else None
@@ -862,8 +862,11 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                                       label="c/a = 1/16, the paper's smallest m/n"))
             ax.set_xscale("log")
             ax.set_yscale("log")
-            ax.set_xlim(min(shown_x) / 1.6, 1.0)
-            ax.xaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+            x_low = min(shown_x) / 1.6
+            ax.set_xlim(x_low, 1.0)
+            # 1-2-5 labels over up to two decades, decades only beyond that
+            subs = (1.0, 2.0, 5.0) if x_low > 0.009 else (1.0,)
+            ax.xaxis.set_major_locator(LogLocator(base=10.0, subs=subs))
             ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
             ax.xaxis.set_minor_formatter(NullFormatter())
             if shown_v:

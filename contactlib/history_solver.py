@@ -52,7 +52,7 @@ element by element:
 * stick -> slip (in the direction that makes ``q`` the friction force) if
   ``|q_i| > k p_i``;
 * slip -> stick if the slip increment runs the wrong way (``q_i du_i > 0``);
-* an element touching down starts as stick.
+* an element touching down starts slipping against its current increment.
 
 The iteration stops when the sets reproduce themselves, i.e. every condition
 holds. A set that repeats (a cycle) switches the update to one change at a
@@ -217,8 +217,11 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
     gain = ~contact & (gap < -tol_g)
     new[lose] = SEPARATED
     viol[lose] = -p[lose] / p_scale
-    new[gain] = STICK if k > 0.0 else SLIP_INWARD
     viol[gain] = -gap[gain] / g_scale
+    if k == 0.0 or np.isinf(k):
+        new[gain] = SLIP_INWARD if k == 0.0 else STICK
+    else:  # touching down: slip against the current increment
+        new[gain] = np.where(du[gain] > 0.0, SLIP_OUTWARD, SLIP_INWARD)
 
     stay = contact & ~lose
     if k == 0.0:

@@ -32,7 +32,8 @@ import xarray as xr
 
 from contactlib.result import Solution
 
-__all__ = ["to_dataset", "write_dataset", "read_dataset", "write_arrays", "read_arrays", "write_figure"]
+__all__ = ["to_dataset", "write_dataset", "read_dataset", "write_arrays", "read_arrays",
+           "write_table", "write_figure"]
 
 CONVENTIONS = "CF-1.10"
 COMPRESSION: dict[str, Any] = {"zlib": True, "complevel": 4, "shuffle": True}
@@ -334,15 +335,20 @@ def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
 
 
 def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
-                digits: int = 6) -> Path:
-    """Write rows of a table (dicts with the same keys) as CSV, atomically.
+                digits: int = 6, title: str = "") -> Path:
+    """Write rows of a table (dicts with the same keys) as CSV or HTML, atomically.
 
-    Floats get ``digits`` significant digits (NaN as an empty cell), so the
-    file is reproducible and readable in the report.
+    The format follows the suffix: ``.csv``, or ``.html`` (a standalone page
+    with one table, for the workflow report). Floats get ``digits``
+    significant digits (NaN as an empty cell), so the file is reproducible.
     """
     import csv
+    import html
     import io as _io
 
+    suffix = Path(path).suffix
+    if suffix not in (".csv", ".html"):
+        raise ValueError(f"table path must end in .csv or .html, got {str(path)!r}")
     if not rows:
         raise ValueError("rows must not be empty")
     columns = list(rows[0])
@@ -353,13 +359,30 @@ def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
         return str(v)
 
     buf = _io.StringIO()
-    writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(columns)
-    for row in rows:
-        writer.writerow([cell(row[c]) for c in columns])
+    if suffix == ".csv":
+        writer = csv.writer(buf, lineterminator="\n")
+        writer.writerow(columns)
+        for row in rows:
+            writer.writerow([cell(row[c]) for c in columns])
+    else:
+        esc = html.escape
+        buf.write("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
+                  f"<title>{esc(title)}</title><style>"
+                  "body{font-family:sans-serif;font-size:13px}"
+                  "table{border-collapse:collapse}td,th{border:1px solid #bbb;"
+                  "padding:3px 6px;text-align:right}th{background:#eee}"
+                  "td:first-child{text-align:left}</style></head><body>\n")
+        if title:
+            buf.write(f"<h3>{esc(title)}</h3>\n")
+        buf.write("<table>\n<tr>" + "".join(f"<th>{esc(c)}</th>" for c in columns)
+                  + "</tr>\n")
+        for row in rows:
+            buf.write("<tr>" + "".join(f"<td>{esc(cell(row[c]))}</td>" for c in columns)
+                      + "</tr>\n")
+        buf.write("</table>\n</body></html>\n")
     path, tmp = _atomic_target(path)
     try:
-        tmp.write_text(buf.getvalue())
+        tmp.write_text(buf.getvalue(), encoding="utf-8")
         os.replace(tmp, path)
     except BaseException:
         tmp.unlink(missing_ok=True)
@@ -388,22 +411,11 @@ def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     pathlib.Path
         The destination path.
     """
-    path = Path(path)
-    if path.is_dir():
-        raise IsADirectoryError(f"output path is a directory: {path}")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(
-        prefix=f".{path.name}.", suffix=".tmp", dir=path.parent
-    )
-    os.close(fd)
-    tmp = Path(tmp_name)
+    path, tmp = _atomic_target(path)
     try:
         ds.to_netcdf(
             tmp, mode="w", format="NETCDF4", engine="netcdf4", encoding=_encoding(ds)
         )
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
     except BaseException:
         tmp.unlink(missing_ok=True)
@@ -449,7 +461,13 @@ def write_figure(fig: Any, path: str | os.PathLike[str]) -> Path:
     and the metadata that would carry a matplotlib version or the time is
     dropped (PNG ``Software``; PDF ``Creator``, ``Producer``,
     ``CreationDate``, ``ModDate``), so the same figure gives byte-identical
-    files on every save, in every process.
+    files on every save, in every process (checked with different
+    ``PYTHONHASHSEED`` values in ``tests/test_figures.py``). This needs a
+    layout that does not move between draws: the figures of
+    :mod:`contactlib.figures` settle and freeze theirs, while a figure with a
+    live constrained layout may shift by a fraction of a pixel per save.
+    ``fig`` is typed ``Any`` so that this module does not import matplotlib
+    until a figure is written.
 
     Parameters
     ----------
@@ -478,17 +496,10 @@ def write_figure(fig: Any, path: str | os.PathLike[str]) -> Path:
     fmt = path.suffix.lower().lstrip(".")
     if fmt not in _FIGURE_METADATA:
         raise ValueError(f"figure path must end in .png or .pdf, got {path.name!r}")
-    if path.is_dir():
-        raise IsADirectoryError(f"output path is a directory: {path}")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    tmp = Path(tmp_name)
+    path, tmp = _atomic_target(path)
     try:
-        with os.fdopen(fd, "wb") as handle, matplotlib.style.context(style_path()):
+        with open(tmp, "wb") as handle, matplotlib.style.context(style_path()):
             fig.savefig(handle, format=fmt, metadata=dict(_FIGURE_METADATA[fmt]))
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
     except BaseException:
         tmp.unlink(missing_ok=True)

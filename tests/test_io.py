@@ -187,3 +187,19 @@ def test_empty_and_mismatched_rejected() -> None:
     sols[2].xi = sols[2].xi * 0.5
     with pytest.raises(ValueError, match="xi"):
         io.to_dataset(sols)
+
+
+def test_write_table_csv_and_html(tmp_path):
+    from contactlib.io import write_table
+
+    rows = [{"scene": "a<b", "k": 0.123456789, "w": float("nan")}, {"scene": "c", "k": 2.0,
+                                                                     "w": 1e-7}]
+    csv_text = write_table(rows, tmp_path / "t.csv").read_text()
+    assert csv_text == "scene,k,w\na<b,0.123457,\nc,2,1e-07\n"
+    html_text = write_table(rows, tmp_path / "t.html", title="T").read_text()
+    assert "<td>a&lt;b</td>" in html_text and html_text.count("<tr>") == 3
+    with pytest.raises(ValueError, match=".csv or .html"):
+        write_table(rows, tmp_path / "t.txt")
+    with pytest.raises(ValueError, match="empty"):
+        write_table([], tmp_path / "u.csv")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv", "t.html"]

@@ -215,6 +215,7 @@ def test_tiny_run_outputs_and_no_partial_files(tiny_run):
         for ext in ("png", "pdf"):
             assert (tiny_run / f"results/figures/{fig}.{ext}").stat().st_size > 1000
     assert (tiny_run / "results/tables/key-numbers.csv").read_text().startswith("scene,")
+    assert "<table>" in (tiny_run / "results/tables/key-numbers.html").read_text()
     assert not list((tiny_run / "results").rglob("*.tmp"))
 
 

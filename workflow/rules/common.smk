@@ -121,7 +121,7 @@ def all_targets():
     for fig in FIGURES:
         if figure_scenes(fig):
             out += [f"results/figures/{fig}.png", f"results/figures/{fig}.pdf"]
-    out.append("results/tables/key-numbers.csv")
+    out += ["results/tables/key-numbers.csv", "results/tables/key-numbers.html"]
     return out
 
 

@@ -38,8 +38,9 @@ rule key_numbers:
     input:
         expand("results/datasets/{scene}.nc", scene=sorted(SCENES)),
     output:
-        report(
-            "results/tables/key-numbers.csv",
+        csv="results/tables/key-numbers.csv",
+        html=report(
+            "results/tables/key-numbers.html",
             caption="../report/key_numbers.rst",
             category="Key numbers",
         ),

@@ -1,4 +1,4 @@
-"""Rule key_numbers: a table of key numbers of every scene (CSV, in the report)."""
+"""Rule key_numbers: a table of key numbers of every scene (CSV, and HTML for the report)."""
 
 import sys
 
@@ -7,4 +7,5 @@ sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake o
 from contactlib import io, summary  # noqa: E402
 
 table = summary.key_numbers([io.read_dataset(path) for path in snakemake.input])  # noqa: F821
-io.write_table(table, snakemake.output[0])  # noqa: F821
+io.write_table(table, snakemake.output.csv)  # noqa: F821
+io.write_table(table, snakemake.output.html, title="contactlib: key numbers of every scene")  # noqa: F821,E501

@@ -26,6 +26,7 @@ include: "workflow/rules/check.smk"
 include: "workflow/rules/energy.smk"
 include: "workflow/rules/assemble.smk"
 include: "workflow/rules/figures.smk"
+include: "workflow/rules/convergence.smk"
 
 
 rule all:

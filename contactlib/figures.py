@@ -907,3 +907,55 @@ def _skip_note(x: np.ndarray, v: np.ndarray, converged: np.ndarray) -> str:
     if failed:
         text = text[:-1] + f"; {failed} not converged)"
     return text
+
+
+# ----------------------------------------------------------------------------- convergence
+def fig_convergence(datasets: xr.Dataset | Sequence[xr.Dataset],
+                    quantity: str = "friction_coefficient") -> Figure:
+    """Error against wall time (the speed-accuracy trade), one curve a study.
+
+    Parameters
+    ----------
+    datasets : Dataset or sequence of Dataset
+        From :func:`contactlib.convergence.study` (one geometry and method each).
+    quantity : str
+        Which error to draw (``friction_coefficient``, ``load_ratio``,
+        ``frictional_work`` or ``peak_shear``).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Left: median relative error over the stick ratios against the median
+        wall time of one solve, each point one n (labelled); log-log. Right:
+        the observed order of convergence of each study per stick ratio.
+    """
+    items = _as_list(datasets)
+    for i, ds in enumerate(items):
+        for name in ("error", "wall_time", "observed_order"):
+            if name not in ds:
+                raise ValueError(f"convergence dataset {i} has no variable {name!r}")
+    with _style():
+        fig = Figure(figsize=(9.0, 3.8))
+        ax, ax2 = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.6, 1.0]})
+        for i, ds in enumerate(items):
+            label = f"{ds.attrs['geometry']}, {ds.attrs['method']}"
+            err = ds["error"].sel(quantity=quantity).median("stick_ratio").values
+            t = ds["wall_time"].median("stick_ratio").values
+            ok = np.isfinite(err) & (err > 0)
+            color = _colors()[i % len(_colors())]
+            ax.loglog(t[ok], err[ok], marker=_MARKERS[i % len(_MARKERS)], color=color,
+                      label=label)
+            for n, x, y in zip(ds["n"].values[ok], t[ok], err[ok]):
+                ax.annotate(f"{n}", (x, y), textcoords="offset points", xytext=(3, 3),
+                            fontsize=7, color=color)
+            order = ds["observed_order"].sel(quantity=quantity)
+            ax2.plot(ds["stick_ratio"].values, order.values, marker=_MARKERS[i % len(_MARKERS)],
+                     color=color, label=label)
+        ax.set_xlabel("wall time of one solve (s)")
+        ax.set_ylabel(f"relative error in {quantity.replace('_', ' ')}")
+        ax.set_title("error against time (labels: n)")
+        ax.legend(fontsize=8)
+        ax2.set_xlabel("stick ratio c/a")
+        ax2.set_ylabel("observed order")
+        ax2.set_title("order of convergence")
+        return _finish(fig)

@@ -81,6 +81,15 @@ TINY = {
     },
     "figures": {"fig2": ["tiny-default", "tiny-paper"], "fig3": ["tiny-default"],
                 "fig4": ["tiny-default"], "fig5": ["tiny-default", "tiny-paper"]},
+    "convergence": {
+        "stick_ratios": [0.25, 0.5],
+        "studies": {
+            "s-default": {"geometry": "sphere", "nu": 0.3, "method": "default",
+                          "n": [16, 32, 64, 128]},
+            "s-paper": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": [8, 16, 32],
+                        "reference": "s-default"},
+        },
+    },
 }
 
 
@@ -239,6 +248,21 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
     assert not any("tiny-default" in o for o in outputs)
     figs = {r for r, _ in jobs if r.startswith("figure")}
     assert figs == {"figure_fig2", "figure_fig5"}  # the figures that draw tiny-paper
+
+
+def test_convergence_target(tiny_run):
+    assert not (tiny_run / "results/convergence").exists()  # not part of the main job
+    run(tiny_run, "convergence")
+    own = read_dataset(tiny_run / "results/convergence/s-default.nc")
+    order = own["observed_order"].sel(quantity="friction_coefficient").values
+    assert np.all((order > 1.7) & (order < 2.7)), order  # the method's order 2
+    err = own["error"].sel(quantity="friction_coefficient").values
+    assert np.all(np.diff(err, axis=0) < 0)  # refinement helps, every c/a
+    paper = read_dataset(tiny_run / "results/convergence/s-paper.nc")
+    np.testing.assert_array_equal(paper["reference"].values, own["reference"].values)
+    assert paper.attrs["reference"] == "extrapolated values of the default method"
+    assert (own["wall_time"].values > 0).all() and (own["peak_memory"].values > 0).all()
+    assert (tiny_run / "results/figures/convergence.png").stat().st_size > 1000
 
 
 def test_report_builds(tiny_run):

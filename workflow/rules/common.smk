@@ -63,6 +63,20 @@ def _validate_config(cfg):
 
 
 SCENES = _validate_config(config)
+CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
+for _name, _st in CONVERGENCE["studies"].items():
+    _ns = _st["n"]
+    if any(b != 2 * a for a, b in zip(_ns, _ns[1:])):
+        raise WorkflowError(
+            f"invalid configuration:\n  convergence.studies.{_name}.n: each n must be twice "
+            f"the previous, got {_ns}"
+        )
+    _ref = _st.get("reference")
+    if _ref is not None and _ref not in CONVERGENCE["studies"]:
+        raise WorkflowError(
+            f"invalid configuration:\n  convergence.studies.{_name}.reference: no study "
+            f"named {_ref!r}"
+        )
 
 # influence sets, shared by every scene with the same key
 INFLUENCE = {}
@@ -74,6 +88,7 @@ wildcard_constraints:
     scene="|".join(sorted(SCENES)) or "NONE",
     key="[^/]+",
     part="normal|shear",
+    study="|".join(sorted(CONVERGENCE["studies"])) or "NONE",
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -123,6 +138,11 @@ def all_targets():
             out += [f"results/figures/{fig}.png", f"results/figures/{fig}.pdf"]
     out += ["results/tables/key-numbers.csv", "results/tables/key-numbers.html"]
     return out
+
+
+def study_reference(wildcards):
+    ref = CONVERGENCE["studies"][wildcards.study].get("reference")
+    return {"reference": f"results/convergence/{ref}.nc"} if ref else {}
 
 
 def operator_mb(n, count=1):

@@ -1,0 +1,170 @@
+"""Convergence under refinement: error against time, per method and geometry.
+
+For one geometry and method, :func:`study` solves fixed stick ratios at a
+sequence of resolutions n (each twice the last), records per solve the
+friction coefficient k, the load ratio, the frictional work and the peak
+shear, with the wall time and the peak memory of the solve, and measures the
+error of each against a Richardson-extrapolated value from the three finest
+resolutions (observed order p = log2 of the ratio of successive differences).
+
+Examples
+--------
+>>> ds = study("sphere", 0.3, "default", [32, 64, 128], [0.5])
+>>> float(ds["observed_order"].sel(quantity="friction_coefficient", stick_ratio=0.5)) > 1.5
+True
+"""
+
+from __future__ import annotations
+
+import time
+import tracemalloc
+from typing import Callable, Sequence
+
+import numpy as np
+import xarray as xr
+
+from . import api
+
+__all__ = ["study", "QUANTITIES", "richardson"]
+
+QUANTITIES = ("friction_coefficient", "load_ratio", "frictional_work", "peak_shear")
+
+
+def richardson(values: np.ndarray) -> tuple[float, float]:
+    """Extrapolated limit and observed order from the last three values of a sequence
+    computed at n, 2n, 4n.
+
+    Returns (limit, order); the order is NaN (and the limit the finest value)
+    when the differences do not shrink monotonically.
+    """
+    v = np.asarray(values, dtype=float)
+    if v.size < 3:
+        return float(v[-1]), float("nan")
+    d1, d2 = v[-2] - v[-3], v[-1] - v[-2]
+    if d2 == 0.0:
+        return float(v[-1]), float("inf")
+    ratio = d1 / d2
+    if not np.isfinite(ratio) or ratio <= 1.0:
+        return float(v[-1]), float("nan")
+    order = float(np.log2(ratio))
+    return float(v[-1] + d2 / (ratio - 1.0)), order
+
+
+def _version() -> str:
+    from . import __version__
+
+    return __version__
+
+
+def _measure(fn: Callable[[], api.Solution]) -> tuple[api.Solution, float, float]:
+    tracemalloc.start()
+    t0 = time.perf_counter()
+    try:
+        sol = fn()
+        elapsed = time.perf_counter() - t0
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    return sol, elapsed, peak / 2**20
+
+
+def study(geometry: str, nu: float, method: str, ns: Sequence[int],
+          stick_ratios: Sequence[float], *, slab_ratio: float = 0.0,
+          reference: xr.Dataset | None = None,
+          progress: Callable[[str], None] | None = None) -> xr.Dataset:
+    """Solve every (n, c/a) and measure errors against the extrapolated values.
+
+    Parameters
+    ----------
+    geometry, nu, method, slab_ratio
+        As for :func:`contactlib.solve`.
+    ns : sequence of int
+        Resolutions, each twice the previous (at least three for an order).
+        For the paper methods every stick ratio must be a multiple of 1/n.
+    stick_ratios : sequence of float
+        c/a values in (0, 1).
+    reference : xarray.Dataset, optional
+        Another study of the same problem (same geometry, nu, slab ratio and
+        stick ratios) whose extrapolated values serve as the truth, e.g. the
+        default method's for the paper's scheme, whose k converges too
+        slowly and erratically to extrapolate on its own.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``value``, ``error`` (relative to the extrapolated value; NaN where
+        it cannot be estimated), ``wall_time`` (s) and ``peak_memory`` (MiB,
+        Python-tracked allocations, i.e. numpy arrays) on (quantity, n,
+        stick_ratio) or (n, stick_ratio); ``reference`` and
+        ``observed_order`` on (quantity, stick_ratio).
+    """
+    ns = [int(n) for n in ns]
+    if any(b != 2 * a for a, b in zip(ns, ns[1:])):
+        raise ValueError(f"ns must double at every step, got {ns}")
+    cs = [float(c) for c in stick_ratios]
+    values = np.full((len(QUANTITIES), len(ns), len(cs)), np.nan)
+    times = np.full((len(ns), len(cs)), np.nan)
+    memory = np.full((len(ns), len(cs)), np.nan)
+    for i, n in enumerate(ns):
+        for j, c in enumerate(cs):
+            sol, times[i, j], memory[i, j] = _measure(lambda: api.solve(
+                geometry, nu, stick_ratio=c, n=n, method=method, slab_ratio=slab_ratio))
+            values[:, i, j] = (sol.friction_coefficient, sol.load_ratio, sol.frictional_work,
+                               float(np.max(np.abs(sol.shear))))
+            if progress is not None:
+                progress(f"{geometry} {method} n={n} c/a={c}: {times[i, j]:.2f} s")
+    ref = np.full((len(QUANTITIES), len(cs)), np.nan)
+    order = np.full_like(ref, np.nan)
+    for q in range(len(QUANTITIES)):
+        for j in range(len(cs)):
+            ref[q, j], order[q, j] = richardson(values[q, :, j])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        error = np.abs(values - ref[:, None, :]) / np.abs(ref[:, None, :])
+    error = np.where(np.isfinite(order)[:, None, :], error, np.nan)
+    ref_source = "own Richardson extrapolation"
+    if reference is not None:
+        same = (reference.attrs["geometry"] == geometry
+                and float(reference.attrs["poisson_ratio"]) == float(nu)
+                and float(reference.attrs["slab_ratio"]) == float(slab_ratio)
+                and np.array_equal(reference["stick_ratio"].values, np.array(cs)))
+        if not same:
+            raise ValueError("reference must be a study of the same geometry, nu, slab ratio "
+                             "and stick ratios")
+        ref = reference["reference"].values
+        with np.errstate(invalid="ignore", divide="ignore"):
+            error = np.abs(values - ref[:, None, :]) / np.abs(ref[:, None, :])
+        ref_source = f"extrapolated values of the {reference.attrs['method']} method"
+
+    def attrs(long_name: str, units: str = "1", comment: str = "") -> dict:
+        a = {"long_name": long_name, "units": units}
+        if comment:
+            a["comment"] = comment
+        return a
+
+    return xr.Dataset(
+        {
+            "value": (("quantity", "n", "stick_ratio"), values,
+                      attrs("computed value", comment="friction_coefficient k; load_ratio "
+                            "P/P_Hertz; frictional_work as in DESIGN.md; peak_shear "
+                            "max q/p0")),
+            "reference": (("quantity", "stick_ratio"), ref,
+                          attrs("reference value (see the global attribute reference)")),
+            "observed_order": (("quantity", "stick_ratio"), order,
+                               attrs("observed order of convergence",
+                                     comment="log2 of the ratio of successive differences; "
+                                     "NaN when they do not shrink")),
+            "error": (("quantity", "n", "stick_ratio"), error,
+                      attrs("relative error against the extrapolated value")),
+            "wall_time": (("n", "stick_ratio"), times, attrs("wall time of one solve", "s")),
+            "peak_memory": (("n", "stick_ratio"), memory,
+                            attrs("peak traced memory of one solve", "MiB",
+                                  "numpy and Python allocations (tracemalloc)")),
+        },
+        coords={"quantity": ("quantity", list(QUANTITIES), {"long_name": "quantity"}),
+                "n": ("n", np.array(ns), attrs("elements across the half-contact")),
+                "stick_ratio": ("stick_ratio", np.array(cs), attrs("c/a"))},
+        attrs={"geometry": geometry, "poisson_ratio": float(nu), "method": method,
+               "slab_ratio": float(slab_ratio), "Conventions": "CF-1.10",
+               "reference": ref_source,
+               "contactlib_version": _version()},
+    )

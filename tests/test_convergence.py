@@ -1,0 +1,38 @@
+"""Richardson extrapolation and the convergence study (error against time)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from contactlib.convergence import richardson, study
+
+
+@pytest.mark.parametrize("order", [1.0, 2.0, 3.5])
+def test_richardson_recovers_limit_and_order_of_a_power_law(order):
+    n = np.array([16, 32, 64])
+    values = 0.7 + 3.0 / n**order
+    limit, p = richardson(values)
+    assert limit == pytest.approx(0.7, abs=1e-14)
+    assert p == pytest.approx(order, rel=1e-12)
+
+
+def test_richardson_refuses_non_shrinking_differences():
+    limit, p = richardson(np.array([1.0, 0.5, 1.5]))
+    assert math.isnan(p) and limit == 1.5
+    assert math.isnan(richardson(np.array([1.0, 2.0]))[1])
+
+
+def test_study_rejects_non_doubling_resolutions():
+    with pytest.raises(ValueError, match="double"):
+        study("sphere", 0.3, "default", [16, 32, 48], [0.5])
+
+
+def test_default_method_errors_shrink_at_order_two_on_the_cylinder():
+    ds = study("cylinder", 0.3, "default", [16, 32, 64, 128], [0.3, 0.8], slab_ratio=0.05)
+    order = ds["observed_order"].sel(quantity="friction_coefficient").values
+    assert np.all((order > 1.7) & (order < 2.7)), order
+    err = ds["error"].sel(quantity="load_ratio").values
+    assert np.all(np.isfinite(err[:-1]))

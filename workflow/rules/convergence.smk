@@ -1,0 +1,60 @@
+# The `convergence` target: for each study (geometry, method, resolutions), solve
+# the configured stick ratios at every n, measure wall time and memory, and the
+# error against extrapolated values; one dataset a study and an error-vs-time
+# figure. Not part of `all`: run `snakemake --cores 2 convergence`.
+
+
+rule convergence_study:
+    input:
+        unpack(study_reference),
+    output:
+        "results/convergence/{study}.nc",
+    params:
+        study=lambda wildcards: CONVERGENCE["studies"][wildcards.study],
+        stick_ratios=CONVERGENCE["stick_ratios"],
+        version=VERSION,
+    log:
+        "results/logs/convergence/{study}.log",
+    benchmark:
+        "results/benchmarks/convergence/{study}.tsv"
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=lambda wildcards, attempt: int(
+            800 + 10 * operator_mb(max(CONVERGENCE["studies"][wildcards.study]["n"]))
+        )
+        * attempt,
+        runtime=lambda wildcards, attempt: 120 * attempt,
+    script:
+        "../scripts/convergence.py"
+
+
+rule convergence_figure:
+    input:
+        expand("results/convergence/{study}.nc", study=sorted(CONVERGENCE["studies"])),
+    output:
+        png=report(
+            "results/figures/convergence.png",
+            caption="../report/convergence.rst",
+            category="Convergence",
+        ),
+        pdf="results/figures/convergence.pdf",
+    params:
+        version=VERSION,
+    log:
+        "results/logs/figures/convergence.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=5,
+    script:
+        "../scripts/convergence_figure.py"
+
+
+rule convergence:
+    input:
+        rules.convergence_figure.output,
+    default_target: False

@@ -297,7 +297,12 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
     phi[m:nn] = k * p[m:nn] / shape[m:nn]
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
-    if stagnated:
+    if not (np.isfinite(k) and k > 0.0):  # a partial-slip k is positive (inward slip)
+        converged = False
+        msg = (f"Newton on k ended at k = {k:.4g} <= 0: no physical root on this mesh (a stick "
+               f"zone of c/a = {stick_ratio:.3g} below what n = {n} resolves, or a regime "
+               "where the slip reverses); not a solution")
+    elif stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
                f"(last step {stagnated:.1e} relative)")
     return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,

@@ -144,7 +144,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> Scene:
 
     if not isinstance(raw, Mapping):
         raise ValueError(f"scenes.{name}: must be a mapping, got {raw!r}")
-    unknown = sorted(set(raw) - set(_KEYS))
+    unknown = sorted(str(k) for k in set(raw) - set(_KEYS))
     if unknown:
         raise fail(unknown[0], f"unknown key (allowed: {', '.join(_KEYS)})")
     for key in ("geometry", "nu", "stick_ratios"):
@@ -165,7 +165,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> Scene:
     except ValueError as exc:
         raise fail("stick_ratios", str(exc)) from None
     outputs = raw.get("outputs", list(OUTPUTS))
-    if isinstance(outputs, str) or not all(o in OUTPUTS for o in outputs) or not outputs:
+    if not isinstance(outputs, (list, tuple)) or not outputs or \
+            not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         raise fail("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
     return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,

@@ -167,6 +167,11 @@ def _record(geometry: Geometry, d: DiscreteSolution | PaperSolution, samples: bo
         pts = mids if paper else np.concatenate([nodes[1:m], mids])
         rec.update(slip_x=xs, slip_w=ws, slip_q=q_slip, slip_s=s_slip,
                    stick_q=d.shear(pts), stick_p=d.pressure(pts))
+        if not np.all(np.isfinite(s_slip)):  # never a silent NaN in a converged case
+            rec["converged"] = False
+            rec["message"] = "; ".join(x for x in (rec["message"], (
+                "the slip-rate samples hit a kernel singularity (a slip zone narrower than "
+                "the quadrature resolves); flags and work are not reliable")) if x)
     return rec
 
 

@@ -44,7 +44,7 @@ def uncoupled_friction(geometry: str, nu: float, gamma):
     """
     g = np.asarray(gamma, dtype=float)
     b = beta_of_nu(nu)
-    kp = special.ellipk(1.0 - g**2)
+    kp = special.ellipkm1(g**2)  # K(1 - g^2) without losing it as g -> 0
     if geometry == "sphere":
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(g > 0, np.arctanh(g) / np.where(g > 0, g, 1.0), 1.0)

@@ -161,8 +161,10 @@ def mem_influence(wildcards, attempt):
 
 
 def mem_solve(wildcards, attempt):
+    """The influence set it loads (every mesh, both parts) plus the per-case work."""
     s = SCENES[wildcards.scene]
-    return int(500 + 12 * operator_mb(s.n)) * attempt
+    meshes = len(s.solved_ratios) if s.method == "default" else 1
+    return int(500 + operator_mb(s.n, 2 * meshes) + 12 * operator_mb(s.n)) * attempt
 
 
 def runtime_solve(wildcards, attempt):

@@ -96,8 +96,9 @@ def parse_slab_ratio(text: str) -> float:
 def parse_n(text: str) -> int:
     """Number of elements, an integer >= 2."""
     req = "an integer >= 2"
-    if not _INT_RE.match(text) or int(text) < 2:
-        raise UsageError(f"--n must be {req}, got {text!r}")
+    if not _INT_RE.match(text) or len(text.strip()) > 12 or int(text) < 2:
+        shown = text if len(text) <= 40 else text[:37] + "..."
+        raise UsageError(f"--n must be {req} (at most 4096), got {shown!r}")
     return int(text)
 
 

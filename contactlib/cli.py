@@ -1,4 +1,4 @@
-"""Command line interface: ``contactlib solve`` and ``contactlib sweep``.
+"""Command line interface: ``contactlib solve``, ``contactlib sweep`` and ``contactlib history``.
 
 Every option value is parsed and range-checked here, before any numerics run,
 so that bad input ends with exit status 2 and exactly one line on stderr::
@@ -119,6 +119,27 @@ def parse_stick_ratios(text: str) -> str | list[float]:
     return values
 
 
+def parse_load_path(text: str) -> list[float]:
+    """Comma-separated load levels P/P_max in [0, 1], starting at 0 (at least two)."""
+    req = "a comma-separated list of at least two load levels in [0, 1] starting at 0"
+    values: list[float] = []
+    for item in text.split(","):
+        try:
+            values.append(parse_fraction("--load-path", item))
+        except UsageError:
+            raise UsageError(f"--load-path must be {req}, got {text!r}") from None
+    if len(values) < 2 or values[0] != 0.0:
+        raise UsageError(f"--load-path must be {req}, got {text!r}")
+    return values
+
+
+def parse_steps(text: str) -> int:
+    """Load steps per path segment, a positive integer."""
+    if not _INT_RE.match(text) or int(text) < 1:
+        raise UsageError(f"--steps must be a positive integer, got {text!r}")
+    return int(text)
+
+
 def _known_methods(api: ModuleType | None = None) -> tuple[str, ...]:
     """Method names accepted by the library (``api.METHODS`` when provided)."""
     methods = getattr(api, "METHODS", None) if api is not None else None
@@ -177,7 +198,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Partial slip of a rigid sphere or cylinder pressed into an "
                     "elastic body (self-similar loading).",
     )
-    subs = parser.add_subparsers(dest="command", metavar="{solve,sweep}",
+    subs = parser.add_subparsers(dest="command", metavar="{solve,sweep,history}",
                                  parser_class=_Parser)
     subs.required = True
 
@@ -200,6 +221,33 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--stick-ratios", metavar="LIST|all", default="all",
                        help="comma-separated c/a values, or 'all' for m/n, "
                             "m = 1 ... n-1; default: all")
+
+    hist = subs.add_parser(
+        "history", help="follow a load path (incremental stick-slip)", allow_abbrev=False,
+        description="Follow a normal load path in steps with incremental Coulomb "
+                    "stick-slip (no self-similarity, any number of stick zones) and "
+                    "write one dataset with a step dimension.")
+    hist.add_argument("--geometry", required=True, metavar="{sphere,cylinder}",
+                      help="rigid indenter: sphere (axisymmetric) or cylinder "
+                           "(plane strain)")
+    hist.add_argument("--nu", required=True, metavar="NU",
+                      help="Poisson's ratio of the elastic body, in (-1, 0.5]")
+    hist.add_argument("--friction", required=True, metavar="K",
+                      help="friction coefficient k >= 0 (inf: no slip)")
+    hist.add_argument("--load-path", required=True, metavar="LIST",
+                      help="comma-separated load levels P/P_max in [0, 1] starting at 0, "
+                           "e.g. 0,1,0")
+    hist.add_argument("--steps", required=True, metavar="N",
+                      help="equal load steps per path segment (positive integer)")
+    hist.add_argument("--n", metavar="N", default=None,
+                      help="elements over 1.2 a_max (integer; library default if omitted)")
+    hist.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
+                      help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
+                           "default: 0")
+    hist.add_argument("--output", metavar="FILE.nc", required=True,
+                      help="write the netCDF dataset here")
+    hist.add_argument("--debug", action="store_true",
+                      help="print a traceback on unexpected errors")
     return parser
 
 
@@ -236,6 +284,28 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
     else:
         kwargs["stick_ratios"] = parse_stick_ratios(args.stick_ratios)
     if args.output is not None and (args.output.strip() == "" or Path(args.output).is_dir()):
+        raise UsageError(f"--output must be a file path, got {args.output!r}")
+    return kwargs
+
+
+def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
+    """Checked keyword arguments of :func:`contactlib.history.history`."""
+    if args.geometry not in GEOMETRIES:
+        raise UsageError(
+            f"--geometry must be one of {', '.join(GEOMETRIES)}, got {args.geometry!r}")
+    kwargs: dict[str, Any] = {
+        "geometry": args.geometry,
+        "nu": parse_nu(args.nu),
+        "friction": parse_friction(args.friction),
+        "load_path": parse_load_path(args.load_path),
+        "steps": parse_steps(args.steps),
+        "n": None if args.n is None else parse_n(args.n),
+        "slab_ratio": parse_slab_ratio(args.slab_ratio),
+    }
+    if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
+        raise UsageError(
+            f"--slab-ratio applies only to --geometry cylinder, got {args.slab_ratio!r}")
+    if args.output.strip() == "" or Path(args.output).is_dir():
         raise UsageError(f"--output must be a file path, got {args.output!r}")
     return kwargs
 
@@ -305,7 +375,32 @@ def format_table(solutions: Sequence[Solution]) -> str:
     return "\n".join(rows)
 
 
-def _progress_printer(stream: TextIO) -> Callable[[int, int], None] | None:
+def format_history(res: Any) -> str:
+    """Summary of a history: the state at the end of every path segment, and the work."""
+    work_scale = ("V R^2/(E* a_max^5)" if res.geometry == "sphere"
+                  else "V R^2/(E* a_max^4)")
+    head = (f"{res.geometry}, nu = {res.nu:g}, k = {_g(res.friction)}, n = {res.n}, "
+            f"{res.steps} steps per segment")
+    if res.geometry == "cylinder":
+        head += f", a_max/h = {res.slab_ratio:g}"
+    rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
+                  f"{'V segment':>11} {'V total':>11}"]
+    seg_work = res.segment_work()
+    for i in range(1, len(res.load_path)):
+        j = res.segment_end(i)
+        rows.append(f"{i:7d} {res.load_ratio[j]:9.4f} {res.contact_radius[j]:9.5f} "
+                    f"{_g(float(res.stick_ratio[j]), 5):>8} {seg_work[i - 1]:11.5g} "
+                    f"{res.frictional_work[j]:11.5g}")
+    total = res.converged.size - 1
+    rows.append(f"  work in {work_scale}; converged steps: "
+                f"{int(res.converged[1:].sum())}/{total} "
+                f"(at most {int(res.iterations.max())} iterations)")
+    if res.message:
+        rows.append(f"  message: {res.message}")
+    return "\n".join(rows)
+
+
+def _progress_printer(stream: TextIO, label: str = "sweep") -> Callable[[int, int], None] | None:
     """A ``progress(i, total)`` callback with ``\\r`` updates, TTY only."""
     try:
         tty = stream.isatty()
@@ -315,7 +410,7 @@ def _progress_printer(stream: TextIO) -> Callable[[int, int], None] | None:
         return None
 
     def progress(i: int, total: int) -> None:
-        stream.write(f"\rsweep: {i}/{total}")
+        stream.write(f"\r{label}: {i}/{total}")
         stream.flush()
 
     return progress
@@ -369,6 +464,31 @@ def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
     return 0
 
 
+def _history_api() -> ModuleType:
+    """Import the history module lazily (so ``--help`` never needs it)."""
+    from contactlib import history
+
+    return history
+
+
+def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
+    progress = _progress_printer(sys.stderr, "history")
+    try:
+        res = module.history(progress=progress, **kwargs)
+    except ValueError as exc:  # the library's own input validation
+        raise UsageError(str(exc)) from exc
+    finally:
+        if progress is not None:
+            sys.stderr.write("\r\033[K")
+            sys.stderr.flush()
+    print(format_history(res))
+    from contactlib import io
+
+    io.write_dataset(module.history_to_dataset(res), output)
+    print(f"wrote {output}")
+    return 0
+
+
 def _fail(message: str) -> None:
     print(f"{PROG}: error: {' '.join(str(message).split())}", file=sys.stderr)
 
@@ -395,6 +515,9 @@ def main(argv: list[str] | None = None) -> int:
         except SystemExit as exc:  # --help
             return int(exc.code or 0) if not isinstance(exc.code, str) else 2
         debug = bool(getattr(args, "debug", False))
+        if args.command == "history":
+            hist_kwargs = _validate_history(args)  # before importing the numerics
+            return _run_history(hist_kwargs, args.output, _history_api())
         kwargs = _validate(args)  # before importing the numerics
         api = _api()
         _check_method(args.method, api)

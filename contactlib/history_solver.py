@@ -41,33 +41,42 @@ indenter is rigid and has no tangential motion):
 
 Solver
 ------
-Each step is a linear complementarity problem with a non-symmetric
-(Coulomb) coupling, solved by a primal-dual active-set iteration: for given
-sets (separated / stick / slip inward / slip outward) the conditions are one
-linear system in the pressures and shears of the contact elements and
-``delta`` (size ``2 m + 1``), solved by LU; then the sets are updated
+Each step is a complementarity problem with a non-symmetric (Coulomb: the
+friction bound depends on the unknown pressure) coupling, solved by a
+primal-dual active-set iteration: for given sets (separated / stick / slip
+inward / slip outward) the conditions are one linear system in the pressures
+of the contact elements, the shears of the stuck ones and ``delta`` (the slip
+shears ``+-k p`` are eliminated), solved by LU; then the sets are updated
 element by element:
 
 * separated -> contact if ``g_i < 0``; contact -> separated if ``p_i < 0``;
 * stick -> slip (in the direction that makes ``q`` the friction force) if
   ``|q_i| > k p_i``;
 * slip -> stick if the slip increment runs the wrong way (``q_i du_i > 0``);
-* an element touching down starts slipping against its current increment.
+* an element touching down starts as stick if the shear that would hold it
+  (its increment times its own tangential stiffness) is below k times the
+  pressure that would push it back (its penetration times its own normal
+  stiffness), else slipping against its increment.
 
 The iteration stops when the sets reproduce themselves, i.e. every condition
-holds. A set that repeats (a cycle) switches the update to one change at a
+holds (switching tolerances 1e-10 of the current pressure, gap and slip
+scales). A set that repeats (a cycle) switches the update to one change at a
 time (the largest violation first); after ``max_iter`` iterations the step is
-kept and flagged as not converged, with its residual.
+kept and flagged as not converged, with its residual. The matrix depends only
+on the sets, so the first iteration of a step reuses the factorization of the
+previous step's last one.
 
-The slip->stick rule is the classical one of Kalker's active-set algorithms;
-it is the limit of the semi-smooth Newton method on
-``q - proj_[-kp, kp](q - eps du) = 0`` with a small ``eps``, and was found
-free of the cycling the larger ``eps`` produces when many elements touch down
-in one step.
+These switching rules are the semi-smooth Newton method on
+``p - max(0, p - eps g) = 0``, ``q - proj_[-kp, kp](q - eps du) = 0`` in the
+limit of a small ``eps`` (Kalker's classical active-set rules). With ``eps``
+of the order of the element stiffness the iteration was seen to cycle when
+many elements touch down in one step; with these rules a step of a 200-step
+cycle takes about 3 iterations.
 """
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -165,34 +174,52 @@ class StepResult:
     system_size: int  # size of the last linear system solved
 
 
-def _assemble(ops: Operators, k: float, load: float, u_old: np.ndarray,
-              state: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Linear system of the conditions for the given sets; unknowns (p_c, q_c, delta)."""
+def _assemble(ops: Operators, k: float,
+              state: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Matrix of the conditions for the given sets (it depends on nothing else).
+
+    The slip shears are eliminated (``q_i = +-k p_i``), so the unknowns are the
+    contact pressures, the stick shears and ``delta``: size ``m + m_stick + 1``.
+    Rows: normal collocation on the contact elements, stick collocation, load.
+    Returns ``(A, c, factor, stick)``: the contact elements ``c``, the factor
+    with ``q_c = factor * p_c`` on the slip elements, and the positions (within
+    ``c``) of the stick elements.
+    """
     c = np.flatnonzero(state)
     m = c.size
-    a = np.zeros((2 * m + 1, 2 * m + 1))
-    b = np.zeros(2 * m + 1)
-    # normal: w_i - delta = -r_i^2 / 2 on the contact elements
-    a[:m, :m] = ops.pw[np.ix_(c, c)]
-    a[:m, m:2 * m] = ops.qw[np.ix_(c, c)]
-    a[:m, 2 * m] = -1.0
-    b[:m] = -0.5 * ops.mid[c] ** 2
     st = state[c]
-    rows = m + np.arange(m)
-    if k == 0.0:  # frictionless: q = 0
-        a[rows, rows] = 1.0
-    else:
-        stick = np.flatnonzero(st == STICK)
-        a[np.ix_(rows[stick], np.arange(m))] = ops.pu[np.ix_(c[stick], c)]
-        a[np.ix_(rows[stick], m + np.arange(m))] = ops.qu[np.ix_(c[stick], c)]
-        b[rows[stick]] = u_old[c[stick]]
-        for code, sign in ((SLIP_INWARD, 1.0), (SLIP_OUTWARD, -1.0)):
-            sel = np.flatnonzero(st == code)
-            a[rows[sel], m + sel] = 1.0
-            a[rows[sel], sel] = -sign * k
-    a[2 * m, :m] = ops.area[c]
-    b[2 * m] = load
-    return a, b, c
+    factor = np.zeros(m)
+    if 0.0 < k < np.inf:
+        factor[st == SLIP_INWARD] = k
+        factor[st == SLIP_OUTWARD] = -k
+    stick = np.flatnonzero(st == STICK) if k > 0.0 else np.zeros(0, dtype=np.int64)
+    cs = c[stick]
+    ms = cs.size
+    size = m + ms + 1
+    a = np.zeros((size, size))
+    # normal: w_i - delta = -r_i^2 / 2 on the contact elements
+    qw_c = ops.qw[c]
+    a[:m, :m] = ops.pw[np.ix_(c, c)] + qw_c[:, c] * factor[None, :]
+    a[:m, m:m + ms] = qw_c[:, cs]
+    a[:m, -1] = -1.0
+    # stick: u_i = u_i^old
+    qu_s = ops.qu[cs]
+    a[m:m + ms, :m] = ops.pu[np.ix_(cs, c)] + qu_s[:, c] * factor[None, :]
+    a[m:m + ms, m:m + ms] = qu_s[:, cs]
+    # load
+    a[-1, :m] = ops.area[c]
+    return a, c, factor, stick
+
+
+def _rhs(ops: Operators, load: float, u_old: np.ndarray, c: np.ndarray,
+         stick: np.ndarray) -> np.ndarray:
+    """Right-hand side matching :func:`_assemble`."""
+    m, ms = c.size, stick.size
+    b = np.empty(m + ms + 1)
+    b[:m] = -0.5 * ops.mid[c] ** 2
+    b[m:m + ms] = u_old[c[stick]]
+    b[-1] = load
+    return b
 
 
 def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: np.ndarray,
@@ -206,7 +233,9 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
     p_scale = max(float(np.max(np.abs(p))), 1e-300)
     g_scale = max(float(np.max(ops.mid[state > 0] ** 2)) if np.any(state > 0) else 0.0,
                   float(np.max(np.abs(gap))), 1e-300)
-    d_scale = max(float(np.max(np.abs(du))), 1e-300)
+    # slip increments: the largest one, floored at 1e-6 of the displacement scale
+    # (a^2/R, like the gap) so that a step with no motion has a finite scale
+    d_scale = max(float(np.max(np.abs(du))), 1e-6 * g_scale)
     tol_p, tol_g, tol_d = _REL_TOL * p_scale, _REL_TOL * g_scale, _REL_TOL * d_scale
     new = state.copy()
     viol = np.zeros(state.size)
@@ -220,8 +249,16 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
     viol[gain] = -gap[gain] / g_scale
     if k == 0.0 or np.isinf(k):
         new[gain] = SLIP_INWARD if k == 0.0 else STICK
-    else:  # touching down: slip against the current increment
-        new[gain] = np.where(du[gain] > 0.0, SLIP_OUTWARD, SLIP_INWARD)
+    else:
+        # touching down: the projection rule at p = q = 0 with the element's own
+        # stiffnesses, i.e. stick if the traction that would hold the element
+        # (-du / qu_ii) is within k times the pressure that would push it back
+        # (-g / pw_ii); else slip against the increment
+        ii = np.flatnonzero(gain)
+        p_trial = -gap[ii] / ops.pw[ii, ii]
+        q_trial = -du[ii] / ops.qu[ii, ii]
+        new[ii] = np.where(np.abs(q_trial) <= k * p_trial, STICK,
+                           np.where(q_trial > 0.0, SLIP_INWARD, SLIP_OUTWARD))
 
     stay = contact & ~lose
     if k == 0.0:
@@ -263,7 +300,8 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
 
 
 def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
-               guess: np.ndarray, max_iter: int = 200) -> StepResult:
+               guess: np.ndarray, max_iter: int = 200,
+               cache: dict | None = None) -> StepResult:
     """Solve one load step by the active-set iteration (see the module notes).
 
     Parameters
@@ -279,24 +317,45 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
         Initial sets (usually the previous step's); must contain a contact element.
     max_iter : int
         Active-set iterations allowed.
+    cache : dict, optional
+        Keeps the last LU factorization between calls (same ``ops`` and ``k``):
+        the matrix depends only on the sets, so a step that starts from the
+        previous step's final sets reuses its factorization.
     """
     state = guess.astype(np.int8, copy=True)
     if not np.any(state):
         state[0] = STICK
     if k == 0.0:
         state[state > 0] = SLIP_INWARD
+    cache = {} if cache is None else cache
     seen: set[bytes] = {state.tobytes()}
     one_at_a_time = False
     p = q = u = gap = np.zeros(ops.n)
     delta, res, size = 0.0, np.inf, 0
+    it = 0
     for it in range(1, max_iter + 1):
-        a, b, c = _assemble(ops, k, load, u_old, state)
+        key = state.tobytes()
+        if cache.get("key") != key:
+            a, c, factor, stick = _assemble(ops, k, state)
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", linalg.LinAlgWarning)
+                lu = linalg.lu_factor(a, check_finite=False)
+            cache.update(key=key, lu=lu, c=c, factor=factor, stick=stick)
+        lu, c, factor, stick = cache["lu"], cache["c"], cache["factor"], cache["stick"]
+        b = _rhs(ops, load, u_old, c, stick)
         size = b.size
-        x = linalg.solve(a, b, check_finite=False)
+        x = linalg.lu_solve(lu, b, check_finite=False)
+        if not np.all(np.isfinite(x)):  # singular system for these sets
+            cache.clear()
+            break
         m = c.size
         p = np.zeros(ops.n)
         q = np.zeros(ops.n)
-        p[c], q[c], delta = x[:m], x[m:2 * m], float(x[2 * m])
+        p[c] = x[:m]
+        qc = factor * x[:m]
+        qc[stick] = x[m:-1]
+        q[c] = qc
+        delta = float(x[-1])
         w = ops.pw @ p + ops.qw @ q
         u = ops.pu @ p + ops.qu @ q
         gap = w - delta + 0.5 * ops.mid**2
@@ -313,7 +372,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             new = nxt
         seen.add(new.tobytes())
         state = new
-    return StepResult(p, q, u, gap, delta, _label(k, state, u - u_old), False, max_iter, res,
+    return StepResult(p, q, u, gap, delta, _label(k, state, u - u_old), False, it, res,
                       size)
 
 
@@ -357,17 +416,23 @@ def contact_radius(ops: Operators, state: np.ndarray, gap: np.ndarray) -> float:
 
 def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: np.ndarray,
                  a: float) -> float:
-    """Radius of the central stick zone (units a_max) with sub-element resolution.
+    """Radius of the central stick zone (units a_max), sub-element where it is advancing.
 
     The central stick zone is the run of stuck elements from the axis. If it
     reaches the contact edge the result is ``a``; if the axis element is not
-    stuck it is 0. Otherwise its edge is refined from the traction deficit
-    ``d = 1 - |q|/(k p)`` of the last two stuck elements: at a stick edge whose
-    stick traction has no stress-intensity factor (the physical condition of
-    continued loading) ``d`` grows like ``(c - r)^(3/2)``, so ``d^(2/3)`` is
-    extrapolated linearly to zero; the result is kept between the midpoint of
-    the last stuck element and that of the first slipping one (else the
-    element edge is returned).
+    stuck it is 0. Otherwise the estimate is the edge between the last stuck
+    and the first other element, refined from the traction deficit
+    ``d = 1 - |q|/(k p)`` of the last stuck elements when that profile has the
+    shape of an advancing stick edge: there the stick traction has no
+    stress-intensity factor (the physical condition of continued loading, see
+    :mod:`contactlib.default_method`), so ``d`` grows like ``(c - r)^(3/2)``
+    and ``d^(2/3)`` is linear. If the last two slopes of ``d^(2/3)`` over the
+    last three stuck elements agree within a factor 1.5, ``d^(2/3)`` of the
+    last two is extrapolated linearly to zero and the result kept below the
+    midpoint of the first element not stuck. If the slopes disagree, or the
+    extrapolation lands more than two elements beyond the last stuck midpoint
+    (a receding or stationary edge, as in unloading, where ``d`` rises like a
+    square root), the element edge is returned, good to half an element.
     """
     contact = state > 0
     if not contact[0] or state[0] != STICK:
@@ -378,16 +443,21 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
         return float(a)  # stuck up to the contact edge
     r = ops.mid
     edge = float(ops.edges[j])
-    if j < 2 or not np.isfinite(k) or k <= 0.0:
+    if j < 3 or not np.isfinite(k) or k <= 0.0:
         return edge
     with np.errstate(divide="ignore", invalid="ignore"):
-        d1 = 1.0 - abs(q[j - 1]) / (k * p[j - 1])
-        d2 = 1.0 - abs(q[j - 2]) / (k * p[j - 2])
-    if not (np.isfinite(d1) and np.isfinite(d2) and d2 > d1 >= 0.0):
+        d = 1.0 - np.abs(q[j - 3:j]) / (k * p[j - 3:j])  # elements j-3, j-2, j-1
+    if not (np.all(np.isfinite(d)) and d[0] > d[1] > d[2] >= 0.0):
         return edge
-    t1, t2 = d1 ** (2.0 / 3.0), d2 ** (2.0 / 3.0)
-    c = r[j - 1] + t1 * (r[j - 1] - r[j - 2]) / (t2 - t1)
-    return float(np.clip(c, r[j - 1], r[j]))
+    t = d ** (2.0 / 3.0)
+    last, before = t[1] - t[2], t[0] - t[1]
+    if not (1.0 / 1.5 <= last / before <= 1.5):
+        return edge
+    h = r[j - 1] - r[j - 2]
+    c = r[j - 1] + t[2] * h / last
+    if c > r[j - 1] + 2.0 * h:  # deficit too large for an edge near the last stuck element
+        return edge
+    return float(min(c, r[j]))
 
 
 @dataclass
@@ -437,6 +507,7 @@ def run_history(ops: Operators, geometry: str, k: float, levels: np.ndarray,
     state = np.zeros(n, dtype=np.int8)
     u_old = np.zeros(n)
     q_old = np.zeros(n)
+    cache: dict = {}
     work = work_imp = 0.0
     for i in range(1, steps):
         level = float(levels[i])
@@ -448,7 +519,7 @@ def run_history(ops: Operators, geometry: str, k: float, levels: np.ndarray,
             if not np.any(guess):
                 guess = np.where(ops.mid < hertz_radius(geometry, level), STICK,
                                  SEPARATED).astype(np.int8)
-            res = solve_step(ops, k, level * ops.p_max, u_old, guess, max_iter)
+            res = solve_step(ops, k, level * ops.p_max, u_old, guess, max_iter, cache)
         du = res.u - u_old
         slipping = res.state >= SLIP_INWARD
         work += float(np.sum((np.abs(0.5 * (q_old + res.q)) * np.abs(du)

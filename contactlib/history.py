@@ -1,0 +1,392 @@
+r"""Loading history: incremental stick-slip along any normal load path.
+
+The paper (and :func:`contactlib.solve`) treats one self-similar loading
+half-cycle with a single central stick zone. :func:`history` makes neither
+assumption: it follows a prescribed path of normal loads in small steps and,
+at every step and for every element, decides contact or separation and stick
+or slip by Coulomb's law with full complementarity, carrying the tangential
+state from step to step. It covers monotonic loading, unloading, repeated
+cycles and the one-step ("one-shot") load, for the sphere on a half-space and
+the cylinder on a half-plane or on a slab (where a/h changes along the path).
+
+Definitions and scalings (DESIGN.md section 2, with ``a_max`` for ``a``)
+-----------------------------------------------------------------------
+* ``P_max``: the reference load, load level 1 of the path. Load levels are
+  ``P / P_max`` in [0, 1]; the path need not reach 1.
+* ``a_max``: the **frictionless (Hertz) contact radius at P_max** on the
+  half-space / half-plane, ``a_max = (3 P_max R / (4 E*))^(1/3)`` (sphere) or
+  ``(4 P_max R / (pi E*))^(1/2)`` (cylinder). It is the length scale of every
+  output and is exactly known, so that scaled outputs do not inherit the
+  discretization error of a measured radius. The computed contact radius at
+  ``P_max`` differs from it by the friction (0.6 % smaller at k = 0.1, 1.5 %
+  at k = 0.3 for the sphere at nu = 0.3) and, on a slab, by the slab's
+  stiffness.
+* ``slab_ratio`` = ``a_max / h`` (the slab thickness is fixed while a varies).
+* ``pressure`` = p / p0 and ``shear`` = q / p0 with p0 the Hertz peak pressure
+  at ``a_max`` (2 E* a_max / (pi R), sphere; E* a_max / (2 R), cylinder);
+  shear is the traction on the elastic body, positive away from the axis.
+* ``tangential_displacement`` = u R / a_max^2, ``indentation`` =
+  delta R / a_max^2 (for the half-plane delta carries the Flamant reference
+  length a_max: only its changes are meaningful).
+* ``frictional_work`` = V R^2 / (E* a_max^5) (sphere) or V R^2 / (E* a_max^4)
+  per unit length over both sides of the axis (cylinder), cumulative from the
+  start of the path.
+* ``contact_radius`` = a / a_max and ``stick_ratio`` = c / a, c the radius of
+  the central stick zone (the run of stuck elements from the axis). a is
+  resolved below the element size from the gap outside the contact, c where
+  the stick edge advances (loading) from the stick-traction deficit; where it
+  recedes or stands (unloading) c is an element edge, good to half an element
+  (see :func:`contactlib.history_solver.contact_radius` and
+  :func:`~contactlib.history_solver.stick_radius`). ``stick_ratio`` is NaN
+  without contact.
+
+Frictional work of a step: ``sum_j |(q_j^old + q_j^new)/2| |du_j| A_j`` over
+the elements slipping at the end of the step (trapezoid rule in time, with
+the element's shear-weighted area A_j: ``int (r/r_j) 2 pi r dr`` for a
+ring, ``2 dx`` for a strip pair). Its error falls roughly like 1/steps
+(0.2 % at 200 steps a segment for the sphere with c/a = 0.5); a slip zone
+spanning few elements (c/a close to 1, large k) also needs a finer mesh, and
+``message`` says so when the slip zone at the top load spans fewer than 12
+elements.
+
+The numerics live in :mod:`contactlib.history_solver`; writing a dataset is
+``contactlib.io.write_dataset(history_to_dataset(result), path)``.
+
+Examples
+--------
+>>> from contactlib.history import history
+>>> res = history("sphere", 0.3, 0.15, [0, 1, 0], 10, n=60)
+>>> bool(res.converged.all()), float(res.load_ratio[10]), float(res.pressure[-1].max())
+(True, 1.0, 0.0)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from numbers import Integral, Real
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from . import history_solver as hs
+from .api import GEOMETRIES, _number
+from .geometry import Geometry
+
+__all__ = ["history", "history_to_dataset", "HistoryResult", "DEFAULT_N", "MAX_N",
+           "load_levels"]
+
+DEFAULT_N = 240  # elements over [0, 1.2 a_max]: element size a_max / 200
+MIN_N = 16
+MAX_N = 2048
+_MIN_SLIP_ELEMENTS = 12  # fewer slipping elements at the top load: work under-resolved
+
+
+@dataclass
+class HistoryResult:
+    """A followed load path, in the scalings of the module notes.
+
+    Step 0 is the unloaded initial state; step ``i`` (1 ... S) ends the
+    ``i``-th load step. Per-element arrays have shape ``(S + 1, n)``.
+
+    Attributes
+    ----------
+    geometry, nu, friction, load_path, steps, n, slab_ratio
+        The input (``friction`` may be ``inf``: no slip).
+    xi : ndarray, shape (n,)
+        Element midpoints r / a_max (collocation points).
+    xi_bounds : ndarray, shape (n, 2)
+        Element edges r / a_max.
+    segment : ndarray of int, shape (S + 1,)
+        Path segment of each step (1-based; 0 for the initial state).
+    load_ratio : ndarray
+        P / P_max.
+    contact_radius, stick_ratio, indentation, frictional_work : ndarray
+        a / a_max, c / a, delta R / a_max^2, cumulative work.
+    state : ndarray of int8, shape (S + 1, n)
+        0 separated, 1 stick, 2 slip toward the axis, 3 slip away from it.
+    pressure, shear, tangential_displacement : ndarray, shape (S + 1, n)
+        p / p0, q / p0, u R / a_max^2 at the element midpoints.
+    converged : ndarray of bool
+        Active-set iteration converged (a failed step is kept and flagged).
+    iterations : ndarray of int
+        Active-set iterations of the step.
+    residual_norm : ndarray
+        Largest scaled violation of any contact or friction condition.
+    message : str
+        Note on non-converged steps, degenerate cases; empty otherwise.
+    """
+
+    geometry: str
+    nu: float
+    friction: float
+    load_path: tuple[float, ...]
+    steps: int
+    n: int
+    slab_ratio: float
+    xi: np.ndarray
+    xi_bounds: np.ndarray
+    segment: np.ndarray
+    load_ratio: np.ndarray
+    contact_radius: np.ndarray
+    stick_ratio: np.ndarray
+    indentation: np.ndarray
+    frictional_work: np.ndarray
+    state: np.ndarray
+    pressure: np.ndarray
+    shear: np.ndarray
+    tangential_displacement: np.ndarray
+    converged: np.ndarray
+    iterations: np.ndarray
+    residual_norm: np.ndarray
+    message: str = ""
+
+    def segment_work(self) -> np.ndarray:
+        """Frictional work done during each path segment (scaled as ``frictional_work``)."""
+        ends = np.concatenate([[0], np.arange(1, len(self.load_path)) * self.steps])
+        return np.diff(self.frictional_work[ends])
+
+    def segment_end(self, segment: int) -> int:
+        """Step index at the end of path segment ``segment`` (1-based)."""
+        return int(segment * self.steps)
+
+
+# ----------------------------------------------------------------------------- validation
+def _integer(name: str, value, lo: int, hi: int | None = None) -> int:
+    if isinstance(value, bool) or not isinstance(value, (Integral, Real)):
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    if not isinstance(value, Integral):
+        if not (math.isfinite(float(value)) and float(value).is_integer()):
+            raise ValueError(f"{name} must be an integer, got {value!r}")
+    v = int(value)
+    if v < lo or (hi is not None and v > hi):
+        rng = f">= {lo}" if hi is None else f"in [{lo}, {hi}]"
+        raise ValueError(f"{name} must be an integer {rng}, got {value!r}")
+    return v
+
+
+def _load_path(load_path) -> tuple[float, ...]:
+    if isinstance(load_path, (str, bytes)) or not hasattr(load_path, "__iter__"):
+        raise ValueError(f"load_path must be a sequence of load levels in [0, 1], "
+                         f"got {load_path!r}")
+    values = list(load_path)
+    if not values:
+        raise ValueError("load_path must not be empty")
+    levels = tuple(_number("load_path", v, 0.0, 1.0) for v in values)
+    if len(levels) < 2:
+        raise ValueError(f"load_path needs at least two levels (a start and an end), "
+                         f"got {values!r}")
+    if levels[0] != 0.0:
+        raise ValueError(f"load_path must start at 0 (the body starts unloaded), "
+                         f"got {values[0]!r}")
+    return levels
+
+
+def _friction(friction) -> float:
+    if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
+        return math.inf
+    return _number("friction", friction, 0.0, None)
+
+
+def load_levels(load_path: Sequence[float], steps: int) -> tuple[np.ndarray, np.ndarray]:
+    """Load level of every step (``steps`` equal steps a segment) and its segment.
+
+    Returns ``(levels, segment)``, both of length ``steps * (len(load_path) - 1) + 1``;
+    ``levels[0] = load_path[0]``, ``segment[0] = 0``.
+    """
+    path = np.asarray(load_path, dtype=float)
+    t = np.arange(1, steps + 1) / steps
+    parts = [path[:1]] + [a + (b - a) * t for a, b in zip(path[:-1], path[1:])]
+    levels = np.concatenate(parts)
+    levels[steps::steps] = path[1:]  # exact path levels at the segment ends
+    segment = np.concatenate([[0]] + [np.full(steps, i + 1) for i in range(path.size - 1)])
+    return levels, segment
+
+
+# ----------------------------------------------------------------------------- public API
+def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
+            steps: int, *, n: int | None = None, slab_ratio: float = 0.0,
+            progress: Callable[[int, int], None] | None = None) -> HistoryResult:
+    """Follow a normal load path with incremental Coulomb stick-slip.
+
+    Parameters
+    ----------
+    geometry : {"sphere", "cylinder"}
+        Rigid sphere on a half-space, or rigid cylinder on a half-plane
+        (``slab_ratio = 0``) or slab on a smooth rigid base (plane strain).
+    nu : float
+        Poisson's ratio, in (-1, 0.5].
+    friction : float
+        Coulomb coefficient k >= 0; ``inf`` forbids slip.
+    load_path : sequence of float
+        Load levels P / P_max in [0, 1], starting at 0 (the body starts
+        unloaded), e.g. ``[0, 1, 0]`` for a load-unload cycle.
+    steps : int
+        Equal load steps per path segment (>= 1; 1 gives the one-step load).
+    n : int, optional
+        Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200).
+    slab_ratio : float
+        Cylinder only: a_max / h of the slab (0: half-plane).
+    progress : callable, optional
+        ``progress(i, total)`` after each step.
+
+    Returns
+    -------
+    HistoryResult
+
+    Raises
+    ------
+    ValueError
+        For invalid input; the message names the argument.
+
+    Notes
+    -----
+    Measured against the self-similar solver (sphere, nu = 0.3, monotonic
+    loading): c/a within 0.25 % for c/a = 0.2 ... 0.9 at n = 120 ... 480 and
+    50 ... 800 steps. The work of a 0 -> 1 -> 0 cycle at the default n and
+    1600 steps a segment agrees with n = 480 to 0.1 % (c/a = 0.7 at the top)
+    and 0.5 % (c/a = 0.9); see ``benchmarks/report_history.py``.
+    """
+    if geometry not in GEOMETRIES:
+        raise ValueError(f"geometry must be one of {', '.join(GEOMETRIES)}, got {geometry!r}")
+    nu = _number("nu", nu, -1.0, 0.5, lo_open=True)
+    k = _friction(friction)
+    levels_in = _load_path(load_path)
+    steps = _integer("steps", steps, 1)
+    n = DEFAULT_N if n is None else _integer("n", n, MIN_N, MAX_N)
+    slab = _number("slab_ratio", slab_ratio, 0.0, None)
+    if geometry == "sphere" and slab != 0.0:
+        raise ValueError(f"slab_ratio applies to the cylinder only, got {slab_ratio!r} "
+                         f"for a sphere")
+    if progress is not None and not callable(progress):
+        raise ValueError(f"progress must be callable, got {progress!r}")
+
+    geom = Geometry(geometry, nu, slab)
+    ops = hs.build_operators(geom, n)
+    levels, segment = load_levels(levels_in, steps)
+    raw = hs.run_history(ops, geometry, k, levels, progress=progress)
+
+    with np.errstate(invalid="ignore", divide="ignore"):
+        stick_ratio = np.where(raw.contact_radius > 0, raw.stick_radius / raw.contact_radius,
+                               np.nan)
+    notes = []
+    bad = np.flatnonzero(~raw.converged)
+    if bad.size:
+        notes.append(f"{bad.size} of {levels.size - 1} steps did not converge (first: step "
+                     f"{bad[0]}, largest residual {raw.residual[bad].max():.2g}); they are "
+                     f"kept and flagged")
+    top = int(np.argmax(levels))
+    slipping = int(np.count_nonzero(raw.state[top] >= hs.SLIP_INWARD))
+    if 0 < k < math.inf and 0 < slipping < _MIN_SLIP_ELEMENTS:
+        notes.append(f"the slip zone at the largest load spans only {slipping} elements: "
+                     f"the frictional work is poorly resolved, use a larger n")
+    if np.any(raw.state[:, -2:] > 0):
+        notes.append("the contact reached the end of the mesh: results are not valid")
+    if nu == 0.5 and k > 0:
+        notes.append("nu = 0.5: the normal and tangential problems decouple; no shear arises")
+    return HistoryResult(
+        geometry=geometry, nu=nu, friction=k, load_path=levels_in, steps=steps, n=n,
+        slab_ratio=slab, xi=ops.mid.copy(),
+        xi_bounds=np.stack([ops.edges[:-1], ops.edges[1:]], axis=1),
+        segment=segment, load_ratio=levels, contact_radius=raw.contact_radius,
+        stick_ratio=stick_ratio, indentation=raw.delta, frictional_work=raw.work,
+        state=raw.state, pressure=raw.p / ops.p0, shear=raw.q / ops.p0,
+        tangential_displacement=raw.u, converged=raw.converged,
+        iterations=raw.iterations, residual_norm=raw.residual, message="; ".join(notes))
+
+
+# ----------------------------------------------------------------------------- dataset
+def _attrs(long_name: str, units: str = "1", comment: str = "", **extra: Any) -> dict:
+    out: dict[str, Any] = {"units": units, "long_name": long_name}
+    if comment:
+        out["comment"] = comment
+    out.update(extra)
+    return out
+
+
+def history_to_dataset(result: HistoryResult):
+    """CF-annotated :class:`xarray.Dataset` of a history (dimensions ``step``, ``xi``).
+
+    Every variable has ``units`` (``"1"``: all dimensionless) and
+    ``long_name``; the element state is int8 with ``flag_values`` and
+    ``flag_meanings``; ``xi`` has CF ``bounds``. Global attributes: geometry,
+    poisson_ratio, elements, friction_coefficient, load_path, steps,
+    slab_ratio (cylinder), mesh_extent, contactlib_version, Conventions.
+    Write it with :func:`contactlib.io.write_dataset`.
+    """
+    import xarray as xr
+
+    import contactlib
+
+    from .io import CONVENTIONS
+
+    r = result
+    sphere = r.geometry == "sphere"
+    axis = "r" if sphere else "x"
+    work_scale = ("V R**2 / (E* a_max**5)" if sphere else
+                  "V R**2 / (E* a_max**4), V per unit length over both sides of the axis")
+    sd, ed = ("step",), ("step", "xi")
+    coords = {
+        "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),
+                 _attrs("load step", comment="0: unloaded initial state")),
+        "xi": ("xi", r.xi, _attrs(f"element midpoint over a_max ({axis}/a_max)",
+                                  comment="collocation points; a_max = frictionless "
+                                          "contact radius at load level 1",
+                                  bounds="xi_bounds")),
+    }
+    bool_flags = {"flag_values": np.array([0, 1], dtype=np.int8),
+                  "flag_meanings": "false true"}
+    data = {
+        "xi_bounds": (("xi", "nv"), r.xi_bounds, _attrs(f"element edges over a_max")),
+        "segment": (sd, r.segment.astype(np.int32),
+                    _attrs("load path segment", comment="1-based; 0 for the initial state")),
+        "load_ratio": (sd, r.load_ratio, _attrs("normal load over maximum load (P/P_max)")),
+        "contact_radius": (sd, r.contact_radius, _attrs(
+            "contact radius over a_max (a/a_max)",
+            comment="sub-element estimate from the gap outside the contact")),
+        "stick_ratio": (sd, r.stick_ratio, _attrs(
+            "central stick zone radius over contact radius (c/a)",
+            comment="run of stuck elements from the axis, edge refined from the traction "
+                    "deficit; NaN without contact")),
+        "indentation": (sd, r.indentation, _attrs(
+            "indentation (delta R / a_max**2)",
+            comment="half-plane: relative to the Flamant reference length a_max")),
+        "frictional_work": (sd, r.frictional_work, _attrs(
+            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time")),
+        "state": (ed, r.state.astype(np.int8), _attrs(
+            "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
+            flag_meanings=hs.STATE_MEANINGS,
+            comment="slip_inward: the body slips toward the axis (shear = +k p)")),
+        "pressure": (ed, r.pressure, _attrs(
+            "contact pressure over Hertz peak pressure at a_max",
+            comment="p / p0(a_max); positive in compression")),
+        "shear": (ed, r.shear, _attrs(
+            "shear traction over Hertz peak pressure at a_max",
+            comment="q / p0(a_max), traction on the elastic body, positive away from the axis")),
+        "tangential_displacement": (ed, r.tangential_displacement, _attrs(
+            "tangential surface displacement (u R / a_max**2)",
+            comment="positive away from the axis")),
+        "converged": (sd, r.converged.astype(bool), _attrs(
+            "step converged", comment="solver status; failed steps are kept", **bool_flags)),
+        "iterations": (sd, r.iterations.astype(np.int32), _attrs("active-set iterations")),
+        "residual_norm": (sd, r.residual_norm, _attrs(
+            "largest scaled violation of the contact and friction conditions")),
+    }
+    attrs: dict[str, Any] = {
+        "title": f"contactlib loading history ({r.geometry})",
+        "geometry": r.geometry,
+        "poisson_ratio": float(r.nu),
+        "elements": int(r.n),
+        "friction_coefficient": float(r.friction),
+        "load_path": np.asarray(r.load_path, dtype=float),
+        "steps": int(r.steps),
+    }
+    if not sphere:
+        attrs["slab_ratio"] = float(r.slab_ratio)
+    attrs["mesh_extent"] = float(hs.MESH_EXTENT)
+    attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
+    if r.message:
+        attrs["message"] = r.message
+    attrs["contactlib_version"] = str(contactlib.__version__)
+    attrs["Conventions"] = CONVENTIONS
+    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)

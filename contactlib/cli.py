@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import math
+from contextlib import contextmanager
 import re
 import sys
 import traceback
@@ -446,18 +447,28 @@ def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType) -> i
     return 0
 
 
-def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
-    ratios = kwargs.pop("stick_ratios")
-    progress = _progress_printer(sys.stderr)
+@contextmanager
+def _progress(label: str):
+    """A progress printer on a terminal (else None); library ValueErrors become usage errors.
+
+    The progress line is cleared on the way out, whatever happens.
+    """
+    progress = _progress_printer(sys.stderr, label)
     try:
-        sols = api.sweep(kwargs.pop("geometry"), kwargs.pop("nu"), ratios,
-                         progress=progress, **kwargs)
+        yield progress
     except ValueError as exc:  # the library's own input validation
         raise UsageError(str(exc)) from exc
     finally:
         if progress is not None:
             sys.stderr.write("\r\033[K")
             sys.stderr.flush()
+
+
+def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
+    ratios = kwargs.pop("stick_ratios")
+    with _progress("sweep") as progress:
+        sols = api.sweep(kwargs.pop("geometry"), kwargs.pop("nu"), ratios,
+                         progress=progress, **kwargs)
     print(format_table(sols))
     _write(sols, output)
     print(f"wrote {output}")
@@ -472,15 +483,8 @@ def _history_api() -> ModuleType:
 
 
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
-    progress = _progress_printer(sys.stderr, "history")
-    try:
+    with _progress("history") as progress:
         res = module.history(progress=progress, **kwargs)
-    except ValueError as exc:  # the library's own input validation
-        raise UsageError(str(exc)) from exc
-    finally:
-        if progress is not None:
-            sys.stderr.write("\r\033[K")
-            sys.stderr.flush()
     print(format_history(res))
     from contactlib import io
 

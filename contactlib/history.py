@@ -73,7 +73,7 @@ from . import history_solver as hs
 from .api import GEOMETRIES, _number
 from .geometry import Geometry
 
-__all__ = ["history", "history_to_dataset", "HistoryResult", "DEFAULT_N", "MAX_N",
+__all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N",
            "load_levels"]
 
 DEFAULT_N = 240  # elements over [0, 1.2 a_max]: element size a_max / 200
@@ -390,3 +390,62 @@ def history_to_dataset(result: HistoryResult):
     attrs["contactlib_version"] = str(contactlib.__version__)
     attrs["Conventions"] = CONVENTIONS
     return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def stack_histories(datasets: Sequence[Any]):
+    """Histories that differ only in k, stacked along a ``friction_coefficient`` dimension.
+
+    Parameters
+    ----------
+    datasets : sequence of xarray.Dataset
+        From :func:`history_to_dataset`, same geometry, nu, load path, steps,
+        n and slab ratio, distinct friction coefficients.
+
+    Returns
+    -------
+    xarray.Dataset
+        Every variable gains a leading ``friction_coefficient`` dimension
+        (coordinate: k, increasing); the ``friction_coefficient`` attribute
+        is dropped, ``message`` joins the members' notes.
+
+    Raises
+    ------
+    ValueError
+        When the histories differ in anything but k, or repeat a k.
+    """
+    import xarray as xr
+
+    items = list(datasets)
+    if not items:
+        raise ValueError("stack_histories needs at least one history dataset")
+    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
+    first = items[0].attrs
+    for ds in items[1:]:
+        for key in same:
+            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
+                                                   np.asarray(first[key])):
+                raise ValueError(f"histories to stack must share {key}: "
+                                 f"{first[key]!r} vs {ds.attrs.get(key)!r}")
+        if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):
+            raise ValueError("histories to stack must share the load path")
+    ks = np.array([float(ds.attrs["friction_coefficient"]) for ds in items])
+    if np.unique(ks).size != ks.size:
+        raise ValueError(f"histories to stack repeat a friction coefficient: {ks.tolist()}")
+    order = np.argsort(ks)
+    members = []
+    for i in order:
+        ds = items[i].copy()
+        ds.attrs = {k: v for k, v in ds.attrs.items()
+                    if k not in ("friction_coefficient", "message")}
+        members.append(ds)
+    shared = ("xi_bounds", "segment", "load_ratio")  # the path and the mesh: no k in them
+    varying = [v for v in members[0].data_vars if v not in shared]
+    out = xr.concat(members, dim="friction_coefficient", data_vars=varying, coords="minimal",
+                    compat="equals", combine_attrs="override")
+    out = out.assign_coords(friction_coefficient=ks[order])
+    out["friction_coefficient"].attrs = _attrs("Coulomb friction coefficient k")
+    notes = [f"k = {ks[i]:g}: {items[i].attrs['message']}" for i in order
+             if items[i].attrs.get("message")]
+    if notes:
+        out.attrs["message"] = "; ".join(notes)
+    return out

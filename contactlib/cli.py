@@ -477,9 +477,10 @@ def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
 
 def _history_api() -> ModuleType:
     """Import the history module lazily (so ``--help`` never needs it)."""
-    from contactlib import history
+    import importlib
 
-    return history
+    # the module, not the function contactlib.history that shadows it as an attribute
+    return importlib.import_module("contactlib.history")
 
 
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:

@@ -44,6 +44,12 @@ from .theory import uncoupled_friction
 
 __all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part"]
 
+# Extended precision for the residual of one step of iterative refinement (see
+# solve_default): 80-bit on x86-64 Linux; where long double is plain double
+# (e.g. Windows, Apple arm64) the step still helps, but k keeps a round-off
+# floor of about 1e-5 relative at n = 1024.
+_EXTENDED = np.longdouble
+
 
 @dataclass
 class DiscreteSolution:
@@ -266,11 +272,25 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     rs = 1.0 / np.max(np.abs(a0 + k * a1), axis=1)
     cs = 1.0 / np.max(np.abs((a0 + k * a1) * rs[:, None]), axis=0)
     a0s, a1s, bs = a0 * rs[:, None] * cs, a1 * rs[:, None] * cs, b * rs
+    # g is the traction difference at a node ~1/N^2 from c, where it and its
+    # k-derivative are O(1/N^2) while the LU's round-off in p and phi is
+    # ~eps cond(A) ~ eps N^2: g(k) was noisy at ~1e-5 relative in k for
+    # N = 1024 (Newton stalled there). One step of iterative refinement with
+    # the residual in extended precision removes the noise (k stable to
+    # ~1e-10 at N = 1024 and 2048).
+    a0e, a1e = a0s.astype(_EXTENDED), a1s.astype(_EXTENDED)
     for it in range(1, max_iter + 1):
         lu = linalg.lu_factor(a0s + k * a1s, check_finite=False)
-        x = cs * linalg.lu_solve(lu, bs, check_finite=False)
+        ak = a0e + _EXTENDED(k) * a1e
+
+        def refined(rhs: np.ndarray) -> np.ndarray:
+            y = linalg.lu_solve(lu, rhs, check_finite=False)
+            res = (rhs.astype(_EXTENDED) - ak @ y.astype(_EXTENDED)).astype(float)
+            return y + linalg.lu_solve(lu, res, check_finite=False)
+
+        x = cs * refined(bs)
         g = shape[j] * x[nn + j] - k * x[j]
-        xk = -cs * linalg.lu_solve(lu, rs * (a1 @ x), check_finite=False)
+        xk = -cs * refined(rs * (a1 @ x))
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg
         k -= step

@@ -25,6 +25,7 @@ include: "workflow/rules/solve.smk"
 include: "workflow/rules/check.smk"
 include: "workflow/rules/energy.smk"
 include: "workflow/rules/assemble.smk"
+include: "workflow/rules/history.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/convergence.smk"
 

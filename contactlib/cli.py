@@ -94,12 +94,11 @@ def parse_slab_ratio(text: str) -> float:
     return value
 
 
-def parse_n(text: str) -> int:
-    """Number of elements, an integer >= 2."""
-    req = "an integer >= 2"
-    if not _INT_RE.match(text) or len(text.strip()) > 12 or int(text) < 2:
+def parse_n(text: str, lo: int = 2, hi: int = 4096) -> int:
+    """Number of elements, an integer in [lo, hi]."""
+    if not _INT_RE.match(text) or len(text.strip()) > 12 or not lo <= int(text) <= hi:
         shown = text if len(text) <= 40 else text[:37] + "..."
-        raise UsageError(f"--n must be {req} (at most 4096), got {shown!r}")
+        raise UsageError(f"--n must be an integer >= {lo} (at most {hi}), got {shown!r}")
     return int(text)
 
 
@@ -134,10 +133,11 @@ def parse_load_path(text: str) -> list[float]:
     return values
 
 
-def parse_steps(text: str) -> int:
-    """Load steps per path segment, a positive integer."""
-    if not _INT_RE.match(text) or int(text) < 1:
-        raise UsageError(f"--steps must be a positive integer, got {text!r}")
+def parse_steps(text: str, hi: int = 100_000) -> int:
+    """Load steps per path segment, a positive integer (at most ``hi``)."""
+    if not _INT_RE.match(text) or len(text.strip()) > 12 or not 1 <= int(text) <= hi:
+        shown = text if len(text) <= 40 else text[:37] + "..."
+        raise UsageError(f"--steps must be a positive integer (at most {hi}), got {shown!r}")
     return int(text)
 
 
@@ -289,6 +289,10 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
     return kwargs
 
 
+def _history_limit(name: str) -> int:
+    return int(getattr(_history_api(), name))
+
+
 def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     """Checked keyword arguments of :func:`contactlib.history.history`."""
     if args.geometry not in GEOMETRIES:
@@ -299,8 +303,9 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "nu": parse_nu(args.nu),
         "friction": parse_friction(args.friction),
         "load_path": parse_load_path(args.load_path),
-        "steps": parse_steps(args.steps),
-        "n": None if args.n is None else parse_n(args.n),
+        "steps": parse_steps(args.steps, _history_limit("MAX_STEPS")),
+        "n": None if args.n is None else parse_n(args.n, _history_limit("MIN_N"),
+                                                 _history_limit("MAX_N")),
         "slab_ratio": parse_slab_ratio(args.slab_ratio),
     }
     if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:

@@ -73,12 +73,13 @@ from . import history_solver as hs
 from .api import GEOMETRIES, _number
 from .geometry import Geometry
 
-__all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N",
+__all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS",
            "load_levels"]
 
 DEFAULT_N = 240  # elements over [0, 1.2 a_max]: element size a_max / 200
 MIN_N = 16
 MAX_N = 2048
+MAX_STEPS = 100_000  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = 12  # fewer slipping elements at the top load: work under-resolved
 
 
@@ -252,7 +253,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     nu = _number("nu", nu, -1.0, 0.5, lo_open=True)
     k = _friction(friction)
     levels_in = _load_path(load_path)
-    steps = _integer("steps", steps, 1)
+    steps = _integer("steps", steps, 1, MAX_STEPS)
     n = DEFAULT_N if n is None else _integer("n", n, MIN_N, MAX_N)
     slab = _number("slab_ratio", slab_ratio, 0.0, None)
     if geometry == "sphere" and slab != 0.0:

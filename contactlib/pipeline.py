@@ -49,7 +49,7 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
     """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
     return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
                               normal=normal, shear=shear, samples=scene.needs_samples,
-                              progress=progress)
+                              tolerance=scene.tolerance, progress=progress)
 
 
 def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
@@ -118,6 +118,20 @@ def assemble(scene: Scene, records: Sequence[dict], *,
             ds[name] = ("stick_ratio", np.asarray(checks[name], dtype=float),
                         {"units": "1", "long_name": name.replace("_", " "),
                          "comment": "relative measure behind the flag; <= 1e-4 passes"})
+    if scene.tolerance is not None:
+        used = np.array([int(r["elements"]) for r in records], dtype=np.int32)
+        ds["elements"] = ("stick_ratio", used, {
+            "units": "1", "long_name": "elements used for this stick ratio",
+            "comment": "planned from the measured convergence, doubled where the "
+                       "a-posteriori estimate missed the tolerance"})
+        ds["error_estimate"] = ("stick_ratio", np.array(
+            [float(r["error_estimate"]) for r in records]), {
+            "units": "1", "long_name": "estimated relative error of friction_coefficient",
+            "comment": "from the same case at n/2 and n/4 (observed order, clipped to [1, 2])"})
+        ds.attrs["tolerance"] = float(scene.tolerance)
+        ds.attrs["elements"] = int(used.max())
+        ds.attrs["tolerance_met"] = int(bool(np.all(ds["error_estimate"].values
+                                                    <= scene.tolerance)))
     ds.attrs["scene"] = scene.name
     ds.attrs["scene_config_hash"] = scene.hash
     ds.attrs["outputs"] = " ".join(scene.outputs)

@@ -1,8 +1,15 @@
 """Scenes: the named cases of a workflow configuration, validated and keyed.
 
-A scene (``config/config.yaml``, under ``scenes:``) names a geometry, a
-material, a method and resolution, the stick ratios to solve and the outputs
-it needs. This module turns one scene's mapping into a :class:`Scene`,
+A scene (``config/config.yaml``, under ``scenes:``) is of one of two kinds:
+
+* ``self-similar`` (the default): a geometry, a material, a method and a
+  resolution ``n`` *or* an accuracy target ``tolerance`` (relative error in
+  k; the method and n are then picked from the measured convergence, see
+  :mod:`contactlib.accuracy`), the stick ratios to solve and the outputs it
+  needs -> a :class:`Scene`;
+* ``history``: an incremental load path (:func:`contactlib.history.history`)
+  for one or several friction coefficients -> a :class:`HistoryScene`.
+ This module turns one scene's mapping into a :class:`Scene`,
 validated with the library's own rules (the JSON schema of the workflow
 checks types and ranges first), and derives what the workflow needs from it:
 which influence parts to build and under which shared key, which stages to
@@ -25,13 +32,17 @@ import json
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from . import api
+from . import accuracy, api
 from .geometry import Geometry
 from .stages import OUTPUTS, _paper_m, parts_needed
 
-__all__ = ["Scene", "parse_scene", "parse_scenes", "config_hash"]
+__all__ = ["Scene", "HistoryScene", "KINDS", "parse_scene", "parse_scenes", "config_hash"]
 
-_KEYS = ("geometry", "nu", "method", "n", "stick_ratios", "slab_ratio", "outputs")
+KINDS = ("self-similar", "history")
+_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "stick_ratios", "slab_ratio",
+         "outputs")
+_HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
+                 "slab_ratio")
 
 
 def config_hash(raw: Mapping[str, Any]) -> str:
@@ -65,6 +76,10 @@ class Scene:
         Subset of ``k_curve``, ``stresses``, ``displacements``, ``energy``.
     hash : str
         :func:`config_hash` of the scene's mapping as configured.
+    tolerance : float or None
+        Relative error in k the scene asked for (then ``method`` and ``n``
+        were picked by :func:`contactlib.accuracy.plan`, and the solve
+        checks the error a posteriori, refining n where needed).
     """
 
     name: str
@@ -76,6 +91,8 @@ class Scene:
     slab_ratio: float
     outputs: tuple[str, ...]
     hash: str
+    tolerance: float | None = None
+    kind: str = "self-similar"
 
     @property
     def geometry_object(self) -> Geometry:
@@ -130,7 +147,11 @@ class Scene:
                 "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios)}
 
 
-def parse_scene(name: str, raw: Mapping[str, Any]) -> Scene:
+def _fail(name: str, key: str, message: str) -> ValueError:
+    return ValueError(f"scenes.{name}.{key}: {message}")
+
+
+def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     """Validate one scene mapping with the library's rules.
 
     Raises
@@ -139,17 +160,34 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> Scene:
         Naming the scene and the key, e.g. ``scenes.bad.nu: nu must be in
         (-1.0, 0.5], got 0.7``.
     """
-    def fail(key: str, message: str) -> ValueError:
-        return ValueError(f"scenes.{name}.{key}: {message}")
-
     if not isinstance(raw, Mapping):
         raise ValueError(f"scenes.{name}: must be a mapping, got {raw!r}")
+    kind = raw.get("kind", "self-similar")
+    if kind not in KINDS:
+        raise _fail(name, "kind", f"must be one of {', '.join(KINDS)}, got {kind!r}")
+    if kind == "history":
+        return _parse_history(name, raw)
+
+    def fail(key: str, message: str) -> ValueError:
+        return _fail(name, key, message)
+
     unknown = sorted(str(k) for k in set(raw) - set(_KEYS))
     if unknown:
         raise fail(unknown[0], f"unknown key (allowed: {', '.join(_KEYS)})")
     for key in ("geometry", "nu", "stick_ratios"):
         if key not in raw:
             raise fail(key, "is required")
+    tolerance = None
+    if "tolerance" in raw:
+        for key in ("n", "method"):
+            if key in raw:
+                raise fail(key, "give either tolerance or n/method, not both (with a "
+                                "tolerance the method and n are picked from the measured "
+                                "convergence)")
+        try:
+            tolerance = accuracy.check_tolerance(raw["tolerance"])
+        except ValueError as exc:
+            raise fail("tolerance", str(exc)) from None
     method = raw.get("method", "default")
     try:
         geom, n, method = api._validate_common(raw["geometry"], raw["nu"], raw.get("n"), method,
@@ -164,16 +202,110 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> Scene:
                 _paper_m(c, n)
     except ValueError as exc:
         raise fail("stick_ratios", str(exc)) from None
+    if tolerance is not None:
+        if raw["stick_ratios"] == "all":
+            raise fail("stick_ratios", "'all' means m/n and needs a given n; with a tolerance "
+                                       "list the stick ratios")
+        method, n = accuracy.plan(geom, ratios, tolerance)
     outputs = raw.get("outputs", list(OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         raise fail("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
     return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,
-                 outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw))
+                 outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
+                 tolerance=tolerance)
 
 
-def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, Scene]:
+@dataclass(frozen=True)
+class HistoryScene:
+    """One validated scene of kind ``history`` (see :func:`contactlib.history.history`).
+
+    Attributes
+    ----------
+    name, geometry, nu, slab_ratio, hash
+        As for :class:`Scene` (``slab_ratio`` is a_max/h).
+    frictions : tuple of float
+        Friction coefficients, one history each (stacked along
+        ``friction_coefficient`` in the scene's dataset).
+    load_path : tuple of float
+        Load levels P/P_max, starting at 0.
+    steps : int
+        Steps per path segment.
+    n : int
+        Elements over [0, 1.2 a_max].
+    """
+
+    name: str
+    geometry: str
+    nu: float
+    frictions: tuple[float, ...]
+    load_path: tuple[float, ...]
+    steps: int
+    n: int
+    slab_ratio: float
+    hash: str
+    kind: str = "history"
+
+    def run_spec(self, index: int) -> dict[str, Any]:
+        """Keyword arguments of :func:`contactlib.history.history` for friction ``index``."""
+        return {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
+                "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
+                "slab_ratio": self.slab_ratio}
+
+
+def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
+    import importlib
+
+    hist = importlib.import_module("contactlib.history")  # the module (the package
+    # attribute ``history`` is the function)
+    unknown = sorted(str(k) for k in set(raw) - set(_HISTORY_KEYS))
+    if unknown:
+        raise _fail(name, unknown[0], f"unknown key for a history scene (allowed: "
+                                      f"{', '.join(_HISTORY_KEYS)})")
+    for key in ("geometry", "nu", "friction", "load_path", "steps"):
+        if key not in raw:
+            raise _fail(name, key, "is required")
+    friction = raw["friction"]
+    values = list(friction) if isinstance(friction, (list, tuple)) else [friction]
+    if not values:
+        raise _fail(name, "friction", "must not be empty")
+    try:
+        ks = tuple(hist._friction(k) for k in values)
+    except ValueError as exc:
+        raise _fail(name, "friction", str(exc)) from None
+    if len(set(ks)) != len(ks):
+        raise _fail(name, "friction", f"repeats a value: {values!r}")
+    try:
+        path = hist._load_path(raw["load_path"])
+    except ValueError as exc:
+        raise _fail(name, "load_path", str(exc)) from None
+    try:
+        steps = hist._integer("steps", raw["steps"], 1, hist.MAX_STEPS)
+    except ValueError as exc:
+        raise _fail(name, "steps", str(exc)) from None
+    try:
+        n = hist.DEFAULT_N if raw.get("n") is None else hist._integer(
+            "n", raw["n"], hist.MIN_N, hist.MAX_N)
+    except ValueError as exc:
+        raise _fail(name, "n", str(exc)) from None
+    if raw["geometry"] not in api.GEOMETRIES:
+        raise _fail(name, "geometry", f"must be one of {', '.join(api.GEOMETRIES)}, "
+                                      f"got {raw['geometry']!r}")
+    try:
+        nu = api._number("nu", raw["nu"], -1.0, 0.5, lo_open=True)
+        slab = api._number("slab_ratio", raw.get("slab_ratio", 0.0), 0.0, None)
+    except ValueError as exc:
+        key = str(exc).split(" ", 1)[0]
+        raise _fail(name, key, str(exc)) from None
+    if raw["geometry"] == "sphere" and slab != 0.0:
+        raise _fail(name, "slab_ratio", "applies to the cylinder only")
+    return HistoryScene(name=name, geometry=raw["geometry"], nu=nu, frictions=ks,
+                        load_path=path, steps=steps, n=n, slab_ratio=slab,
+                        hash=config_hash(raw))
+
+
+def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:
     """Validate every scene of a configuration (see :func:`parse_scene`)."""
     if not isinstance(scenes, Mapping) or not scenes:
         raise ValueError("scenes: must be a non-empty mapping of scene names to scenes")

@@ -189,6 +189,7 @@ def _rebuild(geometry: Geometry, rec: Record) -> DiscreteSolution | PaperSolutio
 def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[float], *,
                 normal: dict[str, np.ndarray] | None = None,
                 shear: dict[str, np.ndarray] | None = None, samples: bool = True,
+                tolerance: float | None = None,
                 progress: Callable[[int, int], None] | None = None) -> list[Record]:
     """Solve every stick ratio; one case record each, in the given order.
 
@@ -204,6 +205,11 @@ def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[
         given).
     samples : bool
         Also store the samples :func:`check_case` and :func:`work_case` need.
+    tolerance : float, optional
+        Relative error in k to reach (default method): each case's error is
+        estimated from n/2 and n/4 and n doubled where it falls short (see
+        :func:`contactlib.accuracy.solve_to_tolerance`); the record then
+        holds ``elements`` (the n used) and ``error_estimate``.
     progress : callable, optional
         ``progress(i, total)`` after each case.
 
@@ -217,7 +223,15 @@ def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[
     for i, c in enumerate(stick_ratios):
         c = float(c)
         solved = _solved_ratio(geometry, c)
-        rec = _record(geometry, _discrete(geometry, method, n, solved, normal, shear), samples)
+        d = _discrete(geometry, method, n, solved, normal, shear)
+        extra = {}
+        if tolerance is not None:
+            d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance)
+        rec = _record(geometry, d, samples)
+        rec.update(extra)
+        if extra.get("tolerance_message"):
+            rec["message"] = "; ".join(x for x in (rec["message"], extra["tolerance_message"])
+                                       if x)
         if solved != c:  # nu = 0.5: Hertz for every stick ratio, k undetermined
             rec["stick_ratio"] = c
             rec["k"] = np.inf if c == 1.0 else 0.0
@@ -226,6 +240,26 @@ def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[
         if progress is not None:
             progress(i + 1, len(stick_ratios))
     return out
+
+
+def _to_tolerance(geometry: Geometry, method: str, n: int, c: float, d: DiscreteSolution,
+                  tolerance: float) -> tuple[DiscreteSolution, Record]:
+    """Refine one case until its a-posteriori k error meets the tolerance."""
+    from . import accuracy
+
+    if method != "default":
+        raise ValueError("a tolerance needs the default method (the paper's scheme does not "
+                         "converge to the physical k)")
+    if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact
+        return d, {"elements": n, "error_estimate": 0.0, "tolerance_message": ""}
+    sols = {n: d}
+
+    def solve_k(m: int) -> float:
+        sols[m] = solve_default(geometry, c, m)
+        return sols[m].k
+
+    used, est, msg = accuracy.solve_to_tolerance(solve_k, n, tolerance, known={n: d.k})
+    return sols[used], {"elements": used, "error_estimate": est, "tolerance_message": msg}
 
 
 # ----------------------------------------------------------------------------- post-processing

@@ -13,7 +13,10 @@ from contactlib.scene import parse_scenes
 
 SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 VERSION = contactlib.__version__
-FIGURES = ("fig2", "fig3", "fig4", "fig5")
+PAPER_FIGURES = ("fig2", "fig3", "fig4", "fig5")
+# loading-history figures (scenes of kind history) -> contactlib.history_figures
+HISTORY_FIGURES = ("history_stick_radius", "history_stick_map", "history_loop", "history_energy")
+FIGURES = PAPER_FIGURES + HISTORY_FIGURES
 # outputs a figure draws from each of its scenes
 FIGURE_NEEDS = {
     "fig2": ("k_curve",),
@@ -48,11 +51,24 @@ def _validate_config(cfg):
     except ValueError as exc:
         raise WorkflowError(f"invalid configuration:\n  {exc}") from None
     for fig, names in (cfg.get("figures") or {}).items():
+        if fig == "history_stick_map" and len(names) > 1:
+            raise WorkflowError(
+                f"invalid configuration:\n  figures.{fig}: one scene (the map of one "
+                f"history), got {len(names)}"
+            )
         for name in names:
             if name not in scenes:
                 raise WorkflowError(
                     f"invalid configuration:\n  figures.{fig}: no scene named {name!r}"
                 )
+            want = "history" if fig in HISTORY_FIGURES else "self-similar"
+            if scenes[name].kind != want:
+                raise WorkflowError(
+                    f"invalid configuration:\n  figures.{fig}: scene {name!r} is of kind "
+                    f"{scenes[name].kind}; this figure draws scenes of kind {want}"
+                )
+            if want == "history":
+                continue
             missing = [o for o in FIGURE_NEEDS[fig] if o not in scenes[name].outputs]
             if missing:
                 raise WorkflowError(
@@ -62,7 +78,9 @@ def _validate_config(cfg):
     return scenes
 
 
-SCENES = _validate_config(config)
+ALL_SCENES = _validate_config(config)
+SCENES = {n: s for n, s in ALL_SCENES.items() if s.kind == "self-similar"}
+HISTORIES = {n: s for n, s in ALL_SCENES.items() if s.kind == "history"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
 for _name, _st in CONVERGENCE["studies"].items():
     _ns = _st["n"]
@@ -86,6 +104,8 @@ for _s in SCENES.values():
 
 wildcard_constraints:
     scene="|".join(sorted(SCENES)) or "NONE",
+    hscene="|".join(sorted(HISTORIES)) or "NONE",
+    index="[0-9]+",
     key="[^/]+",
     part="normal|shear",
     study="|".join(sorted(CONVERGENCE["studies"])) or "NONE",
@@ -108,8 +128,20 @@ def scene_params(wildcards):
         "slab_ratio": s.slab_ratio,
         "stick_ratios": list(s.stick_ratios),
         "outputs": list(s.outputs),
+        "tolerance": s.tolerance,
         "hash": s.hash,
     }
+
+
+def history_params(wildcards):
+    """One history run: the library call's arguments plus provenance."""
+    s = HISTORIES[wildcards.hscene]
+    return dict(s.run_spec(int(wildcards.index)), scene=s.name, hash=s.hash)
+
+
+def history_runs(wildcards):
+    s = HISTORIES[wildcards.hscene]
+    return [f"results/history/{s.name}/k{i}.nc" for i in range(len(s.frictions))]
 
 
 def influence_files(wildcards):
@@ -132,11 +164,12 @@ def figure_scenes(fig):
 
 
 def all_targets():
-    out = [f"results/datasets/{name}.nc" for name in SCENES]
+    out = [f"results/datasets/{name}.nc" for name in ALL_SCENES]
     for fig in FIGURES:
         if figure_scenes(fig):
             out += [f"results/figures/{fig}.png", f"results/figures/{fig}.pdf"]
-    out += ["results/tables/key-numbers.csv", "results/tables/key-numbers.html"]
+    if SCENES:  # the key-numbers table sums up the self-similar scenes
+        out += ["results/tables/key-numbers.csv", "results/tables/key-numbers.html"]
     return out
 
 
@@ -168,7 +201,24 @@ def mem_solve(wildcards, attempt):
 
 
 def runtime_solve(wildcards, attempt):
-    """Minutes: ~1 s a case at n = 256, growing like n^2 (kernels) to n^3 (LU)."""
+    """Minutes: ~1 s a case at n = 256, growing like n^2 (kernels) to n^3 (LU).
+
+    A tolerance scene may double n once or twice after its a-posteriori check.
+    """
     s = SCENES[wildcards.scene]
-    per_case = max(1.0, (s.n / 256) ** 2.5)
+    per_case = max(1.0, (s.n / 256) ** 2.5) * (8 if s.tolerance is not None else 1)
     return int(5 + len(s.stick_ratios) * per_case / 60 * 4) * attempt
+
+
+def mem_history(wildcards, attempt):
+    """Dense operators over the history mesh (a few n x n) plus the per-step arrays."""
+    s = HISTORIES[wildcards.hscene]
+    steps = s.steps * (len(s.load_path) - 1) + 1
+    return int(500 + 10 * 8 * s.n**2 / 1e6 + 6 * 8 * steps * s.n / 1e6) * attempt
+
+
+def runtime_history(wildcards, attempt):
+    """Minutes: ~2 ms a step at n = 240, growing like n^2 ... n^3."""
+    s = HISTORIES[wildcards.hscene]
+    steps = s.steps * (len(s.load_path) - 1)
+    return int(5 + steps * 0.002 * max(1.0, (s.n / 240) ** 3) / 60 * 4) * attempt

@@ -1,0 +1,154 @@
+"""Accuracy targets: pick the method and n for a tolerance on k, then check it.
+
+A scene (or a call) may ask for a relative error in the friction coefficient
+k instead of a resolution. Two steps:
+
+1. **Plan** (:func:`plan`, before anything is solved): the cheapest method
+   and n that the *measured* convergence says will meet the tolerance at
+   every requested stick ratio. The measurements are the convergence study
+   (``snakemake convergence``, :mod:`contactlib.convergence`): the default
+   method's k error at n = 256 against Richardson extrapolation, over c/a
+   from 0.02 to 0.98 (:data:`ERROR_AT_256`), falling like n^-2 (observed
+   order 1.9 ... 2.1 at every c/a for n = 16 ... 2048). The paper's scheme
+   never qualifies: its k does not converge to the physical value (38 % off
+   at c/a = 0.1, 83-126 % at 0.5 for n = 10 ... 320), so no n meets any
+   tolerance below 0.3.
+2. **Check** (:func:`estimate`, after the solve): the error of each case is
+   estimated a posteriori from the same case at n/2 and n/4 (nested meshes):
+   with d1 = k(n/4) - k(n/2), d2 = k(n/2) - k(n) and the observed order
+   p = log2(d1/d2) (clipped to [1, 2], 2 when the differences do not shrink
+   cleanly), the error of k(n) is estimated as |d2| / (2^p - 1). Where that
+   exceeds the tolerance the case is solved again at 2n (up to
+   :data:`MAX_N`); the n used and the estimate are recorded. A target that
+   cannot be met at MAX_N is reported as such, never silently.
+
+Both use relative errors, |k_n - k| / k.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable, Sequence
+
+import numpy as np
+
+from .geometry import Geometry
+
+__all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
+           "plan", "estimate", "solve_to_tolerance"]
+
+MAX_N = 4096
+MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
+MIN_TOLERANCE = 1e-8
+MAX_TOLERANCE = 0.1
+SAFETY = 2.0  # the plan aims at tolerance / SAFETY
+
+# Relative k error of the default method at n = 256 (nu = 0.3) against the
+# Richardson extrapolation of n = 256 ... 2048, from the convergence study
+# (sphere on the half-space; cylinder: the larger of the half-plane and a/h =
+# 0.05). Columns: c/a.
+_C_TABLE = np.array([0.02, 0.1, 0.3, 0.5, 0.7, 0.9, 0.98])
+ERROR_AT_256 = {
+    "sphere": np.array([1.7e-5, 1.8e-5, 1.9e-5, 2.0e-5, 2.0e-5, 4.6e-5, 2.7e-4]),
+    "cylinder": np.array([7.1e-5, 2.7e-5, 1.6e-5, 1.6e-5, 1.6e-5, 4.6e-5, 1.9e-4]),
+}
+
+
+def check_tolerance(value: object) -> float:
+    """A relative tolerance on k, a number in [MIN_TOLERANCE, MAX_TOLERANCE]."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"tolerance must be a number in [{MIN_TOLERANCE:g}, "
+                         f"{MAX_TOLERANCE:g}], got {value!r}")
+    v = float(value)
+    if not (math.isfinite(v) and MIN_TOLERANCE <= v <= MAX_TOLERANCE):
+        raise ValueError(f"tolerance must be in [{MIN_TOLERANCE:g}, {MAX_TOLERANCE:g}] "
+                         f"(relative error in k), got {value!r}")
+    return v
+
+
+def predicted_error(geometry: str, stick_ratio: float, n: int) -> float:
+    """Measured-model relative k error of the default method (0 at c/a = 0 and 1: exact)."""
+    c = float(stick_ratio)
+    if c <= 0.0 or c >= 1.0:
+        return 0.0
+    table = ERROR_AT_256[geometry]
+    if c > _C_TABLE[-1]:  # thinner slip zone than measured: scale like the last interval
+        slope = np.log(table[-1] / table[-2]) / np.log((1 - _C_TABLE[-2]) / (1 - _C_TABLE[-1]))
+        at256 = table[-1] * ((1 - _C_TABLE[-1]) / (1 - c)) ** slope
+    else:
+        at256 = float(np.exp(np.interp(c, _C_TABLE, np.log(table))))
+    return float(at256 * (256.0 / n) ** 2)
+
+
+def plan(geometry: Geometry, stick_ratios: Sequence[float], tolerance: float) -> tuple[str, int]:
+    """The cheapest (method, n) predicted to meet ``tolerance`` at every stick ratio.
+
+    Returns ``("default", n)`` with n a multiple of 64 in [64, MAX_N].
+
+    Raises
+    ------
+    ValueError
+        When even ``MAX_N`` is predicted to miss the tolerance (names the
+        worst stick ratio and the n it would need).
+    """
+    tol = check_tolerance(tolerance)
+    worst = max(stick_ratios, key=lambda c: predicted_error(geometry.name, c, 256))
+    e256 = predicted_error(geometry.name, worst, 256)
+    if e256 == 0.0:
+        return "default", MIN_N
+    need = 256.0 * math.sqrt(SAFETY * e256 / tol)
+    n = max(MIN_N, 64 * math.ceil(need / 64))
+    if n > MAX_N:
+        raise ValueError(f"tolerance {tol:g} needs about n = {n} at c/a = {worst:g} (measured "
+                         f"k error {e256:.1e} at n = 256, falling like n^-2), beyond the "
+                         f"largest supported n = {MAX_N}")
+    return "default", n
+
+
+def estimate(k_quarter: float, k_half: float, k_full: float) -> tuple[float, float]:
+    """(relative error estimate of k_full, order used) from nested n/4, n/2, n."""
+    d1, d2 = k_quarter - k_half, k_half - k_full
+    if not all(np.isfinite([k_quarter, k_half, k_full])) or k_full == 0.0:
+        return math.inf, math.nan
+    if d2 == 0.0:
+        return 0.0, math.nan
+    p = 2.0
+    if d1 != 0.0 and d1 / d2 > 1.0:
+        p = float(np.clip(np.log2(d1 / d2), 1.0, 2.0))
+    return abs(d2) / (2.0**p - 1.0) / abs(k_full), p
+
+
+def solve_to_tolerance(solve_k: Callable[[int], float], n: int, tolerance: float,
+                       known: dict[int, float] | None = None) -> tuple[int, float, str]:
+    """Refine n (doubling, up to MAX_N) until the a-posteriori estimate meets the tolerance.
+
+    Parameters
+    ----------
+    solve_k : callable
+        ``solve_k(n) -> k`` for one case (only called for the n not in ``known``).
+    n : int
+        Planned resolution (a multiple of 64).
+    tolerance : float
+    known : dict, optional
+        k already computed, by n (e.g. the planned solve itself).
+
+    Returns
+    -------
+    (n_used, error_estimate, message)
+        ``message`` is empty when the target is met.
+    """
+    ks = dict(known or {})
+
+    def k_at(m: int) -> float:
+        if m not in ks:
+            ks[m] = float(solve_k(m))
+        return ks[m]
+
+    while True:
+        est, _ = estimate(k_at(n // 4), k_at(n // 2), k_at(n))
+        if est <= tolerance:
+            return n, est, ""
+        if 2 * n > MAX_N:
+            return n, est, (f"tolerance {tolerance:g} not met: estimated k error {est:.2g} at "
+                            f"the largest n = {n}")
+        n *= 2

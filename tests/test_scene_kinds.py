@@ -1,0 +1,113 @@
+"""Scenes of kind history and scenes with a tolerance: parsing, the workflow, the data.
+
+The workflow part copies the workflow into a temporary folder (as
+tests/test_workflow.py does) and runs a tiny history scene end to end.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import yaml
+
+from contactlib.history import history, history_to_dataset, stack_histories
+from contactlib.io import read_dataset
+from contactlib.scene import HistoryScene, Scene, parse_scene
+
+from test_workflow import make_workdir, run  # noqa: E402 (the shared workflow helpers)
+
+HIST = {"kind": "history", "geometry": "sphere", "nu": 0.3, "friction": [0.3, 0.1],
+        "load_path": [0, 1, 0], "steps": 4, "n": 40}
+
+
+# ----------------------------------------------------------------------------- parsing
+def test_history_scene_parses_with_every_friction():
+    s = parse_scene("h", HIST)
+    assert isinstance(s, HistoryScene) and s.frictions == (0.3, 0.1)
+    assert s.run_spec(1) == {"geometry": "sphere", "nu": 0.3, "friction": 0.1,
+                             "load_path": [0.0, 1.0, 0.0], "steps": 4, "n": 40,
+                             "slab_ratio": 0.0}
+    assert parse_scene("h", dict(HIST, friction=0.2)).frictions == (0.2,)
+
+
+@pytest.mark.parametrize("key, value, text", [
+    ("friction", -0.1, "scenes.h.friction"), ("friction", [], "scenes.h.friction"),
+    ("friction", [0.1, 0.1], "repeats"), ("load_path", [0.5, 1], "scenes.h.load_path"),
+    ("load_path", [0, 1.5], "scenes.h.load_path"), ("steps", 0, "scenes.h.steps"),
+    ("steps", 10**9, "scenes.h.steps"), ("n", 8, "scenes.h.n"),
+    ("stick_ratios", [0.5], "unknown key"), ("kind", "cycle", "scenes.h.kind"),
+    ("slab_ratio", 0.1, "cylinder only"),
+])
+def test_bad_history_scene_is_refused_naming_the_key(key, value, text):
+    with pytest.raises(ValueError, match=text):
+        parse_scene("h", dict(HIST, **{key: value}))
+
+
+def test_tolerance_scene_plans_the_default_method_and_refuses_n_with_it():
+    s = parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 1e-3,
+                          "stick_ratios": [0.1, 0.5]})
+    assert isinstance(s, Scene) and s.method == "default" and s.tolerance == 1e-3
+    assert s.n % 64 == 0
+    tighter = parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 1e-5,
+                                "stick_ratios": [0.1, 0.5]})
+    assert tighter.n > s.n  # the error model falls like n^-2: 100x tighter ~ 10x n
+    for extra in ({"n": 64}, {"method": "paper"}):
+        with pytest.raises(ValueError, match="either tolerance or n/method"):
+            parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 1e-3,
+                              "stick_ratios": [0.5], **extra})
+    with pytest.raises(ValueError, match="scenes.t.tolerance"):
+        parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 0.0,
+                          "stick_ratios": [0.5]})
+    with pytest.raises(ValueError, match="beyond the largest supported n"):
+        parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 1e-8,
+                          "stick_ratios": [0.98]})
+
+
+# ----------------------------------------------------------------------------- stacking
+def test_stacked_histories_equal_the_single_runs():
+    runs = [history_to_dataset(history("sphere", 0.3, k, [0, 1, 0], 4, n=40))
+            for k in (0.3, 0.1)]
+    st = stack_histories(runs)
+    assert st["friction_coefficient"].values.tolist() == [0.1, 0.3]
+    for ds in runs:
+        k = ds.attrs["friction_coefficient"]
+        for name in ("frictional_work", "state", "shear", "stick_ratio"):
+            np.testing.assert_array_equal(st[name].sel(friction_coefficient=k).values,
+                                          ds[name].values)
+    assert st["load_ratio"].dims == ("step",)  # the path carries no k
+    with pytest.raises(ValueError, match="load path"):
+        stack_histories([runs[0], history_to_dataset(history("sphere", 0.3, 0.2, [0, 1], 4,
+                                                             n=40))])
+    with pytest.raises(ValueError, match="repeat"):
+        stack_histories([runs[0], runs[0]])
+
+
+# ----------------------------------------------------------------------------- workflow
+def test_workflow_runs_a_history_scene_and_its_figures(tmp_path):
+    cfg = {"scenes": {"cyc": HIST},
+           "figures": {"history_stick_radius": ["cyc"], "history_stick_map": ["cyc"],
+                       "history_loop": ["cyc"], "history_energy": ["cyc"]}}
+    wd = make_workdir(tmp_path, cfg)
+    run(wd)
+    ds = read_dataset(wd / "results" / "datasets" / "cyc.nc")
+    assert ds.attrs["scene"] == "cyc" and ds.sizes["friction_coefficient"] == 2
+    direct = history("sphere", 0.3, 0.1, [0, 1, 0], 4, n=40)
+    np.testing.assert_array_equal(ds["frictional_work"].sel(friction_coefficient=0.1).values,
+                                  direct.frictional_work)
+    for fig in cfg["figures"]:
+        assert (wd / "results" / "figures" / f"{fig}.png").stat().st_size > 0
+
+
+def test_workflow_refuses_a_history_scene_in_a_paper_figure(tmp_path):
+    cfg = {"scenes": {"cyc": HIST}, "figures": {"fig2": ["cyc"]}}
+    wd = make_workdir(tmp_path, cfg)
+    out = run(wd, "--dry-run", check=False)
+    assert out.returncode != 0
+    assert "figures.fig2: scene 'cyc' is of kind history" in out.stdout + out.stderr
+
+
+def test_workflow_schema_names_a_bad_history_key(tmp_path):
+    cfg = {"scenes": {"cyc": dict(HIST, steps=0)}}
+    wd = make_workdir(tmp_path, cfg)
+    out = run(wd, "--dry-run", check=False)
+    assert out.returncode != 0 and "scenes.cyc.steps" in out.stdout + out.stderr

@@ -111,3 +111,44 @@ def test_workflow_schema_names_a_bad_history_key(tmp_path):
     wd = make_workdir(tmp_path, cfg)
     out = run(wd, "--dry-run", check=False)
     assert out.returncode != 0 and "scenes.cyc.steps" in out.stdout + out.stderr
+
+
+# ----------------------------------------------------------------------------- tolerance
+def _reference_k(geometry: str, slab: float, c: float, n: int) -> float:
+    """Richardson extrapolation of the default method at n and n/2 (order 2, measured)."""
+    from contactlib.default_method import solve_default
+    from contactlib.geometry import Geometry
+
+    g = Geometry(geometry, 0.3, slab)
+    k_half, k_full = solve_default(g, c, n // 2).k, solve_default(g, c, n).k
+    return k_full + (k_full - k_half) / 3.0
+
+
+@pytest.mark.parametrize("geometry, slab, tolerance, reference_n", [
+    ("cylinder", 0.05, 1e-3, 512),   # planned n ~ 64: the reference is 8x finer
+    ("sphere", 0.0, 1e-5, 2048),     # planned n ~ 640: the reference is 3x finer
+])
+def test_tolerance_scene_meets_its_target_against_a_much_finer_solution(
+        geometry, slab, tolerance, reference_n):
+    from contactlib import pipeline
+
+    ratios = [0.1, 0.5, 0.9]
+    raw = {"geometry": geometry, "nu": 0.3, "tolerance": tolerance, "stick_ratios": ratios,
+           "outputs": ["k_curve"]}
+    if slab:
+        raw["slab_ratio"] = slab
+    scene = parse_scene("tol", raw)
+    assert reference_n >= 3 * scene.n
+    records = pipeline.solve(scene, None, None)
+    ds = pipeline.assemble(scene, records, checks=pipeline.check(records))
+    assert ds.attrs["tolerance"] == tolerance and ds.attrs["tolerance_met"] == 1
+    for i, c in enumerate(ratios):
+        truth = _reference_k(geometry, slab, c, reference_n)
+        achieved = abs(float(ds["friction_coefficient"][i]) - truth) / truth
+        assert achieved <= tolerance, (c, achieved)
+        # the recorded estimate is an honest one: within a factor 3 of the achieved error
+        # or both far below the target
+        est = float(ds["error_estimate"][i])
+        assert est <= tolerance
+        assert achieved <= 3 * est or achieved <= tolerance / 20, (c, achieved, est)
+        assert int(ds["elements"][i]) >= scene.n

@@ -242,8 +242,9 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           progress: Callable[[int, int], None] | None = None) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
-    Newton's method on k starts each point from the uncoupled closed form,
-    which is within a few per cent of the answer. A point that fails to converge is kept and flagged (``converged = False``), never dropped.
+    Newton's method on k starts each point from the points already solved
+    (continuation: the ratio of k to the uncoupled closed form, interpolated
+    in c/a), the first two from the solver's own warm start. A point that fails to converge is kept and flagged (``converged = False``), never dropped.
     ``progress(i, total)`` is called after each point.
 
     Returns
@@ -253,10 +254,12 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
     ratios = _parse_ratios(stick_ratios, n)
+    if method != "default":
+        for c in ratios:
+            stages._paper_m(c, n)  # validate every ratio before solving any
     out = []
-    for i, c in enumerate(ratios):
-        out.append(solve(geometry, geom.nu, stick_ratio=c, n=n, method=method,
-                         slab_ratio=geom.slab_ratio, energy=energy))
+    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True)):
+        out.append(_from_record(geom, rec, method, n, energy))
         if progress is not None:
             progress(i + 1, len(ratios))
     return out

@@ -25,7 +25,7 @@ import xarray as xr
 
 from . import api
 
-__all__ = ["study", "QUANTITIES", "richardson"]
+__all__ = ["study", "trade_table", "QUANTITIES", "richardson"]
 
 QUANTITIES = ("friction_coefficient", "load_ratio", "frictional_work", "peak_shear")
 
@@ -168,3 +168,44 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
                "reference": ref_source,
                "contactlib_version": _version()},
     )
+
+
+def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coefficient",
+                ) -> list[dict[str, object]]:
+    """The speed-accuracy trade of every study as table rows, one a resolution.
+
+    Columns: study (geometry, method, a/h), n, the median wall time of one
+    solve (s), the median and the largest relative error of ``quantity``
+    over the stick ratios, the peak memory (MiB), and "time per digit": the
+    factor in time that buys one more correct digit from this n on,
+    (t(n) / t(n/2)) ** (1 / log2(e(n/2) / e(n))) with the median errors and
+    times of this n and the previous one (empty where the error does not
+    fall).
+    """
+    rows: list[dict[str, object]] = []
+    for ds in datasets:
+        geometry, method = ds.attrs["geometry"], ds.attrs["method"]
+        label = f"{geometry} {method}"
+        if geometry == "cylinder":
+            label += f" a/h={float(ds.attrs['slab_ratio']):g}"
+        err = ds["error"].sel(quantity=quantity).values  # (n, stick_ratio)
+        times = ds["wall_time"].values
+        ns = ds["n"].values
+        med_e = np.nanmedian(np.where(np.isfinite(err), err, np.nan), axis=1) \
+            if np.isfinite(err).any() else np.full(ns.size, np.nan)
+        med_t = np.median(times, axis=1)
+        for i, n in enumerate(ns):
+            per_digit = float("nan")
+            if i > 0 and np.isfinite(med_e[i]) and np.isfinite(med_e[i - 1]) and \
+                    0 < med_e[i] < med_e[i - 1] and med_t[i] > 0 and med_t[i - 1] > 0:
+                halvings = np.log2(med_e[i - 1] / med_e[i])  # error falls 2^h per doubling
+                per_digit = float((med_t[i] / med_t[i - 1]) ** (np.log2(10.0) / halvings))
+            rows.append({
+                "study": label, "n": int(n), "time_s": float(med_t[i]),
+                "median_error": float(med_e[i]),
+                "max_error": float(np.nanmax(err[i])) if np.isfinite(err[i]).any()
+                else float("nan"),
+                "peak_memory_MiB": float(np.max(ds["peak_memory"].values[i])),
+                "time_per_digit": per_digit,
+            })
+    return rows

@@ -36,3 +36,25 @@ def test_default_method_errors_shrink_at_order_two_on_the_cylinder():
     assert np.all((order > 1.7) & (order < 2.7)), order
     err = ds["error"].sel(quantity="load_ratio").values
     assert np.all(np.isfinite(err[:-1]))
+
+
+def test_trade_table_time_per_digit_follows_from_order_and_cost():
+    """A synthetic study with error ~ n^-2 and time ~ n^3: one digit costs 10^(3/2)."""
+    import xarray as xr
+
+    from contactlib.convergence import trade_table
+
+    ns = np.array([64, 128, 256])
+    err = 1e-2 * (64.0 / ns)[:, None] ** 2 * np.ones((1, 2))
+    ds = xr.Dataset(
+        {"error": (("quantity", "n", "stick_ratio"), err[None]),
+         "wall_time": (("n", "stick_ratio"), 1e-3 * (ns / 64.0)[:, None] ** 3 * np.ones((1, 2))),
+         "peak_memory": (("n", "stick_ratio"), np.ones((3, 2)))},
+        coords={"quantity": ["friction_coefficient"], "n": ns, "stick_ratio": [0.3, 0.5]},
+        attrs={"geometry": "sphere", "method": "default"})
+    rows = trade_table([ds])
+    assert [r["n"] for r in rows] == [64, 128, 256]
+    assert np.isnan(rows[0]["time_per_digit"])
+    for r in rows[1:]:
+        assert r["time_per_digit"] == pytest.approx(10 ** 1.5, rel=1e-12)
+    assert rows[2]["median_error"] == pytest.approx(1e-2 / 16)

@@ -270,6 +270,9 @@ def test_convergence_target(tiny_run):
     assert paper.attrs["reference"] == "extrapolated values of the default method"
     assert (own["wall_time"].values > 0).all() and (own["peak_memory"].values > 0).all()
     assert (tiny_run / "results/figures/convergence.png").stat().st_size > 1000
+    table = (tiny_run / "results/tables/convergence.csv").read_text().splitlines()
+    assert table[0] == "study,n,time_s,median_error,max_error,peak_memory_MiB,time_per_digit"
+    assert len(table) == 1 + 4 + 3  # one row a resolution of each study
 
 
 def test_report_builds(tiny_run):

@@ -54,7 +54,32 @@ rule convergence_figure:
         "../scripts/convergence_figure.py"
 
 
+rule convergence_table:
+    input:
+        expand("results/convergence/{study}.nc", study=sorted(CONVERGENCE["studies"])),
+    output:
+        csv="results/tables/convergence.csv",
+        html=report(
+            "results/tables/convergence.html",
+            caption="../report/convergence_table.rst",
+            category="Convergence",
+        ),
+    params:
+        version=VERSION,
+    log:
+        "results/logs/tables/convergence.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=800,
+        runtime=5,
+    script:
+        "../scripts/convergence_table.py"
+
+
 rule convergence:
     input:
         rules.convergence_figure.output,
+        rules.convergence_table.output,
     default_target: False

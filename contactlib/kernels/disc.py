@@ -23,89 +23,310 @@ the convention above: outward shear lifts the surface inside the disc. The
 test-suite checks this sign and every other one against direct integration of
 the Boussinesq and Cerruti point-load solutions.
 
-Stable evaluation: parameters m = r^2/s^2 (inside) and m' = s^2/r^2 (outside)
-lie in [0, 1]. Near m -> 1 the factor (1-m) K(m) -> 0 is taken as 0 exactly at
-m = 1. Near m -> 0 (r -> 0 inside, r >> s outside) the closed forms cancel to
-leading order; there power series of K and E are summed instead.
+Stable evaluation
+-----------------
+With ``q = min(r, s)/max(r, s)`` the elliptic parameter is m = q^2 (m = r^2/s^2
+inside, m' = s^2/r^2 outside) and ``m1 = 1 - m`` is formed as
+``((max - min)/max)(1 + q)``, accurate to a few ulps even at r -> s. Every
+output is a polynomial factor times one of six functions of m,
+
+=====  =========================================  ===========================
+name   function                                   used for
+=====  =========================================  ===========================
+E      E(m)                                       w, pressure, inside
+A1     [E - (1-m) K] / m                          w, pressure, outside
+g1     [(2m-1) E + (1-m) K] / m                   u, shear, inside
+gd1    [(4m+1) E - (2m+1) K] / m                  du/dr, shear, inside
+h1     [(2-m) E - 2 (1-m) K] / m^2                u, shear, outside
+hd2    [2 (K - E) - m (E + K)/2] / m^2            du/dr, shear, outside
+=====  =========================================  ===========================
+
+each finite at m = 0 (the removable singularities r -> 0 inside and r >> s
+outside are divided out analytically, so nothing cancels there), and each is
+evaluated as ``P(m1) + ln(m1) R(m1)`` with P and R polynomials of degree 10
+(the Cephes form of K and E, fitted here to the combinations themselves). The
+first two coefficients of R are the exact ones (so the logarithmic behaviour at
+r -> s is exact); the rest come from a weighted least-squares fit to mpmath
+values on 0 <= m1 <= 1 (``tests/test_kernels_disc.py`` regenerates them). Error
+against mpmath: <= 4e-16 relative for E, A1, g1, gd1 (gd1 relative to its
+scale, it has a zero), <= 4e-15 for h1, hd2 (their P and R cancel mildly).
+At r = s exactly (m1 = 0) the logarithm is clamped (the R of E, A1, g1, h1
+vanish there) and du/dr of the shear is set to its limit -inf.
+
+Cost: ~60 (pressure) and ~110 (shear) array operations a point, in passes of
+``_CHUNK`` points over per-thread scratch rows (no large temporaries); the
+three outputs of a call share one allocation. Points inside (r <= s) and
+outside the disc use different functions: they are evaluated on slices when
+they come in two runs (as :func:`contactlib.influence.element_integrals`
+orders them), on gathered copies otherwise.
 """
 
 from __future__ import annotations
 
+import threading
+
 import numpy as np
-from scipy import special
 
 from ..theory import beta_of_nu
 
 __all__ = ["beta_of_nu", "pressure_disc", "shear_disc"]
 
-_SERIES_SWITCH = 0.25  # use power series for parameters below this
-_NTERMS = 30  # 0.25**30 ~ 1e-18
+_C_W = 4.0 / np.pi  # w of the pressure: (4/pi) s E(m) inside, (4/pi) r A(m') outside
+_C_SHEAR = 4.0 / (3.0 * np.pi)
+_TINY = np.finfo(float).tiny  # ln(m1) clamp at m1 = 0 (r = s exactly)
 
-# Power-series coefficients: K(m) = pi/2 sum k_n m^n, E(m) = pi/2 sum e_n m^n.
-_n = np.arange(_NTERMS + 3)
-_k = np.ones(_n.size)
-for _i in range(1, _n.size):
-    _k[_i] = _k[_i - 1] * ((2 * _i - 1) / (2 * _i)) ** 2
-_e = _k / (1.0 - 2.0 * _n)
+# f(m) = P(m1) + ln(m1) R(m1), coefficients from low to high degree: (P, R).
+_FITS: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
+    "E": (
+        (1.0, 0.4431471805600135, 0.056805193631284744, 0.021831679422434032,
+         0.011565046862782905, 0.00754757716672129, 0.007669021179375873, 0.010697788965526922,
+         0.008800209907066805, 0.002573701428435828, 0.0001589276712547053),
+        (0.0, -0.25, -0.09374999987402521, -0.05859369068700235, -0.04271928395505989,
+         -0.03350035178930291, -0.02626604027006308, -0.017065033264807006,
+         -0.0066370961520413885, -0.0010390329778296676, -3.3987365717190986e-05),
+    ),
+    "A1": (
+        (1.0, 0.056852819438829943, 0.0170844060909396, 0.008025538263377884,
+         0.004307470814746232, -0.003379772156793018, -0.04187715096985971, -0.11268583653589562,
+         -0.10807642386552938, -0.032813557855938, -0.0020393298264295995),
+        (0.0, 0.25, 0.2812499978311604, 0.29296776331074365, 0.2989860801549697,
+         0.3005071155904735, 0.2819504230192695, 0.20399169872474243, 0.08340551422505572,
+         0.013291864285983062, 0.00043597500947851553),
+    ),
+    "g1": (
+        (1.0, 0.8294415416808093, 0.09652597721724046, 0.035636820322899436,
+         0.018774639749944238, 0.01784508080402184, 0.05480089594843462, 0.1324566165678612,
+         0.12825415523476097, 0.03991192866177784, 0.002546834004594996),
+        (0.0, -0.75, -0.4687499981392596, -0.41015534742648063, -0.38443821066888656,
+         -0.36776933027316794, -0.33622042149095627, -0.242350571793075, -0.10032354136837669,
+         -0.016311077771698893, -0.0005471188955592048),
+    ),
+    "gd1": (
+        (0.8411169166403284, 1.5397207708361733, 0.15164972736688154, 0.05053532442049998,
+         0.02408581027621214, 0.007048925254088731, -0.035622261493159585, -0.10114291557361126,
+         -0.092730255072103, -0.026863389119723628, -0.0016041633432416268),
+        (1.5, -0.375, 0.11718749545033083, 0.20507651369806296, 0.24020861939764887,
+         0.2563361930391558, 0.2455733050894259, 0.17570969747557785, 0.06972819057452116,
+         0.010732150880702122, 0.0003407237152412662),
+    ),
+    "h1": (
+        (1.0000000000000002, 0.6705584582983655, 0.6479218342684567, 0.6420641735547504,
+         0.6342563628719063, 0.5301122511775552, -0.11501526293996574, -1.380959361624736,
+         -1.5275748636184039, -0.48196781082143453, -0.03034715861840742),
+        (0.0, 0.75, 1.4062499621065245, 2.0507642456507456, 2.6901787595382567,
+         3.291749571488372, 3.5706142319261316, 2.8221555000999734, 1.2066523191125256,
+         0.19628467896382787, 0.00649512213911845),
+    ),
+    "hd2": (
+        (-0.4205584583201669, -0.6109773020024469, -0.6272204982316664, -0.6316510861571186,
+         -0.625773351825386, -0.49599686785117364, 0.25377147920522436, 1.5979581992776566,
+         1.631444116103068, 0.4885671917058501, 0.02948520064424518),
+        (-0.75, -1.3125, -1.9335936750920706, -2.5634485519105423, -3.194202940183672,
+         -3.779013422767144, -3.9781924112065385, -3.038460311528032, -1.251167980496229,
+         -0.1960757553274723, -0.006265890062533288),
+    ),
+}
 
 
-def _series(coef: np.ndarray, m: np.ndarray) -> np.ndarray:
-    """Evaluate sum coef[j] m^j by Horner's rule."""
-    out = np.zeros_like(m)
-    for c in coef[::-1]:
-        out = out * m + c
+# Horner coefficient stacks, highest degree first, shaped (degree + 1, rows, 1):
+# rows (P, R) of each function, so that one pass evaluates several polynomials.
+def _stack(*names: str) -> np.ndarray:
+    rows = [c for name in names for c in _FITS[name]]
+    return np.array(rows, dtype=float).T[::-1, :, None].copy()
+
+
+_STACKS = {"pressure": (_stack("E"), _stack("A1")),
+           "shear": (_stack("g1", "gd1"), _stack("h1", "hd2"))}
+
+_CHUNK = 32768  # points per pass: scratch rows stay small and are reused
+
+
+class _Scratch(threading.local):
+    """Per-thread scratch rows of _CHUNK doubles, allocated once and reused.
+
+    Fresh temporaries of a few hundred kB are slow where the allocator hands
+    memory back to the system after every call (page faults on each reuse).
+    """
+
+    def __init__(self) -> None:
+        self.f = np.empty((14, _CHUNK))
+        self.inside = np.empty(_CHUNK, dtype=bool)
+        self.flag = np.empty(_CHUNK, dtype=bool)
+
+
+_SCRATCH = _Scratch()
+
+
+def _horner(stack: np.ndarray, x: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """out[i] = sum_j stack[-1-j, i] x^j for every row i, in place."""
+    np.multiply(stack[0], x, out=out)
+    out += stack[1]
+    for c in stack[2:]:
+        out *= x
+        out += c
     return out
 
 
-def _ke(m: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """K(m), E(m) and (1-m) K(m), finite at m = 1."""
-    m = np.clip(m, 0.0, 1.0)
-    k = special.ellipk(m)
-    e = special.ellipe(m)
-    one_minus = 1.0 - m
-    with np.errstate(invalid="ignore"):
-        omk = np.where(one_minus > 0.0, one_minus * k, 0.0)
-    return k, e, omk
+def _log_form(stack: np.ndarray, m1: np.ndarray, lg: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """Rows 0, 2, ... of ``rows`` become P + ln(m1) R of each stacked function."""
+    _horner(stack, m1, rows)
+    for i in range(0, rows.shape[0], 2):
+        rows[i + 1] *= lg
+        rows[i] += rows[i + 1]
+    return rows
 
 
-# --- series coefficients of the cancelling combinations (all times pi/2) ---
-# A(m) = E - (1-m) K            = sum (e_n - k_n + k_{n-1}) m^n
-_cA = _e[:_NTERMS] - _k[:_NTERMS] + np.concatenate([[0.0], _k[: _NTERMS - 1]])
-# g(m) = (2m-1) E - (m-1) K      = sum (2 e_{n-1} - e_n - k_{n-1} + k_n) m^n
-_km1 = np.concatenate([[0.0], _k[: _NTERMS - 1]])
-_em1 = np.concatenate([[0.0], _e[: _NTERMS - 1]])
-_cg = 2 * _em1 - _e[:_NTERMS] - _km1 + _k[:_NTERMS]
-# gd(m) = (4m+1) E - (2m+1) K    = sum (4 e_{n-1} + e_n - 2 k_{n-1} - k_n) m^n
-_cgd = 4 * _em1 + _e[:_NTERMS] - 2 * _km1 - _k[:_NTERMS]
-# h(m') = (2/m' - 1) E - 2 (1/m' - 1) K = sum (2 e_{n+1} - e_n - 2 k_{n+1} + 2 k_n) m'^n
-_ch = 2 * _e[1 : _NTERMS + 1] - _e[:_NTERMS] - 2 * _k[1 : _NTERMS + 1] + 2 * _k[:_NTERMS]
-# hd(m') = 2 (K - E) - m' (E + K)/2 = sum (2 k_n - 2 e_n - (e_{n-1} + k_{n-1})/2) m'^n
-_chd = 2 * _k[:_NTERMS] - 2 * _e[:_NTERMS] - 0.5 * (_em1 + _km1)
-
-
-def _combo(m: np.ndarray, coef: np.ndarray, direct) -> np.ndarray:
-    """pi/2 * series where m is small, else the closed form ``direct(K, E, (1-m)K, m)``."""
-    small = m < _SERIES_SWITCH
-    out = np.empty_like(m)
-    if np.any(small):
-        out[small] = 0.5 * np.pi * _series(coef, m[small])
-    big = ~small
-    if np.any(big):
-        mb = m[big]
-        k, e, omk = _ke(mb)
-        out[big] = direct(k, e, omk, mb)
-    return out
-
-
-def _prepare(r, s):
-    r = np.abs(np.asarray(r, dtype=float))
+def _flat(r, s):
+    """r and s broadcast, as 1-d contiguous float arrays (no copy when already so)."""
+    r = np.asarray(r, dtype=float)
     s = np.asarray(s, dtype=float)
-    r, s = np.broadcast_arrays(r, s)
-    r = r.astype(float, copy=True)
-    s = s.astype(float, copy=True)
-    inside = r <= s
-    positive = s > 0.0
-    return r, s, inside, positive
+    shape = np.broadcast_shapes(r.shape, s.shape)
+    r = np.ascontiguousarray(np.broadcast_to(r, shape)).reshape(-1)
+    s = np.ascontiguousarray(np.broadcast_to(s, shape)).reshape(-1)
+    if s.size and not s.min() > 0.0:  # s <= 0 (or NaN): zero output, computed harmlessly
+        bad = ~(s > 0.0)
+        s = np.where(bad, 1.0, s)
+        r = np.where(bad, 0.0, r)
+        return r, s, shape, bad
+    return r, s, shape, None
+
+
+def _params(r: np.ndarray, s: np.ndarray, f: np.ndarray, inside: np.ndarray):
+    """|r|, q = min/max, m1 = 1 - q^2 (accurate near q = 1), ln(m1) clamped; inside = |r| <= s.
+
+    Uses scratch rows f[0:6]; returns (ra, q, m1, lg).
+    """
+    ra, big, onep, q, m1, lg = f[:6]
+    np.abs(r, out=ra)
+    np.less_equal(ra, s, out=inside)
+    np.maximum(ra, s, out=big)
+    np.minimum(ra, s, out=onep)
+    np.divide(onep, big, out=q)
+    np.subtract(big, onep, out=m1)  # exact when min >= max/2
+    m1 /= big
+    np.add(q, 1.0, out=onep)
+    m1 *= onep  # (1 - q)(1 + q)
+    np.maximum(m1, _TINY, out=lg)
+    np.log(lg, out=lg)
+    return ra, q, m1, lg
+
+
+def _sides(inside: np.ndarray):
+    """Selections (slice or index array; None if empty) of the points inside and outside."""
+    k = inside.size
+    n_in = int(np.count_nonzero(inside))
+    if n_in == k:
+        return slice(0, k), None
+    if n_in == 0:
+        return None, slice(0, k)
+    if inside[:n_in].all():  # inside points first (as element_integrals orders them)
+        return slice(0, n_in), slice(n_in, k)
+    if inside[k - n_in:].all():
+        return slice(k - n_in, k), slice(0, k - n_in)
+    return np.flatnonzero(inside), np.flatnonzero(~inside)
+
+
+def _get(a: np.ndarray, sel, buf: np.ndarray) -> np.ndarray:
+    """a[sel]: a view for a slice (read only!), else gathered into buf."""
+    if isinstance(sel, slice):
+        return a[sel]
+    return np.take(a, sel, out=buf[: sel.size])
+
+
+def _scaled(a: np.ndarray, sel, c: float, buf: np.ndarray) -> np.ndarray:
+    """c * a[sel] in buf (never writes to a)."""
+    if isinstance(sel, slice):
+        return np.multiply(a[sel], c, out=buf[: sel.stop - sel.start])
+    out = np.take(a, sel, out=buf[: sel.size])
+    out *= c
+    return out
+
+
+def _pressure_chunk(r, s, b, w, u, du, ws):
+    k = r.size
+    f = ws.f[:, :k]
+    inside = ws.inside[:k]
+    ra, q, m1, lg = _params(r, s, f, inside)
+    np.multiply(s, q, out=u)  # r inside, s^2/r outside
+    u *= -b
+    np.multiply(q, q, out=du)  # m' outside
+    du *= b
+    stack_in, stack_out = _STACKS["pressure"]
+    sel_in, sel_out = _sides(inside)
+    if sel_in is not None:
+        m1s, lgs = _get(m1, sel_in, f[6]), _get(lg, sel_in, f[7])
+        rows = _log_form(stack_in, m1s, lgs, f[10:12, : m1s.size])
+        val = rows[0]
+        val *= _get(s, sel_in, f[8])
+        val *= _C_W  # (4/pi) s E(m)
+        w[sel_in] = val
+        du[sel_in] = -b
+    if sel_out is not None:
+        m1s, lgs = _get(m1, sel_out, f[6]), _get(lg, sel_out, f[7])
+        rows = _log_form(stack_out, m1s, lgs, f[10:12, : m1s.size])
+        val = rows[0]
+        qs = _get(q, sel_out, f[8])
+        val *= qs
+        val *= qs
+        val *= _get(ra, sel_out, f[9])
+        val *= _C_W  # (4/pi) r m' A1(m')
+        w[sel_out] = val
+
+
+def _shear_chunk(r, s, b, w, u, du, ws):
+    k = r.size
+    f = ws.f[:, :k]
+    inside = ws.inside[:k]
+    ra, q, m1, lg = _params(r, s, f, inside)
+    np.multiply(ra, ra, out=w)
+    np.multiply(s, s, out=f[6])
+    w -= f[6]
+    np.minimum(w, 0.0, out=w)
+    w *= b  # -beta (s^2 - r^2) inside, 0 outside
+    stack_in, stack_out = _STACKS["shear"]
+    sel_in, sel_out = _sides(inside)
+    if sel_in is not None:
+        m1s, lgs = _get(m1, sel_in, f[6]), _get(lg, sel_in, f[7])
+        rows = _log_form(stack_in, m1s, lgs, f[10:14, : m1s.size])
+        cs = _scaled(s, sel_in, _C_SHEAR, f[8])
+        g, gd = rows[0], rows[2]
+        gd *= cs  # du = c s^3/r^2 gd(m) = c s gd(m)/m
+        du[sel_in] = gd
+        g *= cs
+        g *= _get(ra, sel_in, f[9])  # u = c s^3/r g(m) = c s r g(m)/m
+        u[sel_in] = g
+    if sel_out is not None:
+        m1s, lgs = _get(m1, sel_out, f[6]), _get(lg, sel_out, f[7])
+        rows = _log_form(stack_out, m1s, lgs, f[10:14, : m1s.size])
+        h, mq, hd = rows[0], rows[1], rows[2]  # row 1 (R of h1) is free now
+        qs = _get(q, sel_out, f[8])
+        np.multiply(qs, qs, out=mq)  # m'
+        h *= mq
+        cs = _scaled(s, sel_out, _C_SHEAR, f[9])
+        h *= cs
+        h *= _get(s, sel_out, f[8])  # (qs no longer needed)
+        u[sel_out] = h  # u = c s^2 h(m') = c s^2 m' h1
+        mq *= mq
+        hd *= mq
+        hd *= _get(ra, sel_out, f[9])  # (cs no longer needed)
+        hd *= -2.0 * _C_SHEAR
+        du[sel_out] = hd  # du = -2 c r hd(m') = -2 c r m'^2 hd2
+    zero = np.equal(m1, 0.0, out=ws.flag[:k])
+    if zero.any():  # r = s exactly: du/dr is log-infinite
+        du[zero] = -np.inf
+
+
+def _run(chunk_fn, r, s, nu):
+    b = beta_of_nu(nu)
+    r, s, shape, bad = _flat(r, s)
+    out = np.empty((3, r.size))  # one block: a single allocation for the three outputs
+    ws = _SCRATCH
+    for a in range(0, r.size, _CHUNK):
+        sl = slice(a, a + _CHUNK)
+        chunk_fn(r[sl], s[sl], b, out[0, sl], out[1, sl], out[2, sl], ws)
+    if bad is not None:
+        out[:, bad] = 0.0
+    return out[0].reshape(shape), out[1].reshape(shape), out[2].reshape(shape)
 
 
 def pressure_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -138,27 +359,7 @@ def pressure_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     >>> round(float(w), 12) == round(2.0, 12)
     True
     """
-    b = beta_of_nu(nu)
-    r, s, inside, positive = _prepare(r, s)
-    w = np.zeros_like(r)
-    u = np.zeros_like(r)
-    du = np.zeros_like(r)
-
-    ii = inside & positive
-    if np.any(ii):
-        m = (r[ii] / s[ii]) ** 2
-        w[ii] = (4.0 / np.pi) * s[ii] * special.ellipe(np.clip(m, 0.0, 1.0))
-        u[ii] = -b * r[ii]
-        du[ii] = -b
-    oo = ~inside & positive
-    if np.any(oo):
-        mp = (s[oo] / r[oo]) ** 2
-        a_val = _combo(mp, _cA, lambda k, e, omk, m: e - omk)
-        w[oo] = (4.0 / np.pi) * r[oo] * a_val
-        u[oo] = -b * s[oo] ** 2 / r[oo]
-        du[oo] = b * mp
-    return w, u, du
-
+    return _run(_pressure_chunk, r, s, nu)
 
 def shear_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Surface displacements under a linear radial shear q = r on a disc.
@@ -196,38 +397,4 @@ def shear_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     >>> abs(float(u) - 1e-3) < 1e-9
     True
     """
-    b = beta_of_nu(nu)
-    r, s, inside, positive = _prepare(r, s)
-    w = np.zeros_like(r)
-    u = np.zeros_like(r)
-    du = np.zeros_like(r)
-    c = 4.0 / (3.0 * np.pi)
-
-    ii = inside & positive
-    if np.any(ii):
-        ri, si = r[ii], s[ii]
-        m = (ri / si) ** 2
-        w[ii] = -b * (si**2 - ri**2)
-        # u = c s^3/r g(m); g ~ (3 pi/4) m for small m -> use g(m)/m * m / r = g/m * r/s^2
-        g_over_m = np.empty_like(m)
-        small = m < _SERIES_SWITCH
-        g_over_m[small] = 0.5 * np.pi * _series(_cg[1:], m[small])
-        big = ~small
-        if np.any(big):
-            k, e, omk = _ke(m[big])
-            g_over_m[big] = ((2 * m[big] - 1) * e + omk) / m[big]
-        u[ii] = c * si * ri * g_over_m  # s^3/r * m = s r
-        gd_over_m = np.empty_like(m)
-        gd_over_m[small] = 0.5 * np.pi * _series(_cgd[1:], m[small])
-        if np.any(big):
-            gd_over_m[big] = ((4 * m[big] + 1) * e - (2 * m[big] + 1) * k) / m[big]
-        du[ii] = c * si * gd_over_m  # s^3/r^2 * m = s
-    oo = ~inside & positive
-    if np.any(oo):
-        ro, so = r[oo], s[oo]
-        mp = (so / ro) ** 2
-        h_val = _combo(mp, _ch, lambda k, e, omk, m: (2.0 / m - 1.0) * e - 2.0 * omk / m)
-        u[oo] = c * so**2 * h_val
-        hd = _combo(mp, _chd, lambda k, e, omk, m: 2.0 * (k - e) - 0.5 * m * (e + k))
-        du[oo] = -2.0 * c * ro * hd
-    return w, u, du
+    return _run(_shear_chunk, r, s, nu)

@@ -1,52 +1,41 @@
-"""Where a sweep's time goes, and how it grows with n (issue 7's starting point).
+"""The default sweep: 50 stick ratios of the sphere at the default resolution.
 
     python benchmarks/bench_sweep.py [cases] [n]
 
-Prints, for a default-method sphere sweep of `cases` stick ratios (default 50)
-at n elements (default 256), the wall time of each stage of
-contactlib.stages in one run:
+Prints, in one run (BLAS single-threaded unless OPENBLAS_NUM_THREADS is set,
+as on a busy 2-core machine extra threads only add CPU time):
 
-* solve: collocation operators at the nodes + Newton on k (+ the n = 64/128
-  Richardson warm start for n > 128),
-* samples: displacements at the Gauss points of the slip zone (checks, energy),
-* profiles: the displacement on the 201-point output grid,
-
-and the ratio of the whole to one LU factorization of the same system size.
-Then the cost of a 5-point sweep for n = 64 ... 512 and the fitted exponent.
+* the wall and CPU time of ``contactlib.sweep("sphere", 0.3, ratios, n=n)``
+  for ``cases`` stick ratios in 0.02 ... 0.98 (default 50, n = 256 the
+  default resolution): every output (k, load, checks, work, profiles), after
+  a warm-up solve that pays for imports; three repeats, the first with a
+  cold cache of stick-zone blocks (:func:`contactlib.default_method.
+  nodal_operator_part`), and the ratio to one LU factorization of the
+  partial-slip system (size about 1.6 n);
+* where the time goes (cProfile of one sweep, cumulative, by stage);
+* the cost of a 5-point sweep for n = 64 ... 1024 and its fitted exponent.
 """
 
 from __future__ import annotations
 
+import os
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")  # before numpy is imported
+
+import cProfile
+import pstats
 import sys
 import time
 
 import numpy as np
 from scipy import linalg
 
-from contactlib import stages
-from contactlib.api import output_grid
-from contactlib.default_method import solve_default
-from contactlib.geometry import Geometry
+import contactlib
+import contactlib.default_method as dm
 
 
-def stage_times(geom: Geometry, ratios: np.ndarray, n: int) -> dict[str, float]:
-    t = {"solve": 0.0, "samples": 0.0, "profiles": 0.0}
-    xi = output_grid()
-    for c in ratios:
-        t0 = time.perf_counter()
-        d = solve_default(geom, float(c), n)
-        t1 = time.perf_counter()
-        rec = stages._record(geom, d, samples=True)
-        t2 = time.perf_counter()
-        stages.profiles(geom, rec, xi)
-        t3 = time.perf_counter()
-        t["solve"] += t1 - t0
-        t["samples"] += t2 - t1
-        t["profiles"] += t3 - t2
-    return t
-
-
-def lu_time(size: int, repeat: int = 3) -> float:
+def lu_time(size: int, repeat: int = 5) -> float:
     a = np.random.default_rng(0).standard_normal((size, size)) + size * np.eye(size)
     best = np.inf
     for _ in range(repeat):
@@ -56,24 +45,55 @@ def lu_time(size: int, repeat: int = 3) -> float:
     return best
 
 
+def timed_sweep(ratios, n: int) -> tuple[float, float, list]:
+    t0, c0 = time.perf_counter(), time.process_time()
+    sols = contactlib.sweep("sphere", 0.3, ratios, n=n)
+    return time.perf_counter() - t0, time.process_time() - c0, sols
+
+
+def stage_split(ratios, n: int) -> dict[str, float]:
+    prof = cProfile.Profile()
+    prof.enable()
+    contactlib.sweep("sphere", 0.3, ratios, n=n)
+    prof.disable()
+    stats = pstats.Stats(prof).stats
+    wanted = {"nodal operators": "nodal_operator_part", "Newton (LU etc.)": "solve_default",
+              "slip samples": "_slip_samples", "profiles": "profiles"}
+    out = {}
+    for label, func in wanted.items():
+        out[label] = max((v[3] for k, v in stats.items() if k[2] == func), default=0.0)
+    total = max(v[3] for k, v in stats.items() if k[2] == "sweep")
+    out["Newton (LU etc.)"] -= out["nodal operators"]  # solve_default calls them
+    out["total"] = total
+    return out
+
+
 def main() -> None:
     cases = int(sys.argv[1]) if len(sys.argv) > 1 else 50
     n = int(sys.argv[2]) if len(sys.argv) > 2 else 256
-    geom = Geometry("sphere", 0.3)
     ratios = np.linspace(0.02, 0.98, cases)
-    solve_default(geom, 0.5, 32)  # warm-up (imports, caches)
-    t = stage_times(geom, ratios, n)
-    total = sum(t.values())
-    lu = lu_time(n + 1 + int(0.6 * n))  # partial-slip system: p, delta, stick phi, C
-    print(f"sphere, nu = 0.3, default method, n = {n}, {cases} stick ratios in 0.02 ... 0.98")
-    for k, v in t.items():
-        print(f"  {k:9s} {v:7.2f} s  ({v / total:5.1%})")
-    print(f"  total     {total:7.2f} s  = {total / cases * 1e3:.0f} ms a case; "
-          f"{total / lu:.0f} x one LU of the {n + 1 + int(0.6 * n)}-size system ({lu * 1e3:.1f} ms)")
-    print("\nsweep cost vs n (5 stick ratios, all stages):")
-    ns, ts = [64, 128, 256, 512], []
+    contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=32)  # imports, first calls
+    size = n + 1 + int(0.6 * n)
+    lu = lu_time(size)
+    print(f"contactlib.sweep: sphere, nu = 0.3, n = {n}, {cases} stick ratios in 0.02 ... 0.98 "
+          f"(BLAS threads {os.environ['OPENBLAS_NUM_THREADS']}, load average "
+          f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs)")
+    dm._STICK_BLOCKS.clear()
+    for i in range(3):
+        wall, cpu, sols = timed_sweep(ratios, n)
+        ok = sum(s.converged and s.consistent for s in sols)
+        print(f"  run {i + 1}{' (cold cache)' if i == 0 else '             '}: wall {wall:5.2f} s, "
+              f"CPU {cpu:5.2f} s = {wall / cases * 1e3:4.0f} ms a case = "
+              f"{wall / cases / lu:4.1f} x one LU of size {size} ({lu * 1e3:.2f} ms); "
+              f"{ok}/{cases} converged and consistent")
+    print("  where the time goes (cProfile, one sweep; profiling adds overhead):")
+    split = stage_split(ratios, n)
+    for label, v in split.items():
+        print(f"    {label:18s} {v:6.2f} s ({v / split['total']:5.1%})")
+    print("\nsweep cost vs n (5 stick ratios 0.1 ... 0.9, all outputs):")
+    ns, ts = [64, 128, 256, 512, 1024], []
     for nn in ns:
-        tt = sum(stage_times(geom, np.linspace(0.1, 0.9, 5), nn).values())
+        tt = timed_sweep(np.linspace(0.1, 0.9, 5), nn)[0]
         ts.append(tt)
         print(f"  n = {nn:4d}: {tt:6.2f} s")
     slope = np.polyfit(np.log(ns), np.log(ts), 1)[0]

@@ -42,7 +42,8 @@ from .geometry import Geometry
 from .influence import apply_difference, element_integrals
 from .theory import uncoupled_friction
 
-__all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part"]
+__all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part",
+           "nodal_operator_part"]
 
 # Extended precision for the residual of one step of iterative refinement (see
 # solve_default): 80-bit on x86-64 Linux; where long double is plain double
@@ -98,6 +99,18 @@ class DiscreteSolution:
         with np.errstate(invalid="ignore"):  # see operators(): du/dx on a strip axis
             return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in range(3))
 
+    def tangential(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(u, du/dx) at points x, without the normal displacement (cheaper)."""
+        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False)
+        with np.errstate(invalid="ignore"):  # see operators(): du/dx on a strip axis
+            return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in (1, 2))
+
+    def radial_displacement(self, x: np.ndarray) -> np.ndarray:
+        """u at points x alone (cheapest: no w, no du/dx)."""
+        pw = operator_part(self.geometry, self.mesh.nodes, x, "normal", with_w=False)
+        qw = operator_part(self.geometry, self.mesh.nodes, x, "shear", with_du=False)
+        return pw[1] @ self.p + qw[1] @ self.phi
+
 
 def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
     """Slip-zone samples: Simpson (nodes + midpoints; default) or Gauss points (order > 0)."""
@@ -106,7 +119,7 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
         xn = r[m:]
         h = np.diff(xn)
         mid = 0.5 * (xn[:-1] + xn[1:])
-        _, u_mid, du_mid = sol.displacements(mid)
+        u_mid, du_mid = sol.tangential(mid)
         wn = np.zeros(xn.size)
         wn[:-1] += h / 6.0
         wn[1:] += h / 6.0
@@ -116,12 +129,12 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
         ss = np.concatenate([s_nodes, 2.0 * u_mid - mid * du_mid])
         return xs, ws, sol.shear(xs), ss
     xs, ws = slip_points(r, m, max(order or 4, 2))
-    _, u, du = sol.displacements(xs)
+    u, du = sol.tangential(xs)
     return xs, ws, sol.shear(xs), 2.0 * u - xs * du
 
 
 def operator_part(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
-                  part: str) -> np.ndarray:
+                  part: str, with_w: bool = True, with_du: bool = True) -> np.ndarray:
     """One displacement operator on nodal values, shape (3, len(x), N + 1).
 
     ``part="normal"``: of the nodal pressures p; ``part="shear"``: of the
@@ -129,9 +142,13 @@ def operator_part(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
     points ``x`` (units E* = a = R = 1).
     """
     if part == "normal":
-        g = element_integrals(geometry.pressure_kernel, x, nodes)
+        kernel = geometry.pressure_kernel if with_w else (
+            lambda xx, ss: geometry.pressure_kernel(xx, ss, with_w=False))
+        g = element_integrals(kernel, x, nodes)
     elif part == "shear":
-        g = element_integrals(geometry.shear_kernel, x, nodes)
+        kernel = geometry.shear_kernel if with_du else (
+            lambda xx, ss: geometry.shear_kernel(xx, ss, with_du=False))
+        g = element_integrals(kernel, x, nodes)
     else:
         raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
     # du/dx of an odd strip shear is log-infinite on the axis for every element
@@ -141,13 +158,54 @@ def operator_part(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
         return apply_difference(g, nodes)
 
 
-def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):
+# Degree of homogeneity in length of the element integrals g (rows w, u, du/dx)
+# of the disc kernels: g(lambda x; lambda nodes) = lambda^d g(x; nodes).
+_DISC_DEGREE = {"normal": np.array([2.0, 2.0, 1.0]), "shear": np.array([3.0, 3.0, 2.0])}
+_STICK_BLOCKS: dict[tuple, np.ndarray] = {}
+_STICK_BLOCKS_MAX = 64  # distinct (nu, part, stick mesh) kept: 64 x 3 x 129^2 doubles at most
+
+
+def nodal_operator_part(geometry: Geometry, mesh: Mesh, part: str) -> np.ndarray:
+    """:func:`operator_part` at the mesh's own nodes, reusing the stick block across c.
+
+    On the graded mesh the stick-zone nodes are c t_i with t_i fixed by
+    (n, M, power), and the disc kernels are homogeneous in length, so the
+    element integrals of stick points over stick elements are c^d times
+    those of the reference mesh t (d = :data:`_DISC_DEGREE`): a sweep over
+    c/a computes that block once per distinct M (15 values for n a multiple
+    of 16). Exact to round-off; the sphere only (the strip kernels of the
+    half-plane carry a log and the slab a fixed thickness).
+    """
+    nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
+    if geometry.name != "sphere" or not 0 < m < n or part not in _DISC_DEGREE:
+        return operator_part(geometry, nodes, nodes, part)
+    c = float(nodes[m])
+    kernel = geometry.pressure_kernel if part == "normal" else geometry.shear_kernel
+    ref_nodes = nodes[:m + 1] / c
+    # nodes / c equals the generator's t_i to round-off (not bit for bit across c)
+    key = (float(geometry.nu), part, np.round(ref_nodes, 13).tobytes())
+    ref = _STICK_BLOCKS.get(key)
+    if ref is None:
+        ref = element_integrals(kernel, ref_nodes, ref_nodes)
+        if len(_STICK_BLOCKS) >= _STICK_BLOCKS_MAX:
+            _STICK_BLOCKS.pop(next(iter(_STICK_BLOCKS)))
+        _STICK_BLOCKS[key] = ref
+    g = np.empty((3, n + 1, n))
+    g[:, :m + 1, :m] = ref * (c ** _DISC_DEGREE[part])[:, None, None]
+    g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])
+    g[:, m + 1:, :] = element_integrals(kernel, nodes[m + 1:], nodes)
+    return apply_difference(g, nodes)
+
+
+def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray, with_w: bool = True):
     """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
 
     Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
-    w (k = 0), u (1) and du/dx (2) at the points ``x``.
+    w (k = 0), u (1) and du/dx (2) at the points ``x``. ``with_w=False``
+    leaves the pressure's w row unreliable (zeros for the sphere), which
+    saves the elliptic integrals when only tangential displacements are needed.
     """
-    return (operator_part(geometry, nodes, x, "normal"),
+    return (operator_part(geometry, nodes, x, "normal", with_w),
             operator_part(geometry, nodes, x, "shear"))
 
 
@@ -221,7 +279,8 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
     if ops is None:
-        pw, qw = operators(geometry, r, r)
+        pw = nodal_operator_part(geometry, mesh, "normal")
+        qw = nodal_operator_part(geometry, mesh, "shear") if m > 0 else None
     else:
         copy = geometry.name == "cylinder"  # the axis row is edited below
         pw = np.array(ops[0], dtype=float, copy=copy)
@@ -269,17 +328,19 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     slip_nodes = np.arange(m, nn)  # phi_i = k p_i / shape_i
     slip_cols = slip_nodes - 1
     size = nn + 1 + (m - 1) + 1
+    # A(k) = a0 + k a1, where a1 is nonzero only in the columns of the slip-zone
+    # pressures: a1 is kept as that column block (a1b), never as a full matrix
     a0 = np.zeros((size, size))
-    a1 = np.zeros((size, size))
+    a1b = np.empty((size, slip_nodes.size))
     nr = nn + 1
     a0[:nr, :nn] = pw[0][:, :-1]
     a0[:nr, nn] = -1.0
     a0[:nr, nn + 1:nn + m] = qx[0][:, stick_cols]
-    a1[:nr, slip_nodes] = qx[0][:, slip_cols] / shape[slip_nodes]
+    a1b[:nr] = qx[0][:, slip_cols] / shape[slip_nodes]
     a0[nr:, :nn] = pw[1][stick_rows, :-1]
     a0[nr:, nn + 1:nn + m] = qx[1][stick_rows][:, stick_cols]
     a0[nr:, nn + m] = -(r[stick_rows] ** 2)
-    a1[nr:, slip_nodes] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
+    a1b[nr:] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
     b = np.concatenate([rhs_normal, np.zeros(m)])
 
     j = m - 1  # last node inside the stick zone: t_j = shape_j phi_j - k p_j = 0
@@ -298,9 +359,16 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     prev_step = np.inf
     # equilibrate rows and columns (the graded mesh has elements ~1/N^2 long):
     # solve (R A C) y = R b, x = C y
-    rs = 1.0 / np.max(np.abs(a0 + k * a1), axis=1)
-    cs = 1.0 / np.max(np.abs((a0 + k * a1) * rs[:, None]), axis=0)
-    a0s, a1s, bs = a0 * rs[:, None] * cs, a1 * rs[:, None] * cs, b * rs
+    a0s = a0.copy()
+    a0s[:, slip_nodes] += k * a1b
+    rs = 1.0 / np.max(np.abs(a0s), axis=1)
+    a0s *= rs[:, None]
+    cs = 1.0 / np.max(np.abs(a0s), axis=0)
+    a0s = a0 * rs[:, None]
+    a0s *= cs
+    a1s = a1b * rs[:, None]
+    a1s *= cs[slip_nodes]
+    bs = b * rs
     # g is the traction difference at a node ~1/N^2 from c, where it and its
     # k-derivative are O(1/N^2) while the LU's round-off in p and phi is
     # ~eps cond(A) ~ eps N^2: g(k) was noisy at ~1e-5 relative in k for
@@ -308,20 +376,21 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     # the residual in extended precision removes the noise (k stable to
     # ~1e-10 at N = 1024 and 2048).
     refine = nn >= _REFINE_FROM_N
-    a1_slip = a1s[:, slip_nodes] if refine else None  # the only nonzero columns of a1
     for it in range(1, max_iter + 1):
-        lu = linalg.lu_factor(a0s + k * a1s, overwrite_a=True, check_finite=False)
+        ak = a0s.copy()
+        ak[:, slip_nodes] += k * a1s
+        lu = linalg.lu_factor(ak, overwrite_a=True, check_finite=False)
 
         def refined(rhs: np.ndarray) -> np.ndarray:
             y = linalg.lu_solve(lu, rhs, check_finite=False)
             if not refine:
                 return y
-            res = _extended_residual(a0s, a1_slip, slip_nodes, k, y, rhs)
+            res = _extended_residual(a0s, a1s, slip_nodes, k, y, rhs)
             return y + linalg.lu_solve(lu, res, check_finite=False)
 
         x = cs * refined(bs)
         g = shape[j] * x[nn + j] - k * x[j]
-        xk = -cs * refined(rs * (a1 @ x))
+        xk = -cs * refined(rs * (a1b @ x[slip_nodes]))
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg
         k -= step
@@ -341,9 +410,9 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
     # x at the final k from the last factorization: x(k) is smooth in k, so the
     # first-order update leaves an error of order step^2
     x = x - step * xk
-    a = a0 + k * a1
     g = shape[j] * x[nn + j] - k * x[j]
-    res = float(np.linalg.norm(a @ x - b) / np.linalg.norm(b) + abs(g) / max(abs(x[j]), 1e-300))
+    ax = a0 @ x + k * (a1b @ x[slip_nodes])
+    res = float(np.linalg.norm(ax - b) / np.linalg.norm(b) + abs(g) / max(abs(x[j]), 1e-300))
     p = np.append(x[:nn], 0.0)
     phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
     phi[m:nn] = k * p[m:nn] / shape[m:nn]

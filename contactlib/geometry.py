@@ -41,17 +41,23 @@ class Geometry:
     def thickness(self) -> float:
         return np.inf if self.slab_ratio == 0 else 1.0 / self.slab_ratio
 
-    def pressure_kernel(self, x, s):
-        """(w, u, du/dx) of a unit uniform pressure on a disc / symmetric strip of radius s."""
+    def pressure_kernel(self, x, s, with_w: bool = True):
+        """(w, u, du/dx) of a unit uniform pressure on a disc / symmetric strip of radius s.
+
+        ``with_w=False`` may skip w (zeros) where that is cheaper (the disc).
+        """
         if self.name == "sphere":
-            return disc.pressure_disc(x, s, self.nu)
+            return disc.pressure_disc(x, s, self.nu, with_w=with_w)
         from .kernels import strip
         return strip.pressure_strip(x, s, self.nu, self.thickness)
 
-    def shear_kernel(self, x, s):
-        """(w, u, du/dx) of the unit shear element: q = r on a disc, or +-1 on a strip."""
+    def shear_kernel(self, x, s, with_du: bool = True):
+        """(w, u, du/dx) of the unit shear element: q = r on a disc, or +-1 on a strip.
+
+        ``with_du=False`` may skip du/dx (NaN) where that is cheaper (the disc).
+        """
         if self.name == "sphere":
-            return disc.shear_disc(x, s, self.nu)
+            return disc.shear_disc(x, s, self.nu, with_du=with_du)
         from .kernels import strip
         return strip.shear_strip(x, s, self.nu, self.thickness)
 

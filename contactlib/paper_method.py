@@ -100,6 +100,14 @@ class PaperSolution:
         with np.errstate(invalid="ignore"):  # du/dx is log-infinite on ring edges
             return tuple(pr[i] @ self.p + sh[i] @ self.qc for i in range(3))
 
+    def tangential(self, x: np.ndarray):
+        """(u, du/dx) at points x."""
+        return self.displacements(x)[1:]
+
+    def radial_displacement(self, x: np.ndarray) -> np.ndarray:
+        """u at points x."""
+        return self.displacements(x)[1]
+
     def slip_samples(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Slip-zone samples as the paper computes them: (x, weights, q, s).
 

@@ -136,7 +136,8 @@ def _stack(*names: str) -> np.ndarray:
 
 
 _STACKS = {"pressure": (_stack("E"), _stack("A1")),
-           "shear": (_stack("g1", "gd1"), _stack("h1", "hd2"))}
+           "shear": (_stack("g1", "gd1"), _stack("h1", "hd2")),
+           "shear_u": (_stack("g1"), _stack("h1"))}
 
 _CHUNK = 32768  # points per pass: scratch rows stay small and are reused
 
@@ -242,6 +243,25 @@ def _scaled(a: np.ndarray, sel, c: float, buf: np.ndarray) -> np.ndarray:
     return out
 
 
+def _pressure_chunk_no_w(r, s, b, w, u, du, ws):
+    """u and du/dr only (w left at 0): closed forms, no elliptic integrals."""
+    k = r.size
+    f = ws.f[:, :k]
+    inside = ws.inside[:k]
+    ra, big, onep, q = f[:4]
+    np.abs(r, out=ra)
+    np.less_equal(ra, s, out=inside)
+    np.maximum(ra, s, out=big)
+    np.minimum(ra, s, out=onep)
+    np.divide(onep, big, out=q)
+    np.multiply(s, q, out=u)  # r inside, s^2/r outside
+    u *= -b
+    np.multiply(q, q, out=du)  # m' outside
+    du *= b
+    du[inside] = -b
+    w[:] = 0.0
+
+
 def _pressure_chunk(r, s, b, w, u, du, ws):
     k = r.size
     f = ws.f[:, :k]
@@ -273,7 +293,7 @@ def _pressure_chunk(r, s, b, w, u, du, ws):
         w[sel_out] = val
 
 
-def _shear_chunk(r, s, b, w, u, du, ws):
+def _shear_chunk(r, s, b, w, u, du, ws, with_du: bool = True):
     k = r.size
     f = ws.f[:, :k]
     inside = ws.inside[:k]
@@ -283,22 +303,25 @@ def _shear_chunk(r, s, b, w, u, du, ws):
     w -= f[6]
     np.minimum(w, 0.0, out=w)
     w *= b  # -beta (s^2 - r^2) inside, 0 outside
-    stack_in, stack_out = _STACKS["shear"]
+    stack_in, stack_out = _STACKS["shear" if with_du else "shear_u"]
+    nrows = 4 if with_du else 2
     sel_in, sel_out = _sides(inside)
     if sel_in is not None:
         m1s, lgs = _get(m1, sel_in, f[6]), _get(lg, sel_in, f[7])
-        rows = _log_form(stack_in, m1s, lgs, f[10:14, : m1s.size])
+        rows = _log_form(stack_in, m1s, lgs, f[10:10 + nrows, : m1s.size])
         cs = _scaled(s, sel_in, _C_SHEAR, f[8])
-        g, gd = rows[0], rows[2]
-        gd *= cs  # du = c s^3/r^2 gd(m) = c s gd(m)/m
-        du[sel_in] = gd
+        g = rows[0]
+        if with_du:
+            gd = rows[2]
+            gd *= cs  # du = c s^3/r^2 gd(m) = c s gd(m)/m
+            du[sel_in] = gd
         g *= cs
         g *= _get(ra, sel_in, f[9])  # u = c s^3/r g(m) = c s r g(m)/m
         u[sel_in] = g
     if sel_out is not None:
         m1s, lgs = _get(m1, sel_out, f[6]), _get(lg, sel_out, f[7])
-        rows = _log_form(stack_out, m1s, lgs, f[10:14, : m1s.size])
-        h, mq, hd = rows[0], rows[1], rows[2]  # row 1 (R of h1) is free now
+        rows = _log_form(stack_out, m1s, lgs, f[10:10 + nrows, : m1s.size])
+        h, mq = rows[0], rows[1]  # row 1 (R of h1) is free now
         qs = _get(q, sel_out, f[8])
         np.multiply(qs, qs, out=mq)  # m'
         h *= mq
@@ -306,14 +329,24 @@ def _shear_chunk(r, s, b, w, u, du, ws):
         h *= cs
         h *= _get(s, sel_out, f[8])  # (qs no longer needed)
         u[sel_out] = h  # u = c s^2 h(m') = c s^2 m' h1
-        mq *= mq
-        hd *= mq
-        hd *= _get(ra, sel_out, f[9])  # (cs no longer needed)
-        hd *= -2.0 * _C_SHEAR
-        du[sel_out] = hd  # du = -2 c r hd(m') = -2 c r m'^2 hd2
+        if with_du:
+            hd = rows[2]
+            mq *= mq
+            hd *= mq
+            hd *= _get(ra, sel_out, f[9])  # (cs no longer needed)
+            hd *= -2.0 * _C_SHEAR
+            du[sel_out] = hd  # du = -2 c r hd(m') = -2 c r m'^2 hd2
+    if not with_du:
+        du[:] = np.nan
+        return
     zero = np.equal(m1, 0.0, out=ws.flag[:k])
     if zero.any():  # r = s exactly: du/dr is log-infinite
         du[zero] = -np.inf
+
+
+def _shear_chunk_u(r, s, b, w, u, du, ws):
+    """w and u only (du/dr left NaN): half the polynomial work."""
+    _shear_chunk(r, s, b, w, u, du, ws, with_du=False)
 
 
 def _run(chunk_fn, r, s, nu):
@@ -329,7 +362,8 @@ def _run(chunk_fn, r, s, nu):
     return out[0].reshape(shape), out[1].reshape(shape), out[2].reshape(shape)
 
 
-def pressure_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def pressure_disc(r, s, nu: float, *,
+                  with_w: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Surface displacements under a uniform unit pressure on a disc.
 
     Parameters
@@ -340,6 +374,9 @@ def pressure_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Disc radius (>= 0); broadcast against ``r``. ``s = 0`` gives zeros.
     nu : float
         Poisson's ratio.
+    with_w : bool
+        False: skip w (returned as zeros); u and du/dr are then closed forms
+        without elliptic integrals (for tangential displacements only).
 
     Returns
     -------
@@ -359,9 +396,10 @@ def pressure_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     >>> round(float(w), 12) == round(2.0, 12)
     True
     """
-    return _run(_pressure_chunk, r, s, nu)
+    return _run(_pressure_chunk if with_w else _pressure_chunk_no_w, r, s, nu)
 
-def shear_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def shear_disc(r, s, nu: float, *,
+               with_du: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Surface displacements under a linear radial shear q = r on a disc.
 
     Parameters
@@ -372,6 +410,8 @@ def shear_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Disc radius (>= 0); ``s = 0`` gives zeros.
     nu : float
         Poisson's ratio.
+    with_du : bool
+        False: skip du/dr (returned as NaN), half the work (for u alone).
 
     Returns
     -------
@@ -397,4 +437,4 @@ def shear_disc(r, s, nu: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     >>> abs(float(u) - 1e-3) < 1e-9
     True
     """
-    return _run(_shear_chunk, r, s, nu)
+    return _run(_shear_chunk if with_du else _shear_chunk_u, r, s, nu)

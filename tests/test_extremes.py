@@ -304,18 +304,18 @@ class PhysicalGeometry(Geometry):
 
     a: float = 1.0
 
-    def pressure_kernel(self, x, s):
+    def pressure_kernel(self, x, s, with_w=True):
         a = self.a
         if self.name == "sphere":
-            w, u, du = disc.pressure_disc(a * x, a * s, self.nu)
+            w, u, du = disc.pressure_disc(a * x, a * s, self.nu, with_w=with_w)
         else:
             w, u, du = strip.pressure_strip(a * x, a * s, self.nu, a * self.thickness)
         return w / a, u / a, du
 
-    def shear_kernel(self, x, s):
+    def shear_kernel(self, x, s, with_du=True):
         a = self.a
         if self.name == "sphere":
-            w, u, du = disc.shear_disc(a * x, a * s, self.nu)
+            w, u, du = disc.shear_disc(a * x, a * s, self.nu, with_du=with_du)
             return w / a**2, u / a**2, du / a
         w, u, du = strip.shear_strip(a * x, a * s, self.nu, a * self.thickness)
         return w / a, u / a, du

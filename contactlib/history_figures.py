@@ -63,6 +63,7 @@ from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 from contactlib.figures import (
     _MARKERS,
     _NOT_CONVERGED_GID,
+    _as_list,
     _colors,
     _finish,
     _fmt,
@@ -146,16 +147,6 @@ def _describe(ds: xr.Dataset) -> str:
     if "steps" in attrs:
         parts.append(f"{int(attrs['steps'])} steps a segment")
     return ", ".join(parts)
-
-
-def _as_list(datasets: xr.Dataset | Sequence[xr.Dataset]) -> list[xr.Dataset]:
-    items = [datasets] if isinstance(datasets, xr.Dataset) else list(datasets)
-    if not items:
-        raise ValueError("datasets must contain at least one xarray.Dataset")
-    for i, ds in enumerate(items):
-        if not isinstance(ds, xr.Dataset):
-            raise TypeError(f"datasets[{i}] is not an xarray.Dataset: {type(ds).__name__}")
-    return items
 
 
 def _history(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],

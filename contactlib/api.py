@@ -177,7 +177,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     Returns
     -------
     Solution
-        Profiles and scalars in the scalings of DESIGN.md section 2.
+        Profiles and scalars in the scalings of docs/conventions.md.
 
     Raises
     ------

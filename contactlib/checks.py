@@ -1,4 +1,4 @@
-"""Consistency checks of a partial-slip solution (DESIGN.md trap 5).
+"""Consistency checks of a partial-slip solution (docs/methods.md, "Consistency flags").
 
 * ``stick_admissible``: |q| <= k p at every checked point of the stick zone;
 * ``slip_direction_ok``: the slip rate opposes the shear at every checked point
@@ -37,7 +37,7 @@ def slip_violation(q: np.ndarray, s: np.ndarray) -> float:
 
 
 def flags(stick_q, stick_p, k, slip_q, slip_s, rtol: float = 1e-4) -> dict:
-    """The three DESIGN.md flags and the two violation measures behind them."""
+    """The three consistency flags of docs/conventions.md and the two violation measures behind them."""
     sv = stick_violation(np.asarray(stick_q), np.asarray(stick_p), k)
     dv = slip_violation(np.asarray(slip_q), np.asarray(slip_s))
     ok_stick = bool(sv <= rtol)

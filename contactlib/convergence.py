@@ -145,7 +145,7 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
         {
             "value": (("quantity", "n", "stick_ratio"), values,
                       attrs("computed value", comment="friction_coefficient k; load_ratio "
-                            "P/P_Hertz; frictional_work as in DESIGN.md; peak_shear "
+                            "P/P_Hertz; frictional_work as in docs/conventions.md; peak_shear "
                             "max q/p0")),
             "reference": (("quantity", "stick_ratio"), ref,
                           attrs("reference value (see the global attribute reference)")),

@@ -31,5 +31,5 @@ def slip_points(nodes: np.ndarray, stick_index: int, order: int) -> tuple[np.nda
 
 def frictional_work(x: np.ndarray, weights: np.ndarray, q: np.ndarray, s: np.ndarray,
                     factor: float, power: int) -> float:
-    """V in the DESIGN.md scaling: factor * sum w x^power q (-s)."""
+    """V in the scaling of docs/conventions.md: factor * sum w x^power q (-s)."""
     return float(factor * np.sum(weights * x**power * q * (-s)))

@@ -2,7 +2,7 @@
 
 Every function takes one :class:`xarray.Dataset` or a sequence of them, as
 produced by :func:`contactlib.io.to_dataset` or read back by
-:func:`contactlib.io.read_dataset` (variables and scalings of DESIGN.md
+:func:`contactlib.io.read_dataset` (variables and scalings of docs/conventions.md
 section 2), and returns a new :class:`matplotlib.figure.Figure`. Nothing here
 touches the disk except reading the style file that ships with the package;
 save with :func:`contactlib.io.write_figure`.

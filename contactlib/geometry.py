@@ -87,5 +87,5 @@ class Geometry:
 
     @property
     def work_factor(self) -> float:
-        """V = factor * int_c^1 xi^power q (-s) dxi in the DESIGN.md scalings."""
+        """V = factor * int_c^1 xi^power q (-s) dxi in the scalings of docs/conventions.md."""
         return 2.0 * np.pi / 5.0 if self.name == "sphere" else 0.5

@@ -9,7 +9,7 @@ state from step to step. It covers monotonic loading, unloading, repeated
 cycles and the one-step ("one-shot") load, for the sphere on a half-space and
 the cylinder on a half-plane or on a slab (where a/h changes along the path).
 
-Definitions and scalings (DESIGN.md section 2, with ``a_max`` for ``a``)
+Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
 -----------------------------------------------------------------------
 * ``P_max``: the reference load, load level 1 of the path. Load levels are
   ``P / P_max`` in [0, 1]; the path need not reach 1.

@@ -2,7 +2,7 @@
 
 This is the only module of :mod:`contactlib` that touches the disk. It turns
 solutions into a CF-annotated :class:`xarray.Dataset` (variable names and
-scalings of DESIGN.md section 2), writes it atomically and reproducibly, and
+scalings of docs/conventions.md), writes it atomically and reproducibly, and
 reads it back.
 
 Examples
@@ -173,7 +173,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     Returns
     -------
     xarray.Dataset
-        Variables and scalings of DESIGN.md section 2, each with CF
+        Variables and scalings of docs/conventions.md, each with CF
         ``units`` (``"1"``: everything is dimensionless) and ``long_name``.
         Flags are booleans (stored as int8 with ``flag_values`` and
         ``flag_meanings``). A ``message`` variable is added when any solution

@@ -22,7 +22,7 @@
 * Newton-Raphson from the paper's trial vector (frictionless pressures,
   q_j = 1, k = 0.1).
 
-Trap 1 of DESIGN.md: Eq. 9 uses only differences w_i - w_0, so nothing
+Trap 1 of docs/methods.md: Eq. 9 uses only differences w_i - w_0, so nothing
 excludes a flat-punch pressure; the scheme is kept as printed, and its
 frictionless error is measured in the test-suite and the README.
 """

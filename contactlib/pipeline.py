@@ -61,7 +61,7 @@ def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
 
 
 def energy(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
-    """Frictional work of the loading half-cycle, one value a case (DESIGN.md scaling)."""
+    """Frictional work of the loading half-cycle, one value a case (docs/conventions.md)."""
     geom = scene.geometry_object
     return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
 
@@ -78,7 +78,7 @@ def assemble(scene: Scene, records: Sequence[dict], *,
              checks: Mapping[str, np.ndarray] | None = None,
              work: Mapping[str, np.ndarray] | None = None,
              profiles: Mapping[str, np.ndarray] | None = None) -> xr.Dataset:
-    """The scene's dataset: DESIGN.md variables for the outputs it asked for.
+    """The scene's dataset: docs/conventions.md variables for the outputs it asked for.
 
     Always: ``friction_coefficient``, ``load_ratio`` and the solver status.
     ``k_curve`` adds the consistency flags (needs ``checks``), ``stresses``

@@ -9,7 +9,7 @@ import numpy as np
 
 @dataclass
 class Solution:
-    """One solved partial-slip case, in the scalings of DESIGN.md section 2.
+    """One solved partial-slip case, in the scalings of docs/conventions.md.
 
     All profile arrays live on ``xi`` (r/a or x/a, 0...1).
 

@@ -318,7 +318,7 @@ def check_case(rec: Record) -> dict[str, Any]:
 
 
 def work_case(geometry: Geometry, rec: Record) -> float:
-    """Frictional work of the loading half-cycle, scaled as in DESIGN.md (0 without slip)."""
+    """Frictional work of the loading half-cycle, scaled as in docs/conventions.md (0 without slip)."""
     if rec["slip_x"].size == 0:
         return 0.0  # frictionless (k = 0), full adhesion, or nu = 0.5: nothing slips
     return energy.frictional_work(rec["slip_x"], rec["slip_w"], rec["slip_q"], rec["slip_s"],
@@ -327,7 +327,7 @@ def work_case(geometry: Geometry, rec: Record) -> float:
 
 def profiles(geometry: Geometry, rec: Record, xi: np.ndarray, *, stresses: bool = True,
              displacements: bool = True) -> dict[str, np.ndarray]:
-    """Profiles on ``xi`` in the DESIGN.md scalings (p/p0, q/p0, u R/a^2).
+    """Profiles on ``xi`` in the docs/conventions.md scalings (p/p0, q/p0, u R/a^2).
 
     The tractions are interpolated from the nodal values; the displacement
     needs the kernels at every ``xi`` (the costly part).

@@ -37,7 +37,7 @@ def slip_violation(q: np.ndarray, s: np.ndarray) -> float:
 
 
 def flags(stick_q, stick_p, k, slip_q, slip_s, rtol: float = 1e-4) -> dict:
-    """The three consistency flags of docs/conventions.md and the two violation measures behind them."""
+    """The three consistency flags (docs/conventions.md) and the violation measures behind them."""
     sv = stick_violation(np.asarray(stick_q), np.asarray(stick_p), k)
     dv = slip_violation(np.asarray(slip_q), np.asarray(slip_s))
     ok_stick = bool(sv <= rtol)

@@ -318,7 +318,7 @@ def check_case(rec: Record) -> dict[str, Any]:
 
 
 def work_case(geometry: Geometry, rec: Record) -> float:
-    """Frictional work of the loading half-cycle, scaled as in docs/conventions.md (0 without slip)."""
+    """Frictional work of the loading half-cycle (docs/conventions.md scaling; 0 without slip)."""
     if rec["slip_x"].size == 0:
         return 0.0  # frictionless (k = 0), full adhesion, or nu = 0.5: nothing slips
     return energy.frictional_work(rec["slip_x"], rec["slip_w"], rec["slip_q"], rec["slip_s"],

@@ -1,0 +1,83 @@
+"""The repository stands alone: no tracked file points outside it, every doc link resolves.
+
+* No tracked file (except this one) mentions ``../shared`` or ``DESIGN.md``:
+  a clone has neither, so a reader must find everything under the clone.
+* Every relative link in ``README.md`` and ``docs/*.md`` (Markdown links
+  ``[text](target)``, with an optional ``#anchor``) names a file or folder
+  that exists in the repository, and none climbs out of it.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+_FORBIDDEN = ("../shared", "design.md")
+_LINK = re.compile(r"(?<!!)\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
+_EXTERNAL = ("http://", "https://", "mailto:")
+
+
+def _tracked_files() -> list[Path]:
+    if shutil.which("git") is None or not (ROOT / ".git").exists():
+        pytest.skip("not a git checkout")
+    out = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True, check=True)
+    return [ROOT / name for name in out.stdout.decode().split("\0") if name]
+
+
+def _doc_pages() -> list[Path]:
+    return [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+
+
+def test_no_tracked_file_points_outside_the_repository():
+    me = Path(__file__).resolve()
+    offenders = []
+    for path in _tracked_files():
+        if path.resolve() == me or not path.is_file():
+            continue
+        try:
+            text = path.read_text(encoding="utf-8").lower()
+        except UnicodeDecodeError:
+            continue  # binary
+        for word in _FORBIDDEN:
+            for lineno, line in enumerate(text.splitlines(), 1):
+                if word in line:
+                    offenders.append(f"{path.relative_to(ROOT)}:{lineno}: {word}")
+    assert not offenders, "references outside the repository:\n" + "\n".join(offenders)
+
+
+def test_docs_exist():
+    pages = {p.name for p in _doc_pages()}
+    for name in ("index.md", "theory.md", "conventions.md", "methods.md", "validation.md",
+                 "workflow.md", "cluster.md", "api.md", "accuracy.md"):
+        assert name in pages, f"docs/{name} is missing"
+
+
+def _links(page: Path) -> list[str]:
+    text = page.read_text(encoding="utf-8")
+    text = re.sub(r"```.*?```", "", text, flags=re.S)  # links are not taken from code blocks
+    text = re.sub(r"`[^`\n]*`", "", text)
+    return _LINK.findall(text)
+
+
+def test_link_pattern_finds_relative_links():
+    fake = "See [the docs](docs/index.md#top), ![img](x.png) and [web](https://example.org)."
+    assert _LINK.findall(fake) == ["docs/index.md#top", "https://example.org"]
+
+
+@pytest.mark.parametrize("page", _doc_pages(), ids=lambda p: str(p.relative_to(ROOT)))
+def test_relative_links_resolve(page: Path):
+    assert page.is_file(), f"{page.relative_to(ROOT)} is missing"
+    broken = []
+    for target in _links(page):
+        if target.startswith(_EXTERNAL) or target.startswith("#"):
+            continue
+        rel = target.split("#", 1)[0]
+        dest = (page.parent / rel).resolve()
+        if not dest.is_relative_to(ROOT) or not dest.exists():
+            broken.append(target)
+    assert not broken, f"{page.relative_to(ROOT)}: broken links {broken}"

@@ -3,8 +3,10 @@
 * No tracked file (except this one) mentions ``../shared`` or ``DESIGN.md``:
   a clone has neither, so a reader must find everything under the clone.
 * Every relative link in ``README.md`` and ``docs/*.md`` (Markdown links
-  ``[text](target)``, with an optional ``#anchor``) names a file or folder
-  that exists in the repository, and none climbs out of it.
+  ``[text](target)``) names a file or folder that exists in the repository,
+  none climbs out of it, and an ``#anchor`` into a Markdown page names one of
+  its headings (GitHub's rule: lower case, punctuation dropped, spaces to
+  hyphens).
 """
 
 from __future__ import annotations
@@ -57,6 +59,17 @@ def test_docs_exist():
         assert name in pages, f"docs/{name} is missing"
 
 
+def _anchors(page: Path) -> set[str]:
+    text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
+    heads = re.findall(r"^#{1,6}\s+(.*?)\s*$", text, flags=re.M)
+    return {re.sub(r"[^\w\- ]", "", h.lower()).replace(" ", "-") for h in heads}
+
+
+def test_anchor_rule_matches_github():
+    assert re.sub(r"[^\w\- ]", "", "The speed–accuracy trade".lower()).replace(" ", "-") \
+        == "the-speedaccuracy-trade"
+
+
 def _links(page: Path) -> list[str]:
     text = page.read_text(encoding="utf-8")
     text = re.sub(r"```.*?```", "", text, flags=re.S)  # links are not taken from code blocks
@@ -74,10 +87,12 @@ def test_relative_links_resolve(page: Path):
     assert page.is_file(), f"{page.relative_to(ROOT)} is missing"
     broken = []
     for target in _links(page):
-        if target.startswith(_EXTERNAL) or target.startswith("#"):
+        if target.startswith(_EXTERNAL):
             continue
-        rel = target.split("#", 1)[0]
-        dest = (page.parent / rel).resolve()
+        rel, _, anchor = target.partition("#")
+        dest = (page.parent / rel).resolve() if rel else page
         if not dest.is_relative_to(ROOT) or not dest.exists():
+            broken.append(target)
+        elif anchor and dest.suffix == ".md" and anchor not in _anchors(dest):
             broken.append(target)
     assert not broken, f"{page.relative_to(ROOT)}: broken links {broken}"

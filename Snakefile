@@ -6,7 +6,7 @@
 #   snakemake --cores 2 --configfile my.yaml  with your own scenes (merged)
 #   snakemake -n                              what would run
 #
-# Layout, interface and habits: README.md ("Workflow") docs/workflow.md and docs/conventions.md.
+# Layout, interface and habits: docs/workflow.md and docs/conventions.md.
 
 from snakemake.utils import min_version
 

@@ -1,4 +1,4 @@
-"""Numbers quoted in the README for the sphere (run: python benchmarks/report_sphere.py).
+"""Numbers quoted in docs/validation.md for the sphere (run: python benchmarks/report_sphere.py).
 
 1. Frictionless error of the paper's scheme at n = 8 ... 64 and of the default method.
 2. k(c/a) at nu = 0.3: paper scheme (n = 16, both readings of Eq. 11) beside the

@@ -24,7 +24,7 @@
 
 Trap 1 of docs/methods.md: Eq. 9 uses only differences w_i - w_0, so nothing
 excludes a flat-punch pressure; the scheme is kept as printed, and its
-frictionless error is measured in the test-suite and the README.
+frictionless error is measured in the test-suite and docs/validation.md.
 """
 
 from __future__ import annotations

@@ -231,9 +231,9 @@ def test_largest_supported_n_and_its_memory():
     print(f"n = {out['n']}: {out['seconds']:.1f} s, peak {out['peak_mib']:.0f} MiB")
     assert out["n"] == api.MAX_N == 4096
     assert out["converged"] and out["consistent"]
-    assert abs(out["k"] - 0.152481) < 2e-5  # converged value (README table)
+    assert abs(out["k"] - 0.152481) < 2e-5  # converged value (docs/validation.md)
     assert abs(out["load"] - 1.027397) < 1e-5 and math.isfinite(out["work"])
-    assert out["peak_mib"] < 4096  # the README's limit: under 4 GiB
+    assert out["peak_mib"] < 4096  # the limit in docs/validation.md: under 4 GiB
     for n in (api.MAX_N + 1, 10**6):
         with pytest.raises(ValueError, match=r"^n must be in \[2, 4096\]"):
             solve("sphere", 0.3, stick_ratio=0.5, n=n)

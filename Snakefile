@@ -13,6 +13,16 @@ from snakemake.utils import min_version
 min_version("9.0")
 
 
+# Snakemake's own message for a YAML syntax error names neither the file nor the line
+from contactlib.io import check_yaml
+from snakemake.exceptions import WorkflowError
+
+try:
+    check_yaml("config/config.yaml")
+except ValueError as _exc:
+    raise WorkflowError(f"invalid configuration:\n  {_exc}") from None
+
+
 configfile: "config/config.yaml"
 
 

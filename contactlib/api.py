@@ -53,10 +53,35 @@ def _number(name: str, value, lo: float | None = None, hi: float | None = None,
     bad = (lo is not None and (v < lo or (lo_open and v == lo))) or \
           (hi is not None and (v > hi or (hi_open and v == hi)))
     if bad:
-        lb = "(" if lo_open else "["
-        rb = ")" if hi_open else "]"
-        raise ValueError(f"{name} must be in {lb}{lo}, {hi}{rb}, got {value!r}")
+        raise ValueError(f"{name} must be {_range_text(lo, hi, lo_open, hi_open)}, "
+                         f"got {value!r}")
     return v
+
+
+def _range_text(lo: float | None, hi: float | None, lo_open: bool = False,
+                hi_open: bool = False) -> str:
+    """``in (-1, 0.5]``, ``>= 0``, ``< 1``: the allowed range in words."""
+    if lo is not None and hi is not None:
+        return f"in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+    if lo is not None:
+        return f"{'>' if lo_open else '>='} {lo:g}"
+    if hi is not None:
+        return f"{'<' if hi_open else '<='} {hi:g}"
+    return "a number"
+
+
+def _flag(name: str, value) -> bool:
+    """A real boolean (``True``/``False``, numpy bools too); never a truthy string."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ValueError(f"{name} must be True or False, got {value!r}")
+
+
+def _callback(name: str, value) -> Callable | None:
+    """None or a callable (checked before any work)."""
+    if value is not None and not callable(value):
+        raise ValueError(f"{name} must be callable or None, got {value!r}")
+    return value
 
 
 def _validate_common(geometry, nu, n, method, slab_ratio) -> tuple[Geometry, int, str]:
@@ -172,7 +197,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     slab_ratio : float
         a/h of the slab under a cylinder; 0 is the half-plane.
     energy : bool
-        Integrate the frictional work of the loading half-cycle.
+        Integrate the frictional work of the loading half-cycle (``True`` or
+        ``False``; anything else is refused).
 
     Returns
     -------
@@ -185,6 +211,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         For invalid input; the message names the argument.
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
+    energy = _flag("energy", energy)
     if (stick_ratio is None) == (friction is None):
         raise ValueError("give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
@@ -233,7 +260,15 @@ def _parse_ratios(stick_ratios, n: int) -> list[float]:
             from None
     if not values:
         raise ValueError("stick_ratios must not be empty")
-    return [_number("stick_ratios", v, 0.0, 1.0) for v in values]
+    ratios = [_number("stick_ratios", v, 0.0, 1.0) for v in values]
+    seen: dict[float, int] = {}
+    for i, c in enumerate(ratios):
+        if c in seen:
+            raise ValueError(f"stick_ratios must not repeat a value: {values[i]!r} at position "
+                             f"{i} repeats position {seen[c]} (c/a = {c:g}); each c/a is one "
+                             f"row of the dataset")
+        seen[c] = i
+    return ratios
 
 
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
@@ -244,8 +279,19 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
 
     Newton's method on k starts each point from the points already solved
     (continuation: the ratio of k to the uncoupled closed form, interpolated
-    in c/a), the first two from the solver's own warm start. A point that fails to converge is kept and flagged (``converged = False``), never dropped.
-    ``progress(i, total)`` is called after each point.
+    in c/a), the first two from the solver's own warm start. A point that
+    fails to converge is kept and flagged (``converged = False``), never
+    dropped. Every argument is checked before the first point is solved.
+
+    Parameters
+    ----------
+    geometry, nu, n, method, slab_ratio, energy
+        As for :func:`solve`.
+    stick_ratios : "all" or sequence of float
+        c/a values in [0, 1], each at most once (they index the dataset);
+        ``"all"`` is m/n for m = 1 ... n-1.
+    progress : callable, optional
+        ``progress(i, total)`` is called after each point.
 
     Returns
     -------
@@ -253,6 +299,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
         One per stick ratio, all on the same ``xi`` grid.
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
+    energy = _flag("energy", energy)
+    progress = _callback("progress", progress)
     ratios = _parse_ratios(stick_ratios, n)
     if method != "default":
         for c in ratios:

@@ -7,7 +7,11 @@ so that bad input ends with exit status 2 and exactly one line on stderr::
 
 Errors raised by the library as :class:`ValueError` are reported the same way
 (status 2); any other exception gives one line and status 1 (``--debug``
-adds the traceback). Output files are written only after success.
+adds the traceback). ``--output`` is checked before any computing (missing
+parent folders are created; an unwritable place, a path through a file or a
+name too long is bad input), and the file is written only after success.
+Negative numbers, also in exponent form (``--nu -1e-3``), are option values,
+never taken for options.
 
 Examples
 --------
@@ -25,17 +29,20 @@ import re
 import sys
 import traceback
 from collections.abc import Callable, Sequence
-from pathlib import Path
 from types import ModuleType
 from typing import Any, NoReturn, TextIO
 
+from contactlib import __version__
 from contactlib.result import Solution
 
-__all__ = ["main", "build_parser", "UsageError"]
+__all__ = ["main", "build_parser", "check_output", "UsageError"]
 
 PROG = "contactlib"
 GEOMETRIES = ("sphere", "cylinder")
-DEFAULT_METHODS = ("default", "paper")
+DEFAULT_METHODS = ("default", "paper", "paper-literal")
+# argument strings that are values, not options: a negative number in any form
+# (-1, -.5, -1e-3, -inf, -nan) or a list starting with one (-0.1,0.2)
+_NEGATIVE_NUMBER = re.compile(r"^-(\.?[0-9]|inf|nan)", re.IGNORECASE)
 _INT_RE = re.compile(r"^\s*\+?[0-9]+\s*$")
 
 
@@ -114,8 +121,12 @@ def parse_stick_ratios(text: str) -> str | list[float]:
             values.append(parse_fraction("--stick-ratios", item))
         except UsageError:
             raise UsageError(f"--stick-ratios must be {req}, got {text!r}") from None
-    if len(set(values)) != len(values):
-        raise UsageError(f"--stick-ratios must be {req}, got {text!r} (duplicates)")
+    seen: dict[float, str] = {}
+    for item, value in zip(items, values):
+        if value in seen:
+            raise UsageError(f"--stick-ratios must not repeat a value: {item.strip()!r} repeats "
+                             f"{seen[value].strip()!r} (c/a = {value:g})")
+        seen[value] = item
     return values
 
 
@@ -155,10 +166,27 @@ def _known_methods(api: ModuleType | None = None) -> tuple[str, ...]:
 
 
 class _Parser(argparse.ArgumentParser):
-    """ArgumentParser whose errors are one line, raised as UsageError."""
+    """ArgumentParser whose errors are one line, raised as UsageError.
+
+    Any argument that starts like a negative number (``-1e-3``, ``-inf``,
+    ``-0.1,0.2``) is an option's value, so that it reaches the validator and
+    is accepted or refused by value (argparse alone reads ``-1e-3`` as an
+    option).
+    """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = _NEGATIVE_NUMBER
 
     def error(self, message: str) -> NoReturn:
         raise UsageError(" ".join(message.split()))
+
+
+_OUTPUT_HELP = ("write the netCDF dataset here (checked before any computing; missing "
+                "parent folders are created; an existing file is replaced)")
+_METHOD_HELP = ("discretization: 'default' (ours), 'paper' (the paper's scheme as printed, "
+                "Coulomb's law on each ring's resultant) or 'paper-literal' (the printed "
+                "q_i = k p_i); default: %(default)s")
 
 
 def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
@@ -170,14 +198,12 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--n", metavar="N", default=None,
                      help="number of elements across the half-contact "
                           "(integer >= 2; library default if omitted)")
-    sub.add_argument("--method", metavar="NAME", default="default",
-                     help="discretization: 'default' or 'paper' "
-                          "(the paper's scheme as printed); default: %(default)s")
+    sub.add_argument("--method", metavar="NAME", default="default", help=_METHOD_HELP)
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help="cylinder only: contact half-width over layer "
                           "thickness, a/h >= 0 (0 = half-plane); default: 0")
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
-                     default=None, help="write the netCDF dataset here")
+                     default=None, help=_OUTPUT_HELP)
     sub.add_argument("--no-energy", action="store_true",
                      help="skip the frictional-work integration "
                           "(frictional_work is NaN)")
@@ -196,9 +222,11 @@ def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog=PROG,
         allow_abbrev=False,
-        description="Partial slip of a rigid sphere or cylinder pressed into an "
-                    "elastic body (self-similar loading).",
+        description="Adhesion and partial slip of a rigid sphere or cylinder pressed "
+                    "into an elastic body with Coulomb friction: self-similar loading "
+                    "(solve, sweep) or any normal load path (history).",
     )
+    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     subs = parser.add_subparsers(dest="command", metavar="{solve,sweep,history}",
                                  parser_class=_Parser)
     subs.required = True
@@ -245,8 +273,7 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                       help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
                            "default: 0")
-    hist.add_argument("--output", metavar="FILE.nc", required=True,
-                      help="write the netCDF dataset here")
+    hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
     return parser
@@ -284,8 +311,6 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
             kwargs["friction"] = parse_friction(args.friction)
     else:
         kwargs["stick_ratios"] = parse_stick_ratios(args.stick_ratios)
-    if args.output is not None and (args.output.strip() == "" or Path(args.output).is_dir()):
-        raise UsageError(f"--output must be a file path, got {args.output!r}")
     return kwargs
 
 
@@ -311,9 +336,31 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
         raise UsageError(
             f"--slab-ratio applies only to --geometry cylinder, got {args.slab_ratio!r}")
-    if args.output.strip() == "" or Path(args.output).is_dir():
-        raise UsageError(f"--output must be a file path, got {args.output!r}")
     return kwargs
+
+
+def _shorten(text: str, limit: int = 80) -> str:
+    return text if len(text) <= limit else text[:limit // 2 - 2] + "..." + text[-(limit // 2 - 1):]
+
+
+def check_output(text: str | None) -> None:
+    """Refuse an ``--output`` that could not be written, before any computing.
+
+    Missing parent folders are allowed (the writer creates them); an
+    unwritable place, a path through a file, a folder, or a name too long
+    (:func:`contactlib.io.check_writable`) is a :class:`UsageError` naming
+    ``--output``. Nothing is left on the disk.
+    """
+    if text is None:
+        return
+    if text.strip() == "":
+        raise UsageError(f"--output must be a file path, got {text!r}")
+    from contactlib.io import check_writable
+
+    try:
+        check_writable(text)
+    except OSError as exc:
+        raise UsageError(f"--output: {str(exc).replace(text, _shorten(text))}") from None
 
 
 def _check_method(method: str, api: ModuleType) -> None:
@@ -325,6 +372,11 @@ def _check_method(method: str, api: ModuleType) -> None:
 # --------------------------------------------------------------------------
 # output formatting
 # --------------------------------------------------------------------------
+
+
+def _count(number: int, noun: str) -> str:
+    """``1 iteration``, ``2 iterations``."""
+    return f"{number} {noun}" + ("" if number == 1 else "s")
 
 
 def _yes(flag: bool) -> str:
@@ -351,7 +403,7 @@ def format_summary(sol: Solution) -> str:
         f"stick admissible: {_yes(sol.stick_admissible)}, "
         f"consistent: {_yes(sol.consistent)}",
         f"  converged: {_yes(sol.converged)} "
-        f"(residual {sol.residual_norm:.3g}, {sol.iterations} iterations)",
+        f"(residual {sol.residual_norm:.3g}, {_count(sol.iterations, 'iteration')})",
     ]
     if sol.message:
         lines.append(f"  message: {sol.message}")
@@ -400,7 +452,7 @@ def format_history(res: Any) -> str:
     total = res.converged.size - 1
     rows.append(f"  work in {work_scale}; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
-                f"(at most {int(res.iterations.max())} iterations)")
+                f"(at most {_count(int(res.iterations.max()), 'iteration')})")
     if res.message:
         rows.append(f"  message: {res.message}")
     return "\n".join(rows)
@@ -527,10 +579,12 @@ def main(argv: list[str] | None = None) -> int:
         debug = bool(getattr(args, "debug", False))
         if args.command == "history":
             hist_kwargs = _validate_history(args)  # before importing the numerics
+            check_output(args.output)
             return _run_history(hist_kwargs, args.output, _history_api())
         kwargs = _validate(args)  # before importing the numerics
         api = _api()
         _check_method(args.method, api)
+        check_output(args.output)
         if args.command == "solve":
             return _run_solve(kwargs, args.output, api)
         return _run_sweep(kwargs, args.output, api)

@@ -40,6 +40,7 @@ from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .geometry import Geometry
 from .influence import apply_difference, element_integrals
+from .result import short_repr
 from .theory import uncoupled_friction
 
 __all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part",
@@ -53,9 +54,11 @@ _EXTENDED = np.longdouble
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256)
 
 
-@dataclass
+@dataclass(repr=False)
 class DiscreteSolution:
     """Nodal solution on a mesh (units E* = a = R = 1)."""
+
+    __repr__ = short_repr  # a few lines: scalars, arrays by shape
 
     geometry: Geometry
     mesh: Mesh

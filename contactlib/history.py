@@ -72,6 +72,7 @@ import numpy as np
 from . import history_solver as hs
 from .api import GEOMETRIES, _number
 from .geometry import Geometry
+from .result import history_repr
 
 __all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS",
            "load_levels"]
@@ -83,7 +84,7 @@ MAX_STEPS = 100_000  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = 12  # fewer slipping elements at the top load: work under-resolved
 
 
-@dataclass
+@dataclass(repr=False)
 class HistoryResult:
     """A followed load path, in the scalings of the module notes.
 
@@ -141,6 +142,9 @@ class HistoryResult:
     iterations: np.ndarray
     residual_norm: np.ndarray
     message: str = ""
+
+    def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
+        return history_repr(self)
 
     def segment_work(self) -> np.ndarray:
         """Frictional work done during each path segment (scaled as ``frictional_work``)."""

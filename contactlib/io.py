@@ -20,9 +20,12 @@ Examples
 
 from __future__ import annotations
 
+import errno
 import math
 import os
 import tempfile
+import zipfile
+import zlib
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -33,7 +36,7 @@ import xarray as xr
 from contactlib.result import Solution
 
 __all__ = ["to_dataset", "write_dataset", "read_dataset", "write_arrays", "read_arrays",
-           "write_table", "write_figure"]
+           "write_table", "write_figure", "check_writable", "check_yaml", "DamagedFileError"]
 
 CONVENTIONS = "CF-1.10"
 COMPRESSION: dict[str, Any] = {"zlib": True, "complevel": 4, "shuffle": True}
@@ -294,6 +297,62 @@ def _atomic_target(path: str | os.PathLike[str]) -> tuple[Path, Path]:
     return path, Path(tmp_name)
 
 
+def check_writable(path: str | os.PathLike[str]) -> Path:
+    """Check, before any work, that a writer of this module can write ``path``.
+
+    Does what :func:`write_dataset` and the other writers do first (create
+    missing parent folders, create the temporary file beside the
+    destination), then removes the temporary file and every folder it
+    created, so nothing is left behind. This catches an unwritable folder, a
+    path through a file and a name too long (the temporary name is longer
+    than the destination's) before a long computation rather than after it.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The destination file.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``; missing parent folders will be created by the writer.
+
+    Raises
+    ------
+    OSError
+        One line naming ``path`` and the reason (never the temporary name).
+    """
+    if os.fspath(path).strip() == "" or Path(path).name in ("", ".", ".."):
+        raise OSError(f"{os.fspath(path)!r} is not a file name")
+    path = Path(path)
+    if path.is_dir():
+        raise IsADirectoryError(f"{path} is a folder, not a file")
+    ancestors = [a for a in path.parents]
+    for folder in ancestors:  # the nearest existing ancestor must be a folder
+        if folder.exists() or folder.is_symlink():
+            if not folder.is_dir():
+                raise NotADirectoryError(f"cannot write {path}: {folder} is a file, not a folder")
+            break
+    created = [a for a in ancestors if not (a.exists() or a.is_symlink())]
+    tmp: Path | None = None
+    try:
+        _, tmp = _atomic_target(path)
+    except OSError as exc:
+        reason = exc.strerror or type(exc).__name__
+        if exc.errno == errno.ENAMETOOLONG:
+            reason = "file name too long"
+        raise type(exc)(f"cannot write {path}: {reason.lower()}") from None
+    finally:
+        if tmp is not None:
+            tmp.unlink(missing_ok=True)
+        for folder in created:  # deepest first
+            try:
+                folder.rmdir()
+            except OSError:
+                pass
+    return path
+
+
 def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) -> Path:
     """Write named arrays (an intermediate of the workflow) to ``.npz``, atomically.
 
@@ -328,10 +387,50 @@ def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) ->
     return path
 
 
+class DamagedFileError(OSError):
+    """A file exists but cannot be read back whole (truncated or corrupt).
+
+    The message is one line naming the file and the fix (delete it and
+    rebuild it).
+    """
+
+
+# errors of a file that is there but unreadable; a missing or forbidden file
+# (FileNotFoundError, PermissionError, IsADirectoryError) keeps its own error
+_MISSING = (FileNotFoundError, PermissionError, IsADirectoryError)
+
+
+def _damaged(path: str | os.PathLike[str], kind: str, exc: BaseException) -> DamagedFileError:
+    detail = " ".join(f"{type(exc).__name__}: {exc}".split())
+    if len(detail) > 160:
+        detail = detail[:157] + "..."
+    return DamagedFileError(
+        f"{os.fspath(path)} is damaged or incomplete (not a readable {kind} file: {detail}); "
+        f"delete it and make it again (in the workflow: remove the file and rerun "
+        f"snakemake, which rebuilds it)")
+
+
 def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
-    """Read arrays written by :func:`write_arrays` (no pickles are loaded)."""
-    with np.load(path, allow_pickle=False) as data:
-        return {k: data[k] for k in data.files}
+    """Read arrays written by :func:`write_arrays` (no pickles are loaded).
+
+    Every array is read whole, so a truncated or corrupt file (a broken zip
+    directory, a CRC mismatch, a short array) is detected here.
+
+    Raises
+    ------
+    DamagedFileError
+        If the file exists but cannot be read back whole; the message names
+        the file and the fix.
+    FileNotFoundError
+        If there is no such file.
+    """
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            return {k: data[k] for k in data.files}
+    except _MISSING:
+        raise
+    except (zipfile.BadZipFile, zlib.error, EOFError, ValueError, KeyError, OSError) as exc:
+        raise _damaged(path, "npz", exc) from exc
 
 
 def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
@@ -437,9 +536,60 @@ def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
     -------
     xarray.Dataset
         Fully loaded; flags decode back to booleans.
+
+    Raises
+    ------
+    DamagedFileError
+        If the file exists but is not a readable netCDF file (e.g. truncated);
+        the message names the file and the fix.
+    FileNotFoundError
+        If there is no such file.
     """
-    with xr.open_dataset(path, engine="netcdf4") as ds:
-        return ds.load()
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            return ds.load()
+    except _MISSING:
+        raise
+    except (OSError, RuntimeError, ValueError, KeyError, IndexError) as exc:
+        raise _damaged(path, "netCDF", exc) from exc
+
+
+def check_yaml(path: str | os.PathLike[str]) -> Any:
+    """Parse a YAML file, turning a syntax error into one line naming the file and line.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A YAML (or JSON) file, e.g. the workflow's ``config/config.yaml``.
+
+    Returns
+    -------
+    object
+        The parsed document (``None`` when the file is missing: the caller
+        reports that in its own words).
+
+    Raises
+    ------
+    ValueError
+        ``<path>, line L, column C: <problem>`` for a syntax error (lines
+        and columns count from 1).
+    """
+    import yaml
+
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return None
+    try:
+        return yaml.safe_load(text)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        problem = " ".join(str(exc.problem or exc.context or "invalid YAML").split())
+        raise ValueError(f"{os.fspath(path)}{where}: YAML syntax error: {problem}") from None
+    except yaml.YAMLError as exc:
+        raise ValueError(f"{os.fspath(path)}: YAML syntax error: "
+                         f"{' '.join(str(exc).split())}") from None
 
 
 _FIGURE_METADATA: dict[str, dict[str, None]] = {

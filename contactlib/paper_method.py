@@ -36,6 +36,7 @@ from scipy import linalg
 
 from .elements import Mesh, uniform_mesh
 from .geometry import Geometry
+from .result import short_repr
 
 __all__ = ["PaperSolution", "solve_paper", "ring_operator", "collocation_points"]
 
@@ -67,9 +68,11 @@ def collocation_points(n: int) -> np.ndarray:
     return np.concatenate([[0.0, 0.5 / n], r[1:]])
 
 
-@dataclass
+@dataclass(repr=False)
 class PaperSolution:
     """Ring (strip) values of the paper's scheme (units E* = a = R = 1)."""
+
+    __repr__ = short_repr  # a few lines: scalars, arrays by shape
 
     geometry: Geometry
     mesh: Mesh

@@ -1,13 +1,126 @@
-"""Result object shared by every method and geometry."""
+"""Result object shared by every method and geometry, and short ``repr`` of results.
+
+Printing a result shows a few lines, in the style of scipy's
+``OptimizeResult``: a title, the key scalars, and the arrays by name and
+shape (never their contents), e.g.::
+
+    Solution: sphere, nu = 0.3, method = default, n = 256
+             stick_ratio: 0.5
+    friction_coefficient: 0.152481
+    ...
+                  arrays: xi, pressure, shear, tangential_displacement (201,)
+"""
 
 from __future__ import annotations
 
+import dataclasses
+import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
+__all__ = ["Solution", "format_fields", "short_repr", "history_repr"]
 
-@dataclass
+
+# ----------------------------------------------------------------------------- short repr
+def _scalar(value: Any) -> str:
+    """One value in a few characters: floats to 6 digits, arrays by shape."""
+    if isinstance(value, (bool, np.bool_)):
+        return str(bool(value))
+    if isinstance(value, (float, np.floating)):
+        return "inf" if math.isinf(value) and value > 0 else f"{float(value):.6g}"
+    if isinstance(value, np.ndarray):
+        return f"array{value.shape} {value.dtype}"
+    if isinstance(value, (tuple, list)):
+        shown = ", ".join(_scalar(v) for v in list(value)[:6])
+        more = f", ... ({len(value)} values)" if len(value) > 6 else ""
+        return f"({shown}{more})" if isinstance(value, tuple) else f"[{shown}{more}]"
+    if isinstance(value, dict):
+        return "{" + ", ".join(map(str, value)) + "}" if value else "{}"
+    if isinstance(value, str):
+        return repr(value) if len(value) <= 100 else repr(value[:97] + "...")
+    text = repr(value)
+    if len(text) <= 100:
+        return text
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        return f"<{type(value).__name__}>"
+    return text[:97] + "..."
+
+
+def format_fields(title: str, items: Iterable[tuple[str, Any]]) -> str:
+    """``title`` then one ``name: value`` line an item, names right-aligned.
+
+    String values are shown as given; anything else through a compact
+    formatter (floats to 6 significant digits, arrays by shape and dtype,
+    long sequences shortened).
+    """
+    rows = [(name, value if isinstance(value, str) else _scalar(value))
+            for name, value in items]
+    width = max((len(name) for name, _ in rows), default=0)
+    return "\n".join([title] + [f"{name:>{width}}{': ' if name else '  '}{value}"
+                                for name, value in rows])
+
+
+def _arrays_by_shape(obj: Any, names: Iterable[str]) -> list[tuple[str, str]]:
+    """Lines ``name, name: shape`` grouping the arrays of ``obj`` by shape."""
+    groups: dict[tuple, list[str]] = {}
+    for name in names:
+        value = getattr(obj, name, None)
+        if value is not None:
+            groups.setdefault(np.shape(value), []).append(name)
+    return [("arrays" if i == 0 else "", f"{', '.join(group)} {shape}")
+            for i, (shape, group) in enumerate(groups.items())]
+
+
+def short_repr(obj: Any) -> str:
+    """A few-line ``repr`` of any dataclass: scalars by value, arrays by shape."""
+    fields = [f.name for f in dataclasses.fields(obj)]
+    arrays = [n for n in fields if isinstance(getattr(obj, n), np.ndarray)]
+    scalars = [(n, _scalar(getattr(obj, n))) for n in fields if n not in arrays]
+    return format_fields(f"{type(obj).__name__}:", scalars + _arrays_by_shape(obj, arrays))
+
+
+def _status(converged: Any, iterations: Any, residual: Any) -> str:
+    it = int(iterations)
+    return (f"{bool(converged)} ({it} iteration{'' if it == 1 else 's'}, "
+            f"residual {float(residual):.3g})")
+
+
+def history_repr(res: Any) -> str:
+    """Short ``repr`` of a :class:`contactlib.history.HistoryResult`."""
+    path = " -> ".join(f"{v:g}" for v in res.load_path[:8])
+    if len(res.load_path) > 8:
+        path += f" -> ... ({len(res.load_path)} levels)"
+    head = (f"HistoryResult: {res.geometry}, nu = {res.nu:g}, k = {_scalar(res.friction)}, "
+            f"n = {res.n}")
+    if res.geometry == "cylinder":
+        head += f", a_max/h = {res.slab_ratio:g}"
+    steps = int(np.size(res.load_ratio)) - 1
+    done = int(np.count_nonzero(np.asarray(res.converged)[1:]))
+    iters = np.asarray(res.iterations)
+
+    def state(j: int) -> str:
+        return (f"step {j}: load_ratio {_scalar(res.load_ratio[j])}, contact_radius "
+                f"{_scalar(res.contact_radius[j])}, stick_ratio {_scalar(res.stick_ratio[j])}")
+
+    items: list[tuple[str, Any]] = [
+        ("load_path", f"{path} ({res.steps} steps a segment, {steps} in all)"),
+        ("top load", state(int(np.argmax(res.load_ratio)))),
+        ("end", state(steps)),
+        ("frictional_work", f"{_scalar(res.frictional_work[-1])} (cumulative, at the end)"),
+        ("converged", f"{done}/{steps} steps (at most {int(iters.max()) if iters.size else 0} "
+                      f"iterations a step)"),
+        ("message", res.message or "(none)"),
+    ]
+    names = ["xi", "xi_bounds", "segment", "load_ratio", "contact_radius", "stick_ratio",
+             "indentation", "frictional_work", "converged", "iterations", "residual_norm",
+             "state", "pressure", "shear", "tangential_displacement"]
+    return format_fields(head, items + _arrays_by_shape(res, names))
+
+
+@dataclass(repr=False)
 class Solution:
     """One solved partial-slip case, in the scalings of docs/conventions.md.
 
@@ -73,3 +186,23 @@ class Solution:
     iterations: int = 0
     message: str = ""
     extra: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        head = f"Solution: {self.geometry}, nu = {self.nu:g}, method = {self.method}, n = {self.n}"
+        if self.geometry == "cylinder":
+            head += f", a/h = {self.slab_ratio:g}"
+        items: list[tuple[str, Any]] = [
+            ("stick_ratio", self.stick_ratio),
+            ("friction_coefficient", self.friction_coefficient),
+            ("load_ratio", self.load_ratio),
+            ("frictional_work", self.frictional_work),
+            ("converged", _status(self.converged, self.iterations, self.residual_norm)),
+            ("consistent", f"{bool(self.consistent)} (slip_direction_ok "
+                           f"{bool(self.slip_direction_ok)}, stick_admissible "
+                           f"{bool(self.stick_admissible)})"),
+            ("message", self.message or "(none)"),
+        ]
+        if self.extra:
+            items.append(("extra", self.extra))
+        return format_fields(head, items + _arrays_by_shape(
+            self, ("xi", "pressure", "shear", "tangential_displacement")))

@@ -34,9 +34,11 @@ from typing import Any, Mapping
 
 from . import accuracy, api
 from .geometry import Geometry
+from .result import short_repr
 from .stages import OUTPUTS, _paper_m, parts_needed
 
-__all__ = ["Scene", "HistoryScene", "KINDS", "parse_scene", "parse_scenes", "config_hash"]
+__all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_scenes",
+           "config_hash"]
 
 KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "stick_ratios", "slab_ratio",
@@ -56,7 +58,7 @@ def _ratio_digest(values: tuple[float, ...]) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:10]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Scene:
     """One validated scene.
 
@@ -81,6 +83,8 @@ class Scene:
         were picked by :func:`contactlib.accuracy.plan`, and the solve
         checks the error a posteriori, refining n where needed).
     """
+
+    __repr__ = short_repr  # a few lines: long tuples shortened
 
     name: str
     geometry: str
@@ -147,77 +151,122 @@ class Scene:
                 "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios)}
 
 
-def _fail(name: str, key: str, message: str) -> ValueError:
-    return ValueError(f"scenes.{name}.{key}: {message}")
+class ConfigError(ValueError):
+    """Every problem of a scene (or of all scenes), one line each.
+
+    ``problems`` lists the lines, each starting with ``scenes.<name>.<key>:``;
+    ``str()`` joins them with newlines.
+    """
+
+    def __init__(self, problems: list[str]) -> None:
+        self.problems = list(problems)
+        super().__init__("\n".join(self.problems))
+
+
+class _Problems:
+    """Collects ``scenes.<name>.<key>: message`` lines instead of stopping at the first."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.lines: list[str] = []
+
+    def add(self, key: str, message: str) -> None:
+        self.lines.append(f"scenes.{self.name}.{key}: {message}")
+
+    def check(self, key: str, func, *args):
+        """``func(*args)``, or None after recording its ValueError under ``key``."""
+        try:
+            return func(*args)
+        except ValueError as exc:
+            self.add(key, str(exc))
+            return None
+
+    def raise_any(self) -> None:
+        if self.lines:
+            raise ConfigError(self.lines)
+
+
+def _choice(what: str, value: Any, allowed: tuple[str, ...]) -> str:
+    if not isinstance(value, str) or value not in allowed:
+        raise ValueError(f"{what} must be one of {', '.join(allowed)}, got {value!r}")
+    return value
 
 
 def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     """Validate one scene mapping with the library's rules.
 
+    Every key is checked, and every problem is reported at once.
+
     Raises
     ------
-    ValueError
-        Naming the scene and the key, e.g. ``scenes.bad.nu: nu must be in
-        (-1.0, 0.5], got 0.7``.
+    ConfigError
+        A :class:`ValueError` with one line a problem, each naming the scene
+        and the key, e.g. ``scenes.bad.nu: nu must be in (-1, 0.5], got 0.7``.
     """
     if not isinstance(raw, Mapping):
-        raise ValueError(f"scenes.{name}: must be a mapping, got {raw!r}")
+        raise ConfigError([f"scenes.{name}: must be a mapping, got {raw!r}"])
     kind = raw.get("kind", "self-similar")
     if kind not in KINDS:
-        raise _fail(name, "kind", f"must be one of {', '.join(KINDS)}, got {kind!r}")
+        raise ConfigError([f"scenes.{name}.kind: must be one of {', '.join(KINDS)}, "
+                           f"got {kind!r}"])
     if kind == "history":
         return _parse_history(name, raw)
 
-    def fail(key: str, message: str) -> ValueError:
-        return _fail(name, key, message)
-
-    unknown = sorted(str(k) for k in set(raw) - set(_KEYS))
-    if unknown:
-        raise fail(unknown[0], f"unknown key (allowed: {', '.join(_KEYS)})")
+    bad = _Problems(name)
+    for key in sorted(str(k) for k in set(raw) - set(_KEYS)):
+        bad.add(key, f"unknown key (allowed: {', '.join(_KEYS)})")
     for key in ("geometry", "nu", "stick_ratios"):
         if key not in raw:
-            raise fail(key, "is required")
+            bad.add(key, "is required")
     tolerance = None
     if "tolerance" in raw:
-        for key in ("n", "method"):
-            if key in raw:
-                raise fail(key, "give either tolerance or n/method, not both (with a "
-                                "tolerance the method and n are picked from the measured "
-                                "convergence)")
-        try:
-            tolerance = accuracy.check_tolerance(raw["tolerance"])
-        except ValueError as exc:
-            raise fail("tolerance", str(exc)) from None
+        both = [key for key in ("n", "method") if key in raw]
+        for key in both:
+            bad.add(key, "give either tolerance or n/method, not both (with a tolerance the "
+                         "method and n are picked from the measured convergence)")
+        tolerance = bad.check("tolerance", accuracy.check_tolerance, raw["tolerance"])
+        if raw.get("stick_ratios") == "all":
+            bad.add("stick_ratios", "'all' means m/n and needs a given n; with a tolerance "
+                                    "list the stick ratios")
     method = raw.get("method", "default")
-    try:
-        geom, n, method = api._validate_common(raw["geometry"], raw["nu"], raw.get("n"), method,
-                                               raw.get("slab_ratio", 0.0))
-    except ValueError as exc:
-        key = str(exc).split(" ", 1)[0]
-        raise fail(key if key in _KEYS else "scene", str(exc)) from None
-    try:
-        ratios = api._parse_ratios(raw["stick_ratios"], n)
-        if method != "default":
-            for c in ratios:
-                _paper_m(c, n)
-    except ValueError as exc:
-        raise fail("stick_ratios", str(exc)) from None
-    if tolerance is not None:
-        if raw["stick_ratios"] == "all":
-            raise fail("stick_ratios", "'all' means m/n and needs a given n; with a tolerance "
-                                       "list the stick ratios")
-        method, n = accuracy.plan(geom, ratios, tolerance)
+    # each key on its own first, so that every bad key is named ...
+    ok = [bad.check("geometry", _choice, "geometry", raw.get("geometry"), api.GEOMETRIES)
+          if "geometry" in raw else None,
+          bad.check("method", _choice, "method", method, api.METHODS),
+          bad.check("nu", api._number, "nu", raw.get("nu"), -1.0, 0.5, True)
+          if "nu" in raw else None,
+          bad.check("slab_ratio", api._number, "slab_ratio", raw.get("slab_ratio", 0.0), 0.0)]
     outputs = raw.get("outputs", list(OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
-        raise fail("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
+        bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
+    geom = n = None
+    if all(v is not None for v in ok):  # ... then what depends on several keys
+        try:
+            geom, n, method = api._validate_common(raw["geometry"], raw["nu"], raw.get("n"),
+                                                   method, raw.get("slab_ratio", 0.0))
+        except ValueError as exc:
+            key = str(exc).split(" ", 1)[0]
+            bad.add(key if key in _KEYS else "scene", str(exc))
+    ratios = None
+    if n is not None and "stick_ratios" in raw:
+        try:
+            ratios = api._parse_ratios(raw["stick_ratios"], n)
+            if method != "default":
+                for c in ratios:
+                    _paper_m(c, n)
+        except ValueError as exc:
+            bad.add("stick_ratios", str(exc))
+    bad.raise_any()
+    if tolerance is not None:
+        method, n = accuracy.plan(geom, ratios, tolerance)
     return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
                  tolerance=tolerance)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class HistoryScene:
     """One validated scene of kind ``history`` (see :func:`contactlib.history.history`).
 
@@ -235,6 +284,8 @@ class HistoryScene:
     n : int
         Elements over [0, 1.2 a_max].
     """
+
+    __repr__ = short_repr  # a few lines: long tuples shortened
 
     name: str
     geometry: str
@@ -259,54 +310,58 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
 
     hist = importlib.import_module("contactlib.history")  # the module (the package
     # attribute ``history`` is the function)
-    unknown = sorted(str(k) for k in set(raw) - set(_HISTORY_KEYS))
-    if unknown:
-        raise _fail(name, unknown[0], f"unknown key for a history scene (allowed: "
-                                      f"{', '.join(_HISTORY_KEYS)})")
+    bad = _Problems(name)
+    for key in sorted(str(k) for k in set(raw) - set(_HISTORY_KEYS)):
+        bad.add(key, f"unknown key for a history scene (allowed: {', '.join(_HISTORY_KEYS)})")
     for key in ("geometry", "nu", "friction", "load_path", "steps"):
         if key not in raw:
-            raise _fail(name, key, "is required")
-    friction = raw["friction"]
-    values = list(friction) if isinstance(friction, (list, tuple)) else [friction]
-    if not values:
-        raise _fail(name, "friction", "must not be empty")
-    try:
-        ks = tuple(hist._friction(k) for k in values)
-    except ValueError as exc:
-        raise _fail(name, "friction", str(exc)) from None
-    if len(set(ks)) != len(ks):
-        raise _fail(name, "friction", f"repeats a value: {values!r}")
-    try:
-        path = hist._load_path(raw["load_path"])
-    except ValueError as exc:
-        raise _fail(name, "load_path", str(exc)) from None
-    try:
-        steps = hist._integer("steps", raw["steps"], 1, hist.MAX_STEPS)
-    except ValueError as exc:
-        raise _fail(name, "steps", str(exc)) from None
-    try:
-        n = hist.DEFAULT_N if raw.get("n") is None else hist._integer(
-            "n", raw["n"], hist.MIN_N, hist.MAX_N)
-    except ValueError as exc:
-        raise _fail(name, "n", str(exc)) from None
-    if raw["geometry"] not in api.GEOMETRIES:
-        raise _fail(name, "geometry", f"must be one of {', '.join(api.GEOMETRIES)}, "
-                                      f"got {raw['geometry']!r}")
-    try:
-        nu = api._number("nu", raw["nu"], -1.0, 0.5, lo_open=True)
-        slab = api._number("slab_ratio", raw.get("slab_ratio", 0.0), 0.0, None)
-    except ValueError as exc:
-        key = str(exc).split(" ", 1)[0]
-        raise _fail(name, key, str(exc)) from None
-    if raw["geometry"] == "sphere" and slab != 0.0:
-        raise _fail(name, "slab_ratio", "applies to the cylinder only")
-    return HistoryScene(name=name, geometry=raw["geometry"], nu=nu, frictions=ks,
+            bad.add(key, "is required")
+    ks = None
+    if "friction" in raw:
+        friction = raw["friction"]
+        values = list(friction) if isinstance(friction, (list, tuple)) else [friction]
+        if not values:
+            bad.add("friction", "must not be empty")
+        else:
+            ks = bad.check("friction", lambda: tuple(hist._friction(k) for k in values))
+            if ks is not None and len(set(ks)) != len(ks):
+                bad.add("friction", f"repeats a value: {values!r}")
+    path = bad.check("load_path", hist._load_path, raw["load_path"]) \
+        if "load_path" in raw else None
+    steps = bad.check("steps", hist._integer, "steps", raw["steps"], 1, hist.MAX_STEPS) \
+        if "steps" in raw else None
+    n = hist.DEFAULT_N if raw.get("n") is None else bad.check(
+        "n", hist._integer, "n", raw["n"], hist.MIN_N, hist.MAX_N)
+    geometry = bad.check("geometry", _choice, "geometry", raw["geometry"], api.GEOMETRIES) \
+        if "geometry" in raw else None
+    nu = bad.check("nu", api._number, "nu", raw["nu"], -1.0, 0.5, True) \
+        if "nu" in raw else None
+    slab = bad.check("slab_ratio", api._number, "slab_ratio", raw.get("slab_ratio", 0.0), 0.0)
+    if geometry == "sphere" and slab:
+        bad.add("slab_ratio", "applies to the cylinder only")
+    bad.raise_any()
+    return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
                         hash=config_hash(raw))
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:
-    """Validate every scene of a configuration (see :func:`parse_scene`)."""
+    """Validate every scene of a configuration (see :func:`parse_scene`).
+
+    Raises
+    ------
+    ConfigError
+        Listing the problems of every bad scene at once.
+    """
     if not isinstance(scenes, Mapping) or not scenes:
-        raise ValueError("scenes: must be a non-empty mapping of scene names to scenes")
-    return {str(name): parse_scene(str(name), raw) for name, raw in scenes.items()}
+        raise ConfigError(["scenes: must be a non-empty mapping of scene names to scenes"])
+    out: dict[str, Scene | HistoryScene] = {}
+    problems: list[str] = []
+    for name, raw in scenes.items():
+        try:
+            out[str(name)] = parse_scene(str(name), raw)
+        except ConfigError as exc:
+            problems += exc.problems
+    if problems:
+        raise ConfigError(problems)
+    return out

@@ -1,6 +1,7 @@
 # Validation, helpers and wildcard constraints shared by every rule.
 
 import json
+import re
 from pathlib import Path
 
 import jsonschema
@@ -9,7 +10,7 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
 import contactlib
-from contactlib.scene import parse_scenes
+from contactlib.scene import parse_scene
 
 SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 VERSION = contactlib.__version__
@@ -26,55 +27,111 @@ FIGURE_NEEDS = {
 }
 
 
-def _validate_config(cfg):
-    """Schema first (types and ranges), then the library's rules; one message per problem."""
+def _schema_problems(cfg):
+    """One line a schema violation (types and ranges), sorted by where it is, and the
+    keys reported for each scene (None: the whole scene)."""
     with open(SCHEMA) as fh:
         schema = yaml.safe_load(fh)
     errors = sorted(
         jsonschema.Draft202012Validator(schema).iter_errors(cfg), key=lambda e: list(e.absolute_path)
     )
-    if errors:
-        lines = []
-        for e in errors:
-            where = ".".join(str(p) for p in e.absolute_path) or "(top level)"
-            if e.validator == "additionalProperties":
-                message = e.message
-            elif e.validator == "oneOf" and where.endswith("stick_ratios"):
-                message = f"must be 'all' or a list of numbers in [0, 1], got {e.instance!r}"
+    lines, reported = [], {}
+    for e in errors:
+        path = list(e.absolute_path)
+        if len(path) >= 2 and path[0] == "scenes":
+            keys = reported.setdefault(str(path[1]), set())
+            if len(path) >= 3:
+                keys.add(str(path[2]))
+            elif e.validator in ("required", "additionalProperties"):
+                keys.update(re.findall(r"'([^']*)'", e.message))
             else:
-                message = e.message
-            lines.append(f"  {where}: {message}")
-        raise WorkflowError("invalid configuration:\n" + "\n".join(lines))
-    validate(cfg, str(SCHEMA))
-    try:
-        scenes = parse_scenes(cfg["scenes"])
-    except ValueError as exc:
-        raise WorkflowError(f"invalid configuration:\n  {exc}") from None
+                reported[str(path[1])] = None
+        where = ".".join(str(p) for p in e.absolute_path) or "(top level)"
+        if e.validator == "oneOf" and where.endswith("stick_ratios"):
+            message = f"must be 'all' or a list of distinct numbers in [0, 1], got {e.instance!r}"
+        elif e.validator == "oneOf" and where.endswith("friction"):
+            message = f"must be a number >= 0 or a list of distinct ones, got {e.instance!r}"
+        else:
+            message = e.message
+        lines.append(f"{where}: {message}")
+    return lines, reported
+
+
+def _figure_problems(cfg, scenes, raw_scenes):
+    """Figures naming missing scenes, scenes of the wrong kind or lacking an output."""
+    lines = []
     for fig, names in (cfg.get("figures") or {}).items():
+        if not isinstance(names, list) or fig not in FIGURES:
+            continue  # the schema reports it
         if fig == "history_stick_map" and len(names) > 1:
-            raise WorkflowError(
-                f"invalid configuration:\n  figures.{fig}: one scene (the map of one "
-                f"history), got {len(names)}"
-            )
+            lines.append(f"figures.{fig}: one scene (the map of one history), got {len(names)}")
         for name in names:
+            if name not in raw_scenes:
+                lines.append(f"figures.{fig}: no scene named {name!r}")
+                continue
             if name not in scenes:
-                raise WorkflowError(
-                    f"invalid configuration:\n  figures.{fig}: no scene named {name!r}"
-                )
+                continue  # the scene's own problems are reported
             want = "history" if fig in HISTORY_FIGURES else "self-similar"
             if scenes[name].kind != want:
-                raise WorkflowError(
-                    f"invalid configuration:\n  figures.{fig}: scene {name!r} is of kind "
-                    f"{scenes[name].kind}; this figure draws scenes of kind {want}"
-                )
+                lines.append(f"figures.{fig}: scene {name!r} is of kind {scenes[name].kind}; "
+                             f"this figure draws scenes of kind {want}")
+                continue
             if want == "history":
                 continue
             missing = [o for o in FIGURE_NEEDS[fig] if o not in scenes[name].outputs]
             if missing:
-                raise WorkflowError(
-                    f"invalid configuration:\n  figures.{fig}: scene {name!r} does not ask "
-                    f"for {', '.join(missing)} (add it to scenes.{name}.outputs)"
-                )
+                lines.append(f"figures.{fig}: scene {name!r} does not ask for "
+                             f"{', '.join(missing)} (add it to scenes.{name}.outputs)")
+    return lines
+
+
+def _convergence_problems(cfg):
+    lines = []
+    studies = (cfg.get("convergence") or {}).get("studies")
+    if not isinstance(studies, dict):
+        return lines
+    for name, st in studies.items():
+        ns = st.get("n") if isinstance(st, dict) else None
+        if isinstance(ns, list) and any(b != 2 * a for a, b in zip(ns, ns[1:])):
+            lines.append(f"convergence.studies.{name}.n: each n must be twice the previous, "
+                         f"got {ns}")
+        ref = st.get("reference") if isinstance(st, dict) else None
+        if ref is not None and ref not in studies:
+            lines.append(f"convergence.studies.{name}.reference: no study named {ref!r}")
+    return lines
+
+
+def _validate_config(cfg):
+    """Every problem of the configuration at once, one line each, or the parsed scenes.
+
+    Schema first (types and ranges), then the library's rules for each scene
+    the schema accepts, the figures' scene lists and the convergence studies;
+    all of it is gathered before one error is raised.
+    """
+    lines, reported = _schema_problems(cfg)
+    raw_scenes = cfg.get("scenes") if isinstance(cfg.get("scenes"), dict) else {}
+    scenes = {}
+    for name, raw in raw_scenes.items():
+        name = str(name)
+        keys = reported.get(name, set())
+        if keys is None:
+            continue  # the whole scene is wrong (e.g. not a mapping): the schema says so
+        try:
+            scene = parse_scene(name, raw)
+        except ValueError as exc:  # ConfigError: one line a bad key
+            for line in getattr(exc, "problems", [str(exc)]):
+                key = line.split(":", 1)[0].split(".", 2)[-1]
+                if key not in keys:  # one report a problem: the schema's comes first
+                    lines.append(line)
+            continue
+        if not keys:
+            scenes[name] = scene
+    lines.sort(key=lambda line: line.split(":", 1)[0].split(".")[:2])  # grouped by scene
+    lines += _figure_problems(cfg, scenes, raw_scenes)
+    lines += _convergence_problems(cfg)
+    if lines:
+        raise WorkflowError("invalid configuration:\n" + "\n".join(f"  {l}" for l in lines))
+    validate(cfg, str(SCHEMA))  # fills the schema's defaults
     return scenes
 
 
@@ -82,19 +139,6 @@ ALL_SCENES = _validate_config(config)
 SCENES = {n: s for n, s in ALL_SCENES.items() if s.kind == "self-similar"}
 HISTORIES = {n: s for n, s in ALL_SCENES.items() if s.kind == "history"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
-for _name, _st in CONVERGENCE["studies"].items():
-    _ns = _st["n"]
-    if any(b != 2 * a for a, b in zip(_ns, _ns[1:])):
-        raise WorkflowError(
-            f"invalid configuration:\n  convergence.studies.{_name}.n: each n must be twice "
-            f"the previous, got {_ns}"
-        )
-    _ref = _st.get("reference")
-    if _ref is not None and _ref not in CONVERGENCE["studies"]:
-        raise WorkflowError(
-            f"invalid configuration:\n  convergence.studies.{_name}.reference: no study "
-            f"named {_ref!r}"
-        )
 
 # influence sets, shared by every scene with the same key
 INFLUENCE = {}

@@ -55,7 +55,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
-from contactlib.theory import hertz_pressure, small_k_work_sphere, uncoupled_friction
+from contactlib.theory import hertz_pressure, uncoupled_friction
 
 __all__ = [
     "style_path",
@@ -67,6 +67,9 @@ __all__ = [
 
 STYLE_FILE = "contactlib.mplstyle"
 DEFAULT_STICK_RATIOS: tuple[float, ...] = (0.1, 0.3, 0.5, 0.7, 0.9)
+# fig 3 compares the paper's scheme with ours at the same c/a: values m/16 (the
+# paper's) that the default scenes also hold
+FIG3_STICK_RATIOS: tuple[float, ...] = (1 / 16, 4 / 16, 8 / 16, 12 / 16)
 PAPER_SMALLEST_STICK_RATIO = 1.0 / 16.0
 
 _GEOMETRIES = ("sphere", "cylinder")
@@ -415,7 +418,10 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     k_max : float, optional
         The k axis is linear and cut at ``k_max`` (k grows without bound as
         c/a -> 1; k = inf at c/a = 1). Cases above it are drawn as triangles
-        on the top edge, cases below ``-k_max`` on the bottom edge.
+        on the top edge; the axis reaches below zero by at most 0.1 k_max,
+        and cases below it are drawn on the bottom edge, labelled with their
+        k. A dataset's legend marker is open when none of its cases is
+        consistent.
 
     Returns
     -------
@@ -487,8 +493,11 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
                 # failed cases: crosses wherever their marker went
                 y_marks = np.where(high, k_max, np.where(edge, bottom, k))
                 _draw_not_converged(ax, x[~converged], y_marks[~converged])
-                handles.append(Line2D([], [], color=color, marker=marker, ms=size, mfc=color,
-                                      label=case.label, **_line_style(case)))  # type: ignore[arg-type]
+                for xv, kv in zip(x[low], k[low]):  # the value of a case below the axis
+                    ax.annotate(f"k = {_k_text(float(kv))}", (xv, bottom), xytext=(4, 3),
+                                textcoords="offset points", fontsize=5.8, color=color,
+                                annotation_clip=False)
+                handles.append(_series_key(case, color, marker, size, consistent))
                 # the consistent-range strip: one row per dataset, top row first
                 y = len(members) - 1 - row
                 good = consistent & converged
@@ -503,7 +512,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             handles += _uncoupled_references(ax, geometry, members)
             ax.set_xlim(-0.02, 1.02)
             ax.set_ylim(bottom, k_max)
-            ax.set_title(_TITLES[geometry])
+            ax.set_title(_TITLES[geometry], pad=9)  # clear of the markers on the top edge
             ax.set_ylabel(f"friction coefficient k (axis cut at {_fmt(k_max)})")
             ax.tick_params(labelbottom=False)
             holder = fig.add_subplot(grid[2, j])
@@ -532,22 +541,38 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
         ]
         if any_low:
             key.append(Line2D([], [], ls="none", marker="v", color="0.35",
-                              label=f"k < −{_fmt(k_max)} or NaN: on the bottom edge"))
+                              label="k below the axis (value given) or NaN: on the bottom edge"))
         fig.legend(handles=key, loc="outside lower center", ncols=3 if ncol == 2 else 2,
                    fontsize=6.3)
         return _finish(fig)
 
 
+_K_AXIS_FLOOR = 0.1  # the k axis reaches below zero by at most this fraction of k_max
+
+
 def _k_axis_bottom(members: list[_Case], k_max: float) -> float:
-    """Lower end of the k axis: below the lowest k shown, never below -k_max."""
+    """Lower end of the k axis: below the lowest k, never below -0.1 k_max.
+
+    A negative k (an inconsistent scheme's) would otherwise squeeze the
+    physical curves; cases below the axis go on its bottom edge, labelled
+    with their value.
+    """
     lowest = 0.0
     for case in members:
         k = case.values("friction_coefficient")
         k = k[np.isfinite(k)]
         if k.size:
             lowest = min(lowest, float(np.min(k)))
-    lowest = max(lowest, -k_max)
+    lowest = max(lowest, -_K_AXIS_FLOOR * k_max)
     return lowest - 0.04 * (k_max - lowest)
+
+
+def _series_key(case: _Case, color: str, marker: str, size: float,
+                consistent: np.ndarray) -> Line2D:
+    """Legend entry of a dataset: open marker when none of its cases is consistent."""
+    face = color if np.any(consistent) else "white"
+    return Line2D([], [], color=color, marker=marker, ms=size, mfc=face,
+                  label=case.label, **_line_style(case))  # type: ignore[arg-type]
 
 
 def _uncoupled_eligible(geometry: str, members: Sequence[_Case]) -> list[_Case]:
@@ -583,7 +608,7 @@ def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list
 
 # ----------------------------------------------------------------------------- fig 3
 def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
-                   stick_ratios: Sequence[float] = DEFAULT_STICK_RATIOS) -> Figure:
+                   stick_ratios: Sequence[float] = FIG3_STICK_RATIOS) -> Figure:
     """Pressure and shear profiles for several stick ratios (the paper's Fig. 3).
 
     One column per dataset: pressure p/p0 (top) and shear q/p0 (bottom)
@@ -593,14 +618,19 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
     nearest to the requested ones (each at most once; the legend gives the
     actual c/a and k and flags inconsistent or failed cases), coloured by
     c/a; a dot marks the stick edge xi = c/a on each shear curve. The Hertz
-    pressure sqrt(1 - xi^2) is the dashed reference.
+    pressure sqrt(1 - xi^2) is the dashed reference. The axes are scaled to
+    the converged cases (and Hertz); a not-converged case that leaves them is
+    cut, and its extreme value is written on the panel (gid
+    ``off-scale-note``).
 
     Parameters
     ----------
     datasets : xarray.Dataset or sequence of xarray.Dataset
         With ``pressure``, ``shear`` and ``converged``.
     stick_ratios : sequence of float, optional
-        Requested c/a values in [0, 1].
+        Requested c/a values in [0, 1]; by default 1/16, 4/16, 8/16 and
+        12/16, values of the paper's scheme (c/a = m/16) that the default
+        scenes also hold, so both are compared at the same c/a.
 
     Returns
     -------
@@ -634,10 +664,14 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
             xi = np.asarray(case.ds["xi"].values, dtype=float)
             ax_p.plot(xi, hertz_pressure(xi), color="black", lw=1.0, ls="--", zorder=1,
                       label=r"Hertz $\sqrt{1-\xi^2}$")
+            converged = case.flag("converged")
+            good = [i for i in picks if converged[i]] or picks
+            for ax, name, extra in ((ax_p, "pressure", (0.0, 1.0)), (ax_q, "shear", (0.0,))):
+                _scale_to(ax, case, name, good, picks, extra)
             for i in picks:
                 c = float(case.stick[i])
                 color = _ratio_color(c)
-                style = _profile_style(bool(case.flag("converged")[i]))
+                style = _profile_style(bool(converged[i]))
                 p = np.asarray(case.ds["pressure"].values[i], dtype=float)
                 q = np.asarray(case.ds["shear"].values[i], dtype=float)
                 ax_p.plot(xi, p, color=color, label=_case_label(case, i),
@@ -654,6 +688,30 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
             handles, _ = ax_p.get_legend_handles_labels()
             _legend_below(holders[j], [*handles, _STICK_EDGE_KEY()])
         return _finish(fig)
+
+
+def _scale_to(ax: Axes, case: _Case, name: str, good: Sequence[int], picks: Sequence[int],
+              extra: Sequence[float]) -> None:
+    """Y limits from the ``good`` cases (5 % margins); note the cases cut off."""
+    values = np.asarray(case.ds[name].values, dtype=float)
+    shown = np.concatenate([values[i][np.isfinite(values[i])] for i in good] + [extra])
+    low, high = float(shown.min()), float(shown.max())
+    pad = 0.05 * (high - low or 1.0)
+    low, high = low - pad, high + pad
+    ax.set_ylim(low, high)
+    notes = []
+    for i in picks:
+        v = values[i][np.isfinite(values[i])]
+        if v.size and (v.min() < low or v.max() > high):
+            worst = float(v.min()) if v.min() < low else float(v.max())
+            notes.append(f"c/a = {float(case.stick[i]):.4g} (not converged): "
+                         f"{'down' if worst < low else 'up'} to {worst:.3g} p0")
+    if notes:
+        text = ax.text(0.02, 0.02, "off the axis:\n" + "\n".join(notes), transform=ax.transAxes,
+                       ha="left", va="bottom", fontsize=5.8, zorder=6, gid="off-scale-note",
+                       bbox={"boxstyle": "square,pad=0.3", "fc": "white", "ec": "0.8",
+                             "alpha": 0.9})
+        text.set_in_layout(False)
 
 
 def _case_label(case: _Case, i: int) -> str:
@@ -781,18 +839,18 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     V R^2/(E* a^5) (sphere) or V R^2/(E* a^4) per unit length over the whole
     contact (cylinder), loading 0 -> a, against c/a, for every stick ratio
     the data hold. A dotted vertical line marks c/a = 1/16, the smallest
-    m/n the paper computed. For sphere datasets the small-k asymptote
-    :func:`contactlib.theory.small_k_work_sphere` evaluated at each case's k
-    is drawn dashed in the dataset's colour (the V axis is scaled to the
-    work, so the asymptote may leave it where k is large). Values a log axis
-    cannot show (V <= 0, V NaN, c/a = 0) are left out and counted, per
-    dataset, in a text note on the panel.
+    m/n the paper computed. The V axis is scaled to the converged cases; a
+    not-converged case above it is drawn on the top edge (a cross) and its
+    value written in the note. Values a log axis cannot show (V <= 0, V NaN,
+    c/a = 0) are left out and counted, per dataset, in a text note on the
+    panel. (The small-k asymptote :func:`contactlib.theory.small_k_work_sphere`
+    is not drawn: k falls only like 1/ln(a/c), and at c/a = 0.001 the work
+    is still 0.8 of it, so it never meets the curve on these axes.)
 
     Parameters
     ----------
     datasets : xarray.Dataset or sequence of xarray.Dataset
-        With ``frictional_work``, ``consistent``, ``converged`` and, for
-        spheres, ``friction_coefficient``.
+        With ``frictional_work``, ``consistent`` and ``converged``.
 
     Returns
     -------
@@ -813,11 +871,9 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     >>> fig.axes[0].get_xscale(), fig.axes[0].get_yscale()
     ('log', 'log')
     """
-    cases = _cases(datasets, "fig5_work", ("frictional_work", "consistent", "converged"),
-                   sphere_required=("friction_coefficient",))
+    cases = _cases(datasets, "fig5_work", ("frictional_work", "consistent", "converged"))
     geometries = [g for g in _GEOMETRIES if any(c.geometry == g for c in cases)]
-    entries = max(sum((c.geometry == g) * (2 if g == "sphere" else 1) for c in cases)
-                  for g in geometries) + 1
+    entries = max(sum(c.geometry == g for c in cases) for g in geometries) + 2
     with _style():
         colors = _colors()
         ncol = len(geometries)
@@ -829,7 +885,8 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
             handles: list[Line2D] = []
             notes: list[str] = []
             shown_x: list[float] = [PAPER_SMALLEST_STICK_RATIO]
-            shown_v: list[float] = []
+            shown_v: list[float] = []  # converged cases: they set the V axis
+            failed: list[tuple[_Case, float, float]] = []
             for case in members:
                 color = colors[case.index % len(colors)]
                 marker = _MARKERS[case.index % len(_MARKERS)]
@@ -840,23 +897,16 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                 converged = case.flag("converged")
                 shown = (x > 0) & np.isfinite(v) & (v > 0)
                 shown_x += list(x[shown])
-                shown_v += list(v[shown])
+                shown_v += list(v[shown & converged])
+                failed += [(case, float(a), float(b))
+                           for a, b in zip(x[shown & ~converged], v[shown & ~converged])]
                 ax.plot(x[shown], v[shown], color=color, zorder=2, **_line_style(case))
                 _draw_points(ax, x[shown], v[shown], consistent[shown], marker=marker,
                              color=color, size=size)
-                _draw_not_converged(ax, x[shown & ~converged], v[shown & ~converged])
-                handles.append(Line2D([], [], color=color, marker=marker, ms=size, mfc=color,
-                                      label=case.label, **_line_style(case)))  # type: ignore[arg-type]
+                handles.append(_series_key(case, color, marker, size, consistent[shown]))
                 note = _skip_note(x, v, converged)
                 if note:
                     notes.append(f"{case.label}:\n   {note}")
-                if geometry == "sphere":
-                    k = case.values("friction_coefficient")
-                    ok = (x > 0) & np.isfinite(k) & (k > 0)
-                    (ref,) = ax.plot(x[ok], small_k_work_sphere(case.nu, k[ok]), color=color,
-                                     lw=1.0, dashes=(4.0, 2.0), zorder=1,
-                                     label=f"small-k asymptote at each k ({case.label})")
-                    handles.append(ref)
             handles.append(ax.axvline(PAPER_SMALLEST_STICK_RATIO, color="0.35", lw=1.0,
                                       ls=":", zorder=1,
                                       label="c/a = 1/16, the paper's smallest m/n"))
@@ -869,8 +919,14 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
             ax.xaxis.set_major_locator(LogLocator(base=10.0, subs=subs))
             ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
             ax.xaxis.set_minor_formatter(NullFormatter())
+            top = max(shown_v) * 4.0 if shown_v else max((f[2] for f in failed), default=1.0)
+            for case, xv, vv in failed:  # crosses; on the top edge when above the axis
+                _draw_not_converged(ax, np.array([xv]), np.array([min(vv, top)]))
+                if vv > top:
+                    notes.append(f"{case.label}: not converged at c/a = {xv:.4g},\n"
+                                 f"   V = {vv:.3g}, above the axis (cross on the top edge)")
             if shown_v:
-                ax.set_ylim(min(shown_v) / 3.0, max(shown_v) * 4.0)
+                ax.set_ylim(min(shown_v) / 3.0, top)
             else:
                 ax.text(0.5, 0.5, "no positive frictional work to show", ha="center",
                         va="center", transform=ax.transAxes)
@@ -880,9 +936,12 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                                bbox={"boxstyle": "square,pad=0.3", "fc": "white", "ec": "0.8",
                                      "alpha": 0.9}, zorder=6, gid="skip-note")
                 note.set_in_layout(False)
-            ax.set_title(_TITLES[geometry])
+            ax.set_title(_TITLES[geometry], pad=9)  # clear of crosses on the top edge
             ax.set_xlabel("stick ratio c/a (log scale)")
             ax.set_ylabel(_WORK_LABEL[geometry])
+            if failed:
+                handles.append(Line2D([], [], ls="none", marker="x", ms=7, mew=1.3,
+                                      color="black", label="solver not converged"))
             _legend_below(holders[j], handles)
         return _finish(fig)
 

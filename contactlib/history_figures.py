@@ -58,7 +58,7 @@ from matplotlib.colors import BoundaryNorm, ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
-from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter, NullLocator
 
 from contactlib.figures import (
     _MARKERS,
@@ -129,6 +129,16 @@ class _History:
         if "step" in self.ds.coords:
             return np.asarray(self.ds["step"].values, dtype=float)
         return np.arange(self.ds.sizes["step"], dtype=float)
+
+    @property
+    def travel(self) -> np.ndarray:
+        """Path coordinate: the load travelled so far, sum of abs(ΔP)/P_max."""
+        load = self.path("load_ratio").astype(float)
+        return np.concatenate([[0.0], np.cumsum(np.abs(np.diff(load)))])
+
+    def along(self, x: str) -> np.ndarray:
+        """The x values of the steps: ``"step"`` or ``"travel"``."""
+        return self.travel if x == "travel" else self.steps
 
     @property
     def levels(self) -> np.ndarray:
@@ -221,6 +231,14 @@ def _curve_colors(count: int) -> list[object]:
     return [cmap(v) for v in np.linspace(0.0, 0.88, count)]
 
 
+def _distinct_colors(count: int) -> list[object]:
+    """Like :func:`_curve_colors`, without the light blue that reads as a second blue."""
+    cycle = [c for c in _colors() if c.lower().lstrip("#") != "56b4e9"]
+    if count <= len(cycle):
+        return list(cycle[:count])
+    return _curve_colors(count)
+
+
 def _curve_label(h: _History, k: float, converged: np.ndarray, several: bool) -> str:
     label = f"k = {_k_text(k)}"
     if several:
@@ -243,20 +261,20 @@ def _cross_key() -> Line2D:
     return Line2D([], [], label="step not converged (kept)", **_CROSS)  # type: ignore[arg-type]
 
 
-def _segment_ends(h: _History) -> np.ndarray:
-    """Step values at which a path segment ends (all but the last)."""
+def _segment_ends(h: _History, along: str = "step") -> np.ndarray:
+    """x values (step or travel) at which a path segment ends (all but the last)."""
     segment = h.path("segment")
     change = np.flatnonzero(np.diff(segment) != 0)
-    return h.steps[change[1:]] if change.size else change.astype(float)
+    return h.along(along)[change[1:]] if change.size else change.astype(float)
 
 
-def _distinct_paths(members: Sequence[_History]) -> list[list[_History]]:
-    """Datasets grouped by their (step, load ratio) path, in order of appearance."""
+def _distinct_paths(members: Sequence[_History], along: str = "step") -> list[list[_History]]:
+    """Datasets grouped by their (x, load ratio) path, in order of appearance."""
     groups: list[list[_History]] = []
     for h in members:
-        x, p = h.steps, h.path("load_ratio")
+        x, p = h.along(along), h.path("load_ratio")
         for group in groups:
-            if np.array_equal(x, group[0].steps) and np.array_equal(p, group[0].path(
+            if np.array_equal(x, group[0].along(along)) and np.array_equal(p, group[0].path(
                     "load_ratio")):
                 group.append(h)
                 break
@@ -265,19 +283,19 @@ def _distinct_paths(members: Sequence[_History]) -> list[list[_History]]:
     return groups
 
 
-def _load_panel(ax: Axes, members: Sequence[_History]) -> list[Line2D]:
-    """Load ratio against step for each distinct path (the first in black).
+def _load_panel(ax: Axes, members: Sequence[_History], along: str = "step") -> list[Line2D]:
+    """Load ratio against step (or travel) for each distinct path (the first in black).
 
     Returns legend handles naming the datasets of each path when there are
     several paths, none otherwise.
     """
-    groups = _distinct_paths(members)
+    groups = _distinct_paths(members, along)
     lines: list[Line2D] = []
     for g, group in enumerate(groups):
         style = {"color": "black", "lw": 1.1} if g == 0 else {
             "color": "0.45", "lw": 1.0, "dashes": _DASHES[(g - 1) % len(_DASHES)]}
         names = ", ".join(h.label for h in group)
-        (line,) = ax.plot(group[0].steps, group[0].path("load_ratio").astype(float),
+        (line,) = ax.plot(group[0].along(along), group[0].path("load_ratio").astype(float),
                           gid="load", label=f"load path of {names}",
                           **style)  # type: ignore[arg-type]
         lines.append(line)
@@ -286,8 +304,9 @@ def _load_panel(ax: Axes, members: Sequence[_History]) -> list[Line2D]:
     return lines if len(groups) > 1 else []
 
 
-def _mark_segments(axes: Sequence[Axes], members: Sequence[_History]) -> None:
-    ends = sorted({float(s) for h in members for s in _segment_ends(h)})
+def _mark_segments(axes: Sequence[Axes], members: Sequence[_History],
+                   along: str = "step") -> None:
+    ends = sorted({float(s) for h in members for s in _segment_ends(h, along)})
     for ax in axes:
         for s in ends:
             ax.axvline(s, color="0.55", lw=0.6, ls=":", zorder=0, gid="segment-end")
@@ -316,13 +335,19 @@ def _legend_columns(labels: Sequence[str], width: float, most: int) -> int:
 def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     """Stick-zone and contact radius along the load path.
 
-    Two panels sharing the step axis: on top the load P/P_max of every step
-    (one black line for the path; a different path of a further dataset is
-    grey and dashed), below the radius of the central stick zone
-    c/a_max = ``stick_ratio`` × ``contact_radius`` (solid) and the contact
-    radius a/a_max (dashed, thinner), one colour per k and per dataset.
-    Dotted vertical lines mark the ends of the path segments. c is missing
-    (a gap in the line) where there is no contact (``stick_ratio`` NaN).
+    Two panels sharing the x axis, the path coordinate: the load travelled
+    so far, the sum of abs(ΔP)/P_max over the steps (so datasets with
+    different steps a segment line up: 0 -> 1 is 0 ... 1 for all). On top
+    the load P/P_max (one black line for the path; a different path of a
+    further dataset is grey and dashed, named in that panel's legend),
+    below the radius of the central stick zone c/a_max = ``stick_ratio`` ×
+    ``contact_radius`` (solid) and the contact radius a/a_max (dashed,
+    thinner), one colour per k and per dataset (Okabe-Ito without its
+    light blue, so no two curves are close blues). Dotted vertical lines
+    mark the ends of the path segments. c is missing (a gap in the line)
+    where there is no contact (``stick_ratio`` NaN); the radius axis
+    starts just below zero so that a stick zone of almost zero radius stays
+    visible.
 
     Parameters
     ----------
@@ -354,25 +379,26 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     several = len(members) > 1
     curves = sum(h.ks.size for h in members)
     any_failed = any(not np.all(h.values("converged")) for h in members)
-    groups = _distinct_paths(members)
-    entries = curves + 2 + int(any_failed) + (len(groups) if len(groups) > 1 else 0)
+    entries = curves + 2 + int(any_failed)
     width = 6.4 if several else 5.6
     labels = [_curve_label(h, float(k), ok, several)
               for h in members for k, ok in zip(h.ks, h.values("converged").astype(bool))]
     labels += ["stick-zone radius c/a_max (c/a × a/a_max)"]
-    labels += [f"load path of {', '.join(h.label for h in g)}" for g in groups]
     ncols = 1 if entries <= 6 else _legend_columns(labels, width, 2)
     with _style():
-        colors = _curve_colors(curves)
+        colors = _distinct_colors(curves)
         fig, axes, holders = _panel_grid(1, (0.85, 2.5), _legend_rows(entries, ncols),
                                          width=width)
         ax_p, ax = axes[0, 0], axes[1, 0]
-        path_handles = _load_panel(ax_p, members)
-        _mark_segments((ax_p, ax), members)
+        path_handles = _load_panel(ax_p, members, "travel")
+        if path_handles:
+            ax_p.legend(handles=path_handles, loc="upper right", fontsize=5.8,
+                        borderaxespad=0.3)
+        _mark_segments((ax_p, ax), members, "travel")
         handles: list[Line2D] = []
         n = 0
         for h in members:
-            x = h.steps
+            x = h.travel
             a_all = h.values("contact_radius").astype(float)
             c_all = h.values("stick_ratio").astype(float) * a_all
             ok_all = h.values("converged").astype(bool)
@@ -380,10 +406,12 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                 color = colors[n]
                 n += 1
                 label = _curve_label(h, float(k), ok_all[i], several)
+                # the first dataset on top where two coincide (same k, same path so far)
+                z = 2.5 - 0.1 * h.index
                 (line,) = ax.plot(x, c_all[i], color=color, lw=1.4, label=label,
-                                  gid="stick-radius")
+                                  gid="stick-radius", zorder=z)
                 ax.plot(x, a_all[i], color=color, lw=0.9, dashes=(4.0, 2.0),
-                        gid="contact-radius")
+                        gid="contact-radius", zorder=z)
                 bad = ~ok_all[i]
                 _crosses(ax, x[bad], c_all[i][bad])
                 _crosses(ax, x[bad], a_all[i][bad])
@@ -396,11 +424,10 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
         ]
         if any_failed:
             handles.append(_cross_key())
-        handles += path_handles
-        ax.set_ylim(bottom=0.0)
-        ax.set_xlim(min(float(h.steps[0]) for h in members),
-                    max(float(h.steps[-1]) for h in members))
-        ax.set_xlabel("load step (dotted: end of a path segment)")
+        ax.set_ylim(bottom=-0.03)
+        ax.set_xlim(0.0, max(float(h.travel[-1]) for h in members))
+        ax.set_xlabel("path coordinate: load travelled, Σ |ΔP|/P_max "
+                      "(dotted: end of a path segment)")
         ax.set_ylabel("radius over $a_{max}$")
         ax_p.set_title(_title(members[0]) if not several
                        else "stick-zone and contact radius along the load path")
@@ -528,15 +555,19 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
 
 # ----------------------------------------------------------------------------- displacement loop
 def _arrow(ax: Axes, x: np.ndarray, y: np.ndarray, i: int, color: object) -> None:
-    """Arrow head at point ``i + 1`` pointing along the path from point ``i``."""
+    """Arrow head at point ``i + 1`` pointing along the path from point ``i``.
+
+    A filled head with a thin white rim, large enough to read over the curves.
+    """
     if not (np.isfinite(x[i:i + 2]).all() and np.isfinite(y[i:i + 2]).all()):
         return
     if x[i] == x[i + 1] and y[i] == y[i + 1]:
         return
     ax.annotate("", xy=(x[i + 1], y[i + 1]), xytext=(x[i], y[i]),
-                arrowprops={"arrowstyle": "-|>", "color": color, "lw": 0.0,
-                            "mutation_scale": 10, "shrinkA": 0.0, "shrinkB": 0.0},
-                zorder=4, annotation_clip=False)
+                arrowprops={"arrowstyle": "-|>,head_length=0.55,head_width=0.3",
+                            "fc": color, "ec": "white", "lw": 0.4,
+                            "mutation_scale": 14, "shrinkA": 0.0, "shrinkB": 0.0},
+                zorder=4, annotation_clip=False, gid="direction-arrow")
 
 
 def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
@@ -547,9 +578,11 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     away from the axis) of the element whose midpoint is nearest to
     ``xi`` = r/a_max (sphere) or x/a_max (cylinder), against the load
     P/P_max, one curve per k, in order of the steps; an arrow head in the
-    middle of every path segment shows the direction of travel (loading:
-    rightwards, unloading: leftwards), and an open circle marks the start of
-    the path. The panel title gives the element midpoint actually used.
+    inner part of every path segment shows the direction of travel (loading:
+    rightwards, unloading: leftwards; staggered from curve to curve), and an
+    open circle marks the start of the path. The panel title gives the scene,
+    the path and the element midpoint actually used (asked for: ``xi``);
+    the legend title gives n, ν and the steps a segment.
 
     Parameters
     ----------
@@ -614,9 +647,12 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
                                   label=_curve_label(h, float(k), ok_all[i], False))
                 ax.plot(p[:1], u[:1], ls="none", marker="o", ms=4, mfc="white",
                         mec=colors[i], zorder=4)
+                # arrows staggered along each segment, so the curves' arrows do not
+                # sit on top of one another where the curves meet
+                spot = 0.3 + 0.4 * (i + 0.5) / h.ks.size
                 for s in np.unique(segment[segment > 0]):
                     where = np.flatnonzero(segment == s)
-                    m = int(where[where.size // 2])  # arrow ends at the middle step
+                    m = int(where[min(int(spot * where.size), where.size - 1)])
                     _arrow(ax, p, u, m - 1, colors[i])
                 bad = ~ok_all[i]
                 _crosses(ax, p[bad], u[bad])
@@ -630,15 +666,17 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             if not ok_all.all():
                 handles.append(_cross_key())
             axis = _AXIS[h.geometry]
-            note = f"u at ξ = {axis}/a_max = {used:.4g} (element nearest to {_fmt(float(xi))})"
+            note = f"u at {axis}/a_max = {used:.4g}"
             if not np.any(h.values("state")[:, :, j] > 0):
                 note += ", never in contact"
-            ax.set_title(f"{_title(h)}\n{note}")
+            head = h.label if h.label != h.description else _surface(h)
+            ax.set_title(f"{head}: {_path_text(h)}\n{note}")
             ax.axhline(0.0, color="0.6", lw=0.6, zorder=0)
             ax.set_xlim(-0.02, 1.02)
             ax.set_xlabel("load $P/P_{max}$")
             ax.set_ylabel(r"displacement $u R/a_{max}^2$ (positive outward)")
-            _legend(holders[col], handles, 1)
+            holders[col].legend(handles=handles, loc="upper center", borderaxespad=0.0,
+                                title=h.description if h.label != h.description else None)
         return _finish(fig)
 
 
@@ -797,10 +835,13 @@ def hist_energy_per_cycle(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure
                 handles.append(Line2D([], [], label="point with a non-converged step",
                                       **_CROSS))  # type: ignore[arg-type]
             ax_r.axhline(1.0, color="0.45", lw=0.8, ls="--", zorder=1)
+            # a tick and label at every k drawn
+            ticks = sorted({float(v) for v in shown_k}) or [0.1]
             for a in (ax, ax_r):
                 a.set_xscale("log")
-                a.xaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+                a.xaxis.set_major_locator(FixedLocator(ticks))
                 a.xaxis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
+                a.xaxis.set_minor_locator(NullLocator())
                 a.xaxis.set_minor_formatter(NullFormatter())
             ax.set_yscale("log")
             if shown_k:
@@ -818,7 +859,9 @@ def hist_energy_per_cycle(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure
                 box.set_in_layout(False)
             ax.set_title(f"{_surface_of(geometry, members)}\ndissipated energy per load cycle")
             ax.set_ylabel(_ENERGY_LABEL[geometry])
-            ax_r.set_ylabel("2 × loading\n/ cycle")
+            ax_r.set_ylabel("ratio")
+            ax_r.set_title("ratio (2 × work of the first loading) / (work per cycle)",
+                           fontsize=6.8, pad=3)
             ax_r.set_xlabel("friction coefficient k (log scale)")
             _legend(holders[col], handles, 1)
         return _finish(fig)

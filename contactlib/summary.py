@@ -1,5 +1,11 @@
 """Key numbers of a set of scene datasets: one row a scene, for the report.
 
+Self-similar scenes (a ``stick_ratio`` sweep) and loading histories (a
+``step`` dimension, :mod:`contactlib.history`) both get a row;
+:func:`key_numbers` gives the full, tidy rows (the CSV) and
+:func:`report_rows` a compact view of them (the HTML table of the report:
+fewer, merged columns, four significant digits).
+
 Examples
 --------
 >>> from contactlib import sweep
@@ -12,71 +18,262 @@ Examples
 
 from __future__ import annotations
 
+import math
 from typing import Any, Sequence
 
 import numpy as np
 import xarray as xr
 
-__all__ = ["key_numbers", "COLUMNS"]
+__all__ = ["key_numbers", "report_rows", "COLUMNS", "REPORT_COLUMNS"]
 
 COLUMNS = (
     "scene", "geometry", "method", "elements", "nu", "slab ratio a/h", "cases",
     "converged", "consistent", "consistent up to c/a", "frictionless P/P_Hertz",
+    "frictionless source",
     "k at c/a = 0.25", "k at c/a = 0.5", "k at c/a = 0.75", "largest finite k",
     "work at c/a = 0.5", "largest work",
+    "history k", "history c/a at peak load", "history work per cycle",
 )
+"""Columns of :func:`key_numbers` (the CSV).
+
+``cases``/``converged`` count stick ratios (self-similar) or runs, one a
+friction coefficient (history: a run counts as converged when every step
+did). ``frictionless source`` is ``dataset`` when the scene holds the case
+c/a = 0, ``solve`` when it was computed by a frictionless solve with the
+scene's geometry, ν, method, n and a/h. The ``history`` columns hold
+space-separated lists, one entry a friction coefficient.
+"""
+
+REPORT_COLUMNS = (
+    "scene", "body", "method", "cases / converged / consistent", "consistent up to c/a",
+    "P/P_Hertz frictionless", "k at c/a = 0.25 | 0.5 | 0.75", "largest finite k",
+    "work at c/a = 0.5 | largest", "history, each k: c/a at peak load, work per cycle",
+)
+"""Columns of :func:`report_rows` (the HTML table of the report)."""
+
+_RATIOS = (0.25, 0.5, 0.75)
 
 
 def _at(ds: xr.Dataset, name: str, c: float) -> float:
     """Value of a per-case variable at stick ratio c exactly (NaN when absent)."""
     if name not in ds:
         return float("nan")
-    hit = np.flatnonzero(np.isclose(ds["stick_ratio"].values, c, rtol=0, atol=1e-12))
-    return float(ds[name].values[hit[0]]) if hit.size else float("nan")
+    hit = np.flatnonzero(np.isclose(np.atleast_1d(ds["stick_ratio"].values), c, rtol=0,
+                                    atol=1e-12))
+    return float(np.atleast_1d(ds[name].values)[hit[0]]) if hit.size else float("nan")
+
+
+def _frictionless(ds: xr.Dataset) -> tuple[float, str]:
+    """P/P_Hertz at c/a = 0: from the dataset, else by a frictionless solve."""
+    value = _at(ds, "load_ratio", 0.0)
+    if not math.isnan(value):
+        return value, "dataset"
+    if "load_ratio" not in ds or "elements" not in ds.attrs:
+        return float("nan"), ""
+    from contactlib.api import solve  # the solver only when a scene lacks c/a = 0
+
+    sol = solve(str(ds.attrs["geometry"]), float(ds.attrs["poisson_ratio"]), stick_ratio=0.0,
+                n=int(ds.attrs["elements"]), method=str(ds.attrs.get("method", "default")),
+                slab_ratio=float(ds.attrs.get("slab_ratio", 0.0)), energy=False)
+    return float(sol.load_ratio), "solve"
+
+
+def _common(ds: xr.Dataset) -> dict[str, Any]:
+    return {
+        "scene": str(ds.attrs.get("scene", "")),
+        "geometry": str(ds.attrs["geometry"]),
+        "elements": int(ds.attrs["elements"]),
+        "nu": float(ds.attrs["poisson_ratio"]),
+        "slab ratio a/h": float(ds.attrs.get("slab_ratio", 0.0)),
+    }
+
+
+def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
+    c = np.atleast_1d(ds["stick_ratio"].values)
+    k = np.atleast_1d(ds["friction_coefficient"].values)
+    conv = np.atleast_1d(ds["converged"].values).astype(bool)
+    order = np.argsort(c)
+    if "consistent" in ds:
+        ok = (np.atleast_1d(ds["consistent"].values).astype(bool) & conv)[order]
+        bad = np.flatnonzero(~ok)
+        upto = float(c[order][bad[0] - 1]) if bad.size and bad[0] > 0 else (
+            float("nan") if bad.size else float(c.max()))
+        n_consistent: float = int(ok.sum())
+    else:
+        upto, n_consistent = float("nan"), float("nan")
+    finite = k[np.isfinite(k)]
+    work = np.atleast_1d(ds["frictional_work"].values) if "frictional_work" in ds else None
+    p0, source = _frictionless(ds)
+    row = _common(ds)
+    row.update({
+        "method": str(ds.attrs["method"]),
+        "cases": int(c.size),
+        "converged": int(conv.sum()),
+        "consistent": n_consistent,
+        "consistent up to c/a": upto,
+        "frictionless P/P_Hertz": p0,
+        "frictionless source": source,
+    })
+    for r in _RATIOS:
+        row[f"k at c/a = {r:g}"] = _at(ds, "friction_coefficient", r)
+    row.update({
+        "largest finite k": float(finite.max()) if finite.size else float("nan"),
+        "work at c/a = 0.5": _at(ds, "frictional_work", 0.5),
+        "largest work": float(np.nanmax(work)) if work is not None and
+        np.isfinite(work).any() else float("nan"),
+        "history k": "", "history c/a at peak load": "", "history work per cycle": "",
+    })
+    return row
+
+
+def _cycle_work(ds: xr.Dataset, work: np.ndarray) -> np.ndarray:
+    """Work over the last two path segments when they are one load cycle, else NaN."""
+    levels = np.atleast_1d(np.asarray(ds.attrs.get("load_path", []), dtype=float))
+    if levels.size < 3 or "segment" not in ds or not (
+            (levels[-2] - levels[-3]) * (levels[-1] - levels[-2]) < 0):
+        return np.full(work.shape[0], np.nan)
+    segment = np.asarray(ds["segment"].values)
+    start = int(np.flatnonzero(segment <= levels.size - 3).max())
+    return work[:, -1] - work[:, start]
+
+
+def _numbers(values: np.ndarray) -> str:
+    return " ".join("" if math.isnan(v) else f"{v:.6g}" for v in values)
+
+
+def _history(ds: xr.Dataset) -> dict[str, Any]:
+    name = "friction_coefficient"
+
+    def by_k(var: str) -> np.ndarray:
+        da = ds[var]
+        if name not in da.dims:
+            da = da.expand_dims({name: np.atleast_1d(ds[name].values)
+                                 if name in ds else [float(ds.attrs[name])]})
+        return np.asarray(da.transpose(name, ...).values)
+
+    ks = np.atleast_1d(ds[name].values if name in ds else ds.attrs[name]).astype(float)
+    conv = by_k("converged").astype(bool).reshape(ks.size, -1)
+    load = np.asarray(ds["load_ratio"].values, dtype=float)
+    if load.ndim > 1:
+        load = load.reshape(-1, load.shape[-1])[0]
+    peak = int(np.argmax(load))  # the first step at the largest load
+    c_peak = by_k("stick_ratio").astype(float).reshape(ks.size, -1)[:, peak]
+    work = by_k("frictional_work").astype(float).reshape(ks.size, -1) \
+        if "frictional_work" in ds else np.full((ks.size, load.size), np.nan)
+    nan = float("nan")
+    row = _common(ds)
+    row.update({
+        "method": "history",
+        "cases": int(ks.size),
+        "converged": int(conv.all(axis=1).sum()),
+        "consistent": nan, "consistent up to c/a": nan,
+        "frictionless P/P_Hertz": nan, "frictionless source": "",
+        **{f"k at c/a = {r:g}": nan for r in _RATIOS},
+        "largest finite k": nan, "work at c/a = 0.5": nan, "largest work": nan,
+        "history k": _numbers(ks),
+        "history c/a at peak load": _numbers(c_peak),
+        "history work per cycle": _numbers(_cycle_work(ds, work)),
+    })
+    return row
 
 
 def key_numbers(datasets: Sequence[xr.Dataset]) -> list[dict[str, Any]]:
     """One row of key numbers a dataset (columns :data:`COLUMNS`).
 
-    ``consistent up to c/a`` is the largest stick ratio below which every
-    case converged and passed both consistency checks (NaN when the
-    dataset has no flags); values at a given c/a are taken only where the
-    dataset has that case (never interpolated), else NaN.
+    Parameters
+    ----------
+    datasets : sequence of xarray.Dataset
+        Self-similar scene datasets (:func:`contactlib.io.to_dataset`) and
+        loading histories (a ``step`` dimension; one run or a stack over
+        ``friction_coefficient``), in any mix.
+
+    Returns
+    -------
+    list of dict
+        Self-similar rows: ``consistent up to c/a`` is the largest stick
+        ratio below which every case converged and passed both consistency
+        checks (NaN when the dataset has no flags); values at a given c/a
+        are taken only where the dataset has that case (never
+        interpolated), else NaN; ``frictionless P/P_Hertz`` is the load at
+        c/a = 0 over the Hertz load at the same contact radius, from the
+        dataset, or, when the scene lacks that case, from a frictionless
+        solve with the scene's settings (``frictionless source``). Work is
+        V R²/(E* a⁵) (sphere) or V R²/(E* a⁴) per unit length (cylinder).
+        History rows: one entry a friction coefficient k in the ``history``
+        columns: the stick ratio c/a at the first step of the largest load,
+        and the frictional work over the last two path segments when they
+        form one load cycle (scaled with a_max), else empty; the other
+        per-case columns are NaN.
     """
-    rows = []
-    for ds in datasets:
-        c = np.atleast_1d(ds["stick_ratio"].values)
-        k = np.atleast_1d(ds["friction_coefficient"].values)
-        conv = np.atleast_1d(ds["converged"].values).astype(bool)
-        order = np.argsort(c)
-        if "consistent" in ds:
-            ok = (np.atleast_1d(ds["consistent"].values).astype(bool) & conv)[order]
-            bad = np.flatnonzero(~ok)
-            upto = float(c[order][bad[0] - 1]) if bad.size and bad[0] > 0 else (
-                float("nan") if bad.size else float(c.max()))
-            n_consistent = int(ok.sum())
-        else:
-            upto, n_consistent = float("nan"), float("nan")
-        finite = k[np.isfinite(k)]
-        work = np.atleast_1d(ds["frictional_work"].values) if "frictional_work" in ds else None
-        rows.append({
-            "scene": str(ds.attrs.get("scene", "")),
-            "geometry": str(ds.attrs["geometry"]),
-            "method": str(ds.attrs["method"]),
-            "elements": int(ds.attrs["elements"]),
-            "nu": float(ds.attrs["poisson_ratio"]),
-            "slab ratio a/h": float(ds.attrs.get("slab_ratio", 0.0)),
-            "cases": int(c.size),
-            "converged": int(conv.sum()),
-            "consistent": n_consistent,
-            "consistent up to c/a": upto,
-            "frictionless P/P_Hertz": _at(ds, "load_ratio", 0.0),
-            "k at c/a = 0.25": _at(ds, "friction_coefficient", 0.25),
-            "k at c/a = 0.5": _at(ds, "friction_coefficient", 0.5),
-            "k at c/a = 0.75": _at(ds, "friction_coefficient", 0.75),
-            "largest finite k": float(finite.max()) if finite.size else float("nan"),
-            "work at c/a = 0.5": _at(ds, "frictional_work", 0.5),
-            "largest work": float(np.nanmax(work)) if work is not None and
-            np.isfinite(work).any() else float("nan"),
+    rows = [_history(ds) if "step" in ds.dims else _self_similar(ds) for ds in datasets]
+    return [{name: row[name] for name in COLUMNS} for row in rows]
+
+
+def _g(x: Any, digits: int = 4) -> str:
+    if isinstance(x, str):
+        return x
+    x = float(x)
+    return "–" if math.isnan(x) else f"{x:.{digits}g}"
+
+
+def _joined(values: Sequence[float]) -> str:
+    """Values joined by " | ", or one "–" when none is a number."""
+    if all(math.isnan(float(v)) for v in values):
+        return "–"
+    return " | ".join(_g(v) for v in values)
+
+
+def _list(text: str, digits: int = 4) -> list[str]:
+    return [_g(float(v), digits) if v else "–" for v in text.split(" ")] if text else []
+
+
+def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
+    """The rows of :func:`key_numbers` as a compact table for the report.
+
+    Columns :data:`REPORT_COLUMNS`: the body (geometry, ν, a/h) and the
+    method (with n) merged, the three k values and the two work values
+    each in one cell, numbers to four significant digits, "–" where a value
+    does not apply or is absent, a frictionless load from a separate solve
+    marked "(solve)"; a history's runs in one cell, "k: c/a, work" each, to
+    three significant digits.
+
+    Parameters
+    ----------
+    rows : sequence of dict
+        From :func:`key_numbers`.
+
+    Returns
+    -------
+    list of dict
+        Strings only, one row a scene.
+    """
+    out = []
+    for row in rows:
+        body = f"{row['geometry']}, ν = {_g(row['nu'])}"
+        slab = float(row["slab ratio a/h"])
+        if row["geometry"] == "cylinder":
+            body += f", a/h = {_g(slab)}" if slab > 0 else ", half-plane"
+        history = row["method"] == "history"
+        p0 = _g(row["frictionless P/P_Hertz"], 5)
+        if row["frictionless source"] == "solve":
+            p0 += " (solve)"
+        runs = [f"{k}: {c}, {w}" for k, c, w in zip(
+            _list(row["history k"], 3), _list(row["history c/a at peak load"], 3),
+            _list(row["history work per cycle"], 3))]
+        out.append({
+            "scene": row["scene"],
+            "body": body,
+            "method": f"{row['method']}, n = {row['elements']}",
+            "cases / converged / consistent": " / ".join(
+                (str(row["cases"]), str(row["converged"]),
+                 "–" if history else _g(row["consistent"]))),
+            "consistent up to c/a": _g(row["consistent up to c/a"]),
+            "P/P_Hertz frictionless": p0,
+            "k at c/a = 0.25 | 0.5 | 0.75": _joined([row[f"k at c/a = {r:g}"] for r in _RATIOS]),
+            "largest finite k": _g(row["largest finite k"]),
+            "work at c/a = 0.5 | largest": _joined([row["work at c/a = 0.5"],
+                                                    row["largest work"]]),
+            "history, each k: c/a at peak load, work per cycle":
+                "; ".join(runs) if runs else "–",
         })
-    return rows
+    return out

@@ -171,12 +171,16 @@ def test_stick_radius_draws_the_data(data, figure):
     c, a = stick(st), st["contact_radius"].values
     for i, k in enumerate(KS):
         assert c_lines[i].get_label() == f"k = {k}"
-        assert same(c_lines[i].get_xdata(), st["step"])
+        # x is the load travelled: on 0 -> 1 -> 0 in equal steps, step / STEPS
+        np.testing.assert_allclose(c_lines[i].get_xdata(), st["step"].values / STEPS,
+                                   rtol=1e-12, atol=1e-14)  # float sums of 0.1
         assert same(c_lines[i].get_ydata(), c[i])
         assert same(a_lines[i].get_ydata(), a[i])
-    # one dotted line per panel at the end of segment 1 (step 10)
+    # one dotted line per panel at the end of segment 1 (load travelled 1)
     ends = lines(fig, "segment-end")
-    assert len(ends) == 2 and all(line.get_xdata()[0] == STEPS for line in ends)
+    assert len(ends) == 2 and all(line.get_xdata()[0] == pytest.approx(1.0) for line in ends)
+    # the radius axis starts just below zero: a stick zone of radius ~0 stays visible
+    assert -0.05 < fig.axes[1].get_ylim()[0] < 0.0
 
 
 def test_stick_radius_several_datasets(figure):
@@ -204,7 +208,8 @@ def test_stick_radius_marks_failed_steps(data, figure):
     assert len(line.get_xdata()) == ds.sizes["step"]  # the failed step is kept
     pts = crosses(fig)
     c, a = stick(ds)[3], float(ds["contact_radius"][3])
-    assert sorted(map(tuple, pts)) == sorted([(3.0, c), (3.0, a)])
+    x = 3.0 / STEPS  # the load travelled at step 3
+    assert np.allclose(sorted(map(tuple, pts)), sorted([(x, c), (x, a)]))
     assert any("NOT CONVERGED at 1 step" in t for t in legend_texts(fig))
 
 
@@ -299,7 +304,9 @@ def test_displacement_loop_draws_the_data(data, figure):
     assert len(loops) == len(KS)
     j = int(np.argmin(np.abs(st["xi"].values - 0.8)))
     used = float(st["xi"].values[j])
-    assert f"{used:.4g}" in ax.get_title() and "nearest to 0.8" in ax.get_title()
+    assert f"{used:.4g}" in ax.get_title() and ax.get_title().count("\n") == 1  # two lines
+    arrows = [t for t in ax.texts if t.get_gid() == "direction-arrow"]
+    assert len(arrows) == 2 * len(KS)  # one a segment and k
     u = st["tangential_displacement"].values[:, :, j]
     for i, line in enumerate(loops):
         assert same(line.get_xdata(), st["load_ratio"])

@@ -212,7 +212,7 @@ def all_targets():
     for fig in FIGURES:
         if figure_scenes(fig):
             out += [f"results/figures/{fig}.png", f"results/figures/{fig}.pdf"]
-    if SCENES:  # the key-numbers table sums up the self-similar scenes
+    if ALL_SCENES:  # the key-numbers table sums up every scene
         out += ["results/tables/key-numbers.csv", "results/tables/key-numbers.html"]
     return out
 

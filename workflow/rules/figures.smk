@@ -36,7 +36,7 @@ for _fig in FIGURES:
 
 rule key_numbers:
     input:
-        expand("results/datasets/{scene}.nc", scene=sorted(SCENES)),
+        expand("results/datasets/{scene}.nc", scene=sorted(ALL_SCENES)),
     output:
         csv="results/tables/key-numbers.csv",
         html=report(

@@ -8,4 +8,5 @@ from contactlib import io, summary  # noqa: E402
 
 table = summary.key_numbers([io.read_dataset(path) for path in snakemake.input])  # noqa: F821
 io.write_table(table, snakemake.output.csv)  # noqa: F821
-io.write_table(table, snakemake.output.html, title="contactlib: key numbers of every scene")  # noqa: F821,E501
+io.write_table(summary.report_rows(table), snakemake.output.html,  # noqa: F821
+               title="contactlib: key numbers of every scene")

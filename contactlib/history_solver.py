@@ -586,6 +586,19 @@ def annulus_resolved(k: float, state: np.ndarray) -> np.ndarray:
     return (slipping == 0) | (slipping >= MIN_SLIP_ELEMENTS)
 
 
+_WINDOW = 2  # steps either side over which a difference is maximised
+
+
+def _window_max(values: np.ndarray, segment: np.ndarray) -> np.ndarray:
+    """Largest value within ``_WINDOW`` steps either side, in the same path segment."""
+    out = values.copy()
+    for shift in range(1, _WINDOW + 1):
+        same = segment[shift:] == segment[:-shift]
+        out[shift:] = np.where(same, np.maximum(out[shift:], values[:-shift]), out[shift:])
+        out[:-shift] = np.where(same, np.maximum(out[:-shift], values[shift:]), out[:-shift])
+    return out
+
+
 def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.ndarray,
                     coarse: RawHistory, steps_coarse: int,
                     segment_coarse: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -619,14 +632,13 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     c_coarse = path_interpolate(x, segment, xc, segment_coarse,
                                 np.nan_to_num(coarse.stick_radius))
     h = float(ops.edges[1] - ops.edges[0])
-    nearest = ops.edges[np.clip(np.rint(c_fine / h).astype(np.int64), 1, ops.n - 1)]
-    on_edge = np.abs(c_fine - nearest) <= 1e-12
-    on_edge &= c_fine < fine.contact_radius  # c = a: the sub-element contact radius
-    err_c = np.abs(c_fine - c_coarse)
-    err_c = np.where(on_edge, np.maximum(err_c, 0.5 * h), err_c)
+    half = 0.5 * h * np.rint(c_fine / (0.5 * h))  # element edges and midpoints
+    on_grid = (np.abs(c_fine - half) <= 1e-12) & (c_fine < fine.contact_radius)
+    err_c = _window_max(np.abs(c_fine - c_coarse), segment)
+    err_c = np.where(on_grid, np.maximum(err_c, 0.5 * h), err_c)
     err_c[np.isnan(fine.stick_radius)] = 0.0
     w_coarse = path_interpolate(x, segment, xc, segment_coarse, coarse.work)
-    diff = np.abs(fine.work - w_coarse)
+    diff = _window_max(np.abs(fine.work - w_coarse), segment)
     with np.errstate(divide="ignore", invalid="ignore"):
         err_w = np.where(fine.work > 0.0, diff / fine.work, np.where(diff > 0.0, np.inf, 0.0))
     return err_c, err_w

@@ -2,7 +2,7 @@
 
 Run: python benchmarks/report_history.py [section ...]
 Sections: convergence, spence, work, cycles, highk, patterns, slab, onestep,
-steady, timing (default: all, about 20 min on one core). Every table is printed as Markdown.
+steady, timing, errors, errors_cost (default: all, about 25 min on one core). Every table is printed as Markdown.
 
 References (all independent of the incremental solver): the self-similar
 default method (``contactlib.solve``, n = 256 unless stated), Spence's
@@ -308,9 +308,89 @@ def timing() -> None:
     print("```")
 
 
+ERROR_PATHS = {"cycle": (0, 1, 0), "fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5, 1)}
+
+
+def error_check(geometry: str, k: float, path: str, n: int, steps: int) -> dict:
+    """Error estimates of one history against the same history refined fourfold.
+
+    The truth is the run with 4n elements and 4 x steps (fine step i = refined
+    step 4i). Per quantity: ``under`` the smallest estimate / true error over
+    the steps (the estimate covers the error within a factor 3 where it is >=
+    1/3), ``inflation`` the largest, over path segments, of the segment's
+    largest estimate over its largest true error (<= 10: not inflated), both
+    over the steps flagged resolved by the slip-zone criterion (``annulus``)
+    and over all steps.
+    """
+    levels = ERROR_PATHS[path]
+    res = history(geometry, NU, k, levels, steps, n=n)
+    ref = history(geometry, NU, k, levels, 4 * steps, n=4 * n, error_estimate=False)
+    c = np.nan_to_num(res.stick_ratio * res.contact_radius)
+    c_ref = np.nan_to_num(ref.stick_ratio * ref.contact_radius)[::4]
+    w, w_ref = res.frictional_work, ref.frictional_work[::4]
+    true = {"c": np.abs(c - c_ref),
+            "w": np.divide(np.abs(w - w_ref), w_ref, out=np.zeros_like(w), where=w_ref > 0)}
+    est = {"c": res.stick_radius_error_estimate, "w": res.work_error_estimate}
+    annulus = hs.annulus_resolved(k, res.state) & (res.load_ratio > 0)
+    out = {"resolved": int(res.resolved[1:].sum()), "steps": res.load_ratio.size - 1}
+    for q in ("c", "w"):
+        for label, mask in (("annulus", annulus), ("all", res.load_ratio > 0)):
+            t, e = true[q], est[q]
+            m = mask & (t > 0)
+            out[f"{q}_under_{label}"] = float(np.min(e[m] / t[m])) if m.any() else np.nan
+            infl = [np.max(e[mask & (res.segment == g)]) / np.max(t[mask & (res.segment == g)])
+                    for g in np.unique(res.segment[res.segment > 0])
+                    if np.any(t[mask & (res.segment == g)] > 0)]
+            out[f"{q}_inflation_{label}"] = float(max(infl)) if infl else np.nan
+        out[f"{q}_true_end"], out[f"{q}_est_end"] = float(true[q][-1]), float(est[q][-1])
+    return out
+
+
+def errors(n: int = 120, steps: int = 50) -> None:
+    """Error estimates against runs refined fourfold, and their cost."""
+    print(f"\n## Error estimates (n = {n}, {steps} steps a segment; truth 4n, 4 x steps; "
+          f"nu = {NU})\n")
+    print("| geometry | k | path | resolved | c: min est/true (annulus; all) | "
+          "c: max inflation | c true, est (end) | W: min est/true (annulus; all) | "
+          "W: max inflation | W true, est (end) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for geometry in ("sphere", "cylinder"):
+        for k in (0.1, 0.2, 0.3):
+            for path in ERROR_PATHS:
+                r = error_check(geometry, k, path, n, steps)
+                print(f"| {geometry} | {k} | {path} | {r['resolved']}/{r['steps']} | "
+                      f"{r['c_under_annulus']:.2f}; {r['c_under_all']:.2f} | "
+                      f"{r['c_inflation_annulus']:.1f}; {r['c_inflation_all']:.1f} | "
+                      f"{r['c_true_end']:.1e}, {r['c_est_end']:.1e} | "
+                      f"{r['w_under_annulus']:.2f}; {r['w_under_all']:.2f} | "
+                      f"{r['w_inflation_annulus']:.1f}; {r['w_inflation_all']:.1f} | "
+                      f"{r['w_true_end']:.1e}, {r['w_est_end']:.1e} |", flush=True)
+    errors_cost()
+
+
+def errors_cost() -> None:
+    """CPU time of a history with and without its error estimate."""
+    print("\nCost of the estimate (CPU time, best of 3, path 0 -> 1 -> 0, k = 0.2):\n")
+    print("| geometry | n | steps | without (s) | with (s) | extra |")
+    print("|---|---|---|---|---|---|")
+    for geometry in ("sphere", "cylinder"):
+        for n_t, steps_t in ((240, 100), (240, 400), (480, 200)):
+            t = {}
+            for flag in (False, True):
+                best = np.inf
+                for _ in range(3):
+                    t0 = time.process_time()  # the machine may be shared: CPU, not wall
+                    history(geometry, NU, 0.2, (0, 1, 0), steps_t, n=n_t, error_estimate=flag)
+                    best = min(best, time.process_time() - t0)
+                t[flag] = best
+            print(f"| {geometry} | {n_t} | {steps_t} | {t[False]:.2f} | {t[True]:.2f} | "
+                  f"{t[True] / t[False] - 1:.0%} |", flush=True)
+
+
 SECTIONS = {"convergence": convergence, "spence": spence, "work": work, "cycles": cycles,
             "highk": highk, "patterns": patterns, "slab": slab, "onestep": onestep,
-            "steady": steady, "timing": timing}
+            "steady": steady, "timing": timing, "errors": errors,
+            "errors_cost": errors_cost}
 
 if __name__ == "__main__":
     names = sys.argv[1:] or list(SECTIONS)

@@ -86,13 +86,15 @@ from .geometry import Geometry
 
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
-           "stick_radius", "MESH_EXTENT", "RawHistory", "run_history", "hertz_radius"]
+           "stick_radius", "MESH_EXTENT", "RawHistory", "run_history", "hertz_radius",
+           "MIN_SLIP_ELEMENTS", "path_interpolate", "error_estimates", "annulus_resolved"]
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"
 MESH_EXTENT = 1.2  # mesh length over a_max
 
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
+MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
 
 
 @dataclass(frozen=True)
@@ -539,3 +541,104 @@ def run_history(ops: Operators, geometry: str, k: float, levels: np.ndarray,
         if progress is not None:
             progress(i, steps - 1)
     return out
+
+
+# ----------------------------------------------------------------------------- error estimates
+def path_interpolate(x: np.ndarray, segment: np.ndarray, x_coarse: np.ndarray,
+                     segment_coarse: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """Coarse-run values at the fine run's path coordinates, segment by segment.
+
+    Parameters
+    ----------
+    x, x_coarse : ndarray
+        Path coordinate of every step (segments done, so ``i / steps``).
+    segment, segment_coarse : ndarray of int
+        Path segment of every step (0 for the initial state).
+    values : ndarray
+        Coarse-run values, one per coarse step (finite).
+
+    Returns
+    -------
+    ndarray, shape like ``x``
+        Linear interpolation within each segment; the fine steps before the
+        segment's first coarse step are extrapolated linearly from its first
+        two (never across a turning point of the path, where the stick radius
+        jumps). The initial state takes the coarse initial state.
+    """
+    out = np.empty(x.size)
+    out[segment == 0] = values[segment_coarse == 0][0]
+    for g in np.unique(segment[segment > 0]):
+        f, c = segment == g, segment_coarse == g
+        xs, ys = x_coarse[c], values[c]
+        y = np.interp(x[f], xs, ys)
+        if xs.size >= 2:
+            lo = x[f] < xs[0]
+            y[lo] = ys[0] + (ys[1] - ys[0]) / (xs[1] - xs[0]) * (x[f][lo] - xs[0])
+        out[f] = y
+    return out
+
+
+def annulus_resolved(k: float, state: np.ndarray) -> np.ndarray:
+    """Per step: the slip zone is absent or spans at least ``MIN_SLIP_ELEMENTS`` elements."""
+    slipping = np.count_nonzero(state >= SLIP_INWARD, axis=1)
+    if not 0.0 < k < np.inf:
+        return np.ones(state.shape[0], dtype=bool)
+    return (slipping == 0) | (slipping >= MIN_SLIP_ELEMENTS)
+
+
+_WINDOW = 2  # steps either side over which a difference is maximised
+
+
+def _window_max(values: np.ndarray, segment: np.ndarray) -> np.ndarray:
+    """Largest value within ``_WINDOW`` steps either side, in the same path segment."""
+    out = values.copy()
+    for shift in range(1, _WINDOW + 1):
+        same = segment[shift:] == segment[:-shift]
+        out[shift:] = np.where(same, np.maximum(out[shift:], values[:-shift]), out[shift:])
+        out[:-shift] = np.where(same, np.maximum(out[:-shift], values[shift:]), out[:-shift])
+    return out
+
+
+def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.ndarray,
+                    coarse: RawHistory, steps_coarse: int,
+                    segment_coarse: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per-step error estimates of the stick radius and of the cumulative work.
+
+    ``coarse`` is the same path on a coarser mesh (about n/2 elements) with
+    fewer steps (about half); it is interpolated onto the fine steps by path
+    coordinate (:func:`path_interpolate`) and the difference ``D`` taken as
+    the error of the fine run: exact for first-order convergence in the
+    element size and the step (the trapezoid work and the unrefined stick
+    edge), three times the error for second order, so it covers the error
+    and overstates it at most threefold for orders 1 ... 2.
+
+    The stick radius is an element edge wherever its refinement does not
+    apply (a receding or standing stick edge, see :func:`stick_radius`):
+    there its error is up to half an element whatever ``D`` says (the coarse
+    edges are fine edges too, so ``D`` vanishes by coincidence), and the
+    estimate is at least ``h / 2`` (h = element size).
+
+    Returns
+    -------
+    (stick_radius_error, work_error)
+        Absolute error of the stick radius in units of a_max (0 without
+        contact) and relative error of the cumulative frictional work (0
+        while both runs have done no work, ``inf`` where only the coarse run
+        has).
+    """
+    x = np.arange(segment.size) / steps
+    xc = np.arange(segment_coarse.size) / steps_coarse
+    c_fine = np.nan_to_num(fine.stick_radius)  # no contact: no stick zone
+    c_coarse = path_interpolate(x, segment, xc, segment_coarse,
+                                np.nan_to_num(coarse.stick_radius))
+    h = float(ops.edges[1] - ops.edges[0])
+    half = 0.5 * h * np.rint(c_fine / (0.5 * h))  # element edges and midpoints
+    on_grid = (np.abs(c_fine - half) <= 1e-12) & (c_fine < fine.contact_radius)
+    err_c = _window_max(np.abs(c_fine - c_coarse), segment)
+    err_c = np.where(on_grid, np.maximum(err_c, 0.5 * h), err_c)
+    err_c[np.isnan(fine.stick_radius)] = 0.0
+    w_coarse = path_interpolate(x, segment, xc, segment_coarse, coarse.work)
+    diff = _window_max(np.abs(fine.work - w_coarse), segment)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        err_w = np.where(fine.work > 0.0, diff / fine.work, np.where(diff > 0.0, np.inf, 0.0))
+    return err_c, err_w

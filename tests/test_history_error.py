@@ -1,0 +1,130 @@
+"""Error estimates and the ``resolved`` flag of the loading history (contactlib.history).
+
+The truth is the same history refined fourfold (4n elements, 4 x steps a
+segment): the estimates must cover its difference from the run within a
+factor 3 at every step and not exceed it more than tenfold (largest estimate
+over largest error, segment by segment).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from contactlib import history_solver as hs
+from contactlib.history import DEFAULT_MAX_ERROR, history, history_to_dataset
+
+NU = 0.3
+PATHS = {"cycle": (0, 1, 0), "fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5, 1)}
+
+
+def stick_radius(res) -> np.ndarray:
+    return np.nan_to_num(res.stick_ratio * res.contact_radius)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("path", list(PATHS))
+@pytest.mark.parametrize("k", [0.1, 0.2, 0.3])
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_estimates_cover_the_error_of_a_fourfold_refinement(geometry, k, path):
+    """Estimate / true error >= 1/3 at every loaded step; segment maxima within 10x.
+
+    Measured at n = 60, 20 steps (truth n = 240, 80 steps): the smallest
+    estimate / error is 0.75 (stick radius) and 0.44 (work), the largest
+    segment inflation 9 (stick radius, cylinder k = 0.1 fretting) and 6.8 (work).
+    """
+    n, steps = 60, 20
+    res = history(geometry, NU, k, PATHS[path], steps, n=n)
+    ref = history(geometry, NU, k, PATHS[path], 4 * steps, n=4 * n, error_estimate=False)
+    assert res.converged.all() and ref.converged.all()
+    w_ref = ref.frictional_work[::4]
+    true = {"stick radius": np.abs(stick_radius(res) - stick_radius(ref)[::4]),
+            "work": np.divide(np.abs(res.frictional_work - w_ref), w_ref,
+                              out=np.zeros_like(w_ref), where=w_ref > 0)}
+    est = {"stick radius": res.stick_radius_error_estimate, "work": res.work_error_estimate}
+    loaded = res.load_ratio > 0
+    for name in true:
+        t, e = true[name], est[name]
+        assert np.all(np.isfinite(e[loaded]) & (e[loaded] >= 0)), name
+        m = loaded & (t > 0)
+        assert np.all(e[m] >= t[m] / 3), (name, np.min(e[m] / t[m]))
+        for g in range(1, len(PATHS[path])):
+            s = loaded & (res.segment == g)
+            if t[s].max() > 0:
+                assert e[s].max() <= 10 * t[s].max(), (name, g, e[s].max() / t[s].max())
+
+
+def test_dataset_carries_estimates_flags_and_max_error():
+    res = history("sphere", NU, 0.2, [0, 1, 0], 10, n=60, max_error=0.05)
+    ds = history_to_dataset(res)
+    for name in ("stick_radius_error_estimate", "work_error_estimate", "resolved"):
+        assert ds[name].dims == ("step",)
+        assert ds[name].attrs["units"] == "1" and ds[name].attrs["long_name"]
+    assert ds["resolved"].dtype == bool
+    assert ds.attrs["max_error"] == 0.05
+    assert "a_max" in ds["stick_radius_error_estimate"].attrs["long_name"]
+    assert "relative" in ds["work_error_estimate"].attrs["long_name"]
+    # resolved = converged, slip zone resolved, both estimates within max_error
+    annulus = hs.annulus_resolved(0.2, res.state)
+    within = (res.stick_radius_error_estimate <= 0.05) & (res.work_error_estimate <= 0.05)
+    assert np.array_equal(res.resolved, res.converged & annulus & within)
+    assert res.resolved.any() and not res.resolved.all()
+    assert "not resolved" in res.message
+
+
+def test_default_max_error_and_skipped_estimate():
+    res = history("sphere", NU, 0.2, [0, 1], 8, n=40, error_estimate=False)
+    assert res.max_error == DEFAULT_MAX_ERROR == 1e-3
+    assert np.all(np.isnan(res.stick_radius_error_estimate))
+    assert np.all(np.isnan(res.work_error_estimate))
+    assert np.array_equal(res.resolved, res.converged & hs.annulus_resolved(0.2, res.state))
+
+
+def test_thin_slip_zone_steps_are_flagged_and_still_reported():
+    """k = 0.3 (c/a = 0.9 at the top): the slip annulus spans under 12 elements at n = 60."""
+    res = history("sphere", NU, 0.3, [0, 1], 10, n=60, max_error=0.9)
+    slipping = np.count_nonzero(res.state >= hs.SLIP_INWARD, axis=1)
+    thin = (slipping > 0) & (slipping < hs.MIN_SLIP_ELEMENTS)
+    assert thin[-1] and not res.resolved[thin].any()
+    assert "slip zone at the largest load spans only" in res.message
+
+
+def test_quantised_stick_edge_has_an_estimate_of_at_least_half_an_element():
+    """Unloading: the stick edge is an element edge, good to h/2 only."""
+    n = 60
+    res = history("sphere", NU, 0.2, [0, 1, 0], 10, n=n)
+    h = 1.2 / n
+    c = stick_radius(res)
+    on_edge = np.isclose(c / h, np.rint(c / h), rtol=0, atol=1e-9) & (c < res.contact_radius)
+    assert on_edge[11:].any()
+    assert np.all(res.stick_radius_error_estimate[on_edge] >= 0.5 * h)
+
+
+def test_frictionless_work_estimate_is_zero():
+    res = history("cylinder", NU, 0.0, [0, 1, 0], 6, n=40)
+    assert np.all(res.work_error_estimate == 0.0)
+
+
+@pytest.mark.parametrize("value", [0, 1, -1e-3, 1.5, float("nan"), float("inf"), "0.01", True,
+                                   None])
+def test_bad_max_error_is_refused_naming_it(value):
+    with pytest.raises(ValueError, match="max_error"):
+        history("sphere", NU, 0.2, [0, 1], 2, n=20, max_error=value)
+
+
+@pytest.mark.parametrize("value", [1, "yes", None])
+def test_bad_error_estimate_is_refused_naming_it(value):
+    with pytest.raises(ValueError, match="error_estimate"):
+        history("sphere", NU, 0.2, [0, 1], 2, n=20, error_estimate=value)
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="known gap: the mesh error (order ~2, W falls with n) and "
+                   "the step error (order ~0.6, W rises with steps) of the cycle work cancel "
+                   "in the coarse-minus-fine difference (n/2 and steps/2 together)")
+def test_work_estimate_with_opposite_mesh_and_step_errors():
+    """Sphere k = 0.2, 0 -> 1 -> 0, n = 120, 50 steps: measured estimate / error 0.08 at the end."""
+    res = history("sphere", NU, 0.2, PATHS["cycle"], 50, n=120)
+    ref = history("sphere", NU, 0.2, PATHS["cycle"], 200, n=480, error_estimate=False)
+    true = abs(res.frictional_work[-1] / ref.frictional_work[-1] - 1)
+    assert res.work_error_estimate[-1] >= true / 3

@@ -2,6 +2,19 @@
 # numbers, each drawn by a contactlib function from the scenes' datasets.
 
 
+# the title a figure is listed under in the report (its caption holds the rest)
+FIGURE_TITLES = {
+    "fig2": "Fig. 2: friction coefficient k against stick ratio c/a",
+    "fig3": "Fig. 3: pressure and shear across the contact",
+    "fig4": "Fig. 4: tangential surface displacement",
+    "fig5": "Fig. 5: frictional work of a loading half-cycle",
+    "history_stick_radius": "History: stick-zone radius along the load path",
+    "history_stick_map": "History: stick/slip map over the path",
+    "history_loop": "History: displacement loop under load-unload",
+    "history_energy": "History: energy dissipated per load cycle",
+}
+
+
 # one rule a figure (figure_fig2 ... figure_fig5), each with its own report caption
 for _fig in FIGURES:
 
@@ -15,7 +28,7 @@ for _fig in FIGURES:
                 f"results/figures/{_fig}.png",
                 caption=f"../report/{_fig}.rst",
                 category="Figures",
-                labels={"figure": _fig},
+                labels={"figure": FIGURE_TITLES.get(_fig, _fig), "file": f"{_fig}.png"},
             ),
             pdf=f"results/figures/{_fig}.pdf",
         params:

@@ -27,7 +27,7 @@ from typing import Any, Callable, Iterator, Sequence
 
 import numpy as np
 
-from . import checks, energy
+from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .elements import Mesh, graded_mesh, uniform_mesh
 from .geometry import Geometry
@@ -64,14 +64,6 @@ def parts_needed(geometry: Geometry, stick_ratios: Sequence[float]) -> tuple[str
 def _solved_ratio(geometry: Geometry, c: float) -> float:
     """The stick ratio actually solved: nu = 0.5 reduces every case to Hertz (c = 0)."""
     return 0.0 if _decoupled(geometry) else float(c)
-
-
-def _paper_m(c: float, n: int) -> int:
-    m = int(round(c * n))
-    if abs(m - c * n) > 1e-9 * n:
-        raise ValueError(f"stick_ratio must be a multiple of 1/n = 1/{n} for the paper method, "
-                         f"got {c!r}")
-    return m
 
 
 # ----------------------------------------------------------------------------- influence
@@ -134,7 +126,7 @@ def _discrete(geometry: Geometry, method: str, n: int, c: float, normal, shear,
         qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
         ops = None if pw is None else (pw, qw)
         return solve_default(geometry, c, n, ops=ops, k_guess=k_guess)
-    m = _paper_m(c, n)
+    m = validate.paper_multiple(c, n)
     r = uniform_mesh(n, m).nodes
     pr = _lookup(normal, method, c, r)
     sh = _lookup(shear, method, c, r) if m > 0 else None

@@ -27,6 +27,11 @@ incremental problem). On the piecewise-linear mesh this reads t'(c-) = 0,
 i.e. t = 0 at the last node inside the stick zone, whose distance to c shrinks
 like 1/N^2 on the graded mesh. This is one scalar equation g(k) = 0, solved by
 Newton's method with the derivative from the same LU factorization.
+
+The collocation operators (:func:`operator_part`, :func:`operators`,
+:func:`nodal_operator_part`) are built by :mod:`contactlib.operators` and
+re-exported here; the model (indenter and body) is a
+:class:`~contactlib.model.Contact`.
 """
 
 from __future__ import annotations

@@ -23,7 +23,9 @@ disc kernel's linear shear, zero on the axis) or constant ``q_j`` (cylinder,
 odd in x), with ``r_j`` the element midpoint. The influence matrices are exact
 differences of the closed-form disc/strip kernels at the element edges,
 evaluated at the midpoints (collocation points, never on an edge, so the
-logarithmic kernel singularities are not met).
+logarithmic kernel singularities are not met): the step operators of
+:func:`contactlib.operators.step_operator`, with element areas and shear
+resultants from the indenter (:mod:`contactlib.indenter`).
 
 Conditions at the collocation points (w positive into the body, u outward; the
 indenter is rigid and has no tangential motion):

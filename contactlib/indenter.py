@@ -68,8 +68,14 @@ class Indenter(ABC):
         P_Hertz grows like a^load_exponent (3 sphere, 2 cylinder).
     work_exponent : int
         The frictional work is scaled by E* a^work_exponent / R^2 (5, 4).
-    per_unit_length : bool
-        Loads and works are per unit length of the cylinder.
+    plane_strain : bool
+        The plane problem: loads and works are per unit length of the cylinder.
+    half_space_name : str
+        What the unbounded body is called under this indenter: "half-space"
+        or "half-plane".
+    accepts_layer : bool
+        The body may be a layer of finite thickness (``slab_ratio > 0``):
+        the body has layer kernels for this indenter's basic loads.
     work_factor : float
         V = work_factor * int xi^work_weight_power q (-s) dxi over the slip
         zone (q traction, s self-similar slip rate, units E* = a = R = 1).
@@ -90,7 +96,9 @@ class Indenter(ABC):
     hertz_load: ClassVar[float]
     load_exponent: ClassVar[int]
     work_exponent: ClassVar[int]
-    per_unit_length: ClassVar[bool]
+    plane_strain: ClassVar[bool]
+    half_space_name: ClassVar[str]
+    accepts_layer: ClassVar[bool]
     work_factor: ClassVar[float]
     work_weight_power: ClassVar[int]
     odd_shear: ClassVar[bool]
@@ -215,7 +223,9 @@ class Sphere(Indenter):
     hertz_load: ClassVar[float] = 4.0 / 3.0
     load_exponent: ClassVar[int] = 3
     work_exponent: ClassVar[int] = 5
-    per_unit_length: ClassVar[bool] = False
+    plane_strain: ClassVar[bool] = False
+    half_space_name: ClassVar[str] = "half-space"
+    accepts_layer: ClassVar[bool] = False
     work_factor: ClassVar[float] = 2.0 * np.pi / 5.0
     work_weight_power: ClassVar[int] = 1
     odd_shear: ClassVar[bool] = False
@@ -282,7 +292,9 @@ class Cylinder(Indenter):
     hertz_load: ClassVar[float] = np.pi / 4.0
     load_exponent: ClassVar[int] = 2
     work_exponent: ClassVar[int] = 4
-    per_unit_length: ClassVar[bool] = True
+    plane_strain: ClassVar[bool] = True
+    half_space_name: ClassVar[str] = "half-plane"
+    accepts_layer: ClassVar[bool] = True
     work_factor: ClassVar[float] = 0.5
     work_weight_power: ClassVar[int] = 0
     odd_shear: ClassVar[bool] = True

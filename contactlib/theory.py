@@ -1,8 +1,12 @@
-"""Closed-form references: Hertz and the uncoupled partial-slip limit.
+"""Closed-form references: Hertz and the uncoupled partial-slip limit, by geometry name.
 
 Units throughout the package: E* = 1, contact radius (half-width) a = 1,
 indenter radius R = 1, so that lengths are r/a, tractions are in E* a/R and
 displacements in a^2/R.
+
+The formulas that depend on the shape live with the indenter
+(:mod:`contactlib.indenter`); the functions here look the indenter up by its
+geometry name, for callers that hold a name (figures, tests).
 """
 
 from __future__ import annotations

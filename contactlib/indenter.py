@@ -4,7 +4,8 @@ Every difference between the sphere and the cylinder lives here, as methods of
 :class:`Sphere` and :class:`Cylinder`: which kernels of the body they load
 (rings or strips), the shape of their shear elements, the measure of an
 element (ring area or strip width), the shear resultant, and the Hertz
-formulas. Nothing outside this module compares a geometry name.
+formulas. Code elsewhere asks the indenter instead of comparing geometry
+names.
 
 Units and scalings
 ------------------

@@ -37,12 +37,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .indenter import Displacements
 from .kernels import disc, strip
 from .theory import beta_of_nu
 
 __all__ = ["ElasticBody"]
-
-Kernel3 = tuple[np.ndarray, np.ndarray, np.ndarray]
 _HALF_SPACE_DEGREES = np.array([1.0, 1.0, 0.0])  # w, u ~ s; du/dx ~ s^0
 
 
@@ -84,13 +83,21 @@ class ElasticBody:
                 f"ring loads on a layer (slab_ratio = {self.slab_ratio!r}) have no kernels "
                 "yet: only the half-space is available under a sphere")
 
-    def ring_pressure(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Kernel3:
-        """(w, u, du/dr) under a unit pressure on the disc r < s (:func:`~contactlib.kernels.disc.pressure_disc`)."""
+    def ring_pressure(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Displacements:
+        """(w, u, du/dr) under a unit pressure on the disc r < s.
+
+        :func:`contactlib.kernels.disc.pressure_disc`; a layer raises
+        NotImplementedError.
+        """
         self._ring_layer()
         return disc.pressure_disc(x, s, self.nu, with_w=with_w)
 
-    def ring_shear(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Kernel3:
-        """(w, u, du/dr) under the shear q = r on the disc r < s (:func:`~contactlib.kernels.disc.shear_disc`)."""
+    def ring_shear(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Displacements:
+        """(w, u, du/dr) under the shear q = r on the disc r < s.
+
+        :func:`contactlib.kernels.disc.shear_disc`; a layer raises
+        NotImplementedError.
+        """
         self._ring_layer()
         return disc.shear_disc(x, s, self.nu, with_du=with_du)
 
@@ -104,10 +111,18 @@ class ElasticBody:
         return _HALF_SPACE_DEGREES.copy() if self.is_half_space else None
 
     # ------------------------------------------------------------------ strips (plane strain)
-    def strip_pressure(self, x: np.ndarray, s: np.ndarray) -> Kernel3:
-        """(w, u, du/dx) under a unit pressure on |x| < s (:func:`~contactlib.kernels.strip.pressure_strip`)."""
+    def strip_pressure(self, x: np.ndarray, s: np.ndarray) -> Displacements:
+        """(w, u, du/dx) under a unit pressure on |x| < s (half-plane or slab).
+
+        :func:`contactlib.kernels.strip.pressure_strip` with the thickness
+        :attr:`thickness`.
+        """
         return strip.pressure_strip(x, s, self.nu, self.thickness)
 
-    def strip_shear(self, x: np.ndarray, s: np.ndarray) -> Kernel3:
-        """(w, u, du/dx) under the odd shear sgn(x) on |x| < s (:func:`~contactlib.kernels.strip.shear_strip`)."""
+    def strip_shear(self, x: np.ndarray, s: np.ndarray) -> Displacements:
+        """(w, u, du/dx) under the odd shear sgn(x) on |x| < s (half-plane or slab).
+
+        :func:`contactlib.kernels.strip.shear_strip` with the thickness
+        :attr:`thickness`.
+        """
         return strip.shear_strip(x, s, self.nu, self.thickness)

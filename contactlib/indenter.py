@@ -46,9 +46,10 @@ from scipy import special
 if TYPE_CHECKING:  # the body is passed in, never built here
     from .body import ElasticBody
 
-__all__ = ["Indenter", "Sphere", "Cylinder", "GEOMETRIES", "indenter"]
+__all__ = ["Indenter", "Sphere", "Cylinder", "GEOMETRIES", "indenter", "Displacements"]
 
-Kernel3 = tuple[np.ndarray, np.ndarray, np.ndarray]
+Displacements = tuple[np.ndarray, np.ndarray, np.ndarray]
+"""(w, u, du/dx) of a basic load at the surface points."""
 
 
 @dataclass(frozen=True)
@@ -108,7 +109,7 @@ class Indenter(ABC):
     # ------------------------------------------------------------------ kernels
     @abstractmethod
     def pressure_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
-                        with_w: bool = True) -> Kernel3:
+                        with_w: bool = True) -> Displacements:
         """(w, u, du/dx) of the body under a unit pressure on a disc / strip of radius s.
 
         Parameters
@@ -130,7 +131,7 @@ class Indenter(ABC):
 
     @abstractmethod
     def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
-                     with_du: bool = True) -> Kernel3:
+                     with_du: bool = True) -> Displacements:
         """(w, u, du/dx) of the body under the unit shear element of radius s.
 
         The element is ``shape(x)`` on the disc / strip (see
@@ -232,35 +233,37 @@ class Sphere(Indenter):
     odd_shear: ClassVar[bool] = False
     paper_axis_shear_ratio: ClassVar[float] = 1.0
 
-    def pressure_kernel(self, body, x, s, with_w=True):
+    def pressure_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                        with_w: bool = True) -> Displacements:
         return body.ring_pressure(x, s, with_w=with_w)
 
-    def shear_kernel(self, body, x, s, with_du=True):
+    def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                     with_du: bool = True) -> Displacements:
         return body.ring_shear(x, s, with_du=with_du)
 
-    def length_degrees(self, body, part):
+    def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         d = body.ring_kernel_degrees
         if d is None:
             return None
         return d + (2.0 if part == "shear" else 1.0)  # + shape r, + ds of the element
 
-    def shear_shape(self, x):
+    def shear_shape(self, x: np.ndarray) -> np.ndarray:
         return np.asarray(x, dtype=float).copy()
 
-    def element_areas(self, edges):
+    def element_areas(self, edges: np.ndarray) -> np.ndarray:
         return np.pi * np.diff(edges**2)
 
-    def shear_resultants(self, edges):
+    def shear_resultants(self, edges: np.ndarray) -> np.ndarray:
         return (2.0 * np.pi / 3.0) * np.diff(edges**3)
 
-    def mean_shear_shape(self, edges):
+    def mean_shear_shape(self, edges: np.ndarray) -> np.ndarray:
         r0, r1 = edges[:-1], edges[1:]
         return (2.0 / 3.0) * (r1**3 - r0**3) / (r1**2 - r0**2)
 
-    def load_of_steps(self, edges, p):
+    def load_of_steps(self, edges: np.ndarray, p: np.ndarray) -> float:
         return float(np.sum(p * np.pi * (edges[1:] ** 2 - edges[:-1] ** 2)))
 
-    def load_of_linear(self, nodes, p):
+    def load_of_linear(self, nodes: np.ndarray, p: np.ndarray) -> float:
         r0, r1 = nodes[:-1], nodes[1:]
         p0, p1 = p[:-1], p[1:]
         # int_{r0}^{r1} (p0 + (p1-p0)(r-r0)/h) r dr, exact
@@ -268,10 +271,10 @@ class Sphere(Indenter):
         val = h * (p0 * (2 * r0 + r1) + p1 * (r0 + 2 * r1)) / 6.0
         return float(2.0 * np.pi * val.sum())
 
-    def hertz_radius(self, level):
+    def hertz_radius(self, level: float) -> float:
         return float(level ** (1.0 / 3.0))
 
-    def uncoupled_friction(self, beta, gamma):
+    def uncoupled_friction(self, beta: float, gamma: np.ndarray) -> np.ndarray:
         """k = beta artanh(g) / (g K'(g)) (Spence 1975), K'(g) = K(sqrt(1 - g^2))."""
         g = np.asarray(gamma, dtype=float)
         kp = _complement_k(g)
@@ -301,37 +304,39 @@ class Cylinder(Indenter):
     odd_shear: ClassVar[bool] = True
     paper_axis_shear_ratio: ClassVar[float] = 0.5
 
-    def pressure_kernel(self, body, x, s, with_w=True):
+    def pressure_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                        with_w: bool = True) -> Displacements:
         return body.strip_pressure(x, s)
 
-    def shear_kernel(self, body, x, s, with_du=True):
+    def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                     with_du: bool = True) -> Displacements:
         return body.strip_shear(x, s)
 
-    def length_degrees(self, body, part):
+    def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         return None  # the half-plane's w carries a log, a layer its thickness
 
-    def shear_shape(self, x):
+    def shear_shape(self, x: np.ndarray) -> np.ndarray:
         return np.ones_like(np.asarray(x, dtype=float))
 
-    def element_areas(self, edges):
+    def element_areas(self, edges: np.ndarray) -> np.ndarray:
         return 2.0 * np.diff(edges)
 
-    def shear_resultants(self, edges):
+    def shear_resultants(self, edges: np.ndarray) -> np.ndarray:
         return 2.0 * np.diff(edges)
 
-    def mean_shear_shape(self, edges):
+    def mean_shear_shape(self, edges: np.ndarray) -> np.ndarray:
         return np.ones(np.size(edges) - 1)
 
-    def load_of_steps(self, edges, p):
+    def load_of_steps(self, edges: np.ndarray, p: np.ndarray) -> float:
         return float(2.0 * np.sum(p * np.diff(edges)))
 
-    def load_of_linear(self, nodes, p):
+    def load_of_linear(self, nodes: np.ndarray, p: np.ndarray) -> float:
         return float(2.0 * (0.5 * (p[:-1] + p[1:]) * (nodes[1:] - nodes[:-1])).sum())
 
-    def hertz_radius(self, level):
+    def hertz_radius(self, level: float) -> float:
         return float(np.sqrt(level))
 
-    def uncoupled_friction(self, beta, gamma):
+    def uncoupled_friction(self, beta: float, gamma: np.ndarray) -> np.ndarray:
         """k = beta K(g) / K'(g) on a half-plane (Spence 1973)."""
         g = np.asarray(gamma, dtype=float)
         return beta * special.ellipk(g**2) / _complement_k(g)

@@ -33,11 +33,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .body import ElasticBody
-from .indenter import Indenter, indenter
+from .indenter import Displacements, Indenter, indenter
 
 __all__ = ["Contact", "contact"]
-
-Kernel3 = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
 @dataclass(frozen=True)
@@ -64,14 +62,14 @@ class Contact:
     body: ElasticBody
 
     # ------------------------------------------------------------------ kernels
-    def pressure_kernel(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Kernel3:
+    def pressure_kernel(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Displacements:
         """(w, u, du/dx) of a unit uniform pressure on a disc / symmetric strip of radius s.
 
         ``with_w=False`` may skip w (zeros) where that is cheaper (the disc).
         """
         return self.indenter.pressure_kernel(self.body, x, s, with_w=with_w)
 
-    def shear_kernel(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Kernel3:
+    def shear_kernel(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Displacements:
         """(w, u, du/dx) of the unit shear element: q = r on a disc, or +-1 on a strip.
 
         ``with_du=False`` may skip du/dx (NaN) where that is cheaper (the disc).
@@ -94,7 +92,7 @@ class Contact:
         return self.beta == 0.0
 
     def uncoupled_friction(self, gamma: np.ndarray) -> np.ndarray:
-        """k of the uncoupled limit at stick ratio ``gamma`` (:meth:`Indenter.uncoupled_friction`)."""
+        """k of the uncoupled limit at stick ratio ``gamma`` (see the indenter's formula)."""
         return self.indenter.uncoupled_friction(self.beta, gamma)
 
     # ------------------------------------------------------------------ Hertz and measures

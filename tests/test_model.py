@@ -14,12 +14,12 @@ import pytest
 
 from contactlib import history_solver as hs
 from contactlib.body import ElasticBody
+from contactlib.elements import graded_mesh
 from contactlib.geometry import Geometry
 from contactlib.indenter import GEOMETRIES, Cylinder, Sphere, indenter
 from contactlib.kernels import disc, strip
 from contactlib.model import Contact, contact
 from contactlib.operators import StickBlocks, nodal_operator_part, operator_part, step_operator
-from contactlib.elements import graded_mesh
 from contactlib.theory import beta_of_nu, hertz_pressure
 
 EDGES = np.array([0.0, 0.1, 0.35, 0.6, 0.95, 1.2])

@@ -51,7 +51,7 @@ if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "StickBlocks"]
+           "StickBlocks", "clear_shared_stick_blocks"]
 
 PARTS = ("normal", "shear")
 
@@ -165,6 +165,11 @@ class StickBlocks:
 
 # The process-wide store used when a caller passes none (see nodal_operator_part).
 _SHARED_BLOCKS = StickBlocks(64)
+
+
+def clear_shared_stick_blocks() -> None:
+    """Empty the process-wide store of :func:`nodal_operator_part` (a cold start)."""
+    _SHARED_BLOCKS.clear()
 
 
 def nodal_operator_part(model: Contact, mesh: Mesh, part: str,

@@ -34,7 +34,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from . import validate
-from .geometry import Geometry
+from .model import Contact
 
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
            "plan", "estimate", "solve_to_tolerance"]
@@ -77,7 +77,7 @@ def predicted_error(geometry: str, stick_ratio: float, n: int) -> float:
     return float(at256 * (256.0 / n) ** 2)
 
 
-def plan(geometry: Geometry, stick_ratios: Sequence[float], tolerance: float) -> tuple[str, int]:
+def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float) -> tuple[str, int]:
     """The cheapest (method, n) predicted to meet ``tolerance`` at every stick ratio.
 
     Returns ``("default", n)`` with n a multiple of 64 in [64, MAX_N].
@@ -89,8 +89,8 @@ def plan(geometry: Geometry, stick_ratios: Sequence[float], tolerance: float) ->
         worst stick ratio and the n it would need).
     """
     tol = check_tolerance(tolerance)
-    worst = max(stick_ratios, key=lambda c: predicted_error(geometry.name, c, 256))
-    e256 = predicted_error(geometry.name, worst, 256)
+    worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
+    e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:
         return "default", MIN_N
     need = 256.0 * math.sqrt(SAFETY * e256 / tol)

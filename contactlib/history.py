@@ -70,7 +70,7 @@ import numpy as np
 
 from . import history_solver as hs
 from . import validate
-from .geometry import Geometry
+from .model import contact
 from .result import history_repr
 
 __all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS",
@@ -266,17 +266,17 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     max_error = validate.max_error(max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
 
-    geom = Geometry(geometry, nu, slab)
-    ops = hs.build_operators(geom, n)
+    model = contact(geometry, nu, slab)
+    ops = hs.build_operators(model, n)
     levels, segment = load_levels(levels_in, steps)
-    raw = hs.run_history(ops, geometry, k, levels, progress=progress)
+    raw = hs.run_history(ops, k, levels, progress=progress)
     err_c = np.full(levels.size, np.nan)
     err_w = np.full(levels.size, np.nan)
     if error_estimate:
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
         levels_c, segment_c = load_levels(levels_in, steps_c)
-        raw_c = hs.run_history(hs.build_operators(geom, n_c), geometry, k, levels_c)
+        raw_c = hs.run_history(hs.build_operators(model, n_c), k, levels_c)
         err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c)
     annulus = hs.annulus_resolved(k, raw.state)
     with np.errstate(invalid="ignore"):

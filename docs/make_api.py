@@ -35,6 +35,12 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
      "that writes).", None),
     ("contactlib.theory", "Closed-form references (Hertz, the uncoupled limit, small-k work).",
      None),
+    ("contactlib.model", "The model every solver takes: an indenter pressed into a body.", None),
+    ("contactlib.indenter", "The sphere and the cylinder: shape, element measures, Hertz "
+     "formulas.", None),
+    ("contactlib.body", "The elastic body: half-space, half-plane or slab, and its kernels.",
+     None),
+    ("contactlib.operators", "Influence operators of a model, for every solver.", None),
     ("contactlib.accuracy", "Accuracy targets: plan n for a tolerance on k, estimate the error "
      "afterwards.", None),
     ("contactlib.convergence", "Convergence studies and the speed-accuracy table.", None),

@@ -15,6 +15,13 @@ Discretization (units E* = a = R = 1)
 With k given, these equations are square; both conditions at c make the
 shear continuous and bounded there.
 
+Direction of slip: the slip-zone condition is q = sigma k p with sigma =
+sign(beta) (:attr:`~contactlib.model.Contact.slip_sign`): inward slip and
+q = k p for beta > 0 (every rigid indenter), outward slip and q = -k p for
+beta < 0 (a compliant, compressible indenter on a stiffer, less
+compressible body). Newton's method runs on the signed ratio sigma k; the
+solution reports k >= 0.
+
 What fixes k
 ------------
 In the exact self-similar problem the traction difference t = q - k p in the
@@ -275,15 +282,18 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     b = np.concatenate([rhs_normal, np.zeros(m)])
 
     j = m - 1  # last node inside the stick zone: t_j = shape_j phi_j - k p_j = 0
+    # below, k is the signed traction ratio of the slip zone, q = k p (sigma k of
+    # the module notes); the guesses are k >= 0
+    sigma = -1.0 if geometry.slip_sign < 0 else 1.0
     if k_guess is not None:
-        k = float(k_guess)
+        k = sigma * float(k_guess)
     elif n > 128:  # Richardson-extrapolated coarse solves (O(h^2)) put Newton within
         # ~1e-6 of the answer: one or two fine factorizations
         k64 = solve_default(geometry, stick_ratio, 64, power=power).k
         k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64).k
-        k = k128 + (k128 - k64) / 3.0
+        k = sigma * (k128 + (k128 - k64) / 3.0)
     else:
-        k = float(geometry.uncoupled_friction(r[m]))
+        k = sigma * float(geometry.uncoupled_friction(r[m]))
     converged, it, g = False, 0, np.inf
     stagnated = 0.0
     x = None
@@ -348,11 +358,15 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
     phi[m:nn] = k * p[m:nn] / shape[m:nn]
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
-    if not (np.isfinite(k) and k > 0.0):  # a partial-slip k is positive (inward slip)
+    k = sigma * k  # report k >= 0 (the slip zone has q = sigma k p)
+    if not (np.isfinite(k) and k > 0.0):  # the slip runs the way sign(beta) says
         converged = False
-        msg = (f"Newton on k ended at k = {k:.4g} <= 0: no physical root on this mesh (a stick "
-               f"zone of c/a = {stick_ratio:.3g} below what n = {n} resolves, or a regime "
-               "where the slip reverses); not a solution")
+        way = "inward, beta > 0" if sigma > 0 else "outward, beta < 0"
+        msg = (f"Newton on k ended at k = {k:.4g} <= 0 for slip {way}: no physical root "
+               f"on this mesh (a stick zone of c/a = {stick_ratio:.3g} below what n = {n} "
+               "resolves, or a regime where the slip reverses within the slip zone, which "
+               "one self-similar stick zone cannot hold: solve it with history); "
+               "not a solution")
     elif stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
                f"(last step {stagnated:.1e} relative)")

@@ -100,7 +100,8 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
     "converged": ("solver converged", "solver status; failed cases are kept"),
 }
 
-_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio")
+_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "indenter_modulus_ratio",
+                  "indenter_poisson_ratio")
 
 
 def _version() -> str:
@@ -263,6 +264,8 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     }
     if geometry == "cylinder":
         attrs["slab_ratio"] = float(first.slab_ratio)
+    for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
+        attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = _version()
     attrs["Conventions"] = CONVENTIONS
 

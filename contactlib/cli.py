@@ -182,6 +182,34 @@ _METHOD_HELP = ("discretization: 'default' (ours), 'paper' (the paper's scheme a
                 "q_i = k p_i); default: %(default)s")
 
 
+def _indenter_text(sol: Any) -> str:
+    """``, E1/E2 = .., nu1 = .., beta = ..`` of an elastic indenter; empty when rigid."""
+    ratio = getattr(sol, "indenter_modulus_ratio", float("inf"))
+    if ratio == float("inf"):
+        return ""
+    return (f", E1/E2 = {ratio:g}, nu1 = {sol.indenter_poisson_ratio:g}, "
+            f"beta = {sol.dundurs_beta:.4g}")
+
+
+def _indenter_options(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument("--indenter-modulus", metavar="E1_OVER_E2", default="inf",
+                     help="Young's modulus of the indenter over that of the body, > 0 "
+                          "(inf = rigid); scalings use the composite modulus E*; "
+                          "default: inf")
+    sub.add_argument("--indenter-nu", metavar="NU1", default=None,
+                     help="Poisson's ratio of an elastic indenter, in (-1, 0.5] "
+                          "(needs --indenter-modulus; default: the body's)")
+
+
+def parse_indenter(modulus: str, nu: str | None) -> tuple[float, float | None]:
+    """(E1/E2, nu1) from ``--indenter-modulus`` and ``--indenter-nu`` (nu1 None: the body's)."""
+    try:
+        return validate.indenter_material(_float(modulus), None if nu is None else _float(nu))
+    except ValueError as exc:
+        name = getattr(exc, "name", None)
+        raise _usage(exc, modulus if name == "indenter_modulus" else nu) from None
+
+
 def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--geometry", required=True, metavar="{sphere,cylinder}",
                      help="rigid indenter: sphere (axisymmetric) or cylinder "
@@ -195,6 +223,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help="cylinder only: contact half-width over layer "
                           "thickness, a/h >= 0 (0 = half-plane); default: 0")
+    _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
                      default=None, help=_OUTPUT_HELP)
     sub.add_argument("--no-energy", action="store_true",
@@ -290,6 +319,8 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
         "energy": not args.no_energy,
     }
+    kwargs["indenter_modulus"], kwargs["indenter_nu"] = parse_indenter(args.indenter_modulus,
+                                                                       args.indenter_nu)
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
@@ -363,6 +394,7 @@ def format_summary(sol: Solution) -> str:
     head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
     if sol.geometry == "cylinder":
         head += f", a/h = {sol.slab_ratio:g}"
+    head += _indenter_text(sol)
     lines = [
         head,
         f"  c/a    = {_g(sol.stick_ratio)}",
@@ -388,6 +420,7 @@ def format_table(solutions: Sequence[Solution]) -> str:
     head = f"{s0.geometry}, nu = {s0.nu:g}, method = {s0.method}, n = {s0.n}"
     if s0.geometry == "cylinder":
         head += f", a/h = {s0.slab_ratio:g}"
+    head += _indenter_text(s0)
     cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
             f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9}")
     rows = [head, cols]

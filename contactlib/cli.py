@@ -319,8 +319,9 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
         "energy": not args.no_energy,
     }
-    kwargs["indenter_modulus"], kwargs["indenter_nu"] = parse_indenter(args.indenter_modulus,
-                                                                       args.indenter_nu)
+    ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
+    if ratio != float("inf"):  # the rigid default is the library's: keywords only when elastic
+        kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)

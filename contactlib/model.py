@@ -164,7 +164,7 @@ class Contact:
         """beta = 0 (to round-off): the normal and tangential problems decouple."""
         c1, c2 = self.compliance_weights
         scale = abs(c2 * self.body.beta) + abs(c1 * self.indenter_body.beta)
-        return abs(self.beta) <= 8.0 * np.finfo(float).eps * scale
+        return bool(abs(self.beta) <= 8.0 * np.finfo(float).eps * scale)
 
     @property
     def slip_sign(self) -> float:

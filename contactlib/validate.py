@@ -36,6 +36,7 @@ __all__ = [
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
     "MIN_TOLERANCE", "MAX_TOLERANCE", "indenter_modulus", "indenter_nu", "indenter_material",
+    "indenter_mapping",
 ]
 
 # ----------------------------------------------------------------------------- limits
@@ -221,6 +222,15 @@ def indenter_material(modulus: Any = math.inf, poisson: Any = None) -> tuple[flo
                          f"indenter_nu = {poisson!r} needs an elastic indenter: give "
                          "indenter_modulus (E1/E2) too (the default inf is rigid)")
     return ratio, nu1
+
+
+def indenter_mapping(value: Any) -> tuple[float, float | None]:
+    """A scene's ``indenter: {modulus_ratio: R, nu: NU1}`` as (E1/E2, nu1); nu optional."""
+    req = "a mapping {modulus_ratio: E1/E2, nu: NU1} or a material name"
+    if not hasattr(value, "keys") or set(value) - {"modulus_ratio", "nu"} or \
+            "modulus_ratio" not in value:
+        raise InputError("indenter", req, value)
+    return indenter_material(value["modulus_ratio"], value.get("nu"))
 
 
 def stick_ratio(value: Any, name: str = "stick_ratio") -> float:

@@ -48,6 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import linalg
 
+from . import checks
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
@@ -358,17 +359,30 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
     phi[m:nn] = k * p[m:nn] / shape[m:nn]
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
-    k = sigma * k  # report k >= 0 (the slip zone has q = sigma k p)
-    if not (np.isfinite(k) and k > 0.0):  # the slip runs the way sign(beta) says
+    nodal_u, nodal_du = pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi
+    reversed_ok = False
+    if np.isfinite(k) and k * sigma < 0.0:  # the root slips against sign(beta)
+        # physical when the slip opposes the shear at every slip node (e.g. a thin or
+        # nearly incompressible slab, whose surface moves outward under a rigid indenter)
+        q = shape * phi
+        fl = checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
+                          2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
+        reversed_ok = fl["consistent"]
+    way = "outward (q = -k p)" if k < 0 else "inward (q = k p)"
+    k = abs(k) if reversed_ok else sigma * k  # report k >= 0
+    if not (np.isfinite(k) and k > 0.0):
         converged = False
-        way = "inward, beta > 0" if sigma > 0 else "outward, beta < 0"
-        msg = (f"Newton on k ended at k = {k:.4g} <= 0 for slip {way}: no physical root "
-               f"on this mesh (a stick zone of c/a = {stick_ratio:.3g} below what n = {n} "
-               "resolves, or a regime where the slip reverses within the slip zone, which "
-               "one self-similar stick zone cannot hold: solve it with history); "
-               "not a solution")
+        msg = (f"Newton on k ended at a root with slip {way}, against the sign of beta "
+               f"({geometry.beta:.3g}), where the slip does not oppose the shear: either a "
+               f"stick zone of c/a = {stick_ratio:.3g} below what n = {n} resolves, or the "
+               "slip direction changes within the slip zone, which one self-similar stick "
+               "zone cannot hold: solve it with history; not a solution")
+    elif reversed_ok:
+        msg = "; ".join(x for x in (msg, f"the slip runs {way}, against the sign of the "
+                                         f"half-space beta ({geometry.beta:.3g}): the body's "
+                                         "coupling reverses it") if x)
     elif stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
                f"(last step {stagnated:.1e} relative)")
     return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
-                            it, msg, pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi)
+                            it, msg, nodal_u, nodal_du)

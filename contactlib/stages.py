@@ -342,7 +342,12 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
     """Assemble a :class:`Solution`; profiles not computed are left as None."""
     profile = profile or {}
     fl = flags or {}
-    msg = "; ".join(x for x in (message, rec["message"]) if x)
+    reversal = ""
+    if not fl.get("slip_direction_ok", True) and "history" not in rec["message"]:
+        reversal = ("the slip runs along the shear somewhere in the slip zone: its direction "
+                    "changes there, which one self-similar stick zone cannot hold; solve it "
+                    "with history")
+    msg = "; ".join(x for x in (message, rec["message"], reversal) if x)
     return Solution(
         geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,
         slab_ratio=geometry.body.slab_ratio, stick_ratio=float(rec["stick_ratio"]),

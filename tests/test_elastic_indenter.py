@@ -246,3 +246,29 @@ def test_cli_bad_indenter(tmp_path, args, shown, command):
 def test_library_bad_indenter(bad):
     with pytest.raises(ValueError, match=r"^indenter_(modulus|nu)"):
         solve("sphere", 0.3, stick_ratio=0.5, n=16, **bad)
+
+
+def test_thin_slab_outward_slip_is_solved():
+    """a/h = 2, nu = 0.3 (not converged before): the slab's surface moves outward under the
+    rigid cylinder, the slip is outward (q = -k p) with one stick zone at c/a = 0.2."""
+    g = Geometry("cylinder", 0.3, 2.0)
+    ks = []
+    for n in (32, 64, 128):
+        d = solve_default(g, 0.2, n)
+        assert d.converged and d.k > 0 and "outward" in d.message
+        r, m = d.mesh.nodes, d.mesh.stick_index
+        q = g.shear_shape(r) * d.phi
+        np.testing.assert_allclose(q[m:-1], -d.k * d.p[m:-1], rtol=1e-12)
+        ks.append(d.k)
+    assert np.log2(abs(ks[1] - ks[0]) / abs(ks[2] - ks[1])) >= 1.5
+    s = solve("cylinder", 0.3, stick_ratio=0.2, slab_ratio=2.0, n=128)
+    assert s.converged and s.consistent and s.frictional_work > 0
+
+
+@pytest.mark.parametrize("nu,slab,c", [(0.3, 2.0, 0.5), (0.3, 1.0, 0.5), (0.47, 0.2, 0.5),
+                                       (0.495, 0.05, 0.5)])
+def test_slip_reversal_is_flagged_and_points_to_history(nu, slab, c):
+    """Where the slip changes direction inside the slip zone no single stick zone holds."""
+    s = solve("cylinder", nu, stick_ratio=c, slab_ratio=slab, n=64)
+    assert not (s.converged and s.consistent)
+    assert "history" in s.message

@@ -295,6 +295,7 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                       help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
                            "default: 0")
+    _indenter_options(hist)
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
@@ -336,7 +337,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
 def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     """Checked keyword arguments of :func:`contactlib.history`."""
     geometry = _check(validate.geometry, args.geometry, args.geometry)
-    return {
+    kwargs = {
         "geometry": geometry,
         "nu": parse_nu(args.nu),
         "friction": parse_friction(args.friction),
@@ -345,6 +346,10 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "n": None if args.n is None else parse_history_n(args.n),
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
     }
+    ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
+    if ratio != float("inf"):  # as for solve/sweep: keywords only when elastic
+        kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
+    return kwargs
 
 
 def _shorten(text: str, limit: int = 80) -> str:
@@ -445,6 +450,7 @@ def format_history(res: Any) -> str:
             f"{res.steps} steps per segment")
     if res.geometry == "cylinder":
         head += f", a_max/h = {res.slab_ratio:g}"
+    head += _indenter_text(res)
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
                   f"{'V segment':>11} {'V total':>11}"]
     seg_work = res.segment_work()

@@ -23,6 +23,8 @@ import pytest
 from scipy import integrate
 
 from contactlib import solve, sweep
+from contactlib.history import history, history_to_dataset
+from contactlib.history_solver import SLIP_INWARD
 from contactlib.default_method import solve_default
 from contactlib.geometry import Geometry
 from contactlib.model import contact
@@ -272,3 +274,31 @@ def test_slip_reversal_is_flagged_and_points_to_history(nu, slab, c):
     s = solve("cylinder", nu, stick_ratio=c, slab_ratio=slab, n=64)
     assert not (s.converged and s.consistent)
     assert "history" in s.message
+
+
+@pytest.mark.parametrize("geometry,nu2,ratio,nu1", [("sphere", 0.5, 0.3, 0.0),
+                                                    ("sphere", 0.0, 1 / 0.3, 0.5),
+                                                    ("cylinder", 0.5, 0.3, 0.0)])
+def test_history_monotonic_loading_reproduces_self_similar(geometry, nu2, ratio, nu1):
+    """Dissimilar pairs, both signs of beta: incremental c/a(k) = self-similar, within 0.5 %."""
+    kw = {"indenter_modulus": ratio, "indenter_nu": nu1}
+    k = 0.2
+    ref = solve(geometry, nu2, friction=k, n=64, energy=False, **kw)
+    res = history(geometry, nu2, k, [0, 1], 50, n=120, **kw)
+    assert res.converged.all()
+    assert abs(res.stick_ratio[-1] / ref.stick_ratio - 1) < 5e-3
+    # the shear has the sign of beta where the top load slips
+    slipping = res.state[-1] >= SLIP_INWARD
+    assert np.all(np.sign(res.shear[-1][slipping]) == np.sign(ref.dundurs_beta))
+    ds = history_to_dataset(res)
+    assert ds.attrs["dundurs_beta"] == pytest.approx(dundurs_beta(ratio, nu1, nu2), rel=1e-12)
+
+
+def test_history_cli_bad_indenter(tmp_path):
+    out = tmp_path / "h.nc"
+    proc = subprocess.run([sys.executable, "-m", "contactlib", "history", "--geometry", "sphere",
+                           "--nu", "0.3", "--friction", "0.2", "--load-path", "0,1",
+                           "--steps", "2", "--indenter-nu", "0.2", "--output", str(out)],
+                          capture_output=True, text=True, cwd=REPO)
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+    assert "--indenter-nu" in proc.stderr and not out.exists()

@@ -302,3 +302,28 @@ def test_history_cli_bad_indenter(tmp_path):
                           capture_output=True, text=True, cwd=REPO)
     assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
     assert "--indenter-nu" in proc.stderr and not out.exists()
+
+
+def test_scene_indenter_key():
+    from contactlib.materials import materials, pair
+    from contactlib.scene import ConfigError, parse_scene
+    table = materials()
+    assert all(entry["source"] for entry in table.values())
+    base = {"geometry": "sphere", "stick_ratios": [0.5], "n": 32}
+    named = parse_scene("a", {**base, "nu": 0.33, "indenter": "steel", "body": "aluminium"})
+    assert (named.indenter_modulus, named.indenter_nu) == (207.0 / 69.0, 0.3)
+    assert pair("steel", "aluminium") == (207.0 / 69.0, 0.3, 0.33)
+    assert named.geometry_object.beta == pytest.approx(dundurs_beta(3.0, 0.3, 0.33), rel=1e-12)
+    given = parse_scene("b", {**base, "nu": 0.5, "indenter": {"modulus_ratio": 0.3, "nu": 0.0}})
+    assert given.geometry_object.beta < 0
+    assert given.influence_key != parse_scene("c", {**base, "nu": 0.5}).influence_key
+    for raw, key in [({"nu": 0.3, "indenter": "steel", "body": "aluminium"}, "nu"),
+                     ({"nu": 0.3, "indenter": "steel"}, "body"),
+                     ({"nu": 0.3, "indenter": "unobtainium", "body": "steel"}, "indenter"),
+                     ({"nu": 0.3, "indenter": {"modulus_ratio": 0}}, "indenter.modulus_ratio"),
+                     ({"nu": 0.3, "indenter": {"modulus_ratio": 2, "nu": 0.6}}, "indenter.nu"),
+                     ({"nu": 0.3, "indenter": {"nu": 0.2}}, "indenter")]:
+        with pytest.raises(ConfigError) as err:
+            parse_scene("bad", {**base, **raw})
+        assert str(err.value).startswith(f"scenes.bad.{key}: ")
+        assert len(str(err.value).splitlines()) == 1

@@ -306,10 +306,7 @@ class HistoryScene:
 
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
-    import importlib
-
-    hist = importlib.import_module("contactlib.history")  # the module (the package
-    # attribute ``history`` is the function)
+    from . import history_api as hist
     bad = _Problems(name)
     for key in sorted(str(k) for k in set(raw) - set(_HISTORY_KEYS)):
         bad.add(key, f"unknown key for a history scene (allowed: {', '.join(_HISTORY_KEYS)})")

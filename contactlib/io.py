@@ -61,6 +61,7 @@ __all__ = ["to_dataset", "scene_to_dataset", "set_provenance", "history_to_datas
            "write_table", "write_figure", "check_writable", "check_yaml", "version",
            "cf_attrs", "DamagedFileError", "CONVENTIONS"]
 
+# ----------------------------------------------------------------------------- conventions
 CONVENTIONS = "CF-1.10"
 COMPRESSION: dict[str, Any] = {"zlib": True, "complevel": 4, "shuffle": True}
 
@@ -214,6 +215,7 @@ def cf_attrs(long_name: str, units: str = "1", comment: str = "",
     return attrs
 
 
+# ----------------------------------------------------------------------------- solutions
 def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     """Convert one solution or a sweep of solutions to a dataset.
 
@@ -325,7 +327,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     return ds
 
 
-_FLAG_NAMES = ("slip_direction_ok", "stick_admissible", "consistent")
+_FLAG_NAMES = tuple(name for name in _POINT_BOOL_ATTRS if name != "converged")
 _VIOLATION_COMMENT = "relative measure behind the flag; <= 1e-4 passes"
 
 
@@ -419,6 +421,7 @@ def set_provenance(ds: xr.Dataset, scene: str, config_hash: str,
     return ds
 
 
+# ----------------------------------------------------------------------------- histories
 def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     """CF-annotated :class:`xarray.Dataset` of a history (dimensions ``step``, ``xi``).
 
@@ -593,16 +596,19 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     return out
 
 
+# ----------------------------------------------------------------------------- studies
 _STUDY_QUANTITIES_COMMENT = ("friction_coefficient k; load_ratio P/P_Hertz; frictional_work "
                              "as in docs/conventions.md; peak_shear max q/p0")
 
 
-def study_to_dataset(study: Study) -> xr.Dataset:
+def study_to_dataset(study: Study, name: str | None = None) -> xr.Dataset:
     """CF-annotated dataset of a convergence study (:func:`contactlib.convergence.study`).
 
     Parameters
     ----------
     study : contactlib.convergence.Study
+    name : str, optional
+        The study's name in the workflow config (global attribute ``study``).
 
     Returns
     -------
@@ -612,10 +618,10 @@ def study_to_dataset(study: Study) -> xr.Dataset:
         (quantity, n, stick_ratio) or (n, stick_ratio); ``reference`` and
         ``observed_order`` on (quantity, stick_ratio). Global attributes:
         geometry, poisson_ratio, method, slab_ratio, reference (its source),
-        contactlib_version, Conventions; the workflow adds ``study``.
+        contactlib_version, Conventions, and ``study`` when ``name`` is given.
     """
     st = study
-    return xr.Dataset(
+    ds = xr.Dataset(
         {
             "value": (("quantity", "n", "stick_ratio"), st.values,
                       cf_attrs("computed value", comment=_STUDY_QUANTITIES_COMMENT)),
@@ -640,6 +646,9 @@ def study_to_dataset(study: Study) -> xr.Dataset:
                "slab_ratio": float(st.slab_ratio), "Conventions": CONVENTIONS,
                "reference": st.reference_source, "contactlib_version": version()},
     )
+    if name is not None:
+        ds.attrs["study"] = name
+    return ds
 
 
 def study_from_dataset(ds: xr.Dataset) -> Study:
@@ -671,6 +680,7 @@ def study_from_dataset(ds: xr.Dataset) -> Study:
         reference_source=str(ds.attrs["reference"]))
 
 
+# ----------------------------------------------------------------------------- files
 def _encoding(ds: xr.Dataset) -> dict[str, dict[str, Any]]:
     """Per-variable netCDF encoding: no fill on coordinates, zlib on data."""
     encoding: dict[str, dict[str, Any]] = {}

@@ -14,6 +14,5 @@ result = convergence.study(
     reference=io.study_from_dataset(io.read_dataset(ref)) if ref else None,
     progress=lambda text: print(text, flush=True),
 )
-ds = io.study_to_dataset(result)
-ds.attrs["study"] = snakemake.wildcards.study  # noqa: F821
+ds = io.study_to_dataset(result, name=snakemake.wildcards.study)  # noqa: F821
 io.write_dataset(ds, snakemake.output[0])  # noqa: F821

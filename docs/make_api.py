@@ -40,7 +40,9 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
     ("contactlib.plot", "Every figure, importable from the package (save with "
      "``io.write_figure(fig, path, style=plot.style_path())``).", None),
     ("contactlib.plot.base", "The shared base of the figures: style, colours, panels, "
-     "layout.", None),
+     "layout (``style_path`` above).",
+     ["style_context", "palette", "MARKERS", "NOT_CONVERGED_GID", "fmt", "k_text", "as_list",
+      "describe", "label_of", "legend_height", "panel_grid", "finish"]),
     ("contactlib.kernels.disc", "Surface displacements of disc loads on a half-space.", None),
     ("contactlib.kernels.strip", "Surface displacements of strip loads on a half-plane or a "
      "slab.", None),

@@ -504,10 +504,9 @@ def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
 
 def _history_api() -> ModuleType:
     """Import the history module lazily (so ``--help`` never needs it)."""
-    import importlib
+    from contactlib import history_api
 
-    # the module, not the function contactlib.history that shadows it as an attribute
-    return importlib.import_module("contactlib.history")
+    return history_api
 
 
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
@@ -516,7 +515,7 @@ def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int
     print(format_history(res))
     from contactlib import io
 
-    io.write_dataset(module.history_to_dataset(res), output)
+    io.write_dataset(io.history_to_dataset(res), output)
     print(f"wrote {output}")
     return 0
 

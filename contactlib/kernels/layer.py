@@ -132,7 +132,8 @@ _SERIES_TERMS = 14
 _T_MAX = 24.0
 _T_PANEL = 0.25
 _GL_ORDER = 20
-_CHUNK = 8192
+_CHUNK = 65536  # points per pass
+_GROUP_MIN = 48  # mean points a cell above which points are grouped by cell
 
 # (name, remainder, power of sigma in the prefactor (2 sigma^a), sign, Bessel order in
 #  sigma, function of rho t, power of t in the measure (dt/t: -1))
@@ -303,8 +304,9 @@ class LayerTable:
         smooth base, whose remainders do not depend on it).
     coef : dict
         ``coef[kind]`` (kind "pressure" or "shear"), shape
-        ``(_N_CELLS, _N_CELLS, 3, _DEG + 1, _DEG + 1)``: Chebyshev coefficients
-        of (w, u, du) remainders in cell (i, j) = (rho, sigma).
+        ``(_N_CELLS**2, _DEG + 1, 3 * (_DEG + 1))``: Chebyshev coefficients
+        ``c[i * _N_CELLS + j, k, f * (_DEG + 1) + l]`` of T_k(x) T_l(y) for the
+        (w, u, du) remainder f in cell (i, j) of (rho, sigma).
     series : dict
         ``series[kind]``: list of three (prefactor power, sign, sigma
         coefficients and powers, rho coefficients and powers, moment matrix).
@@ -336,11 +338,13 @@ def _build_table(nu: float | None, base: str) -> LayerTable:
     coef = {}
     for kind in ("pressure", "shear"):
         vals = _remainder_quadrature(kind, pts, pts, nu_eff, base)
-        c = np.empty((_N_CELLS, _N_CELLS, 3, _DEG + 1, _DEG + 1))
+        # layout (cell = i * _N_CELLS + j, k, f * (_DEG + 1) + l): contiguous rows for
+        # value_f = sum_k sum_l T_k(x) c[cell, k, f, l] T_l(y)
+        c = np.empty((_N_CELLS, _N_CELLS, _DEG + 1, 3, _DEG + 1))
         for f, v in enumerate(vals):
             v = v.reshape(_N_CELLS, _DEG + 1, _N_CELLS, _DEG + 1)
-            c[:, :, f] = np.einsum("ka,iajb,lb->ijkl", inv, v, inv, optimize=True)
-        coef[kind] = c
+            c[:, :, :, f, :] = np.einsum("ka,iajb,lb->ijkl", inv, v, inv, optimize=True)
+        coef[kind] = c.reshape(_N_CELLS * _N_CELLS, _DEG + 1, 3 * (_DEG + 1))
     n = _SERIES_TERMS
     mom = _moments(nu_eff, base, 4 * n + 4)
     series = {}
@@ -385,27 +389,52 @@ def _series_eval(rows: list, rho: Arr, sigma: Arr) -> list[Arr]:
     return out
 
 
+def _chebyshev_basis(z: Arr) -> Arr:
+    """(n, _DEG + 1) Chebyshev polynomials T_0..T_deg at z in [-1, 1]."""
+    tz = np.empty((z.size, _DEG + 1))
+    tz[:, 0] = 1.0
+    tz[:, 1] = z
+    for d in range(2, _DEG + 1):
+        np.multiply(z, tz[:, d - 1], out=tz[:, d])
+        tz[:, d] *= 2.0
+        tz[:, d] -= tz[:, d - 2]
+    return tz
+
+
 def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
-    """(3, n) values of the tabulated functions at (rho, sigma) in the table range."""
+    """(3, n) values of the tabulated functions at (rho, sigma) in the table range.
+
+    Points are grouped by cell when there are many per cell (one small matrix
+    product per cell, no copies of coefficients); otherwise each point gathers
+    its cell's coefficients.
+    """
     u = rho * (1.0 / _CELL)
     v = sigma * (1.0 / _CELL)
     i = np.minimum(u.astype(np.intp), _N_CELLS - 1)
     j = np.minimum(v.astype(np.intp), _N_CELLS - 1)
-    x = 2.0 * (u - i) - 1.0
-    y = 2.0 * (v - j) - 1.0
-    n = x.size
-    tx = np.empty((n, _DEG + 1))
-    ty = np.empty((n, _DEG + 1))
-    tx[:, 0] = 1.0
-    ty[:, 0] = 1.0
-    tx[:, 1] = x
-    ty[:, 1] = y
-    for d in range(2, _DEG + 1):
-        tx[:, d] = 2.0 * x * tx[:, d - 1] - tx[:, d - 2]
-        ty[:, d] = 2.0 * y * ty[:, d - 1] - ty[:, d - 2]
-    c = coef[i, j]  # (n, 3, deg+1, deg+1)
-    cy = np.einsum("nfkl,nl->nfk", c, ty)
-    return np.einsum("nfk,nk->fn", cy, tx)
+    tx = _chebyshev_basis(2.0 * (u - i) - 1.0)
+    ty = _chebyshev_basis(2.0 * (v - j) - 1.0)
+    cell = i * _N_CELLS + j
+    n = rho.size
+    out = np.empty((3, n))
+    counts = np.bincount(cell, minlength=_N_CELLS * _N_CELLS)
+    occupied = np.flatnonzero(counts)
+    if occupied.size * _GROUP_MIN > n:  # few points a cell: gather
+        c = coef[cell].reshape(n, _DEG + 1, 3, _DEG + 1)
+        cx = np.einsum("nkfl,nk->nfl", c, tx)
+        return np.einsum("nfl,nl->fn", cx, ty)
+    order = np.argsort(cell.astype(np.int16), kind="stable")  # radix sort (cells < 2^15)
+    txs, tys = tx[order], ty[order]
+    ends = np.cumsum(counts[occupied])
+    starts = ends - counts[occupied]
+    res = np.empty((n, 3))
+    for c_id, a, b in zip(occupied.tolist(), starts.tolist(), ends.tolist()):
+        part = txs[a:b] @ coef[c_id]
+        part = part.reshape(b - a, 3, _DEG + 1)
+        part *= tys[a:b, None, :]
+        np.sum(part, axis=2, out=res[a:b])
+    out[:, order] = res.T
+    return out
 
 
 def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:

@@ -269,6 +269,35 @@ def test_thin_layer_limits(base, nu):
         assert dep[0] < 0.02 and dep[1] < 1e-2 * dep[0]
 
 
+@pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.3), ("bonded", 0.45),
+                                     ("bonded", 0.5)])
+def test_thin_layer_model_beyond_the_table(base, nu):
+    """a/h = 30 and 100 (beyond RATIO_MAX: the kernels refuse): the model's transfer
+    function, integrated here, against the same thin-layer asymptotics.
+
+    w(0) under p = 1 - r^2/a^2: half-space 4a/3 plus 4 h int Rww(t) J2(t a/h)/t^2 dt.
+    """
+    a = 1.0
+    c1, c3 = taylor_cww(nu, base)
+    for ratio in (30.0, 100.0):
+        h = a / ratio
+        with pytest.raises(ValueError, match="supported range"):
+            layer.pressure_disc(0.0, a, nu, h, base)
+
+        def f(t):
+            return layer.remainder_transfer(t, nu, base)[0] * special.jv(2, t * ratio) / t**2
+
+        v, _ = integrate.quad(f, 0.0, 30.0, points=np.arange(0.05, 30.0, 0.05), limit=5000,
+                              epsabs=1e-15)
+        w0 = 4 * a / 3 + 4 * h * v
+        lead = 2 * c1 * h if c1 else 8 * c3 * h**3 / a**2
+        two = 2 * c1 * h + 8 * c3 * h**3 / a**2
+        if c1:
+            assert abs(w0 - two) <= 0.02 * abs(two - lead) + 1e-9 * abs(lead), (ratio, w0, two)
+        else:
+            assert abs(w0 / lead - 1) < 1e-6, (ratio, w0, lead)
+
+
 def test_incompressible_thin_layer_uniform_deflection_profile():
     """nu = 1/2, bonded, a/h = 20: w is uniform under p = 1 - r^2/a^2 (lap p = -4/a^2).
 

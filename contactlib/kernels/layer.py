@@ -92,7 +92,7 @@ points against the quadrature: <= 2e-12 (smooth) and <= 6e-12 (bonded, nu =
 0.3) of the scale (1 for Pw, Pu, Pd; max(1, rho, sigma) for Sd;
 max(1, rho, sigma)^2 for Su, Sw), largest for the derivative Sd.
 
-*Small arguments* (``max(rho, sigma) < 0.5``, i.e. thick layers): the table's
+*Small arguments* (``max(rho, sigma) < 0.25``, i.e. thick layers): the table's
 absolute error would be multiplied by ``h`` or ``h^2``; there the double power
 series of the Bessel functions is summed instead, with the moments
 ``M_k = int_0^inf R(t) t^k dt`` (same quadrature on ``t < 96``; 14 terms a
@@ -127,7 +127,7 @@ RATIO_MAX = 20.0  # max(r, s)/h covered by the tables
 _CELL = 0.5  # table cell width in rho and sigma
 _DEG = 9  # Chebyshev degree in each variable
 _N_CELLS = int(round(RATIO_MAX / _CELL))
-_SERIES_MAX = 0.5  # max(rho, sigma) below which the power series is used
+_SERIES_MAX = 0.25  # max(rho, sigma) below which the power series is used
 _SERIES_TERMS = 14
 _T_MAX = 24.0
 _T_PANEL = 0.25
@@ -304,9 +304,10 @@ class LayerTable:
         smooth base, whose remainders do not depend on it).
     coef : dict
         ``coef[kind]`` (kind "pressure" or "shear"), shape
-        ``(_N_CELLS**2, _DEG + 1, 3 * (_DEG + 1))``: Chebyshev coefficients
-        ``c[i * _N_CELLS + j, k, f * (_DEG + 1) + l]`` of T_k(x) T_l(y) for the
-        (w, u, du) remainder f in cell (i, j) of (rho, sigma).
+        ``(_N_CELLS**2, 3 * (_DEG + 1), _DEG + 1)``: Chebyshev coefficients
+        ``c[i * _N_CELLS + j, f * (_DEG + 1) + l, k]`` of T_k(x) T_l(y) for the
+        (w, u, du) remainder f in cell (i, j) of (rho, sigma), x and y the
+        cell's local coordinates in [-1, 1].
     series : dict
         ``series[kind]``: list of three (prefactor power, sign, sigma
         coefficients and powers, rho coefficients and powers, moment matrix).
@@ -338,13 +339,13 @@ def _build_table(nu: float | None, base: str) -> LayerTable:
     coef = {}
     for kind in ("pressure", "shear"):
         vals = _remainder_quadrature(kind, pts, pts, nu_eff, base)
-        # layout (cell = i * _N_CELLS + j, k, f * (_DEG + 1) + l): contiguous rows for
-        # value_f = sum_k sum_l T_k(x) c[cell, k, f, l] T_l(y)
-        c = np.empty((_N_CELLS, _N_CELLS, _DEG + 1, 3, _DEG + 1))
+        # layout (cell = i * _N_CELLS + j, f * (_DEG + 1) + l, k): contiguous rows for
+        # value_f = sum_l T_l(y) sum_k c[cell, f, l, k] T_k(x)
+        c = np.empty((_N_CELLS, _N_CELLS, 3, _DEG + 1, _DEG + 1))
         for f, v in enumerate(vals):
             v = v.reshape(_N_CELLS, _DEG + 1, _N_CELLS, _DEG + 1)
-            c[:, :, :, f, :] = np.einsum("ka,iajb,lb->ijkl", inv, v, inv, optimize=True)
-        coef[kind] = c.reshape(_N_CELLS * _N_CELLS, _DEG + 1, 3 * (_DEG + 1))
+            c[:, :, f] = np.einsum("ka,iajb,lb->ijlk", inv, v, inv, optimize=True)
+        coef[kind] = c.reshape(_N_CELLS * _N_CELLS, 3 * (_DEG + 1), _DEG + 1)
     n = _SERIES_TERMS
     mom = _moments(nu_eff, base, 4 * n + 4)
     series = {}
@@ -380,74 +381,85 @@ def layer_table(nu: float, base: str) -> LayerTable:
 
 
 def _series_eval(rows: list, rho: Arr, sigma: Arr) -> list[Arr]:
+    """The three functions of one kind by their double power series (small rho, sigma)."""
+    n = _SERIES_TERMS
+    s2 = np.cumprod(np.broadcast_to((sigma * sigma)[:, None], (sigma.size, n - 1)), axis=1)
+    r2 = np.cumprod(np.broadcast_to((rho * rho)[:, None], (rho.size, n - 1)), axis=1)
+    even_s = np.hstack([np.ones((sigma.size, 1)), s2])  # sigma^(2m)
+    even_r = np.hstack([np.ones((rho.size, 1)), r2])  # rho^(2l)
     out = []
     for power, sign, cs, ps, cr, pr, mmat in rows:
-        sv = sigma[:, None] ** ps[None, :] * cs
-        rv = rho[:, None] ** pr[None, :] * cr
-        val = np.einsum("nm,ml,nl->n", sv, mmat, rv)
+        sv = even_s * (sigma[:, None] ** int(ps[0])) * cs  # sigma^(2m + order) c_m
+        rv = even_r * cr if pr[0] == 0 else even_r * (rho[:, None] * cr)
+        val = np.einsum("nl,nl->n", sv @ mmat, rv)
         out.append(2.0 * sign * sigma**power * val)
-    return out
+    return np.array(out)
 
 
 def _chebyshev_basis(z: Arr) -> Arr:
-    """(n, _DEG + 1) Chebyshev polynomials T_0..T_deg at z in [-1, 1]."""
-    tz = np.empty((z.size, _DEG + 1))
-    tz[:, 0] = 1.0
-    tz[:, 1] = z
+    """(_DEG + 1, n) Chebyshev polynomials T_0..T_deg at z in [-1, 1] (contiguous rows)."""
+    tz = np.empty((_DEG + 1, z.size))
+    tz[0] = 1.0
+    tz[1] = z
     for d in range(2, _DEG + 1):
-        np.multiply(z, tz[:, d - 1], out=tz[:, d])
-        tz[:, d] *= 2.0
-        tz[:, d] -= tz[:, d - 2]
+        np.multiply(z, tz[d - 1], out=tz[d])
+        tz[d] *= 2.0
+        tz[d] -= tz[d - 2]
     return tz
 
 
 def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
     """(3, n) values of the tabulated functions at (rho, sigma) in the table range.
 
-    Points are grouped by cell when there are many per cell (one small matrix
-    product per cell, no copies of coefficients); otherwise each point gathers
-    its cell's coefficients.
+    Points are sorted by cell (radix sort) and each cell's points are evaluated
+    with one small matrix product (no copies of coefficients) when there are
+    many points a cell; otherwise each point gathers its cell's coefficients.
     """
     u = rho * (1.0 / _CELL)
     v = sigma * (1.0 / _CELL)
     i = np.minimum(u.astype(np.intp), _N_CELLS - 1)
     j = np.minimum(v.astype(np.intp), _N_CELLS - 1)
-    tx = _chebyshev_basis(2.0 * (u - i) - 1.0)
-    ty = _chebyshev_basis(2.0 * (v - j) - 1.0)
+    u -= i
+    v -= j
     cell = i * _N_CELLS + j
     n = rho.size
-    out = np.empty((3, n))
     counts = np.bincount(cell, minlength=_N_CELLS * _N_CELLS)
     occupied = np.flatnonzero(counts)
     if occupied.size * _GROUP_MIN > n:  # few points a cell: gather
-        c = coef[cell].reshape(n, _DEG + 1, 3, _DEG + 1)
-        cx = np.einsum("nkfl,nk->nfl", c, tx)
-        return np.einsum("nfl,nl->fn", cx, ty)
+        tx = _chebyshev_basis(2.0 * u - 1.0)
+        ty = _chebyshev_basis(2.0 * v - 1.0)
+        c = coef[cell].reshape(n, 3, _DEG + 1, _DEG + 1)  # (n, f, l, k)
+        cx = np.einsum("nflk,kn->nfl", c, tx)
+        return np.einsum("nfl,ln->fn", cx, ty)
     order = np.argsort(cell.astype(np.int16), kind="stable")  # radix sort (cells < 2^15)
-    txs, tys = tx[order], ty[order]
+    tx = _chebyshev_basis(2.0 * u[order] - 1.0)
+    ty = _chebyshev_basis(2.0 * v[order] - 1.0)
     ends = np.cumsum(counts[occupied])
     starts = ends - counts[occupied]
-    res = np.empty((n, 3))
+    res = np.empty((3, n))
     for c_id, a, b in zip(occupied.tolist(), starts.tolist(), ends.tolist()):
-        part = txs[a:b] @ coef[c_id]
-        part = part.reshape(b - a, 3, _DEG + 1)
-        part *= tys[a:b, None, :]
-        np.sum(part, axis=2, out=res[a:b])
-    out[:, order] = res.T
+        part = (coef[c_id] @ tx[:, a:b]).reshape(3, _DEG + 1, b - a)  # (f, l, m)
+        part *= ty[None, :, a:b]
+        np.sum(part, axis=1, out=res[:, a:b])
+    out = np.empty((3, n))
+    out[:, order] = res
     return out
 
 
 def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
-    """(3, n) remainder functions of ``kind`` at 1-d (rho, sigma)."""
+    """(3, n) remainder functions of ``kind`` at 1-d (rho, sigma), chunk by chunk."""
     out = np.empty((3, rho.size))
-    small = np.maximum(rho, sigma) < _SERIES_MAX
     for a in range(0, rho.size, _CHUNK):
         sl = slice(a, a + _CHUNK)
-        out[:, sl] = _chebyshev_eval(tab.coef[kind], rho[sl], sigma[sl])
-    if small.any():
-        vals = _series_eval(tab.series[kind], rho[small], sigma[small])
-        for f in range(3):
-            out[f, small] = vals[f]
+        r, g = rho[sl], sigma[sl]
+        small = np.maximum(r, g) < _SERIES_MAX
+        if small.all():
+            out[:, sl] = _series_eval(tab.series[kind], r, g)
+            continue
+        val = _chebyshev_eval(tab.coef[kind], r, g)
+        if small.any():
+            val[:, small] = _series_eval(tab.series[kind], r[small], g[small])
+        out[:, sl] = val
     return out
 
 

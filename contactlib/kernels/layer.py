@@ -87,17 +87,20 @@ to ~1e-13 of scale against a rule with panels of 0.1, 30 points, ``t < 36``.
 smooth table does not depend on nu): tensor Chebyshev interpolation of the
 six functions on cells of 0.5 x 0.5 covering ``0 <= rho, sigma <= RATIO_MAX
 = 20``, degree 9 in each variable (100 coefficients a cell and function;
-7.7 MB a table; built in ~2-3 s). Measured interpolation error at 300 random
-points against the quadrature: <= 2e-12 (smooth) and <= 6e-12 (bonded, nu =
-0.3) of the scale (1 for Pw, Pu, Pd; max(1, rho, sigma) for Sd;
-max(1, rho, sigma)^2 for Su, Sw), largest for the derivative Sd.
+7.7 MB a table; built in 1-4 s). Measured interpolation error at random
+points against the quadrature: <= 3e-12 (smooth), <= 9e-12 (bonded, nu = 0.3)
+and <= 1.6e-11 (bonded, nu = 1/2) of the scale (1 for Pw, Pu, Pd;
+max(1, rho, sigma) for Sd; max(1, rho, sigma)^2 for Su, Sw), largest for the
+derivatives. Evaluation sorts the points by cell and sums each cell's
+points with one small matrix product (``_chebyshev_eval``).
 
 *Small arguments* (``max(rho, sigma) < 0.25``, i.e. thick layers): the table's
 absolute error would be multiplied by ``h`` or ``h^2``; there the double power
 series of the Bessel functions is summed instead, with the moments
 ``M_k = int_0^inf R(t) t^k dt`` (same quadrature on ``t < 96``; 14 terms a
-variable). The leading term gives the thick-layer limit, e.g. for the pressure
-``w - w_halfspace -> (s^2/h) M_0(Rww)`` (uniform, O(s/h) relative).
+variable; 2e-14 relative against the quadrature). The leading term gives the
+thick-layer limit, e.g. for the pressure ``w - w_halfspace -> (s^2/h)
+M_0(Rww)`` (uniform, O(s/h) relative).
 
 Supported range: ``max(r, s) / h <= RATIO_MAX = 20`` (beyond it the table is
 not defined and a ``ValueError`` is raised); ``h = inf`` is the half-space.

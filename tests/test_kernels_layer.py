@@ -154,7 +154,7 @@ def quad_remainder(kind, r, s, h, nu, base):
 # (r, s, h): table cells (rho, sigma in 0.5..6), the series corner (h = 5) and the edge r = s
 POINTS = [(0.0, 1.0, 1.0), (0.3, 1.0, 1.0), (1.0, 1.0, 1.0), (2.5, 1.0, 1.0),
           (0.7, 1.5, 0.4), (1.7, 0.4, 0.3), (0.9, 0.95, 0.25), (0.5, 1.0, 5.0), (2.0, 1.2, 5.0),
-          (0.2, 0.9, 0.15)]
+          (0.2, 0.9, 0.15), (0.95, 1.0, 0.05), (0.3, 0.99, 0.05)]
 
 
 @pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.3), ("bonded", 0.5)])
@@ -366,3 +366,19 @@ def test_zero_disc_and_shapes():
     assert np.all(w[:, 0] == 0) and np.all(u[:, 0] == 0) and np.all(du[:, 0] == 0)
     w, u, du = layer.shear_disc(0.3, 1.0, 0.3, 0.5, with_du=False)
     assert np.isnan(du)
+
+
+@pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.5)])
+def test_table_against_the_module_quadrature(base, nu):
+    """Implementation check: Chebyshev table and power series against the quadrature
+    they are built from, at random points over the whole range (docs: <= 2e-11 of scale)."""
+    tab = layer.layer_table(nu, base)
+    rng = np.random.default_rng(11)
+    rho = np.concatenate([rng.uniform(0, layer.RATIO_MAX, 150), rng.uniform(0, 0.3, 30)])
+    sig = np.concatenate([rng.uniform(0, layer.RATIO_MAX, 150), rng.uniform(0, 0.3, 30)])
+    big = np.maximum(1.0, np.maximum(rho, sig))
+    for kind, scales in (("pressure", (1, 1, 1)), ("shear", (big**2, big**2, big))):
+        ref = [np.diag(v) for v in layer._remainder_quadrature(kind, rho, sig, nu, base)]
+        got = layer._remainders(kind, rho, sig, tab)
+        for f in range(3):
+            assert np.max(np.abs(got[f] - ref[f]) / scales[f]) < 2e-11, (kind, f)

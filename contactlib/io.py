@@ -24,7 +24,8 @@ only for their types and constants, and only when a conversion needs them.
 Examples
 --------
 >>> import numpy as np
->>> from contactlib.result import Solution
+>>> from contactlib.indenter import indenter
+from contactlib.result import Solution
 >>> from contactlib.io import to_dataset
 >>> xi = np.linspace(0.0, 1.0, 5)
 >>> sol = Solution("sphere", 0.3, "default", 4, 0.0, 0.5, 0.2, xi,
@@ -49,6 +50,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import xarray as xr
 
+from contactlib.indenter import indenter
 from contactlib.result import Solution
 
 if TYPE_CHECKING:  # types only: the conversions import the numerics when they run
@@ -87,13 +89,12 @@ _PROFILE_ATTRS: dict[str, tuple[str, str]] = {
     ),
 }
 
-_WORK_COMMENT = {
-    "sphere": "V R**2 / (E* a**5); loading 0 -> a; NaN when not computed",
-    "cylinder": (
-        "V R**2 / (E* a**4), V per unit length over the whole contact "
-        "(both sides of the axis); loading 0 -> a; NaN when not computed"
-    ),
-}
+def _work_comment(ind: Any) -> str:
+    """The scaling of ``frictional_work`` for an indenter (rings or strips)."""
+    per_length = (", V per unit length over the whole contact (both sides of the axis)"
+                  if ind.plane_strain else "")
+    return (f"V R**2 / (E* a**{ind.work_exponent}){per_length}; loading 0 -> a; "
+            f"NaN when not computed")
 
 _POINT_FLOAT_ATTRS: dict[str, tuple[str, str]] = {
     "friction_coefficient": (
@@ -247,7 +248,8 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     Examples
     --------
     >>> import numpy as np
-    >>> from contactlib.result import Solution
+    >>> from contactlib.indenter import indenter
+from contactlib.result import Solution
     >>> xi = np.linspace(0.0, 1.0, 3)
     >>> sols = [Solution("cylinder", 0.3, "default", 2, 0.0, g, g, xi,
     ...                  1 - xi**2, 0 * xi, 0 * xi, 1.0) for g in (0.2, 0.4)]
@@ -261,7 +263,8 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     xi = _check(sols)
     first = sols[0]
     geometry = str(first.geometry)
-    axis = "r/a" if geometry == "sphere" else "x/a"
+    ind = indenter(geometry)
+    axis = f"{ind.coordinate}/a"
     dims = ("stick_ratio",)
 
     coords = {
@@ -290,7 +293,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         data[name] = (dims + ("xi",), values, cf_attrs(long_name, comment=comment))
     for name, (long_name, comment) in _POINT_FLOAT_ATTRS.items():
         if name == "frictional_work":
-            comment = _WORK_COMMENT.get(geometry, "")
+            comment = _work_comment(ind)
         values = np.array([float(getattr(s, name)) for s in sols])
         data[name] = (dims, values, cf_attrs(long_name, comment=comment))
     data["iterations"] = (
@@ -316,7 +319,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         "elements": int(first.n),
         "method": str(first.method),
     }
-    if geometry == "cylinder":
+    if ind.accepts_layer:
         attrs["slab_ratio"] = float(first.slab_ratio)
     attrs["contactlib_version"] = version()
     attrs["Conventions"] = CONVENTIONS
@@ -451,10 +454,10 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     from contactlib import history_solver as hs
 
     r = result
-    sphere = r.geometry == "sphere"
-    axis = "r" if sphere else "x"
-    work_scale = ("V R**2 / (E* a_max**5)" if sphere else
-                  "V R**2 / (E* a_max**4), V per unit length over both sides of the axis")
+    ind = indenter(r.geometry)
+    axis = ind.coordinate
+    work_scale = f"V R**2 / (E* a_max**{ind.work_exponent})" + (
+        ", V per unit length over both sides of the axis" if ind.plane_strain else "")
     sd, ed = ("step",), ("step", "xi")
     coords = {
         "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),
@@ -526,7 +529,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "load_path": np.asarray(r.load_path, dtype=float),
         "steps": int(r.steps),
     }
-    if not sphere:
+    if ind.accepts_layer:
         attrs["slab_ratio"] = float(r.slab_ratio)
     attrs["mesh_extent"] = float(hs.MESH_EXTENT)
     if r.resolved is not None:

@@ -34,6 +34,7 @@ from typing import Any, Mapping
 
 from . import accuracy, validate
 from .geometry import Geometry
+from .indenter import indenter
 from .result import short_repr
 from .stages import OUTPUTS, parts_needed
 
@@ -115,7 +116,7 @@ class Scene:
         do (a node at c), so its key carries a digest of the stick ratios.
         """
         key = f"{self.geometry}-nu{self.nu!r}-{self.method}-n{self.n}"
-        if self.geometry == "cylinder":
+        if indenter(self.geometry).accepts_layer:
             key += f"-h{self.slab_ratio!r}"
         if self.method == "default":
             key += "-c" + _ratio_digest(self.solved_ratios)

@@ -162,7 +162,7 @@ def describe(ds: xr.Dataset, lead: str, slab_name: str = "a/h", steps: bool = Fa
         parts.append(f"n = {int(attrs['elements'])}")
     if "poisson_ratio" in attrs:
         parts.append(f"ν = {fmt(float(attrs['poisson_ratio']))}")
-    if attrs.get("geometry") == "cylinder":
+    if "slab_ratio" in attrs:  # written for the bodies that may be layers
         parts.append(f"{slab_name} = {fmt(float(attrs.get('slab_ratio', 0.0)))}")
     if steps and "steps" in attrs:
         parts.append(f"{int(attrs['steps'])} steps a segment")

@@ -61,6 +61,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter, NullLocator
 
+from contactlib.indenter import indenter
+from contactlib.validate import GEOMETRIES
 from contactlib.plot.base import (
     MARKERS,
     NOT_CONVERGED_GID,
@@ -82,10 +84,9 @@ __all__ = [
     "hist_stick_radius",
 ]
 
-_GEOMETRIES = ("sphere", "cylinder")
+_GEOMETRIES = GEOMETRIES
 _K = "friction_coefficient"
 _SHARED = ("load_ratio", "segment", "xi_bounds")  # the path and the mesh: no k in them
-_AXIS = {"sphere": "r", "cylinder": "x"}
 _ENERGY_LABEL = {
     "sphere": r"energy per cycle $V R^2/(E^* a_{max}^5)$",
     "cylinder": r"energy per cycle $V R^2/(E^* a_{max}^4)$, per unit length",
@@ -190,12 +191,10 @@ def _histories(datasets: xr.Dataset | Sequence[xr.Dataset], figure: str,
 
 # ----------------------------------------------------------------------------- helpers
 def _surface(h: _History) -> str:
-    if h.geometry == "sphere":
-        return "sphere on an elastic half-space"
+    ind = indenter(h.geometry)
     slab = float(h.ds.attrs.get("slab_ratio", 0.0))
-    if slab == 0.0:
-        return "cylinder on an elastic half-plane (plane strain)"
-    return f"cylinder on an elastic slab, a_max/h = {fmt(slab)} (plane strain)"
+    body = f"slab, a_max/h = {fmt(slab)}" if slab else ind.half_space_name
+    return f"{ind.name} on an elastic {body}" + (" (plane strain)" if ind.plane_strain else "")
 
 
 def _path_text(h: _History) -> str:
@@ -524,7 +523,7 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
             ax.grid(False)
             ax.set_ylim(0.0, top)
             ax.set_xlim(x_edges[0], x_edges[-1])
-            ax.set_ylabel(f"ξ = {_AXIS[h.geometry]}/$a_{{max}}$")
+            ax.set_ylabel(f"ξ = {indenter(h.geometry).coordinate}/$a_{{max}}$")
             text = f"k = {k_text(float(h.ks[i]))}"
             if bad.any():
                 text += f"  [NOT CONVERGED at {int(bad.sum())} steps]"
@@ -655,7 +654,7 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             ]
             if not ok_all.all():
                 handles.append(_cross_key())
-            axis = _AXIS[h.geometry]
+            axis = indenter(h.geometry).coordinate
             note = f"u at {axis}/a_max = {used:.4g}"
             if not np.any(h.values("state")[:, :, j] > 0):
                 note += ", never in contact"
@@ -863,4 +862,4 @@ def _surface_of(geometry: str, members: Sequence[_History]) -> str:
     surfaces = {_surface(h) for h in members if h.geometry == geometry}
     if len(surfaces) == 1:
         return surfaces.pop()
-    return "sphere" if geometry == "sphere" else "cylinder (plane strain)"
+    return geometry + (" (plane strain)" if indenter(geometry).plane_strain else "")

@@ -67,7 +67,9 @@ from contactlib.plot.base import (
     panel_grid,
     style_context,
 )
+from contactlib.indenter import indenter
 from contactlib.theory import hertz_pressure, uncoupled_friction
+from contactlib.validate import GEOMETRIES
 
 __all__ = [
     "fig2_friction",
@@ -82,12 +84,11 @@ DEFAULT_STICK_RATIOS: tuple[float, ...] = (0.1, 0.3, 0.5, 0.7, 0.9)
 FIG3_STICK_RATIOS: tuple[float, ...] = (1 / 16, 4 / 16, 8 / 16, 12 / 16)
 PAPER_SMALLEST_STICK_RATIO = 1.0 / 16.0
 
-_GEOMETRIES = ("sphere", "cylinder")
+_GEOMETRIES = GEOMETRIES
 _TITLES = {
     "sphere": "sphere on an elastic half-space",
     "cylinder": "cylinder on an elastic slab (plane strain)",
 }
-_AXIS = {"sphere": "r/a", "cylinder": "x/a"}
 _WORK_LABEL = {
     "sphere": r"frictional work $V R^2/(E^* a^5)$",
     "cylinder": r"frictional work $V R^2/(E^* a^4)$ per unit length",
@@ -127,7 +128,7 @@ class _Case:
 
 
 def _prepare(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
-             *, sphere_required: Sequence[str] = (), profiles: bool = False) -> _Case:
+             *, profiles: bool = False) -> _Case:
     """Validate one dataset for ``figure`` and return it as a :class:`_Case`."""
     description = describe(ds, "method")
     label, where = label_of(ds, index, description)
@@ -139,7 +140,7 @@ def _prepare(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
         )
     if "poisson_ratio" not in ds.attrs:
         raise ValueError(f"{figure}: {where} lacks the attribute 'poisson_ratio'")
-    needed = list(required) + (list(sphere_required) if geometry == "sphere" else [])
+    needed = list(required)
     if profiles:
         needed.append("xi")
     if "stick_ratio" not in ds.coords and "stick_ratio" not in ds.dims:
@@ -449,10 +450,8 @@ def _series_key(case: _Case, color: str, marker: str, size: float,
 
 
 def _uncoupled_eligible(geometry: str, members: Sequence[_Case]) -> list[_Case]:
-    """Datasets the uncoupled closed form applies to (cylinder: half-plane only)."""
-    if geometry == "sphere":
-        return [c for c in members if c.geometry == "sphere"]
-    return [c for c in members if c.geometry == "cylinder" and c.slab_ratio == 0.0]
+    """Datasets the uncoupled closed form applies to (a half-space or half-plane only)."""
+    return [c for c in members if c.geometry == geometry and c.slab_ratio == 0.0]
 
 
 def _reference_count(geometry: str, cases: Sequence[_Case]) -> int:
@@ -469,11 +468,12 @@ def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list
     gamma = 1.0 - (1.0 - np.linspace(0.0, 1.0, 401)[:-1]) ** 2
     for i, nu in enumerate(nus):
         k = uncoupled_friction(geometry, nu, gamma)
-        where = "" if geometry == "sphere" else ", half-plane"
+        where = f", {indenter(geometry).half_space_name}" if indenter(geometry).accepts_layer \
+            else ""
         (line,) = ax.plot(gamma, k, color=_REF_COLOR, lw=1.0, dashes=_DASHES[i % len(_DASHES)],
                           zorder=1, label=f"uncoupled closed form, ν = {fmt(nu)}{where}")
         handles.append(line)
-    if geometry == "cylinder" and not eligible:
+    if indenter(geometry).accepts_layer and not eligible:
         handles.append(Line2D([], [], ls="none", label="(no uncoupled closed form "
                                                         "for a/h > 0)"))
     return handles
@@ -553,7 +553,7 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
                 if 0.0 < c < 1.0:
                     _stick_edge(ax_q, c, np.interp(c, xi, q), color)
             ax_p.set_title(_column_title(case))
-            ax_q.set_xlabel(f"ξ = {_AXIS[case.geometry]}")
+            ax_q.set_xlabel(f"ξ = {indenter(case.geometry).coordinate}/a")
             ax_p.set_ylabel(r"pressure $p/p_0$")
             ax_q.set_ylabel(r"shear $q/p_0$ (positive outward)")
             ax_p.set_xlim(0.0, 1.0)
@@ -696,7 +696,7 @@ def fig4_displacement(datasets: xr.Dataset | Sequence[xr.Dataset],
                         **style)  # type: ignore[arg-type]
             ax.axhline(0.0, color="0.6", lw=0.6, zorder=0)
             ax.set_title(_column_title(case))
-            ax.set_xlabel(f"ξ = {_AXIS[case.geometry]}")
+            ax.set_xlabel(f"ξ = {indenter(case.geometry).coordinate}/a")
             ax.set_ylabel(r"displacement $u R/a^2$ (positive outward)")
             ax.set_xlim(0.0, 1.0)
             handles, _ = ax.get_legend_handles_labels()

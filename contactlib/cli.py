@@ -394,15 +394,25 @@ def _g(value: float, digits: int = 6) -> str:
     return "inf" if math.isinf(value) else f"{value:.{digits}g}"
 
 
+def _indenter(geometry: str) -> Any:
+    from contactlib.indenter import indenter
+
+    return indenter(geometry)
+
+
+def _head(sol: Solution) -> str:
+    """``sphere, nu = 0.3, method = default, n = 256`` (and a/h where a layer is possible)."""
+    head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
+    if _indenter(sol.geometry).accepts_layer:
+        head += f", a/h = {sol.slab_ratio:g}"
+    return head + _indenter_text(sol)
+
+
 def format_summary(sol: Solution) -> str:
     """Human-readable summary of one solution (several lines)."""
-    work_scale = "V R^2/(E* a^5)" if sol.geometry == "sphere" else "V R^2/(E* a^4)"
-    head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
-    if sol.geometry == "cylinder":
-        head += f", a/h = {sol.slab_ratio:g}"
-    head += _indenter_text(sol)
+    work_scale = f"V R^2/(E* a^{_indenter(sol.geometry).work_exponent})"
     lines = [
-        head,
+        _head(sol),
         f"  c/a    = {_g(sol.stick_ratio)}",
         f"  k      = {_g(sol.friction_coefficient)}",
         f"  P/P_H  = {_g(sol.load_ratio)}",
@@ -422,11 +432,7 @@ def format_table(solutions: Sequence[Solution]) -> str:
     """Compact table of a sweep, one row per stick ratio."""
     if not solutions:
         return "(no points)"
-    s0 = solutions[0]
-    head = f"{s0.geometry}, nu = {s0.nu:g}, method = {s0.method}, n = {s0.n}"
-    if s0.geometry == "cylinder":
-        head += f", a/h = {s0.slab_ratio:g}"
-    head += _indenter_text(s0)
+    head = _head(solutions[0])
     cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
             f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9}")
     rows = [head, cols]
@@ -444,11 +450,11 @@ def format_table(solutions: Sequence[Solution]) -> str:
 
 def format_history(res: Any) -> str:
     """Summary of a history: the state at the end of every path segment, and the work."""
-    work_scale = ("V R^2/(E* a_max^5)" if res.geometry == "sphere"
-                  else "V R^2/(E* a_max^4)")
+    ind = _indenter(res.geometry)
+    work_scale = f"V R^2/(E* a_max^{ind.work_exponent})"
     head = (f"{res.geometry}, nu = {res.nu:g}, k = {_g(res.friction)}, n = {res.n}, "
             f"{res.steps} steps per segment")
-    if res.geometry == "cylinder":
+    if ind.accepts_layer:
         head += f", a_max/h = {res.slab_ratio:g}"
     head += _indenter_text(res)
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
@@ -544,10 +550,9 @@ def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
 
 def _history_api() -> ModuleType:
     """Import the history module lazily (so ``--help`` never needs it)."""
-    import importlib
+    from contactlib import history_api
 
-    # the module, not the function contactlib.history that shadows it as an attribute
-    return importlib.import_module("contactlib.history")
+    return history_api
 
 
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
@@ -556,7 +561,7 @@ def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int
     print(format_history(res))
     from contactlib import io
 
-    io.write_dataset(module.history_to_dataset(res), output)
+    io.write_dataset(io.history_to_dataset(res), output)
     print(f"wrote {output}")
     return 0
 

@@ -19,8 +19,13 @@ Direction of slip: the slip-zone condition is q = sigma k p with sigma =
 sign(beta) (:attr:`~contactlib.model.Contact.slip_sign`): inward slip and
 q = k p for beta > 0 (every rigid indenter), outward slip and q = -k p for
 beta < 0 (a compliant, compressible indenter on a stiffer, less
-compressible body). Newton's method runs on the signed ratio sigma k; the
-solution reports k >= 0.
+compressible body). Newton's method runs on the signed ratio sigma k
+(:func:`newton_on_k` is sign-blind); the solution reports k >= 0. A root of
+the other sign is kept when the solution is consistent at the nodes (a thin
+or nearly incompressible slab, whose surface moves outward under a rigid
+indenter); otherwise the slip would change direction within the slip zone,
+which one self-similar stick zone cannot hold, and the message says to use
+the history solver.
 
 What fixes k
 ------------
@@ -55,7 +60,8 @@ from .model import Contact
 from .operators import nodal_operator_part, operator_part, operators
 from .result import short_repr
 
-__all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part",
+__all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
+           "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
            "nodal_operator_part"]
 
 # Extended precision for the residual of one step of iterative refinement (see
@@ -180,95 +186,70 @@ def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k:
     return out
 
 
-def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float = 2.0,
-                  k_guess: float | None = None, tol: float = 1e-9,
-                  max_iter: int = 30,
-                  ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> DiscreteSolution:
-    """Solve the self-similar partial-slip problem for a given stick ratio.
+@dataclass
+class PartialSlipSystem:
+    """The linear system A(k) x = b of one partial-slip case (0 < c/a < 1).
 
-    Parameters
+    Unknowns ``x = [p_0..p_{N-1}, delta, phi_1..phi_{M-1}, C]``: the nodal
+    pressures, the indentation, the stick-zone shear nodes and the stick
+    constant. ``A(k) = a0 + k a1``, where ``a1`` is nonzero only in the
+    columns of the slip-zone pressures, so it is kept as that column block
+    ``a1b`` (rows x slip nodes), never as a full matrix.
+
+    Attributes
     ----------
-    geometry : Contact
-    stick_ratio : float
-        c/a in [0, 1]; 0 is frictionless (k = 0), 1 full adhesion (k = inf).
-    n : int
-        Number of elements across the half-contact.
-    power : float
-        Mesh grading exponent.
-    k_guess : float, optional
-        Starting value for Newton's method on k (default: the uncoupled
-        closed form for n <= 128, else the Richardson extrapolation of the
-        n = 64 and n = 128 solutions).
-    tol : float
-        Relative size of a Newton step still counted as converged when the
-        iteration stagnates at round-off (normally Newton stops after a step
-        below 1e-6, which leaves an error in k near 1e-10).
-    max_iter : int
-        Newton iterations allowed.
-    ops : (P, Q), optional
-        Precomputed collocation operators ``operator_part(geometry, nodes,
-        nodes, "normal")`` and ``(..., "shear")`` on this mesh (Q may be None
-        when stick_ratio = 0); computed here when not given.
-
-    Returns
-    -------
-    DiscreteSolution
+    a0 : ndarray, shape (size, size)
+    a1b : ndarray, shape (size, N - M)
+    b : ndarray, shape (size,)
+    slip_nodes : ndarray of int
+        The nodes M ... N-1, whose shear is k p / shape (also their columns).
+    shape : ndarray
+        The shear shape at the nodes (r for rings, 1 for strips).
+    nn, m : int
+        Elements N and the stick-edge node M (at c).
     """
-    mesh = graded_mesh(n, stick_ratio, power=power)
+
+    a0: np.ndarray
+    a1b: np.ndarray
+    b: np.ndarray
+    slip_nodes: np.ndarray
+    shape: np.ndarray
+    nn: int
+    m: int
+
+    @property
+    def stick_edge(self) -> int:
+        """j = M - 1, the last node inside the stick zone, where t_j = shape_j phi_j - k p_j."""
+        return self.m - 1
+
+    def edge_traction(self, x: np.ndarray, k: float) -> float:
+        """g(k) = shape_j phi_j - k p_j, the stick-edge condition (zero at the physical k)."""
+        j = self.stick_edge
+        return float(self.shape[j] * x[self.nn + j] - k * x[j])
+
+    def residual(self, x: np.ndarray, k: float) -> float:
+        """Relative residual of A(k) x = b plus the relative stick-edge traction."""
+        ax = self.a0 @ x + k * (self.a1b @ x[self.slip_nodes])
+        return float(np.linalg.norm(ax - self.b) / np.linalg.norm(self.b)
+                     + abs(self.edge_traction(x, k)) / max(abs(x[self.stick_edge]), 1e-300))
+
+
+def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray) -> PartialSlipSystem:
+    """The partial-slip system on ``mesh`` from the nodal operators (see the module notes).
+
+    Rows: normal collocation at every node (w = delta - r^2/2), then the
+    stick condition u = C r^2 at nodes 1 ... M. The slip-zone shear is
+    eliminated by Coulomb's law, phi_i = k p_i / shape_i.
+    """
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
-    if ops is None:
-        pw = nodal_operator_part(geometry, mesh, "normal")
-        qw = nodal_operator_part(geometry, mesh, "shear") if m > 0 else None
-    else:
-        copy = geometry.indenter.odd_shear  # the axis row is edited below
-        pw = np.array(ops[0], dtype=float, copy=copy)
-        qw = None if ops[1] is None else np.array(ops[1], dtype=float, copy=copy)
-        want = (3, nn + 1, nn + 1)
-        if pw.shape != want or (m > 0 and (qw is None or qw.shape != want)):
-            raise ValueError(f"precomputed operators must have shape {want} "
-                             f"(normal{' and shear' if m > 0 else ''})")
-    if geometry.indenter.odd_shear:  # du/dx on the axis: unused, NaN (see operators)
-        pw[2][0] = 0.0
-        if qw is not None:
-            qw[2][0] = 0.0
-    rhs_normal = -0.5 * r**2
-    ones = np.ones((nn + 1, 1))
-
-    if m == 0:  # frictionless: q = 0
-        a = np.hstack([pw[0][:, :-1], -ones])
-        x = linalg.solve(a, rhs_normal)
-        res = np.linalg.norm(a @ x - rhs_normal) / np.linalg.norm(rhs_normal)
-        p = np.append(x[:nn], 0.0)
-        phi = np.zeros(nn + 1)
-        return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), 0.0, True, float(res), 1,
-                                "", pw[1] @ p, pw[2] @ p)
-
     qx = _tie_columns(geometry, qw)  # (3, N+1, N-1): phi_1..phi_{N-1}
     shape = geometry.shear_shape(r)
     stick_rows = np.arange(1, m + 1)
-
-    if m == nn:  # full adhesion: phi_1..phi_{N-1} free, phi_N = 0
-        top = np.hstack([pw[0][:, :-1], -ones, qx[0], np.zeros((nn + 1, 1))])
-        bot = np.hstack([pw[1][stick_rows, :-1], np.zeros((m, 1)), qx[1][stick_rows],
-                         -(r[stick_rows] ** 2)[:, None]])
-        a = np.vstack([top, bot])
-        b = np.concatenate([rhs_normal, np.zeros(m)])
-        x = linalg.solve(a, b)
-        res = np.linalg.norm(a @ x - b) / np.linalg.norm(b)
-        p = np.append(x[:nn], 0.0)
-        phi = _expand_phi(geometry, x[nn + 1:2 * nn])
-        return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), np.inf, True,
-                                float(res), 1, "", pw[1] @ p + qw[1] @ phi,
-                                pw[2] @ p + qw[2] @ phi)
-
-    # partial slip: x = [p_0..p_{N-1}, delta, phi_1..phi_{M-1}, C]
     stick_cols = slice(0, m - 1)  # phi_1..phi_{M-1} in qx columns
-    slip_nodes = np.arange(m, nn)  # phi_i = k p_i / shape_i
+    slip_nodes = np.arange(m, nn)
     slip_cols = slip_nodes - 1
     size = nn + 1 + (m - 1) + 1
-    # A(k) = a0 + k a1, where a1 is nonzero only in the columns of the slip-zone
-    # pressures: a1 is kept as that column block (a1b), never as a full matrix
     a0 = np.zeros((size, size))
     a1b = np.empty((size, slip_nodes.size))
     nr = nn + 1
@@ -280,59 +261,84 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     a0[nr:, nn + 1:nn + m] = qx[1][stick_rows][:, stick_cols]
     a0[nr:, nn + m] = -(r[stick_rows] ** 2)
     a1b[nr:] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
-    b = np.concatenate([rhs_normal, np.zeros(m)])
+    b = np.concatenate([-0.5 * r**2, np.zeros(m)])
+    return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
-    j = m - 1  # last node inside the stick zone: t_j = shape_j phi_j - k p_j = 0
-    # below, k is the signed traction ratio of the slip zone, q = k p (sigma k of
-    # the module notes); the guesses are k >= 0
-    sigma = -1.0 if geometry.slip_sign < 0 else 1.0
-    if k_guess is not None:
-        k = sigma * float(k_guess)
-    elif n > 128:  # Richardson-extrapolated coarse solves (O(h^2)) put Newton within
-        # ~1e-6 of the answer: one or two fine factorizations
-        k64 = solve_default(geometry, stick_ratio, 64, power=power).k
-        k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64).k
-        k = sigma * (k128 + (k128 - k64) / 3.0)
-    else:
-        k = sigma * float(geometry.uncoupled_friction(r[m]))
-    converged, it, g = False, 0, np.inf
-    stagnated = 0.0
-    x = None
-    prev_step = np.inf
-    # equilibrate rows and columns (the graded mesh has elements ~1/N^2 long):
-    # solve (R A C) y = R b, x = C y
-    a0s = a0.copy()
-    a0s[:, slip_nodes] += k * a1b
+
+@dataclass
+class NewtonResult:
+    """Newton on k for one :class:`PartialSlipSystem`.
+
+    Attributes
+    ----------
+    x : ndarray
+        The unknowns at the final k (first-order update from the last
+        factorization).
+    k : float
+        The friction coefficient.
+    converged : bool
+    iterations : int
+    stagnated : float
+        The last relative step when Newton stopped on the round-off floor of
+        the stick-edge condition, else 0.
+    """
+
+    x: np.ndarray
+    k: float
+    converged: bool
+    iterations: int
+    stagnated: float
+
+
+def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray, k: float,
+                   rhs: np.ndarray, refine: bool) -> np.ndarray:
+    """Solve with the LU of A(k), plus one step of extended-precision refinement if asked."""
+    y = linalg.lu_solve(lu, rhs, check_finite=False)
+    if not refine:
+        return y
+    res = _extended_residual(a0s, a1s, cols, k, y, rhs)
+    return y + linalg.lu_solve(lu, res, check_finite=False)
+
+
+def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
+                refine: bool = False) -> NewtonResult:
+    """Newton's method on the stick-edge condition g(k) = 0.
+
+    Each iteration factorizes A(k) once; the derivative dg/dk comes from the
+    same factorization (dx/dk = -A^-1 a1 x). Rows and columns are equilibrated
+    at the starting k (the graded mesh has elements ~1/N^2 long): the
+    iteration solves (R A C) y = R b, x = C y.
+
+    g is the traction difference at a node ~1/N^2 from c, where it and its
+    k-derivative are O(1/N^2) while the LU's round-off in p and phi is
+    ~eps cond(A) ~ eps N^2: g(k) was noisy at ~1e-5 relative in k for
+    N = 1024 (Newton stalled there). ``refine`` adds one step of iterative
+    refinement with the residual in extended precision, which removes the
+    noise (k stable to ~1e-10 at N = 1024 and 2048).
+    """
+    sysm = system
+    slip, nn, j = sysm.slip_nodes, sysm.nn, sysm.stick_edge
+    a0s = sysm.a0.copy()
+    a0s[:, slip] += k * sysm.a1b
     rs = 1.0 / np.max(np.abs(a0s), axis=1)
     a0s *= rs[:, None]
     cs = 1.0 / np.max(np.abs(a0s), axis=0)
-    a0s = a0 * rs[:, None]
+    a0s = sysm.a0 * rs[:, None]
     a0s *= cs
-    a1s = a1b * rs[:, None]
-    a1s *= cs[slip_nodes]
-    bs = b * rs
-    # g is the traction difference at a node ~1/N^2 from c, where it and its
-    # k-derivative are O(1/N^2) while the LU's round-off in p and phi is
-    # ~eps cond(A) ~ eps N^2: g(k) was noisy at ~1e-5 relative in k for
-    # N = 1024 (Newton stalled there). One step of iterative refinement with
-    # the residual in extended precision removes the noise (k stable to
-    # ~1e-10 at N = 1024 and 2048).
-    refine = nn >= _REFINE_FROM_N
+    a1s = sysm.a1b * rs[:, None]
+    a1s *= cs[slip]
+    bs = sysm.b * rs
+    shape = sysm.shape
+    converged, it, stagnated = False, 0, 0.0
+    x = xk = None
+    step, prev_step = 0.0, np.inf
     for it in range(1, max_iter + 1):
         ak = a0s.copy()
-        ak[:, slip_nodes] += k * a1s
+        ak[:, slip] += k * a1s
         lu = linalg.lu_factor(ak, overwrite_a=True, check_finite=False)
-
-        def refined(rhs: np.ndarray) -> np.ndarray:
-            y = linalg.lu_solve(lu, rhs, check_finite=False)
-            if not refine:
-                return y
-            res = _extended_residual(a0s, a1s, slip_nodes, k, y, rhs)
-            return y + linalg.lu_solve(lu, res, check_finite=False)
-
-        x = cs * refined(bs)
+        x = cs * _refined_solve(lu, a0s, a1s, slip, k, bs, refine)
         g = shape[j] * x[nn + j] - k * x[j]
-        xk = -cs * refined(rs * (a1b @ x[slip_nodes]))
+        xk = -cs * _refined_solve(lu, a0s, a1s, slip, k, rs * (sysm.a1b @ x[slip]), refine)
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg
         k -= step
@@ -352,19 +358,144 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     # x at the final k from the last factorization: x(k) is smooth in k, so the
     # first-order update leaves an error of order step^2
     x = x - step * xk
-    g = shape[j] * x[nn + j] - k * x[j]
-    ax = a0 @ x + k * (a1b @ x[slip_nodes])
-    res = float(np.linalg.norm(ax - b) / np.linalg.norm(b) + abs(g) / max(abs(x[j]), 1e-300))
+    return NewtonResult(x, float(k), converged, it, stagnated)
+
+
+def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
+            k_guess: float | None = None, edge: float | None = None) -> float:
+    """Newton's starting k >= 0: the caller's guess, else a cheap estimate.
+
+    For n > 128 the Richardson extrapolation of the n = 64 and n = 128
+    solutions (error O(h^2)) puts Newton within ~1e-6 of the answer, so one
+    or two fine factorizations suffice; for smaller n the uncoupled closed
+    form (with |beta|) at the stick-edge node ``edge`` (default c/a). The
+    solver multiplies it by sign(beta).
+    """
+    if k_guess is not None:
+        return float(k_guess)
+    if n > 128:
+        k64 = solve_default(geometry, stick_ratio, 64, power=power).k
+        k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64).k
+        return k128 + (k128 - k64) / 3.0
+    return float(geometry.uncoupled_friction(stick_ratio if edge is None else edge))
+
+
+def _nodal_operators(geometry: Contact, mesh: Mesh,
+                     ops: tuple[np.ndarray, np.ndarray | None] | None
+                     ) -> tuple[np.ndarray, np.ndarray | None]:
+    """(P, Q) nodal operators on ``mesh``: given (checked, copied where edited) or built."""
+    nn, m = mesh.n, mesh.stick_index
+    if ops is None:
+        pw = nodal_operator_part(geometry, mesh, "normal")
+        qw = nodal_operator_part(geometry, mesh, "shear") if m > 0 else None
+    else:
+        copy = geometry.indenter.odd_shear  # the axis row is edited below
+        pw = np.array(ops[0], dtype=float, copy=copy)
+        qw = None if ops[1] is None else np.array(ops[1], dtype=float, copy=copy)
+        want = (3, nn + 1, nn + 1)
+        if pw.shape != want or (m > 0 and (qw is None or qw.shape != want)):
+            raise ValueError(f"precomputed operators must have shape {want} "
+                             f"(normal{' and shear' if m > 0 else ''})")
+    if geometry.indenter.odd_shear:  # du/dx on the axis: unused, NaN (see operators)
+        pw[2][0] = 0.0
+        if qw is not None:
+            qw[2][0] = 0.0
+    return pw, qw
+
+
+def _frictionless(geometry: Contact, mesh: Mesh, pw: np.ndarray) -> DiscreteSolution:
+    """c/a = 0: q = 0, one linear solve for p and delta."""
+    r, nn = mesh.nodes, mesh.n
+    rhs = -0.5 * r**2
+    a = np.hstack([pw[0][:, :-1], -np.ones((nn + 1, 1))])
+    x = linalg.solve(a, rhs)
+    res = np.linalg.norm(a @ x - rhs) / np.linalg.norm(rhs)
+    p = np.append(x[:nn], 0.0)
+    return DiscreteSolution(geometry, mesh, p, np.zeros(nn + 1), float(x[nn]), 0.0, True,
+                            float(res), 1, "", pw[1] @ p, pw[2] @ p)
+
+
+def _full_adhesion(geometry: Contact, mesh: Mesh, pw: np.ndarray,
+                   qw: np.ndarray) -> DiscreteSolution:
+    """c/a = 1: phi_1..phi_{N-1} free, phi_N = 0; one linear solve."""
+    r, nn, m = mesh.nodes, mesh.n, mesh.stick_index
+    qx = _tie_columns(geometry, qw)
+    stick_rows = np.arange(1, m + 1)
+    top = np.hstack([pw[0][:, :-1], -np.ones((nn + 1, 1)), qx[0], np.zeros((nn + 1, 1))])
+    bot = np.hstack([pw[1][stick_rows, :-1], np.zeros((m, 1)), qx[1][stick_rows],
+                     -(r[stick_rows] ** 2)[:, None]])
+    a = np.vstack([top, bot])
+    b = np.concatenate([-0.5 * r**2, np.zeros(m)])
+    x = linalg.solve(a, b)
+    res = np.linalg.norm(a @ x - b) / np.linalg.norm(b)
+    p = np.append(x[:nn], 0.0)
+    phi = _expand_phi(geometry, x[nn + 1:2 * nn])
+    return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), np.inf, True, float(res), 1,
+                            "", pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi)
+
+
+def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float = 2.0,
+                  k_guess: float | None = None, tol: float = 1e-9,
+                  max_iter: int = 30,
+                  ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> DiscreteSolution:
+    """Solve the self-similar partial-slip problem for a given stick ratio.
+
+    The stages: the mesh and its nodal operators; :func:`assemble` the
+    system A(k) x = b; :func:`start_k`; :func:`newton_on_k` (with the
+    extended-precision refinement from n = 384 on); the nodal solution and
+    its messages. c/a = 0 and 1 are single linear solves.
+
+    Parameters
+    ----------
+    geometry : Contact
+    stick_ratio : float
+        c/a in [0, 1]; 0 is frictionless (k = 0), 1 full adhesion (k = inf).
+    n : int
+        Number of elements across the half-contact.
+    power : float
+        Mesh grading exponent.
+    k_guess : float, optional
+        Starting value for Newton's method on k (default: see :func:`start_k`).
+    tol : float
+        Kept for compatibility; Newton's stopping rules are in
+        :func:`newton_on_k`.
+    max_iter : int
+        Newton iterations allowed.
+    ops : (P, Q), optional
+        Precomputed collocation operators ``operator_part(geometry, nodes,
+        nodes, "normal")`` and ``(..., "shear")`` on this mesh (Q may be None
+        when stick_ratio = 0); computed here when not given.
+
+    Returns
+    -------
+    DiscreteSolution
+    """
+    mesh = graded_mesh(n, stick_ratio, power=power)
+    r = mesh.nodes
+    nn, m = mesh.n, mesh.stick_index
+    pw, qw = _nodal_operators(geometry, mesh, ops)
+    if m == 0:
+        return _frictionless(geometry, mesh, pw)
+    if m == nn:
+        return _full_adhesion(geometry, mesh, pw, qw)
+
+    system = assemble(geometry, mesh, pw, qw)
+    sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
+    k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m])
+    newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)
+    x, k = newton.x, newton.k  # signed: q = k p in the slip zone
+    res = system.residual(x, k)
     p = np.append(x[:nn], 0.0)
     phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
-    phi[m:nn] = k * p[m:nn] / shape[m:nn]
+    phi[m:nn] = k * p[m:nn] / system.shape[m:nn]
+    converged = newton.converged
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
     nodal_u, nodal_du = pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi
     reversed_ok = False
     if np.isfinite(k) and k * sigma < 0.0:  # the root slips against sign(beta)
-        # physical when the slip opposes the shear at every slip node (e.g. a thin or
-        # nearly incompressible slab, whose surface moves outward under a rigid indenter)
-        q = shape * phi
+        # physical when consistent at every node (e.g. a thin or nearly incompressible
+        # slab, whose surface moves outward under a rigid indenter)
+        q = system.shape * phi
         fl = checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
                           2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
         reversed_ok = fl["consistent"]
@@ -381,8 +512,8 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         msg = "; ".join(x for x in (msg, f"the slip runs {way}, against the sign of the "
                                          f"half-space beta ({geometry.beta:.3g}): the body's "
                                          "coupling reverses it") if x)
-    elif stagnated:
+    elif newton.stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
-               f"(last step {stagnated:.1e} relative)")
+               f"(last step {newton.stagnated:.1e} relative)")
     return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
-                            it, msg, nodal_u, nodal_du)
+                            newton.iterations, msg, nodal_u, nodal_du)

@@ -1,8 +1,9 @@
 r"""Incremental stick-slip solver for an arbitrary normal load path (numerics only).
 
-The public entry point is :func:`contactlib.history.history`; this module holds
-the discretization, the per-step active-set solver and the post-processing of
-one state. It never touches the disk.
+The public entry point is :func:`contactlib.history` (module
+:mod:`contactlib.history_api`); this module holds the discretization, the
+per-step active-set solver and the post-processing of one state. It never
+touches the disk.
 
 Units and scalings
 ------------------

@@ -91,7 +91,7 @@ def _status(converged: Any, iterations: Any, residual: Any) -> str:
 
 
 def history_repr(res: Any) -> str:
-    """Short ``repr`` of a :class:`contactlib.history.HistoryResult`."""
+    """Short ``repr`` of a :class:`contactlib.history_api.HistoryResult`."""
     path = " -> ".join(f"{v:g}" for v in res.load_path[:8])
     if len(res.load_path) > 8:
         path += f" -> ... ({len(res.load_path)} levels)"

@@ -7,7 +7,7 @@ A scene (``config/config.yaml``, under ``scenes:``) is of one of two kinds:
   k; the method and n are then picked from the measured convergence, see
   :mod:`contactlib.accuracy`), the stick ratios to solve and the outputs it
   needs -> a :class:`Scene`;
-* ``history``: an incremental load path (:func:`contactlib.history.history`)
+* ``history``: an incremental load path (:func:`contactlib.history`)
   for one or several friction coefficients -> a :class:`HistoryScene`.
  This module turns one scene's mapping into a :class:`Scene`,
 validated with the library's own rules (the JSON schema of the workflow
@@ -35,6 +35,7 @@ from typing import Any, Mapping
 
 from . import accuracy, materials, validate
 from .geometry import Geometry
+from .indenter import indenter
 from .result import short_repr
 from .stages import OUTPUTS, parts_needed
 
@@ -125,7 +126,7 @@ class Scene:
         do (a node at c), so its key carries a digest of the stick ratios.
         """
         key = f"{self.geometry}-nu{self.nu!r}-{self.method}-n{self.n}"
-        if self.geometry == "cylinder":
+        if indenter(self.geometry).accepts_layer:
             key += f"-h{self.slab_ratio!r}"
         if self._indenter_spec():
             key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
@@ -277,7 +278,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
 
 @dataclass(frozen=True, repr=False)
 class HistoryScene:
-    """One validated scene of kind ``history`` (see :func:`contactlib.history.history`).
+    """One validated scene of kind ``history`` (see :func:`contactlib.history`).
 
     Attributes
     ----------
@@ -308,7 +309,7 @@ class HistoryScene:
     kind: str = "history"
 
     def run_spec(self, index: int) -> dict[str, Any]:
-        """Keyword arguments of :func:`contactlib.history.history` for friction ``index``."""
+        """Keyword arguments of :func:`contactlib.history` for friction ``index``."""
         return {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
                 "slab_ratio": self.slab_ratio}

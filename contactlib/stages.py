@@ -35,7 +35,7 @@ from .paper_method import PaperSolution, collocation_points, ring_operator, solv
 from .result import Solution
 
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases", "check_case",
-           "work_case", "profiles", "to_solution", "pack", "unpack", "decoupled_message"]
+           "work_case", "profiles", "to_solution", "decoupled_message"]
 
 PARTS = ("normal", "shear")
 OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
@@ -366,26 +366,3 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
         indenter_modulus_ratio=float(geometry.indenter.modulus_ratio),
         indenter_poisson_ratio=float(geometry.indenter_poisson_ratio),
         dundurs_beta=float(geometry.beta))
-
-
-# ----------------------------------------------------------------------------- (de)serialisation
-def pack(records: Sequence[Record]) -> dict[str, np.ndarray]:
-    """Flatten case records into named arrays (``"<i>/<field>"``) for :mod:`contactlib.io`."""
-    out: dict[str, np.ndarray] = {"count": np.array(len(records))}
-    for i, rec in enumerate(records):
-        for key, value in rec.items():
-            out[f"{i}/{key}"] = np.asarray(value)
-    return out
-
-
-def unpack(arrays: dict[str, np.ndarray]) -> list[Record]:
-    """Inverse of :func:`pack` (0-d arrays come back as Python scalars)."""
-    count = int(arrays["count"])
-    records: list[Record] = [{} for _ in range(count)]
-    for name, value in arrays.items():
-        if name == "count":
-            continue
-        i, key = name.split("/", 1)
-        value = np.asarray(value)
-        records[int(i)][key] = value.item() if value.ndim == 0 else value
-    return records

@@ -1,7 +1,7 @@
 """Key numbers of a set of scene datasets: one row a scene, for the report.
 
 Self-similar scenes (a ``stick_ratio`` sweep) and loading histories (a
-``step`` dimension, :mod:`contactlib.history`) both get a row;
+``step`` dimension, :func:`contactlib.history`) both get a row;
 :func:`key_numbers` gives the full, tidy rows (the CSV) and
 :func:`report_rows` a compact view of them (the HTML table of the report:
 fewer, merged columns, four significant digits).

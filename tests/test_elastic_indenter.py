@@ -23,7 +23,8 @@ import pytest
 from scipy import integrate
 
 from contactlib import solve, sweep
-from contactlib.history import history, history_to_dataset
+from contactlib import history
+from contactlib.io import history_to_dataset
 from contactlib.history_solver import SLIP_INWARD
 from contactlib.default_method import solve_default
 from contactlib.geometry import Geometry

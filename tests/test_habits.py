@@ -70,7 +70,7 @@ class FakeApi:
 
 
 class FakeHistory:
-    """Stands in for the contactlib.history module: records the call, then stops."""
+    """Stands in for the contactlib.history_api module: records the call, then stops."""
 
     MAX_STEPS, MIN_N, MAX_N = 100_000, 16, 2048
 

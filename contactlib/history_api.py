@@ -50,11 +50,13 @@ spanning few elements (c/a close to 1, large k) also needs a finer mesh, and
 elements.
 
 The numerics live in :mod:`contactlib.history_solver`; writing a dataset is
-``contactlib.io.write_dataset(history_to_dataset(result), path)``.
+``contactlib.io.write_dataset(contactlib.io.history_to_dataset(result), path)``.
+This module is ``contactlib.history_api`` so that the package's public
+function ``contactlib.history`` does not hide it.
 
 Examples
 --------
->>> from contactlib.history import history
+>>> from contactlib import history
 >>> res = history("sphere", 0.3, 0.15, [0, 1, 0], 10, n=60)
 >>> bool(res.converged.all()), float(res.load_ratio[10]), float(res.pressure[-1].max())
 (True, 1.0, 0.0)
@@ -64,7 +66,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 
@@ -73,8 +75,8 @@ from . import validate
 from .model import contact
 from .result import history_repr
 
-__all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS",
-           "DEFAULT_MAX_ERROR", "load_levels"]
+__all__ = ["history", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
+           "load_levels"]
 
 DEFAULT_N = validate.HISTORY_DEFAULT_N  # elements over [0, 1.2 a_max]: size a_max / 200
 MIN_N = validate.HISTORY_MIN_N
@@ -338,179 +340,3 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         max_error=max_error, indenter_modulus_ratio=float(ratio),
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
         dundurs_beta=float(model.beta))
-
-
-# ----------------------------------------------------------------------------- dataset
-def _attrs(long_name: str, units: str = "1", comment: str = "", **extra: Any) -> dict:
-    out: dict[str, Any] = {"units": units, "long_name": long_name}
-    if comment:
-        out["comment"] = comment
-    out.update(extra)
-    return out
-
-
-def history_to_dataset(result: HistoryResult):
-    """CF-annotated :class:`xarray.Dataset` of a history (dimensions ``step``, ``xi``).
-
-    Every variable has ``units`` (``"1"``: all dimensionless) and
-    ``long_name``; the element state is int8 with ``flag_values`` and
-    ``flag_meanings``; ``xi`` has CF ``bounds``. Global attributes: geometry,
-    poisson_ratio, elements, friction_coefficient, load_path, steps,
-    slab_ratio (cylinder), mesh_extent, contactlib_version, Conventions.
-    Write it with :func:`contactlib.io.write_dataset`.
-    """
-    import xarray as xr
-
-    import contactlib
-
-    from .io import CONVENTIONS
-
-    r = result
-    sphere = r.geometry == "sphere"
-    axis = "r" if sphere else "x"
-    work_scale = ("V R**2 / (E* a_max**5)" if sphere else
-                  "V R**2 / (E* a_max**4), V per unit length over both sides of the axis")
-    sd, ed = ("step",), ("step", "xi")
-    coords = {
-        "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),
-                 _attrs("load step", comment="0: unloaded initial state")),
-        "xi": ("xi", r.xi, _attrs(f"element midpoint over a_max ({axis}/a_max)",
-                                  comment="collocation points; a_max = frictionless "
-                                          "contact radius at load level 1",
-                                  bounds="xi_bounds")),
-    }
-    bool_flags = {"flag_values": np.array([0, 1], dtype=np.int8),
-                  "flag_meanings": "false true"}
-    data = {
-        "xi_bounds": (("xi", "nv"), r.xi_bounds, _attrs(f"element edges over a_max")),
-        "segment": (sd, r.segment.astype(np.int32),
-                    _attrs("load path segment", comment="1-based; 0 for the initial state")),
-        "load_ratio": (sd, r.load_ratio, _attrs("normal load over maximum load (P/P_max)")),
-        "contact_radius": (sd, r.contact_radius, _attrs(
-            "contact radius over a_max (a/a_max)",
-            comment="sub-element estimate from the gap outside the contact")),
-        "stick_ratio": (sd, r.stick_ratio, _attrs(
-            "central stick zone radius over contact radius (c/a)",
-            comment="run of stuck elements from the axis, edge refined from the traction "
-                    "deficit; NaN without contact")),
-        "indentation": (sd, r.indentation, _attrs(
-            "indentation (delta R / a_max**2)",
-            comment="half-plane: relative to the Flamant reference length a_max")),
-        "frictional_work": (sd, r.frictional_work, _attrs(
-            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time")),
-        "state": (ed, r.state.astype(np.int8), _attrs(
-            "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
-            flag_meanings=hs.STATE_MEANINGS,
-            comment="slip_inward: the body slips toward the axis (shear = +k p)")),
-        "pressure": (ed, r.pressure, _attrs(
-            "contact pressure over Hertz peak pressure at a_max",
-            comment="p / p0(a_max); positive in compression")),
-        "shear": (ed, r.shear, _attrs(
-            "shear traction over Hertz peak pressure at a_max",
-            comment="q / p0(a_max), traction on the elastic body, positive away from the axis")),
-        "tangential_displacement": (ed, r.tangential_displacement, _attrs(
-            "tangential surface displacement (u R / a_max**2)",
-            comment="positive away from the axis")),
-        "converged": (sd, r.converged.astype(bool), _attrs(
-            "step converged", comment="solver status; failed steps are kept", **bool_flags)),
-        "iterations": (sd, r.iterations.astype(np.int32), _attrs("active-set iterations")),
-        "residual_norm": (sd, r.residual_norm, _attrs(
-            "largest scaled violation of the contact and friction conditions")),
-    }
-    if r.resolved is not None:
-        coarse = ("from the same path on about half the elements with half the steps a "
-                  "segment, interpolated by path coordinate; NaN: not estimated")
-        data["stick_radius_error_estimate"] = (sd, r.stick_radius_error_estimate, _attrs(
-            "estimated absolute error of the central stick zone radius over a_max (dc/a_max)",
-            comment=coarse + "; at least half an element where the stick edge is an element "
-                             "edge; 0 without contact; the error of stick_ratio is this over "
-                             "contact_radius"))
-        data["work_error_estimate"] = (sd, r.work_error_estimate, _attrs(
-            "estimated relative error of the cumulative frictional work",
-            comment=coarse + "; 0 while no work is done"))
-        data["resolved"] = (sd, r.resolved.astype(bool), _attrs(
-            "step resolved to max_error",
-            comment=f"converged, slip zone absent or over at least {_MIN_SLIP_ELEMENTS} "
-                    f"elements, and both error estimates within the max_error attribute",
-            **bool_flags))
-    attrs: dict[str, Any] = {
-        "title": f"contactlib loading history ({r.geometry})",
-        "geometry": r.geometry,
-        "poisson_ratio": float(r.nu),
-        "elements": int(r.n),
-        "friction_coefficient": float(r.friction),
-        "load_path": np.asarray(r.load_path, dtype=float),
-        "steps": int(r.steps),
-    }
-    if not sphere:
-        attrs["slab_ratio"] = float(r.slab_ratio)
-    for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
-        attrs[name] = float(getattr(r, name))
-    attrs["mesh_extent"] = float(hs.MESH_EXTENT)
-    if r.resolved is not None:
-        attrs["max_error"] = float(r.max_error)
-    attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
-    if r.message:
-        attrs["message"] = r.message
-    attrs["contactlib_version"] = str(contactlib.__version__)
-    attrs["Conventions"] = CONVENTIONS
-    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
-
-
-def stack_histories(datasets: Sequence[Any]):
-    """Histories that differ only in k, stacked along a ``friction_coefficient`` dimension.
-
-    Parameters
-    ----------
-    datasets : sequence of xarray.Dataset
-        From :func:`history_to_dataset`, same geometry, nu, load path, steps,
-        n and slab ratio, distinct friction coefficients.
-
-    Returns
-    -------
-    xarray.Dataset
-        Every variable gains a leading ``friction_coefficient`` dimension
-        (coordinate: k, increasing); the ``friction_coefficient`` attribute
-        is dropped, ``message`` joins the members' notes.
-
-    Raises
-    ------
-    ValueError
-        When the histories differ in anything but k, or repeat a k.
-    """
-    import xarray as xr
-
-    items = list(datasets)
-    if not items:
-        raise ValueError("stack_histories needs at least one history dataset")
-    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
-    first = items[0].attrs
-    for ds in items[1:]:
-        for key in same:
-            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
-                                                   np.asarray(first[key])):
-                raise ValueError(f"histories to stack must share {key}: "
-                                 f"{first[key]!r} vs {ds.attrs.get(key)!r}")
-        if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):
-            raise ValueError("histories to stack must share the load path")
-    ks = np.array([float(ds.attrs["friction_coefficient"]) for ds in items])
-    if np.unique(ks).size != ks.size:
-        raise ValueError(f"histories to stack repeat a friction coefficient: {ks.tolist()}")
-    order = np.argsort(ks)
-    members = []
-    for i in order:
-        ds = items[i].copy()
-        ds.attrs = {k: v for k, v in ds.attrs.items()
-                    if k not in ("friction_coefficient", "message")}
-        members.append(ds)
-    shared = ("xi_bounds", "segment", "load_ratio")  # the path and the mesh: no k in them
-    varying = [v for v in members[0].data_vars if v not in shared]
-    out = xr.concat(members, dim="friction_coefficient", data_vars=varying, coords="minimal",
-                    compat="equals", combine_attrs="override")
-    out = out.assign_coords(friction_coefficient=ks[order])
-    out["friction_coefficient"].attrs = _attrs("Coulomb friction coefficient k")
-    notes = [f"k = {ks[i]:g}: {items[i].attrs['message']}" for i in order
-             if items[i].attrs.get("message")]
-    if notes:
-        out.attrs["message"] = "; ".join(notes)
-    return out

@@ -343,7 +343,8 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
     profile = profile or {}
     fl = flags or {}
     reversal = ""
-    if not fl.get("slip_direction_ok", True) and "history" not in rec["message"]:
+    if method == "default" and rec["converged"] and not fl.get("slip_direction_ok", True):
+        # (the paper's scheme is inconsistent on its own: no physical reading there)
         reversal = ("the slip runs along the shear somewhere in the slip zone: its direction "
                     "changes there, which one self-similar stick zone cannot hold; solve it "
                     "with history")

@@ -219,8 +219,8 @@ def indenter_material(modulus: Any = math.inf, poisson: Any = None) -> tuple[flo
     nu1 = indenter_nu(poisson)
     if ratio == math.inf:
         raise InputError("indenter_nu", "given with a finite indenter_modulus", poisson,
-                         f"indenter_nu = {poisson!r} needs an elastic indenter: give "
-                         "indenter_modulus (E1/E2) too (the default inf is rigid)")
+                         f"indenter_nu = {poisson!r} needs an elastic indenter: give its "
+                         "modulus ratio E1/E2 too (the default, inf, is rigid)")
     return ratio, nu1
 
 

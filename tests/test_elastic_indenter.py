@@ -25,7 +25,7 @@ from scipy import integrate
 from contactlib import solve, sweep
 from contactlib import history
 from contactlib.io import history_to_dataset
-from contactlib.history_solver import SLIP_INWARD
+from contactlib.history_solver import SLIP_INWARD, SLIP_OUTWARD
 from contactlib.default_method import solve_default
 from contactlib.geometry import Geometry
 from contactlib.model import contact
@@ -328,3 +328,15 @@ def test_scene_indenter_key():
             parse_scene("bad", {**base, **raw})
         assert str(err.value).startswith(f"scenes.bad.{key}: ")
         assert len(str(err.value).splitlines()) == 1
+
+
+@pytest.mark.parametrize("nu,slab", [(0.3, 1.0), (0.47, 0.2), (0.495, 0.05)])
+def test_history_solves_the_flagged_thin_slabs(nu, slab):
+    """The thin / nearly incompressible slabs the self-similar run flags: history converges,
+    the slab's surface slips outward against a negative shear, and the work only grows."""
+    res = history("cylinder", nu, 0.02, [0, 1], 40, n=120, slab_ratio=slab)
+    assert res.converged.all()
+    top = res.state[-1]
+    out = top == SLIP_OUTWARD
+    assert out.any() and np.all(res.shear[-1][out] < 0)
+    assert np.all(np.diff(res.frictional_work) >= 0) and res.frictional_work[-1] > 0

@@ -21,7 +21,6 @@ from .default_method import DiscreteSolution, solve_default
 from .geometry import Geometry
 from .paper_method import PaperSolution
 from .result import Solution
-from .theory import beta_of_nu, uncoupled_friction
 
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
            "output_grid"]
@@ -39,14 +38,16 @@ def output_grid() -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- validation
-def _validate_common(geometry, nu, n, method, slab_ratio) -> tuple[Geometry, int, str]:
+def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.inf,
+                     indenter_nu=None) -> tuple[Geometry, int, str]:
     """The problem's arguments, checked one by one with :mod:`contactlib.validate`."""
     geometry = validate.geometry(geometry)
     method = validate.method(method)
     nu = validate.nu(nu)
     slab = validate.slab_ratio(slab_ratio, geometry)
     n = validate.n(n, method)
-    return Geometry(geometry, nu, slab), n, method
+    ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
+    return Geometry(geometry, nu, slab, ratio, nu1), n, method
 
 
 # ----------------------------------------------------------------------------- post-processing
@@ -92,7 +93,7 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
         return d.k - friction
 
     gam = np.linspace(1e-4, 1 - 1e-9, 4001)
-    k_unc = uncoupled_friction(geometry.name, geometry.nu, gam)
+    k_unc = geometry.uncoupled_friction(gam)
     c0 = float(np.interp(friction, k_unc, gam))
     lo, hi = max(c0 * 0.8, 1e-3), min(c0 + 0.2 * (1 - c0), 1 - 1e-6)
     flo = f(lo)
@@ -117,7 +118,8 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
 # ----------------------------------------------------------------------------- public API
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
-          slab_ratio: float = 0.0, energy: bool = True) -> Solution:
+          slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
+          indenter_nu: float | None = None) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -140,6 +142,13 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     energy : bool
         Integrate the frictional work of the loading half-cycle (``True`` or
         ``False``; anything else is refused).
+    indenter_modulus : float
+        E1/E2, Young's modulus of the indenter over the body's, in (0, inf];
+        ``inf`` (default) is rigid. Scalings use the composite E*, 1/E* =
+        (1 - nu1^2)/E1 + (1 - nu^2)/E2.
+    indenter_nu : float, optional
+        Poisson's ratio of the indenter, in (-1, 0.5] (default: the body's;
+        refused with a rigid indenter).
 
     Returns
     -------
@@ -151,7 +160,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     ValueError
         For invalid input; the message names the argument.
     """
-    geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
+    geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
+                                       indenter_nu)
     energy = validate.flag("energy", energy)
     if (stick_ratio is None) == (friction is None):
         raise validate.InputError("stick_ratio", "given, or friction given", stick_ratio,
@@ -166,13 +176,13 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     k = validate.friction(friction)
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
-                     energy=energy)
+                     energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu)
     if k == 0.0:
         return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy)
-    if beta_of_nu(geom.nu) == 0.0:
+    if geom.decoupled:
         d = _discrete(geom, 0.0, n, method)
         sol = _finish(geom, d, method, n, energy,
-                      stages.decoupled_message() + "; nothing tends to slip, so the whole "
+                      stages.decoupled_message(geom) + "; nothing tends to slip, so the whole "
                       "contact sticks (c/a = 1)")
         sol.stick_ratio, sol.friction_coefficient = 1.0, k
         return sol
@@ -193,7 +203,9 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
           n: int | None = None, method: str = "default", slab_ratio: float = 0.0,
           energy: bool = True,
-          progress: Callable[[int, int], None] | None = None) -> list[Solution]:
+          progress: Callable[[int, int], None] | None = None,
+          indenter_modulus: float = math.inf,
+          indenter_nu: float | None = None) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -204,7 +216,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
 
     Parameters
     ----------
-    geometry, nu, n, method, slab_ratio, energy
+    geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu
         As for :func:`solve`.
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
@@ -217,7 +229,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     list of Solution
         One per stick ratio, all on the same ``xi`` grid.
     """
-    geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
+    geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
+                                       indenter_nu)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)
     ratios = validate.stick_ratios(stick_ratios, n)

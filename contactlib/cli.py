@@ -182,6 +182,34 @@ _METHOD_HELP = ("discretization: 'default' (ours), 'paper' (the paper's scheme a
                 "q_i = k p_i); default: %(default)s")
 
 
+def _indenter_text(sol: Any) -> str:
+    """``, E1/E2 = .., nu1 = .., beta = ..`` of an elastic indenter; empty when rigid."""
+    ratio = getattr(sol, "indenter_modulus_ratio", float("inf"))
+    if ratio == float("inf"):
+        return ""
+    return (f", E1/E2 = {ratio:g}, nu1 = {sol.indenter_poisson_ratio:g}, "
+            f"beta = {sol.dundurs_beta:.4g}")
+
+
+def _indenter_options(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument("--indenter-modulus", metavar="E1_OVER_E2", default="inf",
+                     help="Young's modulus of the indenter over that of the body, > 0 "
+                          "(inf = rigid); scalings use the composite modulus E*; "
+                          "default: inf")
+    sub.add_argument("--indenter-nu", metavar="NU1", default=None,
+                     help="Poisson's ratio of an elastic indenter, in (-1, 0.5] "
+                          "(needs --indenter-modulus; default: the body's)")
+
+
+def parse_indenter(modulus: str, nu: str | None) -> tuple[float, float | None]:
+    """(E1/E2, nu1) from ``--indenter-modulus`` and ``--indenter-nu`` (nu1 None: the body's)."""
+    try:
+        return validate.indenter_material(_float(modulus), None if nu is None else _float(nu))
+    except ValueError as exc:
+        name = getattr(exc, "name", None)
+        raise _usage(exc, modulus if name == "indenter_modulus" else nu) from None
+
+
 def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--geometry", required=True, metavar="{sphere,cylinder}",
                      help="rigid indenter: sphere (axisymmetric) or cylinder "
@@ -195,6 +223,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help="cylinder only: contact half-width over layer "
                           "thickness, a/h >= 0 (0 = half-plane); default: 0")
+    _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
                      default=None, help=_OUTPUT_HELP)
     sub.add_argument("--no-energy", action="store_true",
@@ -266,6 +295,7 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                       help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
                            "default: 0")
+    _indenter_options(hist)
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
@@ -290,6 +320,9 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
         "energy": not args.no_energy,
     }
+    ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
+    if ratio != float("inf"):  # the rigid default is the library's: keywords only when elastic
+        kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
@@ -304,7 +337,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
 def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     """Checked keyword arguments of :func:`contactlib.history`."""
     geometry = _check(validate.geometry, args.geometry, args.geometry)
-    return {
+    kwargs = {
         "geometry": geometry,
         "nu": parse_nu(args.nu),
         "friction": parse_friction(args.friction),
@@ -313,6 +346,10 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "n": None if args.n is None else parse_history_n(args.n),
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
     }
+    ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
+    if ratio != float("inf"):  # as for solve/sweep: keywords only when elastic
+        kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
+    return kwargs
 
 
 def _shorten(text: str, limit: int = 80) -> str:
@@ -368,7 +405,7 @@ def _head(sol: Solution) -> str:
     head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
     if _indenter(sol.geometry).accepts_layer:
         head += f", a/h = {sol.slab_ratio:g}"
-    return head
+    return head + _indenter_text(sol)
 
 
 def format_summary(sol: Solution) -> str:
@@ -419,6 +456,7 @@ def format_history(res: Any) -> str:
             f"{res.steps} steps per segment")
     if ind.accepts_layer:
         head += f", a_max/h = {res.slab_ratio:g}"
+    head += _indenter_text(res)
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
                   f"{'V segment':>11} {'V total':>11}"]
     seg_work = res.segment_work()

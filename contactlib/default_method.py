@@ -15,6 +15,18 @@ Discretization (units E* = a = R = 1)
 With k given, these equations are square; both conditions at c make the
 shear continuous and bounded there.
 
+Direction of slip: the slip-zone condition is q = sigma k p with sigma =
+sign(beta) (:attr:`~contactlib.model.Contact.slip_sign`): inward slip and
+q = k p for beta > 0 (every rigid indenter), outward slip and q = -k p for
+beta < 0 (a compliant, compressible indenter on a stiffer, less
+compressible body). Newton's method runs on the signed ratio sigma k
+(:func:`newton_on_k` is sign-blind); the solution reports k >= 0. A root of
+the other sign is kept when the solution is consistent at the nodes (a thin
+or nearly incompressible slab, whose surface moves outward under a rigid
+indenter); otherwise the slip would change direction within the slip zone,
+which one self-similar stick zone cannot hold, and the message says to use
+the history solver.
+
 What fixes k
 ------------
 In the exact self-similar problem the traction difference t = q - k p in the
@@ -41,6 +53,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import linalg
 
+from . import checks
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
@@ -350,12 +363,13 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
 
 def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
             k_guess: float | None = None, edge: float | None = None) -> float:
-    """Newton's starting k: the caller's guess, else a cheap estimate.
+    """Newton's starting k >= 0: the caller's guess, else a cheap estimate.
 
     For n > 128 the Richardson extrapolation of the n = 64 and n = 128
     solutions (error O(h^2)) puts Newton within ~1e-6 of the answer, so one
     or two fine factorizations suffice; for smaller n the uncoupled closed
-    form at the stick-edge node ``edge`` (default c/a).
+    form (with |beta|) at the stick-edge node ``edge`` (default c/a). The
+    solver multiplies it by sign(beta).
     """
     if k_guess is not None:
         return float(k_guess)
@@ -466,23 +480,40 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         return _full_adhesion(geometry, mesh, pw, qw)
 
     system = assemble(geometry, mesh, pw, qw)
-    k0 = start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m])
+    sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
+    k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m])
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)
-    x, k = newton.x, newton.k
+    x, k = newton.x, newton.k  # signed: q = k p in the slip zone
     res = system.residual(x, k)
     p = np.append(x[:nn], 0.0)
     phi = _expand_phi(geometry, np.concatenate([x[nn + 1:nn + m], np.zeros(nn - m)]))
     phi[m:nn] = k * p[m:nn] / system.shape[m:nn]
     converged = newton.converged
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
-    if not (np.isfinite(k) and k > 0.0):  # a partial-slip k is positive (inward slip)
+    nodal_u, nodal_du = pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi
+    reversed_ok = False
+    if np.isfinite(k) and k * sigma < 0.0:  # the root slips against sign(beta)
+        # physical when consistent at every node (e.g. a thin or nearly incompressible
+        # slab, whose surface moves outward under a rigid indenter)
+        q = system.shape * phi
+        fl = checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
+                          2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
+        reversed_ok = fl["consistent"]
+    way = "outward (q = -k p)" if k < 0 else "inward (q = k p)"
+    k = abs(k) if reversed_ok else sigma * k  # report k >= 0
+    if not (np.isfinite(k) and k > 0.0):
         converged = False
-        msg = (f"Newton on k ended at k = {k:.4g} <= 0: no physical root on this mesh (a stick "
-               f"zone of c/a = {stick_ratio:.3g} below what n = {n} resolves, or a regime "
-               "where the slip reverses); not a solution")
+        msg = (f"Newton on k ended at a root with slip {way}, against the sign of beta "
+               f"({geometry.beta:.3g}), where the slip does not oppose the shear: either a "
+               f"stick zone of c/a = {stick_ratio:.3g} below what n = {n} resolves, or the "
+               "slip direction changes within the slip zone, which one self-similar stick "
+               "zone cannot hold: solve it with history; not a solution")
+    elif reversed_ok:
+        msg = "; ".join(x for x in (msg, f"the slip runs {way}, against the sign of the "
+                                         f"half-space beta ({geometry.beta:.3g}): the body's "
+                                         "coupling reverses it") if x)
     elif newton.stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
                f"(last step {newton.stagnated:.1e} relative)")
-    return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), k, converged, res,
-                            newton.iterations, msg, pw[1] @ p + qw[1] @ phi,
-                            pw[2] @ p + qw[2] @ phi)
+    return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
+                            newton.iterations, msg, nodal_u, nodal_du)

@@ -9,6 +9,7 @@ cylinder is in :mod:`contactlib.indenter`.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from .body import ElasticBody
@@ -20,15 +21,19 @@ __all__ = ["Geometry"]
 
 @dataclass(frozen=True)
 class Geometry(Contact):
-    """A rigid sphere or cylinder on an elastic body (units E* = a = R = 1).
+    """A sphere or cylinder on an elastic body (units E* = a = R = 1, E* composite).
 
     Parameters
     ----------
     name : {"sphere", "cylinder"}
     nu : float
-        Poisson's ratio.
+        Poisson's ratio of the body.
     slab_ratio : float
         a/h of the slab under the cylinder (0: half-plane).
+    indenter_modulus : float
+        E1/E2 of the indenter over the body (``inf``: rigid, the default).
+    indenter_nu : float, optional
+        Poisson's ratio of the indenter (None: the body's).
     """
 
     indenter: Indenter = field(init=False, repr=False, compare=False)
@@ -36,9 +41,12 @@ class Geometry(Contact):
     name: str
     nu: float
     slab_ratio: float = 0.0
+    indenter_modulus: float = math.inf
+    indenter_nu: float | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "indenter", indenter(self.name))
+        object.__setattr__(self, "indenter",
+                           indenter(self.name, self.indenter_modulus, self.indenter_nu))
         object.__setattr__(self, "body", ElasticBody(self.nu, self.slab_ratio))
 
     @property

@@ -158,6 +158,9 @@ class HistoryResult:
     work_error_estimate: np.ndarray | None = None
     resolved: np.ndarray | None = None
     max_error: float = DEFAULT_MAX_ERROR
+    indenter_modulus_ratio: float = math.inf  # E1/E2 (inf: rigid)
+    indenter_poisson_ratio: float = math.nan  # nu1 (the body's when rigid)
+    dundurs_beta: float = math.nan  # beta of the pair (< 0: slip outward while loading)
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -191,7 +194,9 @@ def load_levels(load_path: Sequence[float], steps: int) -> tuple[np.ndarray, np.
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
             steps: int, *, n: int | None = None, slab_ratio: float = 0.0,
             progress: Callable[[int, int], None] | None = None,
-            max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True) -> HistoryResult:
+            max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
+            indenter_modulus: float = math.inf,
+            indenter_nu: float | None = None) -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
@@ -222,6 +227,10 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         Estimate the errors from an embedded coarser run (default). If False
         the estimates are NaN and ``resolved`` reflects only convergence and
         the resolution of the slip zone.
+    indenter_modulus, indenter_nu : float
+        An elastic indenter, as for :func:`contactlib.solve` (E1/E2, default
+        ``inf``: rigid; nu1, default the body's). Scalings use the composite
+        E*; slip and shear take either sign.
 
     Returns
     -------
@@ -267,8 +276,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
+    ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
 
-    model = contact(geometry, nu, slab)
+    model = contact(geometry, nu, slab, ratio, nu1)
     ops = hs.build_operators(model, n)
     levels, segment = load_levels(levels_in, steps)
     raw = hs.run_history(ops, k, levels, progress=progress)
@@ -314,8 +324,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         notes.append(f"{np.count_nonzero(~resolved[1:])} of {levels.size - 1} steps are flagged "
                      f"not resolved ({'; '.join(why) or 'not converged'}): use a larger n "
                      f"and more steps")
-    if nu == 0.5 and k > 0:
-        notes.append("nu = 0.5: the normal and tangential problems decouple; no shear arises")
+    if model.decoupled and k > 0:
+        cause = "nu = 0.5" if model.indenter.rigid else "beta = 0"
+        notes.append(f"{cause}: the normal and tangential problems decouple; no shear arises")
     return HistoryResult(
         geometry=geometry, nu=nu, friction=k, load_path=levels_in, steps=steps, n=n,
         slab_ratio=slab, xi=ops.mid.copy(),
@@ -326,4 +337,6 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         tangential_displacement=raw.u, converged=raw.converged,
         iterations=raw.iterations, residual_norm=raw.residual, message="; ".join(notes),
         stick_radius_error_estimate=err_c, work_error_estimate=err_w, resolved=resolved,
-        max_error=max_error)
+        max_error=max_error, indenter_modulus_ratio=float(ratio),
+        indenter_poisson_ratio=float(model.indenter_poisson_ratio),
+        dundurs_beta=float(model.beta))

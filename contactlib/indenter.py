@@ -14,7 +14,8 @@ that a traction is in units of E* a/R, a displacement in a^2/R, a load in
 E* a^3/R (sphere) or E* a^2/R per unit length (cylinder), and a frictional
 work in E* a^5/R^2 (sphere) or E* a^4/R^2 per unit length (cylinder). The
 incremental solver uses the same formulas with ``a_max`` for ``a``. E* is
-the modulus of the body (rigid indenter), E/(1 - nu^2).
+the composite modulus of the pair, 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2:
+the body's E/(1 - nu^2) under a rigid indenter (see :mod:`contactlib.model`).
 
 Elements
 --------
@@ -36,8 +37,9 @@ Examples
 
 from __future__ import annotations
 
+import math
 from abc import ABC, abstractmethod
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
@@ -56,7 +58,16 @@ Displacements = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 @dataclass(frozen=True)
 class Indenter(ABC):
-    """A rigid round indenter (abstract): the shape and its element measures.
+    """A round indenter (abstract): the shape, its element measures and its material.
+
+    Parameters
+    ----------
+    modulus_ratio : float
+        E1/E2, Young's modulus of the indenter over that of the body, in
+        (0, inf]; ``inf`` (default) is a rigid indenter.
+    nu : float or None
+        Poisson's ratio nu1 of the indenter, in (-1, 0.5]; None (default)
+        takes the body's. Irrelevant for a rigid indenter.
 
     Attributes
     ----------
@@ -107,6 +118,14 @@ class Indenter(ABC):
     work_weight_power: ClassVar[int]
     odd_shear: ClassVar[bool]
     paper_axis_shear_ratio: ClassVar[float]
+
+    modulus_ratio: float = math.inf
+    nu: float | None = None
+
+    @property
+    def rigid(self) -> bool:
+        """E1/E2 = inf: the indenter does not deform."""
+        return self.modulus_ratio == math.inf
 
     # ------------------------------------------------------------------ kernels
     @abstractmethod
@@ -352,8 +371,16 @@ if tuple(_INDENTERS) != GEOMETRIES:  # pragma: no cover - a programming error
                       f"{GEOMETRIES}")
 
 
-def indenter(name: str) -> Indenter:
-    """The indenter of a geometry name.
+def indenter(name: str, modulus_ratio: float = math.inf, nu: float | None = None) -> Indenter:
+    """The indenter of a geometry name, rigid or of a given material.
+
+    Parameters
+    ----------
+    name : {"sphere", "cylinder"}
+    modulus_ratio : float
+        E1/E2 of the indenter over the body (``inf``: rigid, the default).
+    nu : float, optional
+        Poisson's ratio of the indenter (None: the body's).
 
     Raises
     ------
@@ -361,7 +388,11 @@ def indenter(name: str) -> Indenter:
         For a name that is not one of :data:`GEOMETRIES`.
     """
     try:
-        return _INDENTERS[name]
+        rigid = _INDENTERS[name]
     except (KeyError, TypeError):
         raise ValueError(f"geometry must be one of {', '.join(GEOMETRIES)}, "
                          f"got {name!r}") from None
+    if modulus_ratio == math.inf and nu is None:
+        return rigid
+    return replace(rigid, modulus_ratio=float(modulus_ratio),
+                   nu=None if nu is None else float(nu))

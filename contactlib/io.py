@@ -125,7 +125,8 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
     "converged": ("solver converged", "solver status; failed cases are kept"),
 }
 
-_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio")
+_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "indenter_modulus_ratio",
+                  "indenter_poisson_ratio")
 
 
 def version() -> str:
@@ -321,6 +322,8 @@ from contactlib.result import Solution
     }
     if ind.accepts_layer:
         attrs["slab_ratio"] = float(first.slab_ratio)
+    for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
+        attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = version()
     attrs["Conventions"] = CONVENTIONS
 
@@ -531,6 +534,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     }
     if ind.accepts_layer:
         attrs["slab_ratio"] = float(r.slab_ratio)
+    for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
+        attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(hs.MESH_EXTENT)
     if r.resolved is not None:
         attrs["max_error"] = float(r.max_error)

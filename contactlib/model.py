@@ -12,8 +12,28 @@ Units and scalings
 ------------------
 E* = R = 1, lengths in units of the contact radius a (a_max in the
 incremental solver): see :mod:`contactlib.indenter` and
-:mod:`contactlib.body`. E* is the modulus the scalings use: for the rigid
-indenter of today the body's E/(1 - nu^2).
+:mod:`contactlib.body`. E* is the composite modulus every scaling uses,
+
+    1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,
+
+(1: indenter, 2: body), the body's E2/(1 - nu2^2) under a rigid indenter.
+
+Two elastic bodies
+------------------
+The kernels of :mod:`contactlib.body` are in units of each body's own
+E*_i = E_i/(1 - nu_i^2); in units of the composite E* they carry the weights
+c_i = E*/E*_i (c1 + c2 = 1). The gap closes by the normal displacements of
+both bodies, and the relative tangential displacement is that of the body
+minus that of the indenter, which carries the opposite shear (-q). So
+
+* pressure: (c2 w_b + c1 w_i, c2 u_b - c1 u_i, c2 du_b - c1 du_i),
+* shear:    (c2 w_b - c1 w_i, c2 u_b + c1 u_i, c2 du_b + c1 du_i),
+
+with ``_i`` the indenter material's kernels of the same basic load (a
+half-space under rings, a half-plane under strips, also over a slab body).
+On a half-space the coupling terms combine to Dundurs' beta = c2 beta2 -
+c1 beta1 (beta_i = (1 - 2 nu_i)/(2 (1 - nu_i))), positive for a rigid
+indenter; no case is special.
 
 Examples
 --------
@@ -28,6 +48,7 @@ True
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,7 +66,8 @@ class Contact:
     Parameters
     ----------
     indenter : Indenter
-        The rigid sphere or cylinder.
+        The sphere or cylinder, rigid or with its material
+        (``modulus_ratio`` E1/E2 and ``nu``).
     body : ElasticBody
         The body under it (its ``slab_ratio`` in units of the contact radius).
 
@@ -61,20 +83,64 @@ class Contact:
     indenter: Indenter
     body: ElasticBody
 
+    # ------------------------------------------------------------------ materials
+    @property
+    def indenter_poisson_ratio(self) -> float:
+        """Poisson's ratio of the indenter (the body's when the indenter gives none)."""
+        return self.body.nu if self.indenter.nu is None else float(self.indenter.nu)
+
+    @property
+    def indenter_body(self) -> ElasticBody:
+        """The indenter's material as an unbounded body (half-space / half-plane)."""
+        return ElasticBody(self.indenter_poisson_ratio)
+
+    @property
+    def compliance_weights(self) -> tuple[float, float]:
+        """(c1, c2) = (E*/E*_1, E*/E*_2): the shares of the compliance, c1 + c2 = 1.
+
+        E*_i = E_i/(1 - nu_i^2); a rigid indenter gives (0, 1) exactly.
+        """
+        ratio = self.indenter.modulus_ratio
+        if ratio == math.inf:
+            return 0.0, 1.0
+        a1 = (1.0 - self.indenter_poisson_ratio**2) / ratio  # E2/E*_1
+        a2 = 1.0 - self.body.nu**2  # E2/E*_2
+        return a1 / (a1 + a2), a2 / (a1 + a2)
+
+    @property
+    def body_modulus(self) -> float:
+        """E*_2/E* = 1/c2: the body's own E2/(1 - nu2^2) in units of the composite E*."""
+        return 1.0 / self.compliance_weights[1]
+
     # ------------------------------------------------------------------ kernels
+    def _summed(self, kernel, x: np.ndarray, s: np.ndarray, coupling: float,
+                **kw) -> Displacements:
+        """c2 (body) + c1 (indenter) kernels; ``coupling`` -1 flips the indenter's u, du."""
+        wb, ub, dub = kernel(self.body, x, s, **kw)
+        c1, c2 = self.compliance_weights
+        if c1 == 0.0:  # rigid indenter: the body alone, bit for bit
+            return wb, ub, dub
+        wi, ui, dui = kernel(self.indenter_body, x, s, **kw)
+        direct = -coupling  # the w term has the opposite sign to the u terms
+        return (c2 * wb + direct * c1 * wi, c2 * ub + coupling * c1 * ui,
+                c2 * dub + coupling * c1 * dui)
+
     def pressure_kernel(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Displacements:
         """(w, u, du/dx) of a unit uniform pressure on a disc / symmetric strip of radius s.
 
+        Both bodies' compliances summed (module notes): w the closing of the
+        gap, u the body's tangential displacement relative to the indenter.
         ``with_w=False`` may skip w (zeros) where that is cheaper (the disc).
         """
-        return self.indenter.pressure_kernel(self.body, x, s, with_w=with_w)
+        return self._summed(self.indenter.pressure_kernel, x, s, -1.0, with_w=with_w)
 
     def shear_kernel(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Displacements:
         """(w, u, du/dx) of the unit shear element: q = r on a disc, or +-1 on a strip.
 
+        q acts on the body and -q on the indenter (module notes).
         ``with_du=False`` may skip du/dx (NaN) where that is cheaper (the disc).
         """
-        return self.indenter.shear_kernel(self.body, x, s, with_du=with_du)
+        return self._summed(self.indenter.shear_kernel, x, s, 1.0, with_du=with_du)
 
     def length_degrees(self, part: str) -> np.ndarray | None:
         """Homogeneity degrees of the element integrals (see :meth:`Indenter.length_degrees`)."""
@@ -83,17 +149,34 @@ class Contact:
     # ------------------------------------------------------------------ coupling
     @property
     def beta(self) -> float:
-        """Dundurs' beta of the pair (rigid indenter: the body's (1 - 2 nu)/(2 (1 - nu)))."""
-        return self.body.beta
+        """Dundurs' beta of the pair, c2 beta2 - c1 beta1.
+
+        Sign: a rigid indenter on a body of Poisson's ratio nu gives
+        (1 - 2 nu)/(2 (1 - nu)) > 0 (inward slip); beta < 0 slips outward.
+        """
+        c1, c2 = self.compliance_weights
+        if c1 == 0.0:
+            return self.body.beta
+        return c2 * self.body.beta - c1 * self.indenter_body.beta
 
     @property
     def decoupled(self) -> bool:
-        """beta = 0: the normal and tangential problems decouple (no shear arises)."""
-        return self.beta == 0.0
+        """beta = 0 (to round-off): the normal and tangential problems decouple."""
+        c1, c2 = self.compliance_weights
+        scale = abs(c2 * self.body.beta) + abs(c1 * self.indenter_body.beta)
+        return bool(abs(self.beta) <= 8.0 * np.finfo(float).eps * scale)
+
+    @property
+    def slip_sign(self) -> float:
+        """Sign of the slip-zone shear q = slip_sign k p: +1 inward slip (beta > 0), -1 outward.
+
+        0 when decoupled.
+        """
+        return 0.0 if self.decoupled else float(np.sign(self.beta))
 
     def uncoupled_friction(self, gamma: np.ndarray) -> np.ndarray:
-        """k of the uncoupled limit at stick ratio ``gamma`` (see the indenter's formula)."""
-        return self.indenter.uncoupled_friction(self.beta, gamma)
+        """k >= 0 of the uncoupled limit at stick ratio ``gamma``, with |beta| (indenter's formula)."""
+        return self.indenter.uncoupled_friction(abs(self.beta), gamma)
 
     # ------------------------------------------------------------------ Hertz and measures
     @property
@@ -125,8 +208,9 @@ class Contact:
         return self.indenter.work_weight_power
 
 
-def contact(geometry: str, nu: float, slab_ratio: float = 0.0) -> Contact:
-    """The model of the public interface's names: a rigid indenter on an elastic body.
+def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
+            indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> Contact:
+    """The model of the public interface's names: an indenter on an elastic body.
 
     Parameters
     ----------
@@ -135,5 +219,9 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0) -> Contact:
         Poisson's ratio of the body.
     slab_ratio : float
         a/h of a layer on a smooth rigid base (0: half-space or half-plane).
+    indenter_modulus : float
+        E1/E2 of the indenter over the body (``inf``: rigid, the default).
+    indenter_nu : float, optional
+        Poisson's ratio of the indenter (None: the body's).
     """
-    return Contact(indenter(geometry), ElasticBody(nu, slab_ratio))
+    return Contact(indenter(geometry, indenter_modulus, indenter_nu), ElasticBody(nu, slab_ratio))

@@ -198,7 +198,10 @@ def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant"
         jac[-1, :2 * n] = eq12
         return jac
 
-    x = np.concatenate([linalg.solve(w_p, rhs9), np.ones(n), [0.1]])  # paper's trial vector
+    # paper's trial vector; k is signed here (q = k p in the slip zone: k < 0 for
+    # beta < 0, outward slip) and reported >= 0
+    sigma = -1.0 if geometry.slip_sign < 0 else 1.0
+    x = np.concatenate([linalg.solve(w_p, rhs9), sigma * np.ones(n), [0.1 * sigma]])
     converged, it = False, 0
     for it in range(1, max_iter + 1):
         f = residual(x)
@@ -209,5 +212,5 @@ def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant"
             break
     res = float(np.linalg.norm(residual(x)) / np.linalg.norm(rhs9))
     msg = "" if converged else f"Newton did not converge in {max_iter} iterations"
-    return PaperSolution(geometry, mesh, x[:n], x[n:2 * n], float(x[-1]), converged, res, it,
-                         msg)
+    return PaperSolution(geometry, mesh, x[:n], x[n:2 * n], float(sigma * x[-1]), converged,
+                         res, it, msg)

@@ -165,6 +165,12 @@ class Solution:
     iterations : int
     message : str
         Human-readable note (e.g. why a case is degenerate).
+    indenter_modulus_ratio : float
+        E1/E2 of the indenter over the body (``inf``: rigid).
+    indenter_poisson_ratio : float
+        nu1 of the indenter (the body's nu for a rigid one, where it plays no role).
+    dundurs_beta : float
+        Dundurs' beta of the pair (> 0: slip inward, q = k p; < 0: outward, q = -k p).
     """
 
     geometry: str
@@ -188,11 +194,17 @@ class Solution:
     iterations: int = 0
     message: str = ""
     extra: dict = field(default_factory=dict)
+    indenter_modulus_ratio: float = float("inf")
+    indenter_poisson_ratio: float = float("nan")
+    dundurs_beta: float = float("nan")
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:g}, method = {self.method}, n = {self.n}"
         if indenter(self.geometry).accepts_layer:
             head += f", a/h = {self.slab_ratio:g}"
+        if self.indenter_modulus_ratio != float("inf"):
+            head += (f", E1/E2 = {self.indenter_modulus_ratio:g}, nu1 = "
+                     f"{self.indenter_poisson_ratio:g}, beta = {self.dundurs_beta:.4g}")
         items: list[tuple[str, Any]] = [
             ("stick_ratio", self.stick_ratio),
             ("friction_coefficient", self.friction_coefficient),

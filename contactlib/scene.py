@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from . import accuracy, validate
+from . import accuracy, materials, validate
 from .geometry import Geometry
 from .indenter import indenter
 from .result import short_repr
@@ -43,7 +44,7 @@ __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "pars
 
 KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "stick_ratios", "slab_ratio",
-         "outputs")
+         "outputs", "indenter", "body")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio")
 
@@ -98,10 +99,19 @@ class Scene:
     hash: str
     tolerance: float | None = None
     kind: str = "self-similar"
+    indenter_modulus: float = float("inf")
+    indenter_nu: float | None = None
 
     @property
     def geometry_object(self) -> Geometry:
-        return Geometry(self.geometry, self.nu, self.slab_ratio)
+        return Geometry(self.geometry, self.nu, self.slab_ratio, self.indenter_modulus,
+                        self.indenter_nu)
+
+    def _indenter_spec(self) -> dict[str, Any]:
+        """The elastic indenter's keywords ({} for the rigid one, whose keys stay as before)."""
+        if self.indenter_modulus == float("inf"):
+            return {}
+        return {"indenter_modulus": self.indenter_modulus, "indenter_nu": self.indenter_nu}
 
     @property
     def parts(self) -> tuple[str, ...]:
@@ -118,6 +128,8 @@ class Scene:
         key = f"{self.geometry}-nu{self.nu!r}-{self.method}-n{self.n}"
         if indenter(self.geometry).accepts_layer:
             key += f"-h{self.slab_ratio!r}"
+        if self._indenter_spec():
+            key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
         if self.method == "default":
             key += "-c" + _ratio_digest(self.solved_ratios)
         return key
@@ -125,7 +137,7 @@ class Scene:
     @property
     def solved_ratios(self) -> tuple[float, ...]:
         """The stick ratios whose meshes are needed (nu = 0.5 reduces all to 0)."""
-        if "shear" not in self.parts and self.geometry_object.nu == 0.5:
+        if "shear" not in self.parts and self.geometry_object.decoupled:
             return (0.0,)
         return tuple(sorted(set(self.stick_ratios)))
 
@@ -149,7 +161,8 @@ class Scene:
     def influence_spec(self) -> dict[str, Any]:
         """What the influence stage needs (equal for every scene with the same key)."""
         return {"geometry": self.geometry, "nu": self.nu, "method": self.method, "n": self.n,
-                "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios)}
+                "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios),
+                **self._indenter_spec()}
 
 
 class ConfigError(ValueError):
@@ -234,6 +247,14 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
+    ind = (math.inf, None)
+    if "indenter" in raw or "body" in raw:
+        try:
+            ind = materials.scene_indenter(raw.get("indenter"), raw.get("body"), nu)
+        except validate.InputError as exc:  # the key from the rule's name, not its text
+            key = {"indenter_modulus": "indenter.modulus_ratio",
+                   "indenter_nu": "indenter.nu"}.get(exc.name, exc.name)
+            bad.add(key, str(exc))
     n = None
     if None not in (geometry, method, nu, slab):  # ... then what depends on several keys
         slab = bad.check("slab_ratio", validate.slab_ratio, slab, geometry)
@@ -248,11 +269,11 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                     break
     bad.raise_any()
     if tolerance is not None:
-        method, n = accuracy.plan(Geometry(geometry, nu, slab), ratios, tolerance)
+        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind), ratios, tolerance)
     return Scene(name=name, geometry=geometry, nu=nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
-                 tolerance=tolerance)
+                 tolerance=tolerance, indenter_modulus=ind[0], indenter_nu=ind[1])
 
 
 @dataclass(frozen=True, repr=False)

@@ -43,9 +43,12 @@ OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
 Record = dict[str, Any]
 
 
-def decoupled_message() -> str:
-    """The note attached to every nu = 0.5 case."""
-    return ("nu = 0.5: the normal and tangential problems decouple; no shear arises (q = 0) "
+def decoupled_message(geometry: Contact | None = None) -> str:
+    """The note attached to every decoupled (beta = 0) case: nu = 0.5, or identical materials."""
+    cause = ("nu = 0.5" if geometry is None or geometry.indenter.rigid else
+             f"beta = 0 (E1/E2 = {geometry.indenter.modulus_ratio:g}, "
+             f"nu1 = {geometry.indenter_poisson_ratio:g}, nu2 = {geometry.body.nu:g})")
+    return (f"{cause}: the normal and tangential problems decouple; no shear arises (q = 0) "
             "and every stick ratio is consistent with any k >= 0")
 
 
@@ -249,7 +252,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
         if solved != c:  # nu = 0.5: Hertz for every stick ratio, k undetermined
             rec["stick_ratio"] = c
             rec["k"] = np.inf if c == 1.0 else 0.0
-            rec["message"] = decoupled_message()
+            rec["message"] = decoupled_message(geometry)
         yield rec
 
 
@@ -339,7 +342,13 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
     """Assemble a :class:`Solution`; profiles not computed are left as None."""
     profile = profile or {}
     fl = flags or {}
-    msg = "; ".join(x for x in (message, rec["message"]) if x)
+    reversal = ""
+    if method == "default" and rec["converged"] and not fl.get("slip_direction_ok", True):
+        # (the paper's scheme is inconsistent on its own: no physical reading there)
+        reversal = ("the slip runs along the shear somewhere in the slip zone: its direction "
+                    "changes there, which one self-similar stick zone cannot hold; solve it "
+                    "with history")
+    msg = "; ".join(x for x in (message, rec["message"], reversal) if x)
     return Solution(
         geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,
         slab_ratio=geometry.body.slab_ratio, stick_ratio=float(rec["stick_ratio"]),
@@ -354,4 +363,7 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
         iterations=int(rec["iterations"]), message=msg,
         extra={"stick_violation": fl.get("stick_violation", float("nan")),
                "slip_violation": fl.get("slip_violation", float("nan")),
-               "indentation": float(rec["delta"])})
+               "indentation": float(rec["delta"])},
+        indenter_modulus_ratio=float(geometry.indenter.modulus_ratio),
+        indenter_poisson_ratio=float(geometry.indenter_poisson_ratio),
+        dundurs_beta=float(geometry.beta))

@@ -35,7 +35,8 @@ __all__ = [
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
-    "MIN_TOLERANCE", "MAX_TOLERANCE",
+    "MIN_TOLERANCE", "MAX_TOLERANCE", "indenter_modulus", "indenter_nu", "indenter_material",
+    "indenter_mapping",
 ]
 
 # ----------------------------------------------------------------------------- limits
@@ -192,6 +193,44 @@ def slab_ratio(value: Any, geometry_name: str | None = None) -> float:
         raise InputError("slab_ratio", "0 for a sphere", value,
                          f"slab_ratio applies to the cylinder only, got {value!r} for a sphere")
     return v
+
+
+def indenter_modulus(value: Any) -> float:
+    """E1/E2, Young's modulus of the indenter over the body's, in (0, inf]; inf is rigid."""
+    if isinstance(value, Real) and not _is_bool(value) and value == math.inf:
+        return math.inf
+    return number("indenter_modulus", value, 0.0, None, lo_open=True)
+
+
+def indenter_nu(value: Any) -> float:
+    """Poisson's ratio nu1 of the indenter, in (-1, 0.5]."""
+    return number("indenter_nu", value, -1.0, 0.5, lo_open=True)
+
+
+def indenter_material(modulus: Any = math.inf, poisson: Any = None) -> tuple[float, float | None]:
+    """(E1/E2, nu1) of the indenter; nu1 None takes the body's.
+
+    A Poisson's ratio needs an elastic indenter: ``indenter_nu`` with the
+    rigid default modulus (inf) is refused, naming the value.
+    """
+    ratio = indenter_modulus(modulus)
+    if poisson is None:
+        return ratio, None
+    nu1 = indenter_nu(poisson)
+    if ratio == math.inf:
+        raise InputError("indenter_nu", "given with a finite indenter_modulus", poisson,
+                         f"indenter_nu = {poisson!r} needs an elastic indenter: give its "
+                         "modulus ratio E1/E2 too (the default, inf, is rigid)")
+    return ratio, nu1
+
+
+def indenter_mapping(value: Any) -> tuple[float, float | None]:
+    """A scene's ``indenter: {modulus_ratio: R, nu: NU1}`` as (E1/E2, nu1); nu optional."""
+    req = "a mapping {modulus_ratio: E1/E2, nu: NU1} or a material name"
+    if not hasattr(value, "keys") or set(value) - {"modulus_ratio", "nu"} or \
+            "modulus_ratio" not in value:
+        raise InputError("indenter", req, value)
+    return indenter_material(value["modulus_ratio"], value.get("nu"))
 
 
 def stick_ratio(value: Any, name: str = "stick_ratio") -> float:

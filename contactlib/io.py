@@ -25,10 +25,12 @@ import os
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import xarray as xr
+
+if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-up time)
+    import xarray as xr
 
 from contactlib.result import Solution
 
@@ -263,6 +265,8 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     attrs["contactlib_version"] = _version()
     attrs["Conventions"] = CONVENTIONS
 
+    import xarray as xr
+
     ds = xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
     if single:
         ds = ds.isel(stick_ratio=0)
@@ -438,6 +442,8 @@ def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
     xarray.Dataset
         Fully loaded; flags decode back to booleans.
     """
+    import xarray as xr
+
     with xr.open_dataset(path, engine="netcdf4") as ds:
         return ds.load()
 

@@ -1,0 +1,152 @@
+"""Thread pools of the linear algebra: one BLAS thread inside contactlib.
+
+contactlib's public entry points (:func:`contactlib.solve`,
+:func:`contactlib.sweep`, :func:`contactlib.history` and the functions of
+:mod:`contactlib.pipeline`, hence the command line and the workflow) run
+their numerics inside :func:`single_blas_thread`, which limits every BLAS /
+LAPACK / OpenMP pool loaded in the process (OpenBLAS, MKL, BLIS, libgomp:
+whatever :mod:`threadpoolctl` finds) to one thread, and restores the caller's
+limits on return. Why always one, measured on the development machine (2
+cores, OpenBLAS 0.3.30 as shipped with scipy, ``scipy.linalg.lu_factor`` of a
+random diagonally dominant matrix, the other core busy):
+
+* **Bits.** The LU factors (``getrf``) of one matrix differ between one and
+  two OpenBLAS threads for every n >= 256 (by up to 1e-12 relative at
+  n = 2048; the blocked panel updates are summed in a thread-dependent
+  order). Propagated through Newton's method this moved k by up to 3e-8, so
+  a dataset's bytes depended on the thread count. Matrix products (``gemm``,
+  ``gemv``) gave identical bits. Results must not depend on the machine's
+  load or thread settings, so factorizations must run on one thread.
+* **Time.** No size gained from a second thread: n = 256: 0.6 ms (1 thread)
+  against 280 ms (2 threads); n = 512: 6 ms / 340 ms; n = 1024: 45 ms /
+  410 ms; n = 2048: 0.32 s / 0.77 s. A second BLAS thread waits for a core
+  that another process holds. The systems contactlib factorizes are at most
+  about 1.6 n = 6600 (n <= 4096), solved a few times each: the crossover,
+  if any, lies beyond them. The remaining BLAS work is matrix-vector
+  products over O(n^2) data, bound by memory, not by cores.
+
+So there is no size above which a user's thread count could be honoured
+without changing the bits, and none here where it would pay. Parallelism
+that keeps the bits is across independent cases instead: the workflow's
+history rule runs the friction coefficients of one scene in parallel
+processes, as many as Snakemake's ``threads`` grants (:func:`requested`).
+
+Run ``python -m contactlib.threads`` to repeat the measurement on your
+machine (it prints the table above for n = 256 ... 2048).
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from typing import TypeVar
+
+__all__ = ["single_blas_thread", "blas_single_threaded", "requested", "ENV"]
+
+ENV = "CONTACTLIB_THREADS"
+"""Environment variable: worker processes for independent cases (default 1)."""
+
+F = TypeVar("F", bound=Callable)
+
+
+_state = threading.local()
+
+
+@contextmanager
+def single_blas_thread() -> Iterator[None]:
+    """Limit every BLAS/LAPACK/OpenMP pool to one thread inside the block.
+
+    The outermost use looks the loaded libraries up (about 2 ms) and restores
+    the caller's settings on exit; nested uses (a sweep calling solve) cost
+    nothing.
+    """
+    if getattr(_state, "depth", 0):
+        _state.depth += 1
+        try:
+            yield
+        finally:
+            _state.depth -= 1
+        return
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=1):
+        _state.depth = 1
+        try:
+            yield
+        finally:
+            _state.depth = 0
+
+
+def blas_single_threaded(func: F) -> F:
+    """Decorator: run ``func`` inside :func:`single_blas_thread`."""
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        with single_blas_thread():
+            return func(*args, **kwargs)
+
+    return wrapper  # type: ignore[return-value]
+
+
+def requested(threads: int | None = None) -> int:
+    """Worker processes for independent cases: ``threads``, else $CONTACTLIB_THREADS, else 1.
+
+    Parameters
+    ----------
+    threads : int, optional
+        An explicit count (e.g. Snakemake's ``threads`` of a job); wins over
+        the environment.
+
+    Returns
+    -------
+    int
+        At least 1.
+
+    Raises
+    ------
+    ValueError
+        If the count (argument or environment variable) is not a positive
+        integer; the message names the value.
+    """
+    source, value = ("threads", threads) if threads is not None else (ENV, os.environ.get(ENV))
+    if value is None or value == "":
+        return 1
+    text = str(value).strip()
+    if isinstance(value, bool) or not text.isdigit() or int(text) < 1:
+        raise ValueError(f"{source} must be a positive integer, got {value!r}")
+    return int(text)
+
+
+def _measure(sizes: tuple[int, ...] = (256, 512, 1024, 2048), repeat: int = 5) -> None:
+    """Print LU times at one and two BLAS threads and whether the factors agree."""
+    import time
+
+    import numpy as np
+    from scipy import linalg
+    from threadpoolctl import threadpool_limits
+
+    rng = np.random.default_rng(0)
+    for n in sizes:
+        a = rng.standard_normal((n, n)) + n * np.eye(n)
+        best, factors = {}, {}
+        for count in (1, 2):
+            with threadpool_limits(limits=count, user_api="blas"):
+                factors[count] = linalg.lu_factor(a, check_finite=False)[0]
+                times = []
+                for _ in range(repeat):
+                    t0 = time.perf_counter()
+                    linalg.lu_factor(a, check_finite=False)
+                    times.append(time.perf_counter() - t0)
+            best[count] = min(times)
+        same = np.array_equal(factors[1], factors[2])
+        print(f"n = {n:5d}: LU {best[1] * 1e3:8.1f} ms at 1 thread, {best[2] * 1e3:8.1f} ms at 2;"
+              f" factors {'identical' if same else 'differ'}"
+              f" (max abs difference {np.max(np.abs(factors[1] - factors[2])):.1e})", flush=True)
+
+
+if __name__ == "__main__":
+    print(f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}")
+    _measure()

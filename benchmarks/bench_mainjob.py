@@ -1,6 +1,6 @@
 """The main job against a dense LU, measured in the same run.
 
-    python benchmarks/bench_mainjob.py [--repeat R] [--cores C] [--working-tree]
+    python benchmarks/bench_mainjob.py [--repeat R] [--cores C] [--working-tree] [--keep DIR]
 
 For each of R repeats (default 1) this
 
@@ -15,6 +15,8 @@ For each of R repeats (default 1) this
 3. runs the reference again,
 
 and prints both times and the ratio main job / mean of the two references.
+With ``--keep DIR`` the last run's ``results`` folder is copied to DIR (to
+compare its datasets and figures byte for byte with another version's).
 Acceptance (issue 17): ratio at most 20. The BLAS thread variables are left
 as the caller set them, for both processes alike; the copy is removed
 afterwards. On a shared machine the ratio swings with the load: repeat and
@@ -73,6 +75,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--cores", type=int, default=2)
     parser.add_argument("--working-tree", action="store_true")
+    parser.add_argument("--keep", type=Path, default=None)
     args = parser.parse_args()
     print(f"machine: {os.cpu_count()} CPUs, Python {sys.version.split()[0]}, BLAS threads "
           f"{os.environ.get('OPENBLAS_NUM_THREADS', 'default')}", flush=True)
@@ -89,6 +92,9 @@ def main() -> None:
                        work, env)
             r2 = wall(ref, work, env)
             jobs = len(list((work / "results" / "logs").rglob("*.log")))
+            if args.keep is not None:
+                shutil.rmtree(args.keep, ignore_errors=True)
+                shutil.copytree(work / "results", args.keep)
         ratio = job / ((r1 + r2) / 2)
         ratios.append(ratio)
         print(f"run {i + 1}: main job {job:.1f} s ({jobs} job logs), LU {SIZE} reference "

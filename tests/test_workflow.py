@@ -101,12 +101,11 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
     kinds = [s.get("kind", "self-similar") for s in cfg["scenes"].values()]
     n_scenes = kinds.count("self-similar")
     histories = [s for s in cfg["scenes"].values() if s.get("kind") == "history"]
-    runs = sum(len(h["friction"]) if isinstance(h["friction"], list) else 1 for h in histories)
     # every default scene has friction: a normal and a shear part per influence set;
-    # a history scene runs once a friction coefficient
+    # a history scene is one job (its runs, one a friction coefficient, in parallel)
     assert counts == {"influence": 2 * n_scenes, "solve": n_scenes, "check": n_scenes,
                       "displacements": n_scenes, "energy": n_scenes, "assemble": n_scenes,
-                      "history_run": runs, "history_assemble": len(histories),
+                      "history_run": len(histories), "history_assemble": len(histories),
                       "figure_fig2": 1, "figure_fig3": 1, "figure_fig4": 1, "figure_fig5": 1,
                       "figure_history_stick_radius": 1, "figure_history_stick_map": 1,
                       "figure_history_loop": 1, "figure_history_energy": 1,

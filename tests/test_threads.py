@@ -148,3 +148,37 @@ def test_requested_refuses_a_bad_environment_value(monkeypatch):
     with pytest.raises(ValueError, match="CONTACTLIB_THREADS must be a positive integer, "
                                          "got 'many'"):
         threads.requested()
+
+
+# ----------------------------------------------------------------------------- map_cases
+def _square_after_lu(x: int) -> tuple[int, bytes, int]:
+    """A case with an LU in it: its bits, and the process that ran it."""
+    a = np.random.default_rng(x).standard_normal((300, 300)) + 300 * np.eye(300)
+    with threads.single_blas_thread():
+        lu = linalg.lu_factor(a, check_finite=False)[0]
+    return x * x, lu.tobytes(), os.getpid()
+
+
+def _fail_on_two(x: int) -> int:
+    if x == 2:
+        raise ValueError("case 2 failed")
+    return x
+
+
+def test_map_cases_gives_the_serial_results_in_order_from_other_processes():
+    items = [3, 1, 2, 5]
+    serial = threads.map_cases(_square_after_lu, items, 1)
+    parallel = threads.map_cases(_square_after_lu, items, 2)
+    assert [r[0] for r in parallel] == [9, 1, 4, 25]
+    assert [r[:2] for r in parallel] == [r[:2] for r in serial]
+    assert {r[2] for r in serial} == {os.getpid()}
+    assert os.getpid() not in {r[2] for r in parallel}
+
+
+def test_map_cases_raises_a_case_error_and_refuses_a_bad_count():
+    for workers in (1, 2):
+        with pytest.raises(ValueError, match="case 2 failed"):
+            threads.map_cases(_fail_on_two, [1, 2, 3], workers)
+    with pytest.raises(ValueError, match="threads must be a positive integer, got 0"):
+        threads.map_cases(_fail_on_two, [1], 0)
+    assert threads.map_cases(_fail_on_two, [], 2) == []

@@ -96,17 +96,17 @@ for _name, _st in CONVERGENCE["studies"].items():
             f"named {_ref!r}"
         )
 
-# influence sets, shared by every scene with the same key
+# influence sets, shared by every scene with the same key; the parts any of them needs
 INFLUENCE = {}
 for _s in SCENES.values():
-    INFLUENCE.setdefault(_s.influence_key, _s.influence_spec())
+    _spec = INFLUENCE.setdefault(_s.influence_key, dict(_s.influence_spec(), parts=[]))
+    _spec["parts"] = [p for p in ("normal", "shear") if p in _spec["parts"] or p in _s.parts]
 
 
 wildcard_constraints:
     scene="|".join(sorted(SCENES)) or "NONE",
     hscene="|".join(sorted(HISTORIES)) or "NONE",
     key="[^/]+",
-    part="normal|shear",
     study="|".join(sorted(CONVERGENCE["studies"])) or "NONE",
 
 
@@ -145,8 +145,8 @@ def history_threads(wildcards):
 
 
 def influence_files(wildcards):
-    s = SCENES[wildcards.scene]
-    return {part: f"results/influence/{s.influence_key}/{part}.npz" for part in s.parts}
+    """The folder of the scene's influence set (its <part>.npz files)."""
+    return {"influence": f"results/influence/{SCENES[wildcards.scene].influence_key}"}
 
 
 def stage_files(wildcards):

@@ -182,3 +182,20 @@ def test_map_cases_raises_a_case_error_and_refuses_a_bad_count():
     with pytest.raises(ValueError, match="threads must be a positive integer, got 0"):
         threads.map_cases(_fail_on_two, [1], 0)
     assert threads.map_cases(_fail_on_two, [], 2) == []
+
+
+# ----------------------------------------------------------------------------- lazy package
+def test_package_imports_no_solver_and_history_stays_the_function():
+    code = ("import sys, contactlib\n"
+            "assert 'contactlib.api' not in sys.modules and 'scipy.linalg' not in sys.modules\n"
+            "import contactlib.history as h\n"
+            "from contactlib.history import stack_histories\n"
+            "import importlib\n"
+            "assert callable(contactlib.history) and h is contactlib.history\n"
+            "assert contactlib.history.__module__ == 'contactlib.history'\n"
+            "assert importlib.import_module('contactlib.history').stack_histories is stack_histories\n"
+            "assert contactlib.solve.__module__ == 'contactlib.api'\n"
+            "assert contactlib.Solution.__name__ == 'Solution'\n")
+    proc = subprocess.run([sys.executable, "-c", code], env=env_with_threads(1),
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr

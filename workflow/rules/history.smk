@@ -16,6 +16,9 @@ rule history_run:
     conda:
         "../envs/contactlib.yaml"
     threads: history_threads
+    # first, when jobs wait for cores: a history's figures (the stick map is the
+    # slowest figure) then overlap with the self-similar scenes' chain of jobs
+    priority: 1
     resources:
         mem_mb=mem_history,
         runtime=runtime_history,

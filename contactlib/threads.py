@@ -7,32 +7,40 @@ their numerics inside :func:`single_blas_thread`, which limits every BLAS /
 LAPACK / OpenMP pool loaded in the process (OpenBLAS, MKL, BLIS, libgomp:
 whatever :mod:`threadpoolctl` finds) to one thread, and restores the caller's
 limits on return. Why always one, measured on the development machine (2
-cores, OpenBLAS 0.3.30 as shipped with scipy, ``scipy.linalg.lu_factor`` of a
-random diagonally dominant matrix, the other core busy):
+cores, OpenBLAS 0.3.30 as shipped with scipy; ``scipy.linalg.lu_factor`` of a
+random diagonally dominant matrix, other processes on both cores, load
+average about 6):
 
-* **Bits.** The LU factors (``getrf``) of one matrix differ between one and
-  two OpenBLAS threads for every n >= 256 (by up to 1e-12 relative at
-  n = 2048; the blocked panel updates are summed in a thread-dependent
-  order). Propagated through Newton's method this moved k by up to 3e-8, so
-  a dataset's bytes depended on the thread count. Matrix products (``gemm``,
-  ``gemv``) gave identical bits. Results must not depend on the machine's
-  load or thread settings, so factorizations must run on one thread.
+* **Bits.** The LU factors (``getrf``) of one matrix differ in the last bits
+  between one and two OpenBLAS threads for every n >= 256 tried (largest
+  absolute difference 1e-13 at n = 256 to 9e-13 at n = 2048; the blocked
+  updates are summed in a thread-dependent order); a matrix product
+  (``gemm``, n x 64) gave identical bits. Without the limit, k of a sweep
+  (sphere, nu = 0.3, five stick ratios) moved by up to 4e-8 relative at
+  n = 256, and the same ``contactlib history`` command wrote different
+  bytes. Results must not depend on the load or the thread settings, so
+  factorizations run on one thread.
 * **Time.** No size gained from a second thread: n = 256: 0.6 ms (1 thread)
   against 280 ms (2 threads); n = 512: 6 ms / 340 ms; n = 1024: 45 ms /
   410 ms; n = 2048: 0.32 s / 0.77 s. A second BLAS thread waits for a core
-  that another process holds. The systems contactlib factorizes are at most
-  about 1.6 n = 6600 (n <= 4096), solved a few times each: the crossover,
-  if any, lies beyond them. The remaining BLAS work is matrix-vector
-  products over O(n^2) data, bound by memory, not by cores.
+  that another process holds. With one core kept busy, ``contactlib history
+  --geometry sphere --nu 0.3 --friction 0.2 --load-path 0,1,0 --steps 200``
+  took 3.0 - 4.3 s before this limit and 2.0 - 2.2 s with it; ``contactlib
+  solve --geometry sphere --nu 0.3 --friction 0.2 --n 1024`` 13.8 s and
+  8.5 s. The systems contactlib factorizes have at most about 1.6 n = 6600
+  unknowns (n <= 4096); the rest of its BLAS work is matrix-vector products,
+  bound by memory rather than by cores.
 
 So there is no size above which a user's thread count could be honoured
 without changing the bits, and none here where it would pay. Parallelism
 that keeps the bits is across independent cases instead: the workflow's
 history rule runs the friction coefficients of one scene in parallel
-processes, as many as Snakemake's ``threads`` grants (:func:`requested`).
+processes, as many as Snakemake's ``threads`` grants (:func:`map_cases`;
+elsewhere ``$CONTACTLIB_THREADS``, default 1, see :func:`requested`).
 
 Run ``python -m contactlib.threads`` to repeat the measurement on your
-machine (it prints the table above for n = 256 ... 2048).
+machine (it prints the LU times and whether the factors agree, n = 256 ...
+2048).
 """
 
 from __future__ import annotations
@@ -120,7 +128,8 @@ def requested(threads: int | None = None) -> int:
     return int(text)
 
 
-def map_cases(func: Callable[[Any], Any], items: Sequence[Any], workers: int = 1) -> list[Any]:
+def map_cases(func: Callable[[Any], Any], items: Sequence[Any],
+              workers: int | None = None) -> list[Any]:
     """``[func(item) for item in items]``, over up to ``workers`` processes.
 
     Independent cases (e.g. the friction coefficients of one history scene)
@@ -139,7 +148,8 @@ def map_cases(func: Callable[[Any], Any], items: Sequence[Any], workers: int = 1
     items : sequence
         The cases.
     workers : int, optional
-        Processes to use (default 1: in this process, no pool).
+        Processes to use; default :func:`requested` ($CONTACTLIB_THREADS,
+        else 1). One runs the cases in this process, without a pool.
 
     Returns
     -------

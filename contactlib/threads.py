@@ -20,10 +20,13 @@ average about 6):
   n = 256, and the same ``contactlib history`` command wrote different
   bytes. Results must not depend on the load or the thread settings, so
   factorizations run on one thread.
-* **Time.** No size gained from a second thread: n = 256: 0.6 ms (1 thread)
-  against 280 ms (2 threads); n = 512: 6 ms / 340 ms; n = 1024: 45 ms /
-  410 ms; n = 2048: 0.32 s / 0.77 s. A second BLAS thread waits for a core
-  that another process holds. With one core kept busy, ``contactlib history
+* **Time.** With both cores busy no size gained from a second thread:
+  n = 256: 0.6 ms (1 thread) against 280 ms (2 threads); n = 512: 6 ms /
+  340 ms; n = 1024: 45 ms / 410 ms; n = 2048: 0.32 s / 0.77 s (a second
+  BLAS thread waits for a core that another process holds). With the
+  second core idle (load average 1.7) the crossover is near n = 1024:
+  0.6 / 0.6 ms at 256, 3.4 / 3.2 ms at 512, 21 / 17 ms at 1024, 157 /
+  103 ms at 2048; a gain of at most 1.5x where the bits differ. With one core kept busy, ``contactlib history
   --geometry sphere --nu 0.3 --friction 0.2 --load-path 0,1,0 --steps 200``
   took 3.0 - 4.3 s before this limit and 2.0 - 2.2 s with it; ``contactlib
   solve --geometry sphere --nu 0.3 --friction 0.2 --n 1024`` 13.8 s and
@@ -32,7 +35,8 @@ average about 6):
   bound by memory rather than by cores.
 
 So there is no size above which a user's thread count could be honoured
-without changing the bits, and none here where it would pay. Parallelism
+without changing the bits, and the gain it would bring on an idle machine
+is small against the loss on a busy one. Parallelism
 that keeps the bits is across independent cases instead: the workflow's
 history rule runs the friction coefficients of one scene in parallel
 processes, as many as Snakemake's ``threads`` grants (:func:`map_cases`;

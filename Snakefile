@@ -6,7 +6,7 @@
 #   snakemake --cores 2 --configfile my.yaml  with your own scenes (merged)
 #   snakemake -n                              what would run
 #
-# Layout, interface and habits: README.md ("Workflow") and DESIGN.md sections 1, 4.
+# Layout, interface and habits: README.md ("Workflow").
 
 from snakemake.utils import min_version
 

@@ -28,10 +28,12 @@ import zipfile
 import zlib
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import xarray as xr
+
+if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-up time)
+    import xarray as xr
 
 from contactlib.result import Solution
 
@@ -265,6 +267,8 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         attrs["slab_ratio"] = float(first.slab_ratio)
     attrs["contactlib_version"] = _version()
     attrs["Conventions"] = CONVENTIONS
+
+    import xarray as xr
 
     ds = xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
     if single:
@@ -545,6 +549,8 @@ def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
     FileNotFoundError
         If there is no such file.
     """
+    import xarray as xr
+
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             return ds.load()

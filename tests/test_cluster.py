@@ -111,7 +111,7 @@ CLUSTER_CONFIG = {
     },
     "figures": {"fig2": ["s"], "fig3": ["s"]},
 }
-EXPECTED_JOBS = {"influence": 2, "solve": 1, "check": 1, "assemble": 1, "figure_fig2": 1,
+EXPECTED_JOBS = {"influence": 1, "solve": 1, "check": 1, "assemble": 1, "figure_fig2": 1,
                  "figure_fig3": 1, "key_numbers": 1}
 
 

@@ -106,9 +106,8 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
     assert counts == {"influence": n_scenes, "solve": n_scenes, "check": n_scenes,
                       "displacements": n_scenes, "energy": n_scenes, "assemble": n_scenes,
                       "history_run": len(histories), "history_assemble": len(histories),
-                      "figure_fig2": 1, "figure_fig3": 1, "figure_fig4": 1, "figure_fig5": 1,
-                      "figure_history_stick_radius": 1, "figure_history_stick_map": 1,
-                      "figure_history_loop": 1, "figure_history_energy": 1,
+                      # one job a family of figures (paper, history), its figures in parallel
+                      "figures_paper": 1, "figures_history": 1,
                       "key_numbers": 1, "all": 1}
 
 
@@ -253,7 +252,7 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
         assert "tiny-paper" in out or "cylinder-nu0.25-paper" in out, (rule, out)
     assert not any("tiny-default" in o for o in outputs)
     figs = {r for r, _ in jobs if r.startswith("figure")}
-    assert figs == {"figure_fig2", "figure_fig5"}  # the figures that draw tiny-paper
+    assert figs == {"figures_paper"}  # the family whose figures draw tiny-paper
 
 
 def test_convergence_target(tiny_run):

@@ -207,6 +207,46 @@ def figure_scenes(fig):
     return list((config.get("figures") or {}).get(fig) or [])
 
 
+# the title a figure is listed under in the report (its caption holds the rest)
+FIGURE_TITLES = {
+    "fig2": "Fig. 2: friction coefficient k against stick ratio c/a",
+    "fig3": "Fig. 3: pressure and shear across the contact",
+    "fig4": "Fig. 4: tangential surface displacement",
+    "fig5": "Fig. 5: frictional work of a loading half-cycle",
+    "history_stick_radius": "History: stick-zone radius along the load path",
+    "history_stick_map": "History: stick/slip map over the path",
+    "history_loop": "History: displacement loop under load-unload",
+    "history_energy": "History: energy dissipated per load cycle",
+}
+
+
+# the figures the config asks for (those given scenes), by family
+FIGURE_FAMILIES = {
+    family: [fig for fig in figs if figure_scenes(fig)]
+    for family, figs in (("paper", PAPER_FIGURES), ("history", HISTORY_FIGURES))
+}
+FIGURE_FAMILIES = {family: figs for family, figs in FIGURE_FAMILIES.items() if figs}
+
+
+def figure_inputs(figs):
+    """The datasets of every scene the figures draw, each once."""
+    return sorted({f"results/datasets/{s}.nc" for fig in figs for s in figure_scenes(fig)})
+
+
+def figure_outputs(figs):
+    """<fig>_png (in the report, with the figure's caption and title) and <fig>_pdf."""
+    out = {}
+    for fig in figs:
+        out[f"{fig}_png"] = report(
+            f"results/figures/{fig}.png",
+            caption=f"../report/{fig}.rst",
+            category="Figures",
+            labels={"figure": FIGURE_TITLES.get(fig, fig), "file": f"{fig}.png"},
+        )
+        out[f"{fig}_pdf"] = f"results/figures/{fig}.pdf"
+    return out
+
+
 def all_targets():
     out = [f"results/datasets/{name}.nc" for name in ALL_SCENES]
     for fig in FIGURES:

@@ -1,25 +1,40 @@
-"""Rule figure: one figure from the scenes' datasets (PNG and PDF)."""
+"""Rule figures_<family>: the family's figures (PNG and PDF) from the scenes' datasets.
+
+One job draws every figure of its family; the figures run in parallel worker
+processes (threads), forked after the imports, each one whole in one process.
+"""
 
 import sys
+from pathlib import Path
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
-from contactlib import figures, history_figures, io  # noqa: E402
+from contactlib import io  # noqa: E402
+from contactlib.threads import map_cases  # noqa: E402
 
-name = snakemake.params.fig  # noqa: F821
-datasets = [io.read_dataset(path) for path in snakemake.input]  # noqa: F821
-if name == "history_stick_map":  # the map of one history scene
-    fig = history_figures.hist_stick_map(datasets[0])
-else:
-    draw = {
-        "fig2": figures.fig2_friction,
-        "fig3": figures.fig3_tractions,
-        "fig4": figures.fig4_displacement,
-        "fig5": figures.fig5_work,
-        "history_stick_radius": history_figures.hist_stick_radius,
-        "history_loop": history_figures.hist_displacement_loop,
-        "history_energy": history_figures.hist_energy_per_cycle,
-    }[name]
-    fig = draw(datasets)
-io.write_figure(fig, snakemake.output.png)  # noqa: F821
-io.write_figure(fig, snakemake.output.pdf)  # noqa: F821
+figures = snakemake.params.figures  # noqa: F821  {figure: [scene, ...]}
+DRAW = {}
+if any(not name.startswith("history_") for name in figures):
+    from contactlib import figures as paper
+
+    DRAW.update(fig2=paper.fig2_friction, fig3=paper.fig3_tractions,
+                fig4=paper.fig4_displacement, fig5=paper.fig5_work)
+if any(name.startswith("history_") for name in figures):
+    from contactlib import history_figures as hist
+
+    DRAW.update(history_stick_radius=hist.hist_stick_radius,
+                history_stick_map=lambda datasets: hist.hist_stick_map(datasets[0]),
+                history_loop=hist.hist_displacement_loop,
+                history_energy=hist.hist_energy_per_cycle)
+# the datasets, read once before the workers fork: <scene>.nc -> scene
+datasets = {Path(path).stem: io.read_dataset(path) for path in snakemake.input}  # noqa: F821
+
+
+def draw(name: str) -> None:
+    fig = DRAW[name]([datasets[scene] for scene in figures[name]])
+    io.write_figure(fig, snakemake.output[f"{name}_png"])  # noqa: F821
+    io.write_figure(fig, snakemake.output[f"{name}_pdf"])  # noqa: F821
+    print(f"{name}: drawn from {', '.join(figures[name])}", flush=True)
+
+
+map_cases(draw, list(figures), snakemake.threads)  # noqa: F821

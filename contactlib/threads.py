@@ -82,6 +82,10 @@ def single_blas_thread() -> Iterator[None]:
         finally:
             _state.depth -= 1
         return
+    # threadpoolctl limits only the pools loaded now: load scipy's own OpenBLAS
+    # first (free where contactlib's solvers are imported; a scipy imported
+    # later inside the block ran on the default threads, with other bits)
+    import scipy.linalg  # noqa: F401
     from threadpoolctl import threadpool_limits
 
     with threadpool_limits(limits=1):

@@ -81,6 +81,23 @@ def test_entry_points_run_on_one_blas_thread_and_restore_the_caller_limits():
     assert before == after
 
 
+def test_a_blas_loaded_inside_the_block_is_limited_too():
+    """threadpoolctl limits the pools loaded when it is called: scipy's own OpenBLAS,
+    first imported inside the block, must run on one thread as well."""
+    code = ("import sys\n"
+            "from contactlib import threads\n"
+            "assert 'scipy' not in sys.modules\n"
+            "with threads.single_blas_thread():\n"
+            "    from scipy import linalg\n"
+            "    from threadpoolctl import threadpool_info\n"
+            "    info = threadpool_info()\n"
+            "assert len(info) >= 1 and {p['num_threads'] for p in info} == {1}, info\n")
+    env = env_with_threads(2)
+    proc = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 0, proc.stderr
+
+
 # ----------------------------------------------------------------------------- bytes
 def test_cli_sweep_bytes_do_not_depend_on_blas_threads(tmp_path):
     # n = 256 (the default): systems of ~400 unknowns, where LU bits differ

@@ -24,6 +24,7 @@ import numpy as np
 import xarray as xr
 
 from . import api
+from .indenter import indenter
 
 __all__ = ["study", "trade_table", "QUANTITIES", "richardson"]
 
@@ -186,7 +187,7 @@ def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coeffi
     for ds in datasets:
         geometry, method = ds.attrs["geometry"], ds.attrs["method"]
         label = f"{geometry} {method}"
-        if geometry == "cylinder":
+        if indenter(geometry).accepts_layer:
             label += f" a/h={float(ds.attrs['slab_ratio']):g}"
         err = ds["error"].sel(quantity=quantity).values  # (n, stick_ratio)
         times = ds["wall_time"].values

@@ -64,26 +64,25 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from numbers import Integral, Real
 from typing import Any, Callable, Sequence
 
 import numpy as np
 
 from . import history_solver as hs
-from .api import GEOMETRIES, _number
-from .geometry import Geometry
+from . import validate
+from .model import contact
 from .result import history_repr
 from .threads import blas_single_threaded
 
 __all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS",
            "DEFAULT_MAX_ERROR", "load_levels"]
 
-DEFAULT_N = 240  # elements over [0, 1.2 a_max]: element size a_max / 200
-MIN_N = 16
-MAX_N = 2048
-MAX_STEPS = 100_000  # steps a segment (about 3 min a segment at the default n)
+DEFAULT_N = validate.HISTORY_DEFAULT_N  # elements over [0, 1.2 a_max]: size a_max / 200
+MIN_N = validate.HISTORY_MIN_N
+MAX_N = validate.HISTORY_MAX_N
+MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
-DEFAULT_MAX_ERROR = 1e-3
+DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
 
 
 @dataclass(repr=False)
@@ -172,43 +171,6 @@ class HistoryResult:
         return int(segment * self.steps)
 
 
-# ----------------------------------------------------------------------------- validation
-def _integer(name: str, value, lo: int, hi: int | None = None) -> int:
-    if isinstance(value, bool) or not isinstance(value, (Integral, Real)):
-        raise ValueError(f"{name} must be an integer, got {value!r}")
-    if not isinstance(value, Integral):
-        if not (math.isfinite(float(value)) and float(value).is_integer()):
-            raise ValueError(f"{name} must be an integer, got {value!r}")
-    v = int(value)
-    if v < lo or (hi is not None and v > hi):
-        rng = f">= {lo}" if hi is None else f"in [{lo}, {hi}]"
-        raise ValueError(f"{name} must be an integer {rng}, got {value!r}")
-    return v
-
-
-def _load_path(load_path) -> tuple[float, ...]:
-    if isinstance(load_path, (str, bytes)) or not hasattr(load_path, "__iter__"):
-        raise ValueError(f"load_path must be a sequence of load levels in [0, 1], "
-                         f"got {load_path!r}")
-    values = list(load_path)
-    if not values:
-        raise ValueError("load_path must not be empty")
-    levels = tuple(_number("load_path", v, 0.0, 1.0) for v in values)
-    if len(levels) < 2:
-        raise ValueError(f"load_path needs at least two levels (a start and an end), "
-                         f"got {values!r}")
-    if levels[0] != 0.0:
-        raise ValueError(f"load_path must start at 0 (the body starts unloaded), "
-                         f"got {values[0]!r}")
-    return levels
-
-
-def _friction(friction) -> float:
-    if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
-        return math.inf
-    return _number("friction", friction, 0.0, None)
-
-
 def load_levels(load_path: Sequence[float], steps: int) -> tuple[np.ndarray, np.ndarray]:
     """Load level of every step (``steps`` equal steps a segment) and its segment.
 
@@ -295,34 +257,28 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     1600 steps a segment agrees with n = 480 to 0.1 % (c/a = 0.7 at the top)
     and 0.5 % (c/a = 0.9); see ``benchmarks/report_history.py``.
     """
-    if geometry not in GEOMETRIES:
-        raise ValueError(f"geometry must be one of {', '.join(GEOMETRIES)}, got {geometry!r}")
-    nu = _number("nu", nu, -1.0, 0.5, lo_open=True)
-    k = _friction(friction)
-    levels_in = _load_path(load_path)
-    steps = _integer("steps", steps, 1, MAX_STEPS)
-    n = DEFAULT_N if n is None else _integer("n", n, MIN_N, MAX_N)
-    slab = _number("slab_ratio", slab_ratio, 0.0, None)
-    if geometry == "sphere" and slab != 0.0:
-        raise ValueError(f"slab_ratio applies to the cylinder only, got {slab_ratio!r} "
-                         f"for a sphere")
-    if progress is not None and not callable(progress):
-        raise ValueError(f"progress must be callable, got {progress!r}")
-    max_error = _number("max_error", max_error, 0.0, 1.0, lo_open=True, hi_open=True)
-    if not isinstance(error_estimate, (bool, np.bool_)):
-        raise ValueError(f"error_estimate must be True or False, got {error_estimate!r}")
+    geometry = validate.geometry(geometry)
+    nu = validate.nu(nu)
+    k = validate.friction(friction)
+    levels_in = validate.load_path(load_path)
+    steps = validate.steps(steps)
+    n = validate.history_n(n)
+    slab = validate.slab_ratio(slab_ratio, geometry)
+    progress = validate.callback("progress", progress)
+    max_error = validate.max_error(max_error)
+    error_estimate = validate.flag("error_estimate", error_estimate)
 
-    geom = Geometry(geometry, nu, slab)
-    ops = hs.build_operators(geom, n)
+    model = contact(geometry, nu, slab)
+    ops = hs.build_operators(model, n)
     levels, segment = load_levels(levels_in, steps)
-    raw = hs.run_history(ops, geometry, k, levels, progress=progress)
+    raw = hs.run_history(ops, k, levels, progress=progress)
     err_c = np.full(levels.size, np.nan)
     err_w = np.full(levels.size, np.nan)
     if error_estimate:
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
         levels_c, segment_c = load_levels(levels_in, steps_c)
-        raw_c = hs.run_history(hs.build_operators(geom, n_c), geometry, k, levels_c)
+        raw_c = hs.run_history(hs.build_operators(model, n_c), k, levels_c)
         err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c)
     annulus = hs.annulus_resolved(k, raw.state)
     with np.errstate(invalid="ignore"):

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import stages
 from .api import output_grid
-from .geometry import Geometry
+from .model import contact
 from .io import to_dataset
 from .scene import Scene
 from .threads import blas_single_threaded
@@ -43,7 +43,7 @@ _VIOLATIONS = ("stick_violation", "slip_violation")
 @blas_single_threaded
 def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
-    geom = Geometry(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]))
+    geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]))
     return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
 
 

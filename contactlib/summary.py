@@ -24,6 +24,8 @@ from typing import Any, Sequence
 import numpy as np
 import xarray as xr
 
+from .indenter import indenter
+
 __all__ = ["key_numbers", "report_rows", "COLUMNS", "REPORT_COLUMNS"]
 
 COLUMNS = (
@@ -251,7 +253,7 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
     for row in rows:
         body = f"{row['geometry']}, ν = {_g(row['nu'])}"
         slab = float(row["slab ratio a/h"])
-        if row["geometry"] == "cylinder":
+        if indenter(row["geometry"]).accepts_layer:
             body += f", a/h = {_g(slab)}" if slab > 0 else ", half-plane"
         history = row["method"] == "history"
         p0 = _g(row["frictionless P/P_Hertz"], 5)

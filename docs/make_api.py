@@ -23,8 +23,10 @@ OUT = Path(__file__).resolve().parent / "api.md"
 MODULES: list[tuple[str, str, list[str] | None]] = [
     ("contactlib", "The three entry points and the result object, importable from the "
      "package.", ["solve", "sweep", "history", "Solution"]),
-    ("contactlib.api", "Validation, the self-similar solve and sweep, the inverse problem and "
-     "the constants that bound the input.",
+    ("contactlib.validate", "Every input rule and limit, written once; a bad value raises "
+     "``InputError`` naming the argument.", None),
+    ("contactlib.api", "The self-similar solve and sweep, the inverse problem and the "
+     "constants that bound the input (from ``contactlib.validate``).",
      ["stick_ratio_for_friction", "output_grid", "GEOMETRIES", "METHODS", "DEFAULT_N", "MAX_N"]),
     ("contactlib.history", "The incremental load-path solver and its dataset.",
      ["HistoryResult", "history_to_dataset", "stack_histories", "load_levels", "DEFAULT_N",
@@ -33,6 +35,12 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
      "that writes).", None),
     ("contactlib.theory", "Closed-form references (Hertz, the uncoupled limit, small-k work).",
      None),
+    ("contactlib.model", "The model every solver takes: an indenter pressed into a body.", None),
+    ("contactlib.indenter", "The sphere and the cylinder: shape, element measures, Hertz "
+     "formulas.", None),
+    ("contactlib.body", "The elastic body: half-space, half-plane or slab, and its kernels.",
+     None),
+    ("contactlib.operators", "Influence operators of a model, for every solver.", None),
     ("contactlib.accuracy", "Accuracy targets: plan n for a tolerance on k, estimate the error "
      "afterwards.", None),
     ("contactlib.convergence", "Convergence studies and the speed-accuracy table.", None),

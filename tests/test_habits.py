@@ -304,7 +304,7 @@ def test_cli_names_the_duplicate(capsys, tmp_path, fake) -> None:
     code, _, err = run(capsys, "sweep", *GOOD, "--stick-ratios", "0.1,0.5,0.50",
                        "--output", str(tmp_path / "s.nc"))
     assert_refused(code, err, "--stick-ratios")
-    assert "'0.50' repeats '0.5'" in err
+    assert "'0.50' at position 2 repeats '0.5' at position 1" in err
 
 
 @pytest.mark.parametrize("kwargs, message", [

@@ -14,7 +14,10 @@ For each of R repeats (default 1) this
    ``contactlib`` is the one imported;
 3. runs the reference twice again,
 
-and prints the times and the ratio main job / fastest of the four references.
+and prints the times and the ratio main job / fastest of the four references,
+and the same ratio of CPU time (user + system, over every process of the
+main job; the least of the four references'): a second view, less tied to
+how much of the machine other jobs leave (the acceptance is on wall time).
 The fastest, because the reference swings most with the load (it uses the
 BLAS's default threads, 1.0 - 1.9 s for the same factorization here) and
 its best time is the machine's speed; the main job varies far less.
@@ -30,6 +33,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -47,11 +51,22 @@ REFERENCE = (
 )
 
 
-def wall(cmd: list[str], cwd: Path, env: dict) -> float:
-    """Wall time of one process in seconds; raise with its output if it fails."""
-    t0 = time.perf_counter()
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def wall(cmd: list[str], cwd: Path, env: dict, cpu: list[float] | None = None) -> float:
+    """Wall time of one process in seconds; raise with its output if it fails.
+
+    With ``cpu`` given, the CPU time (user + system) of the process and every
+    descendant it waited for is appended to it.
+    """
+    c0, t0 = _children_cpu(), time.perf_counter()
     proc = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True)
     t = time.perf_counter() - t0
+    if cpu is not None:
+        cpu.append(_children_cpu() - c0)
     if proc.returncode != 0:
         raise SystemExit(f"{' '.join(cmd)} failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
     return t
@@ -82,7 +97,7 @@ def main() -> None:
     args = parser.parse_args()
     print(f"machine: {os.cpu_count()} CPUs, Python {sys.version.split()[0]}, BLAS threads "
           f"{os.environ.get('OPENBLAS_NUM_THREADS', 'default')}", flush=True)
-    ratios = []
+    ratios, cpu_ratios = [], []
     for i in range(args.repeat):
         with tempfile.TemporaryDirectory(prefix="contactlib-mainjob-") as tmp:
             work = Path(tmp)
@@ -90,10 +105,12 @@ def main() -> None:
             env = dict(os.environ, PYTHONPATH=str(work))
             ref = [sys.executable, "-c", REFERENCE]
             load = os.getloadavg()[0]
-            before = [wall(ref, work, env) for _ in range(2)]
+            ref_cpu: list[float] = []
+            job_cpu: list[float] = []
+            before = [wall(ref, work, env, ref_cpu) for _ in range(2)]
             job = wall([sys.executable, "-m", "snakemake", "--cores", str(args.cores)],
-                       work, env)
-            after = [wall(ref, work, env) for _ in range(2)]
+                       work, env, job_cpu)
+            after = [wall(ref, work, env, ref_cpu) for _ in range(2)]
             jobs = len(list((work / "results" / "logs").rglob("*.log")))
             if args.keep is not None:
                 shutil.rmtree(args.keep, ignore_errors=True)
@@ -101,10 +118,15 @@ def main() -> None:
         ratio = job / min(before + after)
         ratios.append(ratio)
         refs = " ".join(f"{t:.2f}" for t in before + after)
+        cpu_ratio = job_cpu[0] / min(ref_cpu)
+        cpu_ratios.append(cpu_ratio)
         print(f"run {i + 1}: main job {job:.1f} s ({jobs} job logs), LU {SIZE} reference "
-              f"{refs} s, ratio {ratio:.1f} (load average before {load:.1f})", flush=True)
+              f"{refs} s, ratio {ratio:.1f} (load average before {load:.1f}); CPU time: "
+              f"main job {job_cpu[0]:.1f} s, reference {min(ref_cpu):.2f} - {max(ref_cpu):.2f} s, "
+              f"ratio {cpu_ratio:.1f}", flush=True)
     if len(ratios) > 1:
-        print(f"ratio range {min(ratios):.1f} - {max(ratios):.1f} over {len(ratios)} runs")
+        print(f"ratio range {min(ratios):.1f} - {max(ratios):.1f} over {len(ratios)} runs; "
+              f"CPU-time ratio {min(cpu_ratios):.1f} - {max(cpu_ratios):.1f}")
 
 
 if __name__ == "__main__":

@@ -14,13 +14,13 @@ import math
 from typing import Callable, Sequence
 
 import numpy as np
-from scipy import optimize
 
 from . import stages, validate
 from .default_method import DiscreteSolution, solve_default
 from .geometry import Geometry
 from .paper_method import PaperSolution
 from .result import Solution
+from .threads import blas_single_threaded
 
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
            "output_grid"]
@@ -110,12 +110,15 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     if fhi < 0:
         raise ValueError(f"friction {friction!r} is too large: the stick zone covers more than "
                          f"{hi:.7f} of the contact; use stick_ratio 1 (full adhesion)")
+    from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
+
     c = optimize.brentq(f, lo, hi, xtol=xtol)
     d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"])
     return c, d
 
 
 # ----------------------------------------------------------------------------- public API
+@blas_single_threaded
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
@@ -200,6 +203,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                    f"c/a = {c_interp:.6g} for k = {k:.6g}")
 
 
+@blas_single_threaded
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
           n: int | None = None, method: str = "default", slab_ratio: float = 0.0,
           energy: bool = True,

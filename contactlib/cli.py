@@ -249,7 +249,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "(solve, sweep) or any normal load path (history).",
     )
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
-    subs = parser.add_subparsers(dest="command", metavar="{solve,sweep,history}",
+    subs = parser.add_subparsers(dest="command", metavar="{solve,sweep,history,check-config}",
                                  parser_class=_Parser)
     subs.required = True
 
@@ -299,6 +299,16 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
+
+    check = subs.add_parser(
+        "check-config", help="check workflow configuration files", allow_abbrev=False,
+        description="Check YAML files meant for the workflow (config/config.yaml, or "
+                    "your own for 'snakemake --configfile FILE'): YAML syntax, reported "
+                    "with the file and line, and every scene by the library's rules, "
+                    "all problems at once. Snakemake reads a --configfile itself before "
+                    "the workflow starts, and its message for a YAML syntax error names "
+                    "neither file nor line: run this first.")
+    check.add_argument("files", nargs="+", metavar="FILE", help="a YAML configuration file")
     return parser
 
 
@@ -566,6 +576,74 @@ def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int
     return 0
 
 
+def _merge(base: dict, extra: dict) -> dict:
+    """``extra`` over ``base``, mappings merged key by key (as Snakemake merges configs)."""
+    out = dict(base)
+    for key, value in extra.items():
+        if isinstance(value, dict) and isinstance(out.get(key), dict):
+            out[key] = _merge(out[key], value)
+        else:
+            out[key] = value
+    return out
+
+
+def check_config(paths: Sequence[str]) -> list[str]:
+    """Problems of workflow configuration files, one line each (empty: all good).
+
+    Each file's YAML syntax is checked on its own; the files are then merged
+    in the given order, mappings key by key as ``snakemake --configfile``
+    merges them, and the scenes of the result are checked by the library's
+    rules. To check a file meant to be merged with the workflow's own
+    configuration, give ``config/config.yaml`` first.
+
+    Parameters
+    ----------
+    paths : sequence of str
+        YAML files.
+
+    Returns
+    -------
+    list of str
+        ``<file>, line L, column C: YAML syntax error: ...``, a missing file, a
+        top level that is not a mapping, or ``scenes.<name>.<key>: ...`` for
+        each problem of a scene (:func:`contactlib.scene.parse_scenes`).
+    """
+    from pathlib import Path
+
+    from contactlib.io import check_yaml
+    from contactlib.scene import parse_scenes
+
+    problems: list[str] = []
+    merged: dict = {}
+    for path in paths:
+        try:
+            doc = check_yaml(path)
+        except ValueError as exc:
+            problems.append(str(exc))
+            continue
+        if doc is None and not Path(path).is_file():
+            problems.append(f"{path}: no such file")
+        elif not isinstance(doc, dict):
+            problems.append(f"{path}: the top level must be a mapping (scenes:, figures:, ...)")
+        else:
+            merged = _merge(merged, doc)
+    if not problems and merged.get("scenes") is not None:
+        try:
+            parse_scenes(merged["scenes"])
+        except ValueError as exc:
+            problems += list(getattr(exc, "problems", [str(exc)]))
+    return problems
+
+
+def _run_check_config(paths: Sequence[str]) -> int:
+    problems = check_config(paths)
+    for line in problems:
+        _fail(line)
+    if not problems:
+        print(f"{', '.join(paths)}: no problems found")
+    return 2 if problems else 0
+
+
 def _fail(message: str) -> None:
     print(f"{PROG}: error: {' '.join(str(message).split())}", file=sys.stderr)
 
@@ -592,6 +670,8 @@ def main(argv: list[str] | None = None) -> int:
         except SystemExit as exc:  # --help
             return int(exc.code or 0) if not isinstance(exc.code, str) else 2
         debug = bool(getattr(args, "debug", False))
+        if args.command == "check-config":
+            return _run_check_config(args.files)
         if args.command == "history":
             hist_kwargs = _validate_history(args)  # before importing the numerics
             check_output(args.output)

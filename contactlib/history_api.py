@@ -74,6 +74,7 @@ from . import history_solver as hs
 from . import validate
 from .model import contact
 from .result import history_repr
+from .threads import blas_single_threaded
 
 __all__ = ["history", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
            "load_levels"]
@@ -191,6 +192,7 @@ def load_levels(load_path: Sequence[float], steps: int) -> tuple[np.ndarray, np.
 
 
 # ----------------------------------------------------------------------------- public API
+@blas_single_threaded
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
             steps: int, *, n: int | None = None, slab_ratio: float = 0.0,
             progress: Callable[[int, int], None] | None = None,

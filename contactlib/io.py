@@ -48,7 +48,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import xarray as xr
+
+if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-up time)
+    import xarray as xr
 
 from contactlib.indenter import indenter
 from contactlib.result import Solution
@@ -326,6 +328,8 @@ from contactlib.result import Solution
         attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = version()
     attrs["Conventions"] = CONVENTIONS
+
+    import xarray as xr
 
     ds = xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
     if single:
@@ -1024,6 +1028,8 @@ def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
     FileNotFoundError
         If there is no such file.
     """
+    import xarray as xr
+
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             return ds.load()

@@ -21,16 +21,19 @@ Examples
 
 from __future__ import annotations
 
-from typing import Any, Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Mapping, Sequence
 
 import numpy as np
-import xarray as xr
 
 from . import stages
 from .api import output_grid
 from .io import scene_to_dataset
 from .model import contact
 from .scene import Scene
+from .threads import blas_single_threaded
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 __all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
 
@@ -38,6 +41,7 @@ _FLAG_FIELDS = ("stick_admissible", "slip_direction_ok", "consistent")
 _VIOLATIONS = ("stick_violation", "slip_violation")
 
 
+@blas_single_threaded
 def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
     geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]),
@@ -45,6 +49,7 @@ def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
 
 
+@blas_single_threaded
 def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
           shear: dict[str, np.ndarray] | None = None,
           progress: Callable[[int, int], None] | None = None) -> list[dict]:
@@ -54,6 +59,7 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
                               tolerance=scene.tolerance, progress=progress)
 
 
+@blas_single_threaded
 def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
     """Consistency flags and violation measures, one value a case."""
     flags = [stages.check_case(r) for r in records]
@@ -62,12 +68,14 @@ def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
     return out
 
 
+@blas_single_threaded
 def energy(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
     """Frictional work of the loading half-cycle, one value a case (docs/conventions.md)."""
     geom = scene.geometry_object
     return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
 
 
+@blas_single_threaded
 def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
     """Tangential displacement u R/a^2 on the output grid, shape (cases, xi)."""
     geom, xi = scene.geometry_object, output_grid()
@@ -76,6 +84,7 @@ def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray
     return {"xi": xi, "tangential_displacement": np.array(rows).reshape(len(records), xi.size)}
 
 
+@blas_single_threaded
 def assemble(scene: Scene, records: Sequence[dict], *,
              checks: Mapping[str, np.ndarray] | None = None,
              work: Mapping[str, np.ndarray] | None = None,

@@ -54,7 +54,11 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
     ("contactlib.kernels.disc", "Surface displacements of disc loads on a half-space.", None),
     ("contactlib.kernels.strip", "Surface displacements of strip loads on a half-plane or a "
      "slab.", None),
-    ("contactlib.cli", "The command line (``python -m contactlib``).", ["main", "build_parser"]),
+    ("contactlib.threads", "Thread pools: one BLAS thread inside contactlib, independent cases "
+     "in parallel processes.", ["map_cases", "requested", "single_blas_thread",
+                                "blas_single_threaded", "ENV"]),
+    ("contactlib.cli", "The command line (``python -m contactlib``).",
+     ["main", "build_parser", "check_config"]),
 ]
 
 HEADER = """# API reference

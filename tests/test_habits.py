@@ -456,3 +456,37 @@ def test_truncated_dataset_is_named_with_the_fix(tmp_path) -> None:
     assert float(io.read_dataset(good)["friction_coefficient"][0]) == 0.152481
     with pytest.raises(FileNotFoundError):
         io.read_dataset(tmp_path / "missing.nc")
+
+
+# ----------------------------------------------------------------------------- check-config
+def test_check_config_names_file_and_line_of_a_yaml_syntax_error(tmp_path, capsys) -> None:
+    """Snakemake reads a --configfile before the workflow starts and its message names
+    neither file nor line; `contactlib check-config` does."""
+    bad = tmp_path / "my.yaml"
+    bad.write_text("scenes:\n  a: {geometry: sphere\n  b: 1\n")
+    code, out, err = run(capsys, "check-config", str(bad))
+    assert code == 2 and out == ""
+    assert err.strip() == (f"contactlib: error: {bad}, line 3, column 4: YAML syntax error: "
+                           "expected ',' or '}', but got ':'")
+
+
+def test_check_config_merges_like_snakemake_and_reports_every_scene_problem(tmp_path,
+                                                                           capsys) -> None:
+    base = REPO / "config" / "config.yaml"
+    over = tmp_path / "over.yaml"
+    over.write_text("scenes:\n  sphere-default: {n: 128}\n")  # merged key by key
+    code, out, err = run(capsys, "check-config", str(base), str(over))
+    assert (code, err) == (0, "") and "no problems found" in out
+    code, out, err = run(capsys, "check-config", str(over))  # alone it lacks keys
+    assert code == 2 and "scenes.sphere-default.geometry: is required" in err
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("scenes:\n  a: {geometry: sphere, nu: 0.7, stick_ratios: [0.5]}\n"
+                   "  b: {kind: history, geometry: sphere, nu: 0.3, friction: 0.2}\n")
+    code, out, err = run(capsys, "check-config", str(bad), str(tmp_path / "none.yaml"))
+    lines = err.strip().splitlines()
+    assert code == 2 and len(lines) == 1 and lines[0].endswith("none.yaml: no such file")
+    code, out, err = run(capsys, "check-config", str(bad))
+    assert code == 2
+    for where in ("scenes.a.nu: nu must be in (-1, 0.5], got 0.7", "scenes.b.load_path: is required",
+                  "scenes.b.steps: is required"):
+        assert where in err, (where, err)

@@ -1,6 +1,6 @@
 """The repository stands alone: no tracked file points outside it, every doc link resolves.
 
-* No tracked file (except this one) mentions ``../shared`` or ``DESIGN.md``:
+* No tracked file (except this one) mentions ``../shared``, ``shared/paper`` or ``DESIGN.md``:
   a clone has neither, so a reader must find everything under the clone.
 * Every relative link in ``README.md`` and ``docs/*.md`` (Markdown links
   ``[text](target)``) names a file or folder that exists in the repository,
@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-_FORBIDDEN = ("../shared", "design.md")
+_FORBIDDEN = ("../shared", "shared/paper", "design.md")
 _LINK = re.compile(r"(?<!!)\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 _EXTERNAL = ("http://", "https://", "mailto:")
 

@@ -101,15 +101,13 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
     kinds = [s.get("kind", "self-similar") for s in cfg["scenes"].values()]
     n_scenes = kinds.count("self-similar")
     histories = [s for s in cfg["scenes"].values() if s.get("kind") == "history"]
-    runs = sum(len(h["friction"]) if isinstance(h["friction"], list) else 1 for h in histories)
-    # every default scene has friction: a normal and a shear part per influence set;
-    # a history scene runs once a friction coefficient
-    assert counts == {"influence": 2 * n_scenes, "solve": n_scenes, "check": n_scenes,
+    # one influence job a set (every default scene has its own, normal and shear parts);
+    # a history scene is one job (its runs, one a friction coefficient, in parallel)
+    assert counts == {"influence": n_scenes, "solve": n_scenes, "check": n_scenes,
                       "displacements": n_scenes, "energy": n_scenes, "assemble": n_scenes,
-                      "history_run": runs, "history_assemble": len(histories),
-                      "figure_fig2": 1, "figure_fig3": 1, "figure_fig4": 1, "figure_fig5": 1,
-                      "figure_history_stick_radius": 1, "figure_history_stick_map": 1,
-                      "figure_history_loop": 1, "figure_history_energy": 1,
+                      "history_run": len(histories), "history_assemble": len(histories),
+                      # one job a family of figures (paper, history), its figures in parallel
+                      "figures_paper": 1, "figures_history": 1,
                       "key_numbers": 1, "all": 1}
 
 
@@ -132,21 +130,21 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     }, "figures": {}}
     wd = make_workdir(tmp_path, cfg)
     counts = job_counts(wd)
-    # influence: hertz normal; curve normal+shear (shared with curve-again);
-    # paper normal+shear (shared by paper-a and paper-b)
-    assert counts["influence"] == 1 + 2 + 2
+    # influence sets: hertz (normal only); curve (normal + shear, shared with
+    # curve-again); paper (normal + shear, shared by paper-a and paper-b)
+    assert counts["influence"] == 3
     assert counts["solve"] == 5 and counts["assemble"] == 5
     assert counts["check"] == 2  # hertz, curve
     assert counts["energy"] == 1  # curve-again
     assert counts["displacements"] == 1  # paper-b
     assert not any(rule.startswith("figure") for rule in counts)
-    dry = run(wd, "--dry-run").stdout
-    shear_jobs = re.findall(r"results/influence/([^/\s]+)/shear\.npz", dry)
-    assert not any(k.startswith("sphere-nu0.3-default-n32-c") and "hertz" in k
-                   for k in shear_jobs)
     from contactlib.scene import parse_scenes
     scenes = parse_scenes(cfg["scenes"])
-    assert f"{scenes['hertz'].influence_key}/shear.npz" not in dry
+    # the frictionless set gets no shear part: build it and look
+    key = scenes["hertz"].influence_key
+    run(wd, f"results/influence/{key}")
+    assert sorted(p.name for p in (wd / "results" / "influence" / key).glob("*.npz")) == \
+        ["normal.npz"]
     assert scenes["curve"].influence_key == scenes["curve-again"].influence_key
     assert scenes["paper-a"].influence_key == scenes["paper-b"].influence_key
 
@@ -254,7 +252,7 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
         assert "tiny-paper" in out or "cylinder-nu0.25-paper" in out, (rule, out)
     assert not any("tiny-default" in o for o in outputs)
     figs = {r for r, _ in jobs if r.startswith("figure")}
-    assert figs == {"figure_fig2", "figure_fig5"}  # the figures that draw tiny-paper
+    assert figs == {"figures_paper"}  # the family whose figures draw tiny-paper
 
 
 def test_convergence_target(tiny_run):

@@ -515,7 +515,8 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
         for row, i in enumerate(picks, start=1):
             ax = axes[row, 0]
             ax.pcolormesh(x_edges, xi_edges, state[i].T.astype(float), cmap=cmap, norm=norm,
-                          shading="flat", gid="state-map")
+                          shading="flat", gid="state-map",
+                          rasterized=True)  # PDF: one image, not 10^5 cells
             ax.plot(x, a_all[i], color="black", lw=0.9, gid="contact-radius")
             ax.plot(x, c_all[i], color="black", lw=1.0, ls=":", gid="stick-radius")
             bad = ~ok_all[i]

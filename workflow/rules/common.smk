@@ -140,18 +140,17 @@ SCENES = {n: s for n, s in ALL_SCENES.items() if s.kind == "self-similar"}
 HISTORIES = {n: s for n, s in ALL_SCENES.items() if s.kind == "history"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
 
-# influence sets, shared by every scene with the same key
+# influence sets, shared by every scene with the same key; the parts any of them needs
 INFLUENCE = {}
 for _s in SCENES.values():
-    INFLUENCE.setdefault(_s.influence_key, _s.influence_spec())
+    _spec = INFLUENCE.setdefault(_s.influence_key, dict(_s.influence_spec(), parts=[]))
+    _spec["parts"] = [p for p in ("normal", "shear") if p in _spec["parts"] or p in _s.parts]
 
 
 wildcard_constraints:
     scene="|".join(sorted(SCENES)) or "NONE",
     hscene="|".join(sorted(HISTORIES)) or "NONE",
-    index="[0-9]+",
     key="[^/]+",
-    part="normal|shear",
     study="|".join(sorted(CONVERGENCE["studies"])) or "NONE",
 
 
@@ -178,19 +177,20 @@ def scene_params(wildcards):
 
 
 def history_params(wildcards):
-    """One history run: the library call's arguments plus provenance."""
+    """A history scene's runs (the library call's arguments, one a k) plus provenance."""
     s = HISTORIES[wildcards.hscene]
-    return dict(s.run_spec(int(wildcards.index)), scene=s.name, hash=s.hash)
+    return {"runs": [s.run_spec(i) for i in range(len(s.frictions))], "scene": s.name,
+            "hash": s.hash}
 
 
-def history_runs(wildcards):
-    s = HISTORIES[wildcards.hscene]
-    return [f"results/history/{s.name}/k{i}.nc" for i in range(len(s.frictions))]
+def history_threads(wildcards):
+    """One worker process a friction coefficient (Snakemake caps it at --cores)."""
+    return len(HISTORIES[wildcards.hscene].frictions)
 
 
 def influence_files(wildcards):
-    s = SCENES[wildcards.scene]
-    return {part: f"results/influence/{s.influence_key}/{part}.npz" for part in s.parts}
+    """The folder of the scene's influence set (its <part>.npz files)."""
+    return {"influence": f"results/influence/{SCENES[wildcards.scene].influence_key}"}
 
 
 def stage_files(wildcards):
@@ -205,6 +205,46 @@ def stage_files(wildcards):
 
 def figure_scenes(fig):
     return list((config.get("figures") or {}).get(fig) or [])
+
+
+# the title a figure is listed under in the report (its caption holds the rest)
+FIGURE_TITLES = {
+    "fig2": "Fig. 2: friction coefficient k against stick ratio c/a",
+    "fig3": "Fig. 3: pressure and shear across the contact",
+    "fig4": "Fig. 4: tangential surface displacement",
+    "fig5": "Fig. 5: frictional work of a loading half-cycle",
+    "history_stick_radius": "History: stick-zone radius along the load path",
+    "history_stick_map": "History: stick/slip map over the path",
+    "history_loop": "History: displacement loop under load-unload",
+    "history_energy": "History: energy dissipated per load cycle",
+}
+
+
+# the figures the config asks for (those given scenes), by family
+FIGURE_FAMILIES = {
+    family: [fig for fig in figs if figure_scenes(fig)]
+    for family, figs in (("paper", PAPER_FIGURES), ("history", HISTORY_FIGURES))
+}
+FIGURE_FAMILIES = {family: figs for family, figs in FIGURE_FAMILIES.items() if figs}
+
+
+def figure_inputs(figs):
+    """The datasets of every scene the figures draw, each once."""
+    return sorted({f"results/datasets/{s}.nc" for fig in figs for s in figure_scenes(fig)})
+
+
+def figure_outputs(figs):
+    """<fig>_png (in the report, with the figure's caption and title) and <fig>_pdf."""
+    out = {}
+    for fig in figs:
+        out[f"{fig}_png"] = report(
+            f"results/figures/{fig}.png",
+            caption=f"../report/{fig}.rst",
+            category="Figures",
+            labels={"figure": FIGURE_TITLES.get(fig, fig), "file": f"{fig}.png"},
+        )
+        out[f"{fig}_pdf"] = f"results/figures/{fig}.pdf"
+    return out
 
 
 def all_targets():
@@ -254,15 +294,15 @@ def runtime_solve(wildcards, attempt):
     return int(5 + len(s.stick_ratios) * per_case / 60 * 4) * attempt
 
 
-def mem_history(wildcards, attempt):
-    """Dense operators over the history mesh (a few n x n) plus the per-step arrays."""
+def mem_history(wildcards, threads, attempt):
+    """Per worker: dense operators over the history mesh (a few n x n) plus the per-step arrays."""
     s = HISTORIES[wildcards.hscene]
     steps = s.steps * (len(s.load_path) - 1) + 1
-    return int(500 + 10 * 8 * s.n**2 / 1e6 + 6 * 8 * steps * s.n / 1e6) * attempt
+    return int(500 + threads * (10 * 8 * s.n**2 / 1e6 + 6 * 8 * steps * s.n / 1e6)) * attempt
 
 
-def runtime_history(wildcards, attempt):
-    """Minutes: ~2 ms a step at n = 240, growing like n^2 ... n^3."""
+def runtime_history(wildcards, threads, attempt):
+    """Minutes: ~2 ms a step at n = 240, growing like n^2 ... n^3; the runs share the workers."""
     s = HISTORIES[wildcards.hscene]
-    steps = s.steps * (len(s.load_path) - 1)
+    steps = s.steps * (len(s.load_path) - 1) * -(-len(s.frictions) // threads)
     return int(5 + steps * 0.002 * max(1.0, (s.n / 240) ** 3) / 60 * 4) * attempt

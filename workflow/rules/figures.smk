@@ -2,47 +2,33 @@
 # numbers, each drawn by a contactlib function from the scenes' datasets.
 
 
-# the title a figure is listed under in the report (its caption holds the rest)
-FIGURE_TITLES = {
-    "fig2": "Fig. 2: friction coefficient k against stick ratio c/a",
-    "fig3": "Fig. 3: pressure and shear across the contact",
-    "fig4": "Fig. 4: tangential surface displacement",
-    "fig5": "Fig. 5: frictional work of a loading half-cycle",
-    "history_stick_radius": "History: stick-zone radius along the load path",
-    "history_stick_map": "History: stick/slip map over the path",
-    "history_loop": "History: displacement loop under load-unload",
-    "history_energy": "History: energy dissipated per load cycle",
-}
-
-
-# one rule a figure (figure_fig2 ... figure_fig5), each with its own report caption
-for _fig in FIGURES:
+# one rule a family of figures (figures_paper: fig2 ... fig5 from the self-similar
+# scenes; figures_history: history_* from the history scenes), one job each that
+# draws the family's figures in parallel worker processes (threads), forked
+# after the imports (matplotlib, xarray: most of a figure's time when it had a
+# process of its own); each figure keeps its own report caption
+for _family, _figs in FIGURE_FAMILIES.items():
 
     rule:
         name:
-            f"figure_{_fig}"
+            f"figures_{_family}"
         input:
-            [f"results/datasets/{s}.nc" for s in figure_scenes(_fig)],
+            figure_inputs(_figs),
         output:
-            png=report(
-                f"results/figures/{_fig}.png",
-                caption=f"../report/{_fig}.rst",
-                category="Figures",
-                labels={"figure": FIGURE_TITLES.get(_fig, _fig), "file": f"{_fig}.png"},
-            ),
-            pdf=f"results/figures/{_fig}.pdf",
+            **figure_outputs(_figs),
         params:
-            fig=_fig,
-            scenes=figure_scenes(_fig),
+            figures={fig: figure_scenes(fig) for fig in _figs},
             version=VERSION,
         log:
-            f"results/logs/figures/{_fig}.log",
+            f"results/logs/figures/{_family}.log",
+        benchmark:
+            f"results/benchmarks/figures/{_family}.tsv"
         conda:
             "../envs/contactlib.yaml"
-        threads: 1
+        threads: min(2, len(_figs))
         resources:
-            mem_mb=1000,
-            runtime=5,
+            mem_mb=800 + 400 * min(2, len(_figs)),
+            runtime=5 + len(_figs),
         script:
             "../scripts/figure.py"
 

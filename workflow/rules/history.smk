@@ -1,20 +1,24 @@
-# Scenes of kind `history`: one incremental run a friction coefficient (jobs in
-# parallel), stacked along `friction_coefficient` into the scene's dataset.
+# Scenes of kind `history`: one incremental run a friction coefficient, in
+# parallel worker processes of one job a scene (results/history/<scene>/k<i>.nc),
+# then stacked along `friction_coefficient` into the scene's dataset.
 
 
 rule history_run:
     output:
-        "results/history/{hscene}/k{index}.nc",
+        directory("results/history/{hscene}"),
     params:
         run=history_params,
         version=VERSION,
     log:
-        "results/logs/history/{hscene}-k{index}.log",
+        "results/logs/history/{hscene}.log",
     benchmark:
-        "results/benchmarks/history/{hscene}-k{index}.tsv"
+        "results/benchmarks/history/{hscene}.tsv"
     conda:
         "../envs/contactlib.yaml"
-    threads: 1
+    threads: history_threads
+    # first, when jobs wait for cores: a history's figures (the stick map is the
+    # slowest figure) then overlap with the self-similar scenes' chain of jobs
+    priority: 1
     resources:
         mem_mb=mem_history,
         runtime=runtime_history,
@@ -24,12 +28,13 @@ rule history_run:
 
 rule history_assemble:
     input:
-        history_runs,
+        "results/history/{hscene}",
     output:
         "results/datasets/{hscene}.nc",
     params:
         scene=lambda wildcards: HISTORIES[wildcards.hscene].name,
         hash=lambda wildcards: HISTORIES[wildcards.hscene].hash,
+        runs=lambda wildcards: len(HISTORIES[wildcards.hscene].frictions),
         version=VERSION,
     log:
         "results/logs/assemble/{hscene}.log",

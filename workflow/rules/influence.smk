@@ -1,20 +1,21 @@
-# Influence matrices: the collocation operators of the kernels, one part
-# ("normal": of the pressures; "shear": of the shears) for one influence set.
-# A set is shared by every scene with the same key (geometry, nu, method, n,
-# slab ratio and, for the default method, whose meshes carry a node at c, the
-# stick ratios). A frictionless scene asks for no shear part.
+# Influence matrices: the collocation operators of the kernels, one file a part
+# ("normal": of the pressures; "shear": of the shears) in the folder of one
+# influence set, results/influence/<key>/<part>.npz. A set is shared by every
+# scene with the same key (geometry, nu, method, n, slab ratio and, for the
+# default method, whose meshes carry a node at c, the stick ratios); it holds
+# the parts those scenes need (no shear part if all of them are frictionless).
 
 
 rule influence:
     output:
-        "results/influence/{key}/{part}.npz",
+        directory("results/influence/{key}"),
     params:
         spec=influence_spec,
         version=VERSION,
     log:
-        "results/logs/influence/{key}-{part}.log",
+        "results/logs/influence/{key}.log",
     benchmark:
-        "results/benchmarks/influence/{key}-{part}.tsv"
+        "results/benchmarks/influence/{key}.tsv"
     conda:
         "../envs/contactlib.yaml"
     threads: 1

@@ -1,25 +1,43 @@
-"""Rule figure: one figure from the scenes' datasets (PNG and PDF)."""
+"""Rule figures_<family>: the family's figures (PNG and PDF) from the scenes' datasets.
+
+One job draws every figure of its family; the figures run in parallel worker
+processes (threads), forked after the imports, each one whole in one process.
+"""
 
 import sys
+from pathlib import Path
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
-from contactlib import io, plot  # noqa: E402
+from contactlib import io  # noqa: E402
+from contactlib.threads import map_cases  # noqa: E402
 
-name = snakemake.params.fig  # noqa: F821
-datasets = [io.read_dataset(path) for path in snakemake.input]  # noqa: F821
-if name == "history_stick_map":  # the map of one history scene
-    fig = plot.hist_stick_map(datasets[0])
-else:
-    draw = {
-        "fig2": plot.fig2_friction,
-        "fig3": plot.fig3_tractions,
-        "fig4": plot.fig4_displacement,
-        "fig5": plot.fig5_work,
-        "history_stick_radius": plot.hist_stick_radius,
-        "history_loop": plot.hist_displacement_loop,
-        "history_energy": plot.hist_energy_per_cycle,
-    }[name]
-    fig = draw(datasets)
-io.write_figure(fig, snakemake.output.png, style=plot.style_path())  # noqa: F821
-io.write_figure(fig, snakemake.output.pdf, style=plot.style_path())  # noqa: F821
+figures = snakemake.params.figures  # noqa: F821  {figure: [scene, ...]}
+DRAW = {}
+if any(not name.startswith("history_") for name in figures):
+    from contactlib.plot import paper
+
+    DRAW.update(fig2=paper.fig2_friction, fig3=paper.fig3_tractions,
+                fig4=paper.fig4_displacement, fig5=paper.fig5_work)
+if any(name.startswith("history_") for name in figures):
+    from contactlib.plot import history as hist
+
+    DRAW.update(history_stick_radius=hist.hist_stick_radius,
+                history_stick_map=lambda datasets: hist.hist_stick_map(datasets[0]),
+                history_loop=hist.hist_displacement_loop,
+                history_energy=hist.hist_energy_per_cycle)
+from contactlib.plot.base import style_path  # noqa: E402
+
+STYLE = style_path()
+# the datasets, read once before the workers fork: <scene>.nc -> scene
+datasets = {Path(path).stem: io.read_dataset(path) for path in snakemake.input}  # noqa: F821
+
+
+def draw(name: str) -> None:
+    fig = DRAW[name]([datasets[scene] for scene in figures[name]])
+    io.write_figure(fig, snakemake.output[f"{name}_png"], style=STYLE)  # noqa: F821
+    io.write_figure(fig, snakemake.output[f"{name}_pdf"], style=STYLE)  # noqa: F821
+    print(f"{name}: drawn from {', '.join(figures[name])}", flush=True)
+
+
+map_cases(draw, list(figures), snakemake.threads)  # noqa: F821

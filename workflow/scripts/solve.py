@@ -1,6 +1,7 @@
 """Rule solve: Newton per stick ratio of a scene -> results/solutions/<scene>.npz."""
 
 import sys
+from pathlib import Path
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
@@ -9,7 +10,8 @@ from contactlib.scene import parse_scene  # noqa: E402
 
 name = snakemake.params.scene["name"]  # noqa: F821
 scene = parse_scene(name, snakemake.config["scenes"][name])  # noqa: F821
-parts = {name: io.read_arrays(path) for name, path in snakemake.input.items()}  # noqa: F821
+folder = Path(snakemake.input.influence)  # noqa: F821
+parts = {part: io.read_arrays(folder / f"{part}.npz") for part in scene.parts}
 
 
 def progress(i, total):

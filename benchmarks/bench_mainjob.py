@@ -1,0 +1,133 @@
+"""The main job against a dense LU, measured in the same run.
+
+    python benchmarks/bench_mainjob.py [--repeat R] [--cores C] [--working-tree] [--keep DIR]
+
+For each of R repeats (default 1) this
+
+1. runs the reference twice: a fresh Python process that imports numpy and
+   scipy, draws a dense 4097 x 4097 matrix and LU-factorizes it with
+   ``scipy.linalg.lu_factor`` (imports included, wall time of the process);
+2. runs the main job, ``python -m snakemake --cores C`` (default 2), in a fresh
+   temporary copy of the repository (``git archive HEAD``; with
+   ``--working-tree`` the tracked files as they are now, uncommitted edits
+   included), with ``PYTHONPATH`` pointing at that copy so that its
+   ``contactlib`` is the one imported;
+3. runs the reference twice again,
+
+and prints the times and the ratio main job / fastest of the four references,
+and the same ratio of CPU time (user + system, over every process of the
+main job; the least of the four references'): a second view, less tied to
+how much of the machine other jobs leave (the acceptance is on wall time).
+The fastest, because the reference swings most with the load (it uses the
+BLAS's default threads, 1.0 - 1.9 s for the same factorization here) and
+its best time is the machine's speed; the main job varies far less.
+With ``--keep DIR`` the last run's ``results`` folder is copied to DIR (to
+compare its datasets and figures byte for byte with another version's).
+Acceptance (issue 17): ratio at most 20. The BLAS thread variables are left
+as the caller set them, for both processes alike; the copy is removed
+afterwards. On a shared machine the ratio swings with the load: repeat and
+read the range.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+SIZE = 4097
+REFERENCE = (
+    "import numpy as np\n"
+    "from scipy import linalg\n"
+    f"a = np.random.default_rng(0).standard_normal(({SIZE}, {SIZE}))\n"
+    "linalg.lu_factor(a, overwrite_a=True, check_finite=False)\n"
+)
+
+
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def wall(cmd: list[str], cwd: Path, env: dict, cpu: list[float] | None = None) -> float:
+    """Wall time of one process in seconds; raise with its output if it fails.
+
+    With ``cpu`` given, the CPU time (user + system) of the process and every
+    descendant it waited for is appended to it.
+    """
+    c0, t0 = _children_cpu(), time.perf_counter()
+    proc = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True)
+    t = time.perf_counter() - t0
+    if cpu is not None:
+        cpu.append(_children_cpu() - c0)
+    if proc.returncode != 0:
+        raise SystemExit(f"{' '.join(cmd)} failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
+    return t
+
+
+def fresh_copy(dest: Path, working_tree: bool) -> None:
+    """The repository's tracked files in dest: HEAD, or the working tree's versions."""
+    if working_tree:
+        names = subprocess.run(["git", "ls-files", "-z"], cwd=REPO, check=True,
+                               capture_output=True).stdout.decode().split("\0")
+        for name in filter(None, names):
+            src = REPO / name
+            if src.is_file():
+                (dest / name).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(src, dest / name)
+    else:
+        archive = subprocess.run(["git", "archive", "HEAD"], cwd=REPO, check=True,
+                                 capture_output=True).stdout
+        subprocess.run(["tar", "-x", "-C", str(dest)], input=archive, check=True)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=1)
+    parser.add_argument("--cores", type=int, default=2)
+    parser.add_argument("--working-tree", action="store_true")
+    parser.add_argument("--keep", type=Path, default=None)
+    args = parser.parse_args()
+    print(f"machine: {os.cpu_count()} CPUs, Python {sys.version.split()[0]}, BLAS threads "
+          f"{os.environ.get('OPENBLAS_NUM_THREADS', 'default')}", flush=True)
+    ratios, cpu_ratios = [], []
+    for i in range(args.repeat):
+        with tempfile.TemporaryDirectory(prefix="contactlib-mainjob-") as tmp:
+            work = Path(tmp)
+            fresh_copy(work, args.working_tree)
+            env = dict(os.environ, PYTHONPATH=str(work))
+            ref = [sys.executable, "-c", REFERENCE]
+            load = os.getloadavg()[0]
+            ref_cpu: list[float] = []
+            job_cpu: list[float] = []
+            before = [wall(ref, work, env, ref_cpu) for _ in range(2)]
+            job = wall([sys.executable, "-m", "snakemake", "--cores", str(args.cores)],
+                       work, env, job_cpu)
+            after = [wall(ref, work, env, ref_cpu) for _ in range(2)]
+            jobs = len(list((work / "results" / "logs").rglob("*.log")))
+            if args.keep is not None:
+                shutil.rmtree(args.keep, ignore_errors=True)
+                shutil.copytree(work / "results", args.keep)
+        ratio = job / min(before + after)
+        ratios.append(ratio)
+        refs = " ".join(f"{t:.2f}" for t in before + after)
+        cpu_ratio = job_cpu[0] / min(ref_cpu)
+        cpu_ratios.append(cpu_ratio)
+        print(f"run {i + 1}: main job {job:.1f} s ({jobs} job logs), LU {SIZE} reference "
+              f"{refs} s, ratio {ratio:.1f} (load average before {load:.1f}); CPU time: "
+              f"main job {job_cpu[0]:.1f} s, reference {min(ref_cpu):.2f} - {max(ref_cpu):.2f} s, "
+              f"ratio {cpu_ratio:.1f}", flush=True)
+    if len(ratios) > 1:
+        print(f"ratio range {min(ratios):.1f} - {max(ratios):.1f} over {len(ratios)} runs; "
+              f"CPU-time ratio {min(cpu_ratios):.1f} - {max(cpu_ratios):.1f}")
+
+
+if __name__ == "__main__":
+    main()

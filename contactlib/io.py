@@ -458,6 +458,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     >>> ds["pressure"].dims, ds.attrs["steps"]
     (('step', 'xi'), 4)
     """
+    import xarray as xr
+
     from contactlib import history_solver as hs
 
     r = result
@@ -572,6 +574,8 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     ValueError
         When the histories differ in anything but k, or repeat a k.
     """
+    import xarray as xr
+
     items = list(datasets)
     if not items:
         raise ValueError("stack_histories needs at least one history dataset")
@@ -632,6 +636,8 @@ def study_to_dataset(study: Study, name: str | None = None) -> xr.Dataset:
         geometry, poisson_ratio, method, slab_ratio, reference (its source),
         contactlib_version, Conventions, and ``study`` when ``name`` is given.
     """
+    import xarray as xr
+
     st = study
     ds = xr.Dataset(
         {

@@ -39,7 +39,8 @@ from .stages import OUTPUTS, _paper_m, parts_needed
 __all__ = ["Scene", "HistoryScene", "KINDS", "parse_scene", "parse_scenes", "config_hash"]
 
 KINDS = ("self-similar", "history")
-_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "stick_ratios", "slab_ratio",
+_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
+         "slab_ratio",
          "outputs")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio")
@@ -92,6 +93,7 @@ class Scene:
     outputs: tuple[str, ...]
     hash: str
     tolerance: float | None = None
+    max_error: float = accuracy.DEFAULT_MAX_ERROR
     kind: str = "self-similar"
 
     @property
@@ -188,6 +190,10 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
             tolerance = accuracy.check_tolerance(raw["tolerance"])
         except ValueError as exc:
             raise fail("tolerance", str(exc)) from None
+    try:
+        max_error = accuracy.check_max_error(raw.get("max_error", accuracy.DEFAULT_MAX_ERROR))
+    except ValueError as exc:
+        raise fail("max_error", str(exc)) from None
     method = raw.get("method", "default")
     try:
         geom, n, method = api._validate_common(raw["geometry"], raw["nu"], raw.get("n"), method,
@@ -214,7 +220,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
-                 tolerance=tolerance)
+                 tolerance=tolerance, max_error=max_error)
 
 
 @dataclass(frozen=True)

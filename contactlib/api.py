@@ -22,6 +22,7 @@ from .default_method import DiscreteSolution, solve_default
 from .geometry import Geometry
 from .paper_method import PaperSolution
 from .result import Solution
+from .accuracy import DEFAULT_MAX_ERROR, check_max_error
 from .theory import beta_of_nu, uncoupled_friction
 
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
@@ -110,9 +111,11 @@ def _validate_common(geometry, nu, n, method, slab_ratio) -> tuple[Geometry, int
 
 # ----------------------------------------------------------------------------- post-processing
 def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
-            want_energy: bool, message: str = "") -> Solution:
-    """Profiles on the output grid, load, flags and work of a discrete solution."""
+            want_energy: bool, message: str = "",
+            max_error: float = DEFAULT_MAX_ERROR) -> Solution:
+    """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
     rec = stages._record(geom, d, samples=True)
+    stages.estimate_case(geom, method, n, rec, max_error=max_error)
     return _from_record(geom, rec, method, n, want_energy, message)
 
 
@@ -176,7 +179,8 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
 # ----------------------------------------------------------------------------- public API
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
-          slab_ratio: float = 0.0, energy: bool = True) -> Solution:
+          slab_ratio: float = 0.0, energy: bool = True,
+          max_error: float = DEFAULT_MAX_ERROR) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -199,6 +203,11 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     energy : bool
         Integrate the frictional work of the loading half-cycle (``True`` or
         ``False``; anything else is refused).
+    max_error : float
+        Accuracy asked for, in (0, 1): a case whose estimated relative error
+        of k (``error_estimate``, from the same case on the nested mesh n/2)
+        exceeds it is reported with ``resolved = False`` and a message that
+        names the n that would resolve it. Default 1e-3.
 
     Returns
     -------
@@ -212,31 +221,33 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
     energy = _flag("energy", energy)
+    max_error = check_max_error(max_error)
     if (stick_ratio is None) == (friction is None):
         raise ValueError("give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
         c = _number("stick_ratio", stick_ratio, 0.0, 1.0)
         if method != "default":
             stages._paper_m(c, n)  # validate before solving
-        rec = stages.solve_cases(geom, method, n, [c])[0]
+        rec = stages.solve_cases(geom, method, n, [c], max_error=max_error)[0]
         return _from_record(geom, rec, method, n, energy)
 
     if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
-                     energy=energy)
+                     energy=energy, max_error=max_error)
     k = _number("friction", friction, 0.0, None)
     if k == 0.0:
-        return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy)
+        return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
+                       max_error=max_error)
     if beta_of_nu(geom.nu) == 0.0:
         d = _discrete(geom, 0.0, n, method)
         sol = _finish(geom, d, method, n, energy,
                       stages.decoupled_message() + "; nothing tends to slip, so the whole "
-                      "contact sticks (c/a = 1)")
+                      "contact sticks (c/a = 1)", max_error=max_error)
         sol.stick_ratio, sol.friction_coefficient = 1.0, k
         return sol
     if method == "default":
         c, d = stick_ratio_for_friction(geom, k, n)
-        return _finish(geom, d, method, n, energy)
+        return _finish(geom, d, method, n, energy, max_error=max_error)
     # paper method: c/a only at m/n; pick the m/n whose k is nearest
     table = [_discrete(geom, m / n, n, method) for m in range(0, n)]
     ks = np.array([d.k for d in table])
@@ -245,7 +256,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     return _finish(geom, table[m], method, n, energy,
                    f"paper method: c/a restricted to m/n; nearest m/n = {m}/{n} has "
                    f"k = {ks[m]:.6g}; linear interpolation in the k(m/n) table gives "
-                   f"c/a = {c_interp:.6g} for k = {k:.6g}")
+                   f"c/a = {c_interp:.6g} for k = {k:.6g}", max_error=max_error)
 
 
 def _parse_ratios(stick_ratios, n: int) -> list[float]:
@@ -274,7 +285,8 @@ def _parse_ratios(stick_ratios, n: int) -> list[float]:
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
           n: int | None = None, method: str = "default", slab_ratio: float = 0.0,
           energy: bool = True,
-          progress: Callable[[int, int], None] | None = None) -> list[Solution]:
+          progress: Callable[[int, int], None] | None = None,
+          max_error: float = DEFAULT_MAX_ERROR) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -282,10 +294,12 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     in c/a), the first two from the solver's own warm start. A point that
     fails to converge is kept and flagged (``converged = False``), never
     dropped. Every argument is checked before the first point is solved.
+    Every case carries ``error_estimate`` and ``resolved`` (see
+    :func:`solve`, ``max_error``).
 
     Parameters
     ----------
-    geometry, nu, n, method, slab_ratio, energy
+    geometry, nu, n, method, slab_ratio, energy, max_error
         As for :func:`solve`.
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
@@ -301,12 +315,14 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
     energy = _flag("energy", energy)
     progress = _callback("progress", progress)
+    max_error = check_max_error(max_error)
     ratios = _parse_ratios(stick_ratios, n)
     if method != "default":
         for c in ratios:
             stages._paper_m(c, n)  # validate every ratio before solving any
     out = []
-    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True)):
+    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True,
+                                                      max_error=max_error)):
         out.append(_from_record(geom, rec, method, n, energy))
         if progress is not None:
             progress(i + 1, len(ratios))

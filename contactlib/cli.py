@@ -74,6 +74,15 @@ def parse_nu(text: str) -> float:
     return value
 
 
+def parse_max_error(text: str) -> float:
+    """Accuracy asked for: a relative error of k in (0, 1)."""
+    req = "a number in (0, 1)"
+    value = _number("--max-error", text, req)
+    if not 0.0 < value < 1.0:
+        raise UsageError(f"--max-error must be {req}, got {text!r}")
+    return value
+
+
 def parse_fraction(option: str, text: str) -> float:
     """A ratio in [0, 1] (stick ratio c/a)."""
     req = "a number in [0, 1]"
@@ -204,6 +213,10 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                           "thickness, a/h >= 0 (0 = half-plane); default: 0")
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
                      default=None, help=_OUTPUT_HELP)
+    sub.add_argument("--max-error", metavar="E", default="1e-3",
+                     help="accuracy a case must reach, as relative error of k in (0, 1): a "
+                          "case whose error estimate exceeds it is reported as not resolved; "
+                          "default: %(default)s")
     sub.add_argument("--no-energy", action="store_true",
                      help="skip the frictional-work integration "
                           "(frictional_work is NaN)")
@@ -300,6 +313,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         "method": args.method,
         "slab_ratio": parse_slab_ratio(args.slab_ratio),
         "energy": not args.no_energy,
+        "max_error": parse_max_error(args.max_error),
     }
     if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
         raise UsageError(
@@ -396,7 +410,9 @@ def format_summary(sol: Solution) -> str:
     lines = [
         head,
         f"  c/a    = {_g(sol.stick_ratio)}",
-        f"  k      = {_g(sol.friction_coefficient)}",
+        f"  k      = {_g(sol.friction_coefficient)}   (estimated relative error "
+        f"{sol.error_estimate:.1e}; resolved: {_yes(sol.resolved)}, max error "
+        f"{sol.max_error:g})",
         f"  P/P_H  = {_g(sol.load_ratio)}",
         f"  V      = {_g(sol.frictional_work)}   ({work_scale})",
         f"  slip direction ok: {_yes(sol.slip_direction_ok)}, "
@@ -419,14 +435,15 @@ def format_table(solutions: Sequence[Solution]) -> str:
     if s0.geometry == "cylinder":
         head += f", a/h = {s0.slab_ratio:g}"
     cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
-            f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9}")
+            f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9} "
+            f"{'k error':>8} {'res':>3}")
     rows = [head, cols]
     for s in solutions:
         row = (f"{s.stick_ratio:8.4f} {_g(s.friction_coefficient):>11} "
                f"{_g(s.load_ratio):>11} {_g(s.frictional_work):>11} "
                f"{_yes(s.slip_direction_ok):>4} {_yes(s.stick_admissible):>5} "
                f"{_yes(s.consistent):>4} {_yes(s.converged):>4} "
-               f"{s.residual_norm:9.2e}")
+               f"{s.residual_norm:9.2e} {s.error_estimate:8.1e} {_yes(s.resolved):>3}")
         if s.message:
             row += f"  {s.message}"
         rows.append(row)

@@ -82,6 +82,16 @@ _POINT_FLOAT_ATTRS: dict[str, tuple[str, str]] = {
     ),
     "frictional_work": ("scaled frictional work of the loading half-cycle", ""),
     "residual_norm": ("norm of the final solver residual", "solver status"),
+    "error_estimate": (
+        "estimated relative error of friction_coefficient",
+        "from the same case on the nested meshes n/4 and n/2 (Richardson, order 2; the "
+        "larger difference where they do not converge cleanly); 0 where k is exact",
+    ),
+    "load_error_estimate": ("estimated relative error of load_ratio", "as error_estimate"),
+    "work_error_estimate": (
+        "estimated relative error of frictional_work",
+        "as error_estimate; NaN when the work is not computed",
+    ),
 }
 
 _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
@@ -98,6 +108,10 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
         "consistency flag",
     ),
     "converged": ("solver converged", "solver status; failed cases are kept"),
+    "resolved": (
+        "converged with error_estimate at most max_error",
+        "a case that is not resolved is not a good number (see message)",
+    ),
 }
 
 _SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio")
@@ -261,6 +275,9 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         "elements": int(first.n),
         "method": str(first.method),
     }
+    max_errors = {float(s.max_error) for s in sols if math.isfinite(s.max_error)}
+    if max_errors:
+        attrs["max_error"] = max(max_errors)
     if geometry == "cylinder":
         attrs["slab_ratio"] = float(first.slab_ratio)
     attrs["contactlib_version"] = _version()

@@ -49,7 +49,8 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
     """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
     return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
                               normal=normal, shear=shear, samples=scene.needs_samples,
-                              tolerance=scene.tolerance, progress=progress)
+                              tolerance=scene.tolerance, progress=progress,
+                              max_error=scene.max_error)
 
 
 def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
@@ -111,7 +112,7 @@ def assemble(scene: Scene, records: Sequence[dict], *,
     if "k_curve" not in want:
         drop += list(_FLAG_FIELDS)
     if "energy" not in want:
-        drop.append("frictional_work")
+        drop += ["frictional_work", "work_error_estimate"]
     ds = ds.drop_vars(drop)
     if "k_curve" in want:
         for name in _VIOLATIONS:

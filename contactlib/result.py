@@ -163,6 +163,17 @@ class Solution:
     iterations : int
     message : str
         Human-readable note (e.g. why a case is degenerate).
+    error_estimate : float
+        Estimated relative error of ``friction_coefficient`` (embedded
+        solves on the nested meshes n/4 and n/2; 0 where k is exact).
+    load_error_estimate, work_error_estimate : float
+        The same for ``load_ratio`` and ``frictional_work`` (NaN when not
+        estimated).
+    resolved : bool
+        Converged, and ``error_estimate`` at most ``max_error``; a case that
+        is not resolved is not to be used as a good number.
+    max_error : float
+        The accuracy asked for (relative error of k).
     """
 
     geometry: str
@@ -185,6 +196,11 @@ class Solution:
     residual_norm: float = 0.0
     iterations: int = 0
     message: str = ""
+    error_estimate: float = float("nan")
+    load_error_estimate: float = float("nan")
+    work_error_estimate: float = float("nan")
+    resolved: bool = False
+    max_error: float = float("nan")
     extra: dict = field(default_factory=dict)
 
     def __repr__(self) -> str:

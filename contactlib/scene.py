@@ -41,7 +41,8 @@ __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "pars
            "config_hash"]
 
 KINDS = ("self-similar", "history")
-_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "stick_ratios", "slab_ratio",
+_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
+         "slab_ratio",
          "outputs")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio")
@@ -96,6 +97,7 @@ class Scene:
     outputs: tuple[str, ...]
     hash: str
     tolerance: float | None = None
+    max_error: float = accuracy.DEFAULT_MAX_ERROR
     kind: str = "self-similar"
 
     @property
@@ -228,6 +230,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
         if raw.get("stick_ratios") == "all":
             bad.add("stick_ratios", "'all' means m/n and needs a given n; with a tolerance "
                                     "list the stick ratios")
+    max_error = bad.check("max_error", accuracy.check_max_error,
+                          raw.get("max_error", accuracy.DEFAULT_MAX_ERROR))
     method = raw.get("method", "default")
     # each key on its own first, so that every bad key is named ...
     ok = [bad.check("geometry", _choice, "geometry", raw.get("geometry"), api.GEOMETRIES)
@@ -263,7 +267,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
-                 tolerance=tolerance)
+                 tolerance=tolerance, max_error=max_error)
 
 
 @dataclass(frozen=True, repr=False)

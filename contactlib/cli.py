@@ -287,6 +287,11 @@ def build_parser() -> argparse.ArgumentParser:
                       help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
                            "default: 0")
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
+    hist.add_argument("--max-error", metavar="E", default="1e-3",
+                      help="accuracy a step must reach, in (0, 1): a step whose estimated "
+                           "error of the stick radius (in a_max) or relative error of the "
+                           "frictional work exceeds it is flagged not resolved; "
+                           "default: %(default)s")
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
     return parser
@@ -346,6 +351,7 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "n": None if args.n is None else parse_n(args.n, _history_limit("MIN_N"),
                                                  _history_limit("MAX_N")),
         "slab_ratio": parse_slab_ratio(args.slab_ratio),
+        "max_error": parse_max_error(args.max_error),
     }
     if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
         raise UsageError(
@@ -470,6 +476,9 @@ def format_history(res: Any) -> str:
     rows.append(f"  work in {work_scale}; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
+    if res.resolved is not None:
+        rows.append(f"  resolved steps (max error {res.max_error:g}): "
+                    f"{int(res.resolved[1:].sum())}/{total}")
     if res.message:
         rows.append(f"  message: {res.message}")
     return "\n".join(rows)

@@ -39,7 +39,8 @@ def _toward_end(t: np.ndarray, power: float) -> np.ndarray:
 # c: a root-graded feature of length L (d < L: elements ~ sqrt(d L)/n, as a
 # power-2 mesh) turning geometric beyond L (elements ~ d/n), plus a uniform
 # part; the slip side adds the same feature at the contact edge.
-_GEOMETRIC = 1.0  # weight of the geometric tail (elements per e-fold ~ 0.6 n / 16)
+_GEOMETRIC = 1.2  # weight of the geometric tail (1.0 left the sphere at nu = 0.499,
+# c/a = 1e-6, n = 256 at 1.03e-4 from the closed form; 1.2: 8.4e-5, 1e-4: 5.8e-5)
 _UNIFORM = 0.5  # weight of the uniform part (per unit of a; of c on the stick side)
 _EDGE = 0.5  # weight of the contact-edge feature
 _STICK = 1.5  # weight of the stick side
@@ -95,8 +96,9 @@ def graded_mesh(n: int, stick_ratio: float, power: float = 2.0,
     beyond, with a fixed number of elements per e-fold, up to the uniform
     size; the contact edge a is root-graded as well. The element counts of
     the two sides follow from that density: n elements at c/a = 1/2, more
-    where a tiny stick zone or a thin slip annulus adds e-folds (about 2.5 n
-    at c/a = 1e-8, 2.6 n at 1 - 1e-5), scaled back to :data:`MAX_ELEMENTS`.
+    where a tiny stick zone or a thin slip annulus adds e-folds (1.19 n at
+    c/a = 0.1, 2.3 n at 1e-4, 3.8 n at 1e-8; 1.38 n at 0.9, 3.1 n at 0.9999,
+    3.6 n at 1 - 1e-5), scaled back to :data:`MAX_ELEMENTS`.
     For n a multiple of 16 both counts are multiples of n/16, so halving n
     halves every element (nested meshes: clean Richardson estimates).
 

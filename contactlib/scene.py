@@ -45,7 +45,7 @@ _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "sti
          "slab_ratio",
          "outputs")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
-                 "slab_ratio")
+                 "slab_ratio", "max_error")
 
 
 def config_hash(raw: Mapping[str, Any]) -> str:
@@ -287,6 +287,8 @@ class HistoryScene:
         Steps per path segment.
     n : int
         Elements over [0, 1.2 a_max].
+    max_error : float
+        Accuracy a step must reach to be flagged resolved (default 1e-3).
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -300,13 +302,14 @@ class HistoryScene:
     n: int
     slab_ratio: float
     hash: str
+    max_error: float = accuracy.DEFAULT_MAX_ERROR
     kind: str = "history"
 
     def run_spec(self, index: int) -> dict[str, Any]:
         """Keyword arguments of :func:`contactlib.history.history` for friction ``index``."""
         return {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
-                "slab_ratio": self.slab_ratio}
+                "slab_ratio": self.slab_ratio, "max_error": self.max_error}
 
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
@@ -343,10 +346,12 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     slab = bad.check("slab_ratio", api._number, "slab_ratio", raw.get("slab_ratio", 0.0), 0.0)
     if geometry == "sphere" and slab:
         bad.add("slab_ratio", "applies to the cylinder only")
+    max_error = bad.check("max_error", accuracy.check_max_error,
+                          raw.get("max_error", accuracy.DEFAULT_MAX_ERROR))
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
-                        hash=config_hash(raw))
+                        hash=config_hash(raw), max_error=max_error)
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:

@@ -54,17 +54,44 @@ def test_closed_form_at_default_resolution(geometry, c):
     assert sol.error_estimate < 1e-3
 
 
-@pytest.mark.parametrize("geometry,c", [("sphere", 0.3), ("cylinder", 0.9)])
+FOURFOLD = [("cylinder", 0.9), pytest.param("sphere", 0.3, marks=pytest.mark.slow),
+            pytest.param("sphere", 0.5, marks=pytest.mark.slow),
+            pytest.param("sphere", 0.9, marks=pytest.mark.slow),
+            pytest.param("cylinder", 0.1, marks=pytest.mark.slow)]
+
+
+@pytest.mark.parametrize("geometry,c", FOURFOLD)
 def test_estimate_against_fourfold_refinement(geometry, c):
-    coarse = solve(geometry, 0.3, stick_ratio=c, n=128)
-    fine = solve(geometry, 0.3, stick_ratio=c, n=512)
+    """Default n = 256 against n = 1024: each estimate within [err/3, 10 err].
+
+    The truth's own error is taken as 1/15 of the difference (n^-2, measured
+    from n = 128 on; below, the sphere's k error crosses zero between n = 32
+    and 64, and at n = 128 the estimate from 32/64/128 misses it by 11x, see
+    docs/accuracy.md).
+    """
+    coarse = solve(geometry, 0.3, stick_ratio=c)
+    fine = solve(geometry, 0.3, stick_ratio=c, n=1024)
     for name, est in (("friction_coefficient", "error_estimate"),
                       ("load_ratio", "load_error_estimate"),
                       ("frictional_work", "work_error_estimate")):
         ref = getattr(fine, name)
         err = abs(getattr(coarse, name) - ref) / abs(ref) * 16.0 / 15.0
         e = getattr(coarse, est)
-        assert err / 3.0 <= e <= 10.0 * err + 1e-6, (name, err, e)
+        assert err / 3.0 <= e <= 10.0 * err, (name, err, e)
+
+
+def test_estimate_against_spence():
+    """Spence (1975): nu = 0, k = 0.2986 gives c/a = 0.5.
+
+    Spence's value is itself a numerical result, quoted to four digits; the
+    converged k of this method is 0.29871 (n = 256 ... 1024, docs/validation.md),
+    3.7e-4 above it. So Spence's point judges the estimate only to about 4e-4:
+    a resolved case must agree with it within three times its estimate plus that.
+    """
+    sol = solve("sphere", 0.0, stick_ratio=0.5, energy=False)
+    err = abs(sol.friction_coefficient - 0.2986) / 0.2986
+    assert sol.resolved and sol.error_estimate <= 1e-3
+    assert err <= 3.0 * sol.error_estimate + 4e-4
 
 
 def test_flags_a_loss_of_consistency():
@@ -75,9 +102,15 @@ def test_flags_a_loss_of_consistency():
 
 
 def test_max_error_names_the_resolving_n():
-    sol = solve("sphere", 0.3, stick_ratio=0.5, energy=False, max_error=1e-7)
+    sol = solve("sphere", 0.3, stick_ratio=0.5, energy=False, max_error=3e-6)
     assert not sol.resolved and sol.converged
     assert "max_error" in sol.message and "n = " in sol.message
+    # the named n does resolve it
+    need = int(sol.message.split("n = ")[-1].split()[0])
+    assert solve("sphere", 0.3, stick_ratio=0.5, n=need, energy=False, max_error=3e-6).resolved
+    # beyond the largest n: says so
+    sol = solve("sphere", 0.3, stick_ratio=0.5, energy=False, max_error=1e-9)
+    assert not sol.resolved and "no supported n" in sol.message
     assert solve("sphere", 0.3, stick_ratio=0.5, energy=False, max_error=1e-3).resolved
 
 
@@ -96,7 +129,7 @@ def test_paper_scheme_is_measured_not_trusted():
 
 def test_inverse_at_small_and_large_k():
     """--friction at tiny and large k: the stick ratio that reproduces k, with an estimate."""
-    for k in (2e-4, 0.05):
+    for k in (1.4e-4, 6e-3):  # c/a about 2e-6 and 0.9998
         sol = solve("sphere", 0.499, friction=k, energy=False)
         truth = float(uncoupled_friction("sphere", 0.499, sol.stick_ratio))
         assert abs(truth - k) / k < 1e-4 + 3 * sol.error_estimate

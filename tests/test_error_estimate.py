@@ -25,7 +25,20 @@ from contactlib.cli import main
 from contactlib.elements import graded_mesh
 from contactlib.theory import uncoupled_friction
 
-MODEL = 2e-6  # the uncoupled closed form's own error at nu = 0.499 (beta^2 ~ 1e-6)
+BETA2 = ((1 - 2 * 0.499) / (2 * (1 - 0.499))) ** 2  # 4.0e-6 at nu = 0.499
+
+
+def model_error(c: float) -> float:
+    """The uncoupled closed form's own relative error at nu = 0.499.
+
+    It neglects the coupling, an O(beta^2) effect whose coefficient grows as
+    c/a -> 1: the coupled k over the closed form is 1 + 0.6 beta^2 at c/a = 0.5
+    but 1 + 6.7 beta^2 (sphere) and 1 + 10.3 beta^2 (half-plane) at 0.9999
+    (measured at nu = 0.3, beta^2 = 0.082, where the effect is large enough
+    to see; tests/test_extremes.py checks its growth). So the closed form is a
+    truth to about beta^2 = 4e-6 up to c/a = 0.5 and to 15 beta^2 = 6e-5 beyond.
+    """
+    return BETA2 if c <= 0.5 else 15.0 * BETA2
 
 
 def _check_against(sol, truth: float, truth_error: float = 0.0) -> str:
@@ -46,12 +59,33 @@ def _check_against(sol, truth: float, truth_error: float = 0.0) -> str:
 @pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
 @pytest.mark.parametrize("c", [1e-6, 1e-4, 1e-2, 0.5, 0.99, 0.999, 0.9999])
 def test_closed_form_at_default_resolution(geometry, c):
-    """nu = 0.499, default n: k within 1e-4 of the closed form (was -61 % at 1e-6)."""
+    """nu = 0.499, default n: k within 1e-4 of the closed form (was -61 % at 1e-6).
+
+    c/a = 1e-8 and 1 - 1e-5 are not here: they are flagged (test_extremes_flagged).
+    """
     sol = solve(geometry, 0.499, stick_ratio=c, energy=False)
     truth = float(uncoupled_friction(geometry, 0.499, c))
-    assert _check_against(sol, truth, MODEL) == "resolved"
+    assert _check_against(sol, truth, model_error(c)) == "resolved"
     assert abs(sol.friction_coefficient - truth) / truth < 1e-4
     assert sol.error_estimate < 1e-3
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("c", [1e-8, 1 - 1e-5])
+def test_extremes_flagged(geometry, c):
+    """The two ends of the issue's range: within 1e-4 of the closed form, or flagged.
+
+    Below about 1e-10 a the elements next to c reach the kernels' quadrature
+    floor (k gets worse under refinement: sphere, c/a = 1e-8, nu = 0.499:
+    -1.7e-3, -5.4e-4, 2.5e-3, 9.6e-3 at n = 64 ... 512), so these are flagged
+    with a message that says no n resolves them, never reported as good.
+    """
+    sol = solve(geometry, 0.499, stick_ratio=c, energy=False)
+    truth = float(uncoupled_friction(geometry, 0.499, c))
+    if _check_against(sol, truth, model_error(c)) == "resolved":
+        assert abs(sol.friction_coefficient - truth) / truth < 1e-4
+    else:
+        assert "resolve" in sol.message or "did not converge" in sol.message
 
 
 FOURFOLD = [("cylinder", 0.9), pytest.param("sphere", 0.3, marks=pytest.mark.slow),
@@ -201,7 +235,7 @@ def test_stability_grid(geometry, slab, nu):
             assert sol.friction_coefficient == 0.0  # decoupled: exact
             continue
         if closed:
-            _check_against(sol, float(uncoupled_friction(geometry, nu, c)), MODEL)
+            _check_against(sol, float(uncoupled_friction(geometry, nu, c)), model_error(c))
             continue
         ref = refs[i]
         if not (ref.converged and ref.resolved):

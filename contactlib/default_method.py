@@ -76,6 +76,9 @@ class DiscreteSolution:
     nodal_u: np.ndarray | None = None  # u at the nodes (from the solve's own operators)
     nodal_du: np.ndarray | None = None  # du/dx at the nodes
     round_off: float = 0.0  # last relative Newton step when it stopped on the round-off floor
+    interior_samples: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None  # (x, u,
+    # du/dx) at one interior point of every element, when known without the kernels (a
+    # nested coarse mesh: its elements' fine nodes); used instead of the midpoints
 
     @property
     def stick_ratio(self) -> float:
@@ -125,13 +128,18 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
     if order is None and sol.nodal_u is not None:
         xn = r[m:]
         h = np.diff(xn)
-        mid = 0.5 * (xn[:-1] + xn[1:])
-        u_mid, du_mid = sol.tangential(mid)
+        if sol.interior_samples is not None:
+            mid, u_mid, du_mid = (v[m:] for v in sol.interior_samples)
+        else:
+            mid = 0.5 * (xn[:-1] + xn[1:])
+            u_mid, du_mid = sol.tangential(mid)
+        # three-point (quadratic) rule on each element; Simpson's at the midpoint
+        t = (mid - xn[:-1]) / h
         wn = np.zeros(xn.size)
-        wn[:-1] += h / 6.0
-        wn[1:] += h / 6.0
+        wn[:-1] += h * (3.0 * t - 1.0) / (6.0 * t)
+        wn[1:] += h * (2.0 - 3.0 * t) / (6.0 * (1.0 - t))
         xs = np.concatenate([xn, mid])
-        ws = np.concatenate([wn, 4.0 * h / 6.0])
+        ws = np.concatenate([wn, h / (6.0 * t * (1.0 - t))])
         s_nodes = 2.0 * sol.nodal_u[m:] - xn * sol.nodal_du[m:]
         ss = np.concatenate([s_nodes, 2.0 * u_mid - mid * du_mid])
         return xs, ws, sol.shear(xs), ss

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Callable
 
 import numpy as np
@@ -114,12 +115,20 @@ def graded_mesh(n: int, stick_ratio: float, power: float = 2.0,
     min_stick : int
         Minimum number of elements in each zone when 0 < c < 1.
     """
-    c = float(stick_ratio)
+    nodes, m = _graded_nodes(int(n), float(stick_ratio), float(power), int(min_stick))
+    return Mesh(nodes.copy(), m)
+
+
+@lru_cache(maxsize=512)
+def _graded_nodes(n: int, c: float, power: float, min_stick: int) -> tuple[np.ndarray, int]:
+    """The nodes of :func:`graded_mesh` and its stick index (cached: a sweep with error
+    estimates asks for each mesh several times, and the node placement inverts the
+    element count by bisection)."""
     if c <= 0.0 or c >= 1.0:
         t = np.linspace(0.0, 1.0, n + 1)
         nodes = _toward_end(t, power)
         nodes[0], nodes[-1] = 0.0, 1.0
-        return Mesh(nodes, 0 if c <= 0.0 else n)
+        return nodes, 0 if c <= 0.0 else n
     stick, slip = _side_counts(c)
     ref_stick, ref_slip = _side_counts(0.5)
     ref = float(ref_stick(0.5) + ref_slip(0.5))
@@ -135,7 +144,7 @@ def graded_mesh(n: int, stick_ratio: float, power: float = 2.0,
     dl = _invert(slip, float(slip(1.0 - c)) * np.linspace(0.0, 1.0, ms + 1), 1.0 - c)
     nodes = np.concatenate([(c - ds[::-1])[:-1], c + dl])
     nodes[0], nodes[m], nodes[-1] = 0.0, c, 1.0
-    return Mesh(nodes, m)
+    return nodes, m
 
 
 def uniform_mesh(n: int, stick_index: int) -> Mesh:

@@ -103,20 +103,29 @@ def influence(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[fl
     Returns
     -------
     dict
-        Default method: ``stick_ratios`` (K,), ``nodes`` (K, n+1) and ``ops``
-        (K, 3, n+1, n+1), the w, u, du/dx at the nodes of nodal tractions.
+        Default method: ``stick_ratios`` (K,), ``sizes`` (K,) the element
+        count N_i of each case's mesh (it grows toward c/a = 0 and 1, see
+        :func:`~contactlib.elements.graded_mesh`), ``nodes`` (K, N+1) and
+        ``ops`` (K, 3, N+1, N+1), N = max N_i, NaN-padded beyond N_i + 1: the
+        w, u, du/dx at the nodes of nodal tractions.
         Paper methods: ``nodes`` (n+1,) and ``ops`` (3, n+2, n) at
         :func:`~contactlib.paper_method.collocation_points`. Memory:
-        24 (n+1)^2 bytes a mesh and part (1.6 MB at n = 256, 25 MB at 1024).
+        24 (N+1)^2 bytes a mesh and part (1.6 MB at N = 256, 25 MB at 1024).
     """
     if part not in PARTS:
         raise ValueError(f"part must be one of {', '.join(PARTS)}, got {part!r}")
     if method == "default":
         cs = np.unique([_solved_ratio(geometry, c) for c in stick_ratios])
         meshes = [graded_mesh(n, c) for c in cs]
-        ops = np.stack([nodal_operator_part(geometry, mesh, part) for mesh in meshes])
-        return {"stick_ratios": cs, "nodes": np.stack([mesh.nodes for mesh in meshes]),
-                "ops": ops}
+        sizes = np.array([mesh.n for mesh in meshes])
+        size = int(sizes.max()) + 1  # the mesh's element count depends on c: NaN-padded
+        nodes = np.full((len(meshes), size), np.nan)
+        ops = np.full((len(meshes), 3, size, size), np.nan)
+        for i, mesh in enumerate(meshes):
+            m = mesh.n + 1
+            nodes[i, :m] = mesh.nodes
+            ops[i, :, :m, :m] = nodal_operator_part(geometry, mesh, part)
+        return {"stick_ratios": cs, "sizes": sizes, "nodes": nodes, "ops": ops}
     r = uniform_mesh(n, 0).nodes
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
 
@@ -131,9 +140,10 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
             raise ValueError("influence matrices were built for another mesh")
         return table["ops"]
     hit = np.flatnonzero(table["stick_ratios"] == c)
-    if hit.size == 0 or not np.array_equal(table["nodes"][hit[0]], nodes):
+    m = int(table["sizes"][hit[0]]) + 1 if hit.size else 0
+    if hit.size == 0 or not np.array_equal(table["nodes"][hit[0], :m], nodes):
         raise ValueError(f"influence matrices hold no mesh for stick ratio {c!r}")
-    return table["ops"][hit[0]]
+    return table["ops"][hit[0], :, :m, :m]
 
 
 # ----------------------------------------------------------------------------- solve
@@ -274,8 +284,11 @@ def iter_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[f
         if estimate and method == "default" and tolerance is None and 0.0 < solved < 1.0:
             ops = _fine_operators(geometry, n, solved, normal, shear)
             coarse = _coarse_solves(geometry, n, solved, guess, ops)
-            if n // 2 in coarse and coarse[n // 2].converged:
-                guess = coarse[n // 2].k
+            half, quarter = coarse.get(n // 2), coarse.get(n // 4)
+            if half is not None and half.converged and guess is None:
+                guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
+                if quarter is not None and quarter.converged:
+                    guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
         d = _discrete(geometry, method, n, solved, normal, shear, guess, ops=ops)
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(uncoupled_friction(geometry.name, geometry.nu,
@@ -323,23 +336,23 @@ def _fine_operators(geometry: Geometry, n: int, c: float, normal, shear) -> tupl
     return pw, qw
 
 
-def _restrict(op: np.ndarray, fine: Mesh) -> np.ndarray:
+def _restrict(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
     """A nodal operator of the nested mesh with every other node, from the fine one.
 
     The coarse hat functions are piecewise linear on the fine mesh (1 at their
     node, linear interpolation at the fine nodes between), so their columns
     are exact combinations of the fine columns; the coarse nodes are the even
-    fine nodes, so the rows are a subset. No kernel is evaluated.
+    fine nodes and the coarse element midpoints... are not the odd ones on a
+    graded mesh, so the odd rows (``at_odd``) are the operator at the odd
+    fine nodes. Returns ``(at_nodes, at_odd)``; no kernel is evaluated.
     """
     x = fine.nodes
-    rows = op[:, ::2, :]
-    out = rows[:, :, ::2].copy()
+    out = op[:, :, ::2].copy()
     left = (x[2::2] - x[1::2]) / (x[2::2] - x[:-1:2])  # weight of node 2j at 2j+1
-    right = 1.0 - left  # weight of node 2j + 2 at 2j + 1
-    odd = rows[:, :, 1::2]
+    odd = op[:, :, 1::2]
     out[:, :, :-1] += odd * left
-    out[:, :, 1:] += odd * right
-    return out
+    out[:, :, 1:] += odd * (1.0 - left)
+    return out[:, ::2, :], out[:, 1::2, :]
 
 
 def _coarse_solves(geometry: Geometry, n: int, c: float, guess: float | None,
@@ -359,12 +372,18 @@ def _coarse_solves(geometry: Geometry, n: int, c: float, guess: float | None,
         nested = (ops is not None and 2 * sub.n == mesh.n
                   and 2 * sub.stick_index == mesh.stick_index
                   and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))
+        odd = None
         if nested:
-            ops = (_restrict(ops[0], mesh), _restrict(ops[1], mesh))
-            mesh = sub
+            (pw, pw_odd), (qw, qw_odd) = _restrict(ops[0], mesh), _restrict(ops[1], mesh)
+            odd = (mesh.nodes[1::2], pw_odd, qw_odd)
+            ops, mesh = (pw, qw), sub
         else:
             ops = None
         d = solve_default(geometry, c, m, k_guess=guess, ops=ops)
+        if odd is not None:  # u, du/dx inside each coarse element, from the fine operators
+            x, pw_odd, qw_odd = odd
+            d.interior_samples = (x, pw_odd[1] @ d.p + qw_odd[1] @ d.phi,
+                                  pw_odd[2] @ d.p + qw_odd[2] @ d.phi)
         out[m] = d
         if d.converged and d.k > 0.0:
             guess = d.k

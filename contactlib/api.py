@@ -205,9 +205,10 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         ``False``; anything else is refused).
     max_error : float
         Accuracy asked for, in (0, 1): a case whose estimated relative error
-        of k (``error_estimate``, from the same case on the nested mesh n/2)
-        exceeds it is reported with ``resolved = False`` and a message that
-        names the n that would resolve it. Default 1e-3.
+        of k (``error_estimate``, from the same case on the nested meshes
+        n/4 and n/2) exceeds it is reported with ``resolved = False`` and a
+        message that names the n that would resolve it, or says why none
+        will. Default 1e-3.
 
     Returns
     -------

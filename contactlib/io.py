@@ -84,8 +84,9 @@ _POINT_FLOAT_ATTRS: dict[str, tuple[str, str]] = {
     "residual_norm": ("norm of the final solver residual", "solver status"),
     "error_estimate": (
         "estimated relative error of friction_coefficient",
-        "from the same case on the nested meshes n/4 and n/2 (Richardson, order 2; the "
-        "larger difference where they do not converge cleanly); 0 where k is exact",
+        "from the same case on the nested meshes n/4 and n/2 (Richardson with the observed "
+        "order in [1, 2]; the larger difference where they do not converge cleanly); 0 "
+        "where k is exact",
     ),
     "load_error_estimate": ("estimated relative error of load_ratio", "as error_estimate"),
     "work_error_estimate": (

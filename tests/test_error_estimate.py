@@ -218,28 +218,99 @@ GRID_NU = [-0.99, -0.5, 0.0, 0.3, 0.499, 0.5]
 BODIES = [("sphere", 0.0), ("cylinder", 0.0), ("cylinder", 0.05), ("cylinder", 1.0)]
 
 
+def _grid_case(sol, truth: float, truth_error: float) -> str:
+    """'resolved' (and checked against the truth) or 'flagged' (with a message)."""
+    if not sol.resolved:
+        assert sol.message, "an unresolved case must say why"
+        return "flagged"
+    err = abs(sol.friction_coefficient - truth) / truth
+    assert err <= 3.0 * sol.error_estimate + truth_error, (
+        f"c/a = {sol.stick_ratio}: error {err:.2e} not covered by estimate "
+        f"{sol.error_estimate:.2e} (truth known to {truth_error:.1e})")
+    assert sol.error_estimate <= 10.0 * (err + truth_error), (
+        f"c/a = {sol.stick_ratio}: estimate {sol.error_estimate:.2e} inflated over the error "
+        f"{err:.2e} (truth known to {truth_error:.1e})")
+    return "resolved"
+
+
+def _stability(geometry: str, slab: float, nu: float, n: int) -> dict[str, int]:
+    """The issue's grid at resolution n, each case against the closed form (nu = 0.499,
+    half-space and half-plane) or the same case refined fourfold (itself resolved)."""
+    sols = sweep(geometry, nu, GRID_C, n=n, slab_ratio=slab, energy=False)
+    closed = nu == 0.499 and slab == 0.0
+    refs = None if closed or nu == 0.5 else sweep(geometry, nu, GRID_C, n=4 * n,
+                                                  slab_ratio=slab, energy=False)
+    count = {"resolved": 0, "flagged": 0, "no truth": 0}
+    for i, (c, sol) in enumerate(zip(GRID_C, sols)):
+        if nu == 0.5:  # decoupled: k = 0 exactly for every c/a < 1
+            assert sol.friction_coefficient == 0.0 and sol.resolved
+            count["resolved"] += 1
+        elif closed:
+            count[_grid_case(sol, float(uncoupled_friction(geometry, nu, c)),
+                             model_error(c))] += 1
+        elif refs[i].resolved:
+            count[_grid_case(sol, refs[i].friction_coefficient, refs[i].error_estimate)] += 1
+        else:  # no trustworthy truth: the coarse case must not claim more than the fine one
+            assert not sol.resolved or sol.error_estimate > 0.0
+            count["no truth"] += 1
+    return count
+
+
+@pytest.mark.parametrize("geometry,slab,nu", [("sphere", 0.0, 0.3), ("cylinder", 0.0, -0.5)])
+def test_stability_grid_sample(geometry, slab, nu):
+    """Two rows of the grid at n = 32 (fast): agree within the estimate, or flagged."""
+    _stability(geometry, slab, nu, 32)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("geometry,slab", BODIES)
 @pytest.mark.parametrize("nu", GRID_NU)
 def test_stability_grid(geometry, slab, nu):
-    """Every case of the extreme grid agrees with its truth within its estimate, or is flagged.
+    """The issue's grid: 9 c/a x 6 nu x 4 bodies at n = 64 against n = 256 or the closed
+    form: every case agrees with its truth within its estimate, or is flagged."""
+    count = _stability(geometry, slab, nu, 64)
+    print(geometry, slab, nu, count)
 
-    n = 64 against n = 256 (fourfold) or the closed form (nu = 0.499, half-space and
-    half-plane): coarse enough to run the whole grid in minutes.
-    """
-    sols = sweep(geometry, nu, GRID_C, n=64, slab_ratio=slab, energy=False)
-    closed = nu == 0.499 and slab == 0.0
-    refs = None if closed else sweep(geometry, nu, GRID_C, n=256, slab_ratio=slab, energy=False)
-    for i, (c, sol) in enumerate(zip(GRID_C, sols)):
-        if nu == 0.5:
-            assert sol.friction_coefficient == 0.0  # decoupled: exact
-            continue
-        if closed:
-            _check_against(sol, float(uncoupled_friction(geometry, nu, c)), model_error(c))
-            continue
-        ref = refs[i]
-        if not (ref.converged and ref.resolved):
-            # no trustworthy reference: the coarse case must not claim more than it can
-            assert not sol.resolved or sol.error_estimate >= 0.0
-            continue
-        _check_against(sol, ref.friction_coefficient, 2.0 * ref.error_estimate / 3.0)
+
+@pytest.mark.parametrize("value", ["0", "1", "nan", "abc"])
+def test_history_cli_bad_max_error(value, tmp_path, capsys):
+    out = tmp_path / "h.nc"
+    code = main(["history", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.2",
+                 "--load-path", "0,1", "--steps", "4", f"--max-error={value}",
+                 "--output", str(out)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and "--max-error" in err[0]
+    assert not out.exists()
+
+
+def test_history_cli_and_scene_pass_max_error(tmp_path, capsys):
+    import xarray as xr
+
+    from contactlib.scene import parse_scene
+
+    out = tmp_path / "h.nc"
+    assert main(["history", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.2",
+                 "--load-path", "0,1", "--steps", "4", "--n", "32", "--max-error", "0.5",
+                 "--output", str(out)]) == 0
+    assert "resolved steps (max error 0.5)" in capsys.readouterr().out
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["max_error"] == 0.5 and "resolved" in ds
+    raw = {"kind": "history", "geometry": "sphere", "nu": 0.3, "friction": 0.2,
+           "load_path": [0, 1], "steps": 4, "max_error": 0.01}
+    assert parse_scene("h", raw).run_spec(0)["max_error"] == 0.01
+    with pytest.raises(ValueError, match="max_error"):
+        parse_scene("h", dict(raw, max_error=2))
+    with pytest.raises(ValueError, match="max_error"):
+        parse_scene("s", {"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.5],
+                          "max_error": "x"})
+
+
+def test_solve_and_sweep_cli_pass_max_error(tmp_path, capsys):
+    import xarray as xr
+
+    out = tmp_path / "s.nc"
+    assert main(["sweep", "--geometry", "cylinder", "--nu", "0.3", "--stick-ratios", "0.5",
+                 "--n", "32", "--max-error", "1e-9", "--output", str(out)]) == 0
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["max_error"] == 1e-9 and not bool(ds["resolved"].values[0])
+        assert "exceeds max_error" in str(ds["message"].values[0])

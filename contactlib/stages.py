@@ -290,6 +290,13 @@ def iter_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[f
                 if quarter is not None and quarter.converged:
                     guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
         d = _discrete(geometry, method, n, solved, normal, shear, guess, ops=ops)
+        if method == "default" and not d.converged and guess is not None and 0.0 < solved < 1.0:
+            # the continuation guess extrapolates k/k_uncoupled in c/a and can land
+            # outside Newton's basin (nu = 0, c/a = 0.01 after 1e-8, 1e-6, 1e-4): start
+            # again from the nested n/2 solution, or from the solver's own warm start
+            half = coarse.get(n // 2)
+            retry = half.k if half is not None and half.converged else None
+            d = _discrete(geometry, method, n, solved, normal, shear, retry, ops=ops)
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(uncoupled_friction(geometry.name, geometry.nu,
                                                                  solved))))

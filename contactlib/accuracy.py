@@ -37,13 +37,15 @@ from . import validate
 from .model import Contact
 
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
-           "plan", "estimate", "solve_to_tolerance"]
+           "plan", "estimate", "solve_to_tolerance", "check_max_error",
+           "resolving_n", "DEFAULT_MAX_ERROR"]
 
 MAX_N = validate.MAX_N
 MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
 MIN_TOLERANCE = validate.MIN_TOLERANCE
 MAX_TOLERANCE = validate.MAX_TOLERANCE
 SAFETY = 2.0  # the plan aims at tolerance / SAFETY
+DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR  # a larger estimated k error: not resolved
 
 # Relative k error of the default method at n = 256 (nu = 0.3) against the
 # Richardson extrapolation of n = 16 ... 2048 (convergence study, observed
@@ -103,16 +105,41 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float) -> 
 
 
 def estimate(k_quarter: float, k_half: float, k_full: float) -> tuple[float, float]:
-    """(relative error estimate of k_full, order used) from nested n/4, n/2, n."""
+    """(relative error estimate of k_full, order used) from nested n/4, n/2, n.
+
+    With d1 = k(n/4) - k(n/2), d2 = k(n/2) - k(n) and r = d1/d2: in the
+    asymptotic range (r >= 2, observed order >= 1) the error of k(n) is
+    |d2| / (2^p - 1) with p = log2(r) clipped to [1, 2]. Otherwise (r < 2:
+    the differences do not shrink, or change sign) the solutions are not in
+    their asymptotic range and the estimate is the larger difference,
+    max(|d1|, |d2|), which bounds an error that is not yet converging.
+    """
     d1, d2 = k_quarter - k_half, k_half - k_full
     if not all(np.isfinite([k_quarter, k_half, k_full])) or k_full == 0.0:
         return math.inf, math.nan
     if d2 == 0.0:
-        return 0.0, math.nan
-    p = 2.0
-    if d1 != 0.0 and d1 / d2 > 1.0:
-        p = float(np.clip(np.log2(d1 / d2), 1.0, 2.0))
+        return abs(d1) / 3.0 / abs(k_full), math.nan
+    ratio = d1 / d2
+    if ratio < 2.0:
+        return max(abs(d1), abs(d2)) / abs(k_full), math.nan
+    p = float(np.clip(np.log2(ratio), 1.0, 2.0))
     return abs(d2) / (2.0**p - 1.0) / abs(k_full), p
+
+
+def check_max_error(value: object) -> float:
+    """The accuracy a case must reach to be reported as resolved (:func:`validate.max_error`)."""
+    return validate.max_error(value)
+
+
+def resolving_n(n: int, error: float, max_error: float) -> int | None:
+    """The n (a multiple of 64) that the n^-2 convergence says brings ``error`` to max_error/2.
+
+    None when that exceeds :data:`MAX_N` or the error is not finite.
+    """
+    if not math.isfinite(error):
+        return None
+    need = 64 * math.ceil(n * math.sqrt(SAFETY * error / max_error) / 64)
+    return need if need <= MAX_N else None
 
 
 def solve_to_tolerance(solve_k: Callable[[int], float], n: int, tolerance: float,

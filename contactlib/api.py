@@ -52,9 +52,11 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
 
 # ----------------------------------------------------------------------------- post-processing
 def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
-            want_energy: bool, message: str = "") -> Solution:
-    """Profiles on the output grid, load, flags and work of a discrete solution."""
+            want_energy: bool, message: str = "",
+            max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
+    """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
     rec = stages._record(geom, d, samples=True)
+    stages.estimate_case(geom, method, n, rec, max_error=max_error)
     return _from_record(geom, rec, method, n, want_energy, message)
 
 
@@ -122,7 +124,8 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
-          indenter_nu: float | None = None) -> Solution:
+          indenter_nu: float | None = None,
+          max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -152,6 +155,12 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     indenter_nu : float, optional
         Poisson's ratio of the indenter, in (-1, 0.5] (default: the body's;
         refused with a rigid indenter).
+    max_error : float
+        Accuracy asked for, in (0, 1): a case whose estimated relative error
+        of k (``error_estimate``, from the same case on the nested meshes
+        n/4 and n/2) exceeds it is reported with ``resolved = False`` and a
+        message that names the n that would resolve it, or says why none
+        will. Default 1e-3.
 
     Returns
     -------
@@ -166,6 +175,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu)
     energy = validate.flag("energy", energy)
+    max_error = validate.max_error(max_error)
     if (stick_ratio is None) == (friction is None):
         raise validate.InputError("stick_ratio", "given, or friction given", stick_ratio,
                                   "give exactly one of stick_ratio and friction")
@@ -173,25 +183,27 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         c = validate.stick_ratio(stick_ratio)
         if method != "default":
             validate.paper_multiple(c, n)  # before solving
-        rec = stages.solve_cases(geom, method, n, [c])[0]
+        rec = stages.solve_cases(geom, method, n, [c], max_error=max_error)[0]
         return _from_record(geom, rec, method, n, energy)
 
     k = validate.friction(friction)
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
-                     energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu)
+                     energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
+                     max_error=max_error)
     if k == 0.0:
-        return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy)
+        return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
+                       max_error=max_error)
     if geom.decoupled:
         d = _discrete(geom, 0.0, n, method)
         sol = _finish(geom, d, method, n, energy,
                       stages.decoupled_message(geom) + "; nothing tends to slip, so the whole "
-                      "contact sticks (c/a = 1)")
+                      "contact sticks (c/a = 1)", max_error=max_error)
         sol.stick_ratio, sol.friction_coefficient = 1.0, k
         return sol
     if method == "default":
         c, d = stick_ratio_for_friction(geom, k, n)
-        return _finish(geom, d, method, n, energy)
+        return _finish(geom, d, method, n, energy, max_error=max_error)
     # paper method: c/a only at m/n; pick the m/n whose k is nearest
     table = [_discrete(geom, m / n, n, method) for m in range(0, n)]
     ks = np.array([d.k for d in table])
@@ -200,7 +212,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     return _finish(geom, table[m], method, n, energy,
                    f"paper method: c/a restricted to m/n; nearest m/n = {m}/{n} has "
                    f"k = {ks[m]:.6g}; linear interpolation in the k(m/n) table gives "
-                   f"c/a = {c_interp:.6g} for k = {k:.6g}")
+                   f"c/a = {c_interp:.6g} for k = {k:.6g}", max_error=max_error)
 
 
 @blas_single_threaded
@@ -209,7 +221,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           energy: bool = True,
           progress: Callable[[int, int], None] | None = None,
           indenter_modulus: float = math.inf,
-          indenter_nu: float | None = None) -> list[Solution]:
+          indenter_nu: float | None = None,
+          max_error: float = validate.DEFAULT_MAX_ERROR) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -217,10 +230,12 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     in c/a), the first two from the solver's own warm start. A point that
     fails to converge is kept and flagged (``converged = False``), never
     dropped. Every argument is checked before the first point is solved.
+    Every case carries ``error_estimate`` and ``resolved`` (see
+    :func:`solve`, ``max_error``).
 
     Parameters
     ----------
-    geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu
+    geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error
         As for :func:`solve`.
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
@@ -237,12 +252,14 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
                                        indenter_nu)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)
+    max_error = validate.max_error(max_error)
     ratios = validate.stick_ratios(stick_ratios, n)
     if method != "default":
         for c in ratios:
             validate.paper_multiple(c, n, "stick_ratios")  # all before solving any
     out = []
-    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True)):
+    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True,
+                                                      max_error=max_error)):
         out.append(_from_record(geom, rec, method, n, energy))
         if progress is not None:
             progress(i + 1, len(ratios))

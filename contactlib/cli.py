@@ -110,6 +110,11 @@ def parse_nu(text: str) -> float:
     return _check(validate.nu, text, _float(text))
 
 
+def parse_max_error(text: str) -> float:
+    """Accuracy asked for: a relative error of k in (0, 1)."""
+    return _check(validate.max_error, text, _float(text))
+
+
 def parse_fraction(option: str, text: str) -> float:
     """A stick ratio c/a in [0, 1] (``option``: ``--stick-ratio``)."""
     return _check(validate.stick_ratio, text, _float(text), option.lstrip("-").replace("-", "_"))
@@ -226,6 +231,10 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
                      default=None, help=_OUTPUT_HELP)
+    sub.add_argument("--max-error", metavar="E", default="1e-3",
+                     help="accuracy a case must reach, as relative error of k in (0, 1): a "
+                          "case whose error estimate exceeds it is reported as not resolved; "
+                          "default: %(default)s")
     sub.add_argument("--no-energy", action="store_true",
                      help="skip the frictional-work integration "
                           "(frictional_work is NaN)")
@@ -297,6 +306,11 @@ def build_parser() -> argparse.ArgumentParser:
                            "default: 0")
     _indenter_options(hist)
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
+    hist.add_argument("--max-error", metavar="E", default="1e-3",
+                      help="accuracy a step must reach, in (0, 1): a step whose estimated "
+                           "error of the stick radius (in a_max) or relative error of the "
+                           "frictional work exceeds it is flagged not resolved; "
+                           "default: %(default)s")
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
 
@@ -329,6 +343,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         "method": method,
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
         "energy": not args.no_energy,
+        "max_error": parse_max_error(args.max_error),
     }
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # the rigid default is the library's: keywords only when elastic
@@ -355,6 +370,7 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "steps": parse_steps(args.steps),
         "n": None if args.n is None else parse_history_n(args.n),
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
+        "max_error": parse_max_error(args.max_error),
     }
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # as for solve/sweep: keywords only when elastic
@@ -424,7 +440,9 @@ def format_summary(sol: Solution) -> str:
     lines = [
         _head(sol),
         f"  c/a    = {_g(sol.stick_ratio)}",
-        f"  k      = {_g(sol.friction_coefficient)}",
+        f"  k      = {_g(sol.friction_coefficient)}   (estimated relative error "
+        f"{sol.error_estimate:.1e}; resolved: {_yes(sol.resolved)}, max error "
+        f"{sol.max_error:g})",
         f"  P/P_H  = {_g(sol.load_ratio)}",
         f"  V      = {_g(sol.frictional_work)}   ({work_scale})",
         f"  slip direction ok: {_yes(sol.slip_direction_ok)}, "
@@ -444,14 +462,15 @@ def format_table(solutions: Sequence[Solution]) -> str:
         return "(no points)"
     head = _head(solutions[0])
     cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
-            f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9}")
+            f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9} "
+            f"{'k error':>8} {'res':>3}")
     rows = [head, cols]
     for s in solutions:
         row = (f"{s.stick_ratio:8.4f} {_g(s.friction_coefficient):>11} "
                f"{_g(s.load_ratio):>11} {_g(s.frictional_work):>11} "
                f"{_yes(s.slip_direction_ok):>4} {_yes(s.stick_admissible):>5} "
                f"{_yes(s.consistent):>4} {_yes(s.converged):>4} "
-               f"{s.residual_norm:9.2e}")
+               f"{s.residual_norm:9.2e} {s.error_estimate:8.1e} {_yes(s.resolved):>3}")
         if s.message:
             row += f"  {s.message}"
         rows.append(row)
@@ -479,6 +498,9 @@ def format_history(res: Any) -> str:
     rows.append(f"  work in {work_scale}; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
+    if res.resolved is not None:
+        rows.append(f"  resolved steps (max error {res.max_error:g}): "
+                    f"{int(res.resolved[1:].sum())}/{total}")
     if res.message:
         rows.append(f"  message: {res.message}")
     return "\n".join(rows)

@@ -109,6 +109,17 @@ _POINT_FLOAT_ATTRS: dict[str, tuple[str, str]] = {
     ),
     "frictional_work": ("scaled frictional work of the loading half-cycle", ""),
     "residual_norm": ("norm of the final solver residual", "solver status"),
+    "error_estimate": (
+        "estimated relative error of friction_coefficient",
+        "from the same case on the nested meshes n/4 and n/2 (Richardson with the observed "
+        "order in [1, 2]; the larger difference where they do not converge cleanly); 0 "
+        "where k is exact",
+    ),
+    "load_error_estimate": ("estimated relative error of load_ratio", "as error_estimate"),
+    "work_error_estimate": (
+        "estimated relative error of frictional_work",
+        "as error_estimate; NaN when the work is not computed",
+    ),
 }
 
 _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
@@ -125,6 +136,10 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
         "consistency flag",
     ),
     "converged": ("solver converged", "solver status; failed cases are kept"),
+    "resolved": (
+        "converged with error_estimate at most max_error",
+        "a case that is not resolved is not a good number (see message)",
+    ),
 }
 
 _SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "indenter_modulus_ratio",
@@ -322,6 +337,9 @@ from contactlib.result import Solution
         "elements": int(first.n),
         "method": str(first.method),
     }
+    max_errors = {float(s.max_error) for s in sols if math.isfinite(s.max_error)}
+    if max_errors:
+        attrs["max_error"] = max(max_errors)
     if ind.accepts_layer:
         attrs["slab_ratio"] = float(first.slab_ratio)
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
@@ -337,7 +355,7 @@ from contactlib.result import Solution
     return ds
 
 
-_FLAG_NAMES = tuple(name for name in _POINT_BOOL_ATTRS if name != "converged")
+_FLAG_NAMES = tuple(name for name in _POINT_BOOL_ATTRS if name not in ("converged", "resolved"))
 _VIOLATION_COMMENT = "relative measure behind the flag; <= 1e-4 passes"
 
 
@@ -378,8 +396,8 @@ def scene_to_dataset(solutions: Sequence[Solution], *, outputs: Sequence[str],
     if "k_curve" not in want:
         drop += list(_FLAG_NAMES)
     if "energy" not in want:
-        drop.append("frictional_work")
-    ds = ds.drop_vars(drop)
+        drop += ["frictional_work", "work_error_estimate"]
+    ds = ds.drop_vars([name for name in drop if name in ds])
     if "k_curve" in want:
         if violations is None:
             raise ValueError("a scene with k_curve needs the violations")

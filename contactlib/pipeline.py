@@ -56,7 +56,8 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
     """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
     return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
                               normal=normal, shear=shear, samples=scene.needs_samples,
-                              tolerance=scene.tolerance, progress=progress)
+                              tolerance=scene.tolerance, progress=progress,
+                              max_error=scene.max_error)
 
 
 @blas_single_threaded

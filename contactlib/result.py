@@ -171,6 +171,17 @@ class Solution:
         nu1 of the indenter (the body's nu for a rigid one, where it plays no role).
     dundurs_beta : float
         Dundurs' beta of the pair (> 0: slip inward, q = k p; < 0: outward, q = -k p).
+    error_estimate : float
+        Estimated relative error of ``friction_coefficient`` (embedded
+        solves on the nested meshes n/4 and n/2; 0 where k is exact).
+    load_error_estimate, work_error_estimate : float
+        The same for ``load_ratio`` and ``frictional_work`` (NaN when not
+        estimated).
+    resolved : bool
+        Converged, and ``error_estimate`` at most ``max_error``; a case that
+        is not resolved is not to be used as a good number.
+    max_error : float
+        The accuracy asked for (relative error of k).
     """
 
     geometry: str
@@ -193,6 +204,11 @@ class Solution:
     residual_norm: float = 0.0
     iterations: int = 0
     message: str = ""
+    error_estimate: float = float("nan")
+    load_error_estimate: float = float("nan")
+    work_error_estimate: float = float("nan")
+    resolved: bool = False
+    max_error: float = float("nan")
     extra: dict = field(default_factory=dict)
     indenter_modulus_ratio: float = float("inf")
     indenter_poisson_ratio: float = float("nan")

@@ -43,10 +43,10 @@ __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "pars
            "config_hash"]
 
 KINDS = ("self-similar", "history")
-_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "stick_ratios", "slab_ratio",
-         "outputs", "indenter", "body")
+_KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
+         "slab_ratio", "outputs", "indenter", "body")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
-                 "slab_ratio")
+                 "slab_ratio", "max_error")
 
 
 def config_hash(raw: Mapping[str, Any]) -> str:
@@ -98,6 +98,7 @@ class Scene:
     outputs: tuple[str, ...]
     hash: str
     tolerance: float | None = None
+    max_error: float = validate.DEFAULT_MAX_ERROR
     kind: str = "self-similar"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
@@ -236,6 +237,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
         if raw.get("stick_ratios") == "all":
             bad.add("stick_ratios", "'all' means m/n and needs a given n; with a tolerance "
                                     "list the stick ratios")
+    max_error = bad.check("max_error", validate.max_error,
+                          raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     method = raw.get("method", "default")
     # each key on its own first, so that every bad key is named ...
     geometry = bad.check("geometry", validate.geometry, raw.get("geometry")) \
@@ -273,7 +276,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     return Scene(name=name, geometry=geometry, nu=nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
-                 tolerance=tolerance, indenter_modulus=ind[0], indenter_nu=ind[1])
+                 tolerance=tolerance, max_error=max_error, indenter_modulus=ind[0],
+                 indenter_nu=ind[1])
 
 
 @dataclass(frozen=True, repr=False)
@@ -293,6 +297,8 @@ class HistoryScene:
         Steps per path segment.
     n : int
         Elements over [0, 1.2 a_max].
+    max_error : float
+        Accuracy a step must reach to be flagged resolved (default 1e-3).
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -306,13 +312,14 @@ class HistoryScene:
     n: int
     slab_ratio: float
     hash: str
+    max_error: float = validate.DEFAULT_MAX_ERROR
     kind: str = "history"
 
     def run_spec(self, index: int) -> dict[str, Any]:
         """Keyword arguments of :func:`contactlib.history` for friction ``index``."""
         return {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
-                "slab_ratio": self.slab_ratio}
+                "slab_ratio": self.slab_ratio, "max_error": self.max_error}
 
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
@@ -340,10 +347,12 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
         if "geometry" in raw else None
     nu = bad.check("nu", validate.nu, raw["nu"]) if "nu" in raw else None
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry)
+    max_error = bad.check("max_error", validate.max_error,
+                          raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
-                        hash=config_hash(raw))
+                        hash=config_hash(raw), max_error=max_error)
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:

@@ -23,6 +23,7 @@ Units inside: E* = a = R = 1 (see :mod:`contactlib.default_method`).
 
 from __future__ import annotations
 
+import math
 from typing import Any, Callable, Iterator, Sequence
 
 import numpy as np
@@ -33,11 +34,21 @@ from .elements import Mesh, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import Solution
+from .accuracy import MAX_N, estimate, resolving_n
 
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases", "check_case",
-           "work_case", "profiles", "to_solution", "decoupled_message"]
+           "work_case", "profiles", "to_solution", "decoupled_message", "estimate_case",
+           "QUADRATURE_FLOOR_H"]
 
 PARTS = ("normal", "shear")
+# Elements shorter than this (in a) next to c: the kernels' quadrature error (about 1e-11)
+# is amplified in the stick-edge condition, and k gets worse under refinement. A tiny stick
+# zone (c/a < 1/2; nu = 0.499, sphere, c/a = 1e-8: relative k error -1.7e-3, -5.4e-4,
+# 2.5e-3, 9.6e-3 at n = 64 ... 512, smallest element 1.4e-11 ... 2e-13 a; c/a = 1e-6 at
+# n = 256, 9e-11 a: 9e-5) and a thin slip annulus (c/a > 1/2, next to the contact edge;
+# c/a = 1 - 1e-5 at n = 256, 9e-10 a: 2.4e-4 sphere, 1.1e-3 half-plane; c/a = 0.9999,
+# nu = 0.3: k jumps by 2.3e-4 from n = 256 (9e-9 a) to 512 (2.3e-9 a)) have different floors.
+QUADRATURE_FLOOR_H = {"stick": 5e-11, "annulus": 5e-9}
 OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
 
 Record = dict[str, Any]
@@ -86,20 +97,29 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     Returns
     -------
     dict
-        Default method: ``stick_ratios`` (K,), ``nodes`` (K, n+1) and ``ops``
-        (K, 3, n+1, n+1), the w, u, du/dx at the nodes of nodal tractions.
+        Default method: ``stick_ratios`` (K,), ``sizes`` (K,) the element
+        count N_i of each case's mesh (it grows toward c/a = 0 and 1, see
+        :func:`~contactlib.elements.graded_mesh`), ``nodes`` (K, N+1) and
+        ``ops`` (K, 3, N+1, N+1), N = max N_i, NaN-padded beyond N_i + 1: the
+        w, u, du/dx at the nodes of nodal tractions.
         Paper methods: ``nodes`` (n+1,) and ``ops`` (3, n+2, n) at
         :func:`~contactlib.paper_method.collocation_points`. Memory:
-        24 (n+1)^2 bytes a mesh and part (1.6 MB at n = 256, 25 MB at 1024).
+        24 (N+1)^2 bytes a mesh and part (1.6 MB at N = 256, 25 MB at 1024).
     """
     if part not in PARTS:
         raise ValueError(f"part must be one of {', '.join(PARTS)}, got {part!r}")
     if method == "default":
         cs = np.unique([_solved_ratio(geometry, c) for c in stick_ratios])
         meshes = [graded_mesh(n, c) for c in cs]
-        ops = np.stack([nodal_operator_part(geometry, mesh, part) for mesh in meshes])
-        return {"stick_ratios": cs, "nodes": np.stack([mesh.nodes for mesh in meshes]),
-                "ops": ops}
+        sizes = np.array([mesh.n for mesh in meshes])
+        size = int(sizes.max()) + 1  # the mesh's element count depends on c: NaN-padded
+        nodes = np.full((len(meshes), size), np.nan)
+        ops = np.full((len(meshes), 3, size, size), np.nan)
+        for i, mesh in enumerate(meshes):
+            m = mesh.n + 1
+            nodes[i, :m] = mesh.nodes
+            ops[i, :, :m, :m] = nodal_operator_part(geometry, mesh, part)
+        return {"stick_ratios": cs, "sizes": sizes, "nodes": nodes, "ops": ops}
     r = uniform_mesh(n, 0).nodes
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
 
@@ -114,19 +134,21 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
             raise ValueError("influence matrices were built for another mesh")
         return table["ops"]
     hit = np.flatnonzero(table["stick_ratios"] == c)
-    if hit.size == 0 or not np.array_equal(table["nodes"][hit[0]], nodes):
+    m = int(table["sizes"][hit[0]]) + 1 if hit.size else 0
+    if hit.size == 0 or not np.array_equal(table["nodes"][hit[0], :m], nodes):
         raise ValueError(f"influence matrices hold no mesh for stick ratio {c!r}")
-    return table["ops"][hit[0]]
+    return table["ops"][hit[0], :, :m, :m]
 
 
 # ----------------------------------------------------------------------------- solve
 def _discrete(geometry: Contact, method: str, n: int, c: float, normal, shear,
-              k_guess: float | None = None):
+              k_guess: float | None = None, ops: tuple | None = None):
     if method == "default":
-        mesh = graded_mesh(n, c)
-        pw = _lookup(normal, method, c, mesh.nodes)
-        qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
-        ops = None if pw is None else (pw, qw)
+        if ops is None:
+            mesh = graded_mesh(n, c)
+            pw = _lookup(normal, method, c, mesh.nodes)
+            qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
+            ops = None if pw is None else (pw, qw)
         return solve_default(geometry, c, n, ops=ops, k_guess=k_guess)
     m = validate.paper_multiple(c, n)
     r = uniform_mesh(n, m).nodes
@@ -149,6 +171,7 @@ def _record(geometry: Contact, d: DiscreteSolution | PaperSolution, samples: boo
         "converged": bool(d.converged), "residual_norm": float(d.residual_norm),
         "iterations": int(d.iterations), "message": str(d.message or ""),
         "load": float(d.load() if paper else geometry.load(nodes, d.p)),
+        "round_off": float(getattr(d, "round_off", 0.0)),
     }
     if not paper:
         rec["nodal_u"] = np.asarray(d.nodal_u, dtype=float)
@@ -186,7 +209,8 @@ def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[f
                 normal: dict[str, np.ndarray] | None = None,
                 shear: dict[str, np.ndarray] | None = None, samples: bool = True,
                 tolerance: float | None = None,
-                progress: Callable[[int, int], None] | None = None) -> list[Record]:
+                progress: Callable[[int, int], None] | None = None,
+                max_error: float = validate.DEFAULT_MAX_ERROR, estimate: bool = True) -> list[Record]:
     """Solve every stick ratio; one case record each, in the given order.
 
     Parameters
@@ -208,6 +232,12 @@ def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[f
         holds ``elements`` (the n used) and ``error_estimate``.
     progress : callable, optional
         ``progress(i, total)`` after each case.
+    max_error : float
+        Relative k error above which a case is not ``resolved`` (default 1e-3).
+    estimate : bool
+        Estimate the errors (default). ``False`` skips the nested coarse
+        solves and leaves the records without estimates and ``resolved``
+        (their cost is measured this way in ``benchmarks/bench_error_estimate.py``).
 
     Returns
     -------
@@ -217,7 +247,8 @@ def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[f
     """
     out = []
     for i, rec in enumerate(iter_cases(geometry, method, n, stick_ratios, normal=normal,
-                                       shear=shear, samples=samples, tolerance=tolerance)):
+                                       shear=shear, samples=samples, tolerance=tolerance,
+                                       max_error=max_error, estimate=estimate)):
         out.append(rec)
         if progress is not None:
             progress(i + 1, len(stick_ratios))
@@ -227,18 +258,39 @@ def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[f
 def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[float], *,
                normal: dict[str, np.ndarray] | None = None,
                shear: dict[str, np.ndarray] | None = None, samples: bool = True,
-               tolerance: float | None = None) -> Iterator[Record]:
+               tolerance: float | None = None,
+               max_error: float = validate.DEFAULT_MAX_ERROR, estimate: bool = True) -> Iterator[Record]:
     """The case records of :func:`solve_cases`, one at a time, in the given order.
 
     Successive default-method cases continue from each other: Newton's
     starting k comes from the cases already solved (:func:`_continuation_guess`).
+    Every record carries an error estimate (:func:`_embedded_estimate`) and
+    ``resolved``: converged, and the estimated relative error of k at most
+    ``max_error``.
     """
     known: list[tuple[float, float]] = []  # (c, k / k_uncoupled) of converged cases
     for c in stick_ratios:
         c = float(c)
         solved = _solved_ratio(geometry, c)
         guess = _continuation_guess(geometry, solved, known) if method == "default" else None
-        d = _discrete(geometry, method, n, solved, normal, shear, guess)
+        coarse: dict[int, DiscreteSolution] = {}
+        ops = None
+        if estimate and method == "default" and tolerance is None and 0.0 < solved < 1.0:
+            ops = _fine_operators(geometry, n, solved, normal, shear)
+            coarse = _coarse_solves(geometry, n, solved, guess, ops)
+            half, quarter = coarse.get(n // 2), coarse.get(n // 4)
+            if half is not None and half.converged and guess is None:
+                guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
+                if quarter is not None and quarter.converged:
+                    guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
+        d = _discrete(geometry, method, n, solved, normal, shear, guess, ops=ops)
+        if method == "default" and not d.converged and guess is not None and 0.0 < solved < 1.0:
+            # the continuation guess extrapolates k/k_uncoupled in c/a and can land
+            # outside Newton's basin (nu = 0, c/a = 0.01 after 1e-8, 1e-6, 1e-4): start
+            # again from the nested n/2 solution, or from the solver's own warm start
+            half = coarse.get(n // 2)
+            retry = half.k if half is not None and half.converged else None
+            d = _discrete(geometry, method, n, solved, normal, shear, retry, ops=ops)
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
         extra = {}
@@ -253,7 +305,215 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
             rec["stick_ratio"] = c
             rec["k"] = np.inf if c == 1.0 else 0.0
             rec["message"] = decoupled_message(geometry)
+        if estimate:
+            _embedded_estimate(geometry, method, n, rec, d, coarse, samples, max_error)
         yield rec
+
+
+def estimate_case(geometry: Contact, method: str, n: int, rec: Record, *,
+                  samples: bool = True, max_error: float = validate.DEFAULT_MAX_ERROR) -> Record:
+    """Add the error estimates and ``resolved`` to a case record solved outside :func:`iter_cases`.
+
+    Used for the inverse problem (k given): the nested coarse solves are made
+    at the record's stick ratio. Returns the same (updated) record.
+    """
+    c = _solved_ratio(geometry, float(rec["stick_ratio"]))
+    coarse = (_coarse_solves(geometry, n, c, float(rec["k"]))
+              if method == "default" and 0.0 < c < 1.0 else {})
+    _embedded_estimate(geometry, method, n, rec, None, coarse, samples, max_error)
+    return rec
+
+
+def _fine_operators(geometry: Contact, n: int, c: float, normal, shear) -> tuple:
+    """Collocation operators (normal, shear) of a partial-slip case on its mesh n."""
+    mesh = graded_mesh(n, c)
+    pw = _lookup(normal, "default", c, mesh.nodes)
+    qw = _lookup(shear, "default", c, mesh.nodes)
+    if pw is None:
+        pw = nodal_operator_part(geometry, mesh, "normal")
+    if qw is None:
+        qw = nodal_operator_part(geometry, mesh, "shear")
+    return pw, qw
+
+
+def _restrict(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
+    """A nodal operator of the nested mesh with every other node, from the fine one.
+
+    The coarse hat functions are piecewise linear on the fine mesh (1 at their
+    node, linear interpolation at the fine nodes between), so their columns
+    are exact combinations of the fine columns; the coarse nodes are the even
+    fine nodes and the coarse element midpoints... are not the odd ones on a
+    graded mesh, so the odd rows (``at_odd``) are the operator at the odd
+    fine nodes. Returns ``(at_nodes, at_odd)``; no kernel is evaluated.
+    """
+    x = fine.nodes
+    out = op[:, :, ::2].copy()
+    left = (x[2::2] - x[1::2]) / (x[2::2] - x[:-1:2])  # weight of node 2j at 2j+1
+    odd = op[:, :, 1::2]
+    out[:, :, :-1] += odd * left
+    out[:, :, 1:] += odd * (1.0 - left)
+    return out[:, ::2, :], out[:, 1::2, :]
+
+
+def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
+                   ops: tuple | None = None) -> dict[int, DiscreteSolution]:
+    """The same case on the nested meshes n/2 and n/4 (those with at least 8 elements).
+
+    With the fine operators ``ops`` given, the coarse ones are restricted
+    from them (:func:`_restrict`) where the meshes are nested, which costs
+    no kernel evaluations.
+    """
+    out: dict[int, DiscreteSolution] = {}
+    mesh = graded_mesh(n, c)
+    for m in (n // 2, n // 4):
+        if m < 8:
+            continue
+        sub = graded_mesh(m, c)
+        nested = (ops is not None and 2 * sub.n == mesh.n
+                  and 2 * sub.stick_index == mesh.stick_index
+                  and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))
+        odd = None
+        if nested:
+            (pw, pw_odd), (qw, qw_odd) = _restrict(ops[0], mesh), _restrict(ops[1], mesh)
+            odd = (mesh.nodes[1::2], pw_odd, qw_odd)
+            ops, mesh = (pw, qw), sub
+        else:
+            ops = None
+        d = solve_default(geometry, c, m, k_guess=guess, ops=ops)
+        if odd is not None:  # u, du/dx inside each coarse element, from the fine operators
+            x, pw_odd, qw_odd = odd
+            d.interior_samples = (x, pw_odd[1] @ d.p + qw_odd[1] @ d.phi,
+                                  pw_odd[2] @ d.p + qw_odd[2] @ d.phi)
+        out[m] = d
+        if d.converged and d.k > 0.0:
+            guess = d.k
+    return out
+
+
+def _relative(values: Sequence[float]) -> float:
+    """Relative error estimate of the last of nested (v(n/4), v(n/2), v(n)) or (v(n/2), v(n)).
+
+    Three levels: :func:`contactlib.accuracy.estimate` (Richardson with the
+    observed order where the differences shrink at least twofold; the larger
+    difference where they do not, which bounds an error that is not yet
+    converging or changes sign). Two levels (n = 16 ... 31): the difference
+    itself, three times the error of v(n) once the n^-2 convergence is
+    asymptotic. Measured coverage: docs/accuracy.md, tests/test_error_estimate.py.
+    """
+    full = values[-1]
+    if not np.all(np.isfinite(values)):
+        return math.inf
+    if len(values) == 3:
+        if full == 0.0:
+            return 0.0 if values[0] == values[1] == 0.0 else math.inf
+        return estimate(*values)[0]
+    return abs(values[0] - full) / abs(full) if full != 0.0 else (
+        0.0 if values[0] == 0.0 else math.inf)
+
+
+def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
+                       coarse: dict[int, DiscreteSolution], samples: bool,
+                       max_error: float) -> None:
+    """Add ``error_estimate``, ``load_error_estimate``, ``work_error_estimate`` and ``resolved``.
+
+    Default method: k, the load and (with samples) the work of the same case
+    on the nested meshes n/4 and n/2 give the estimates (:func:`_relative`);
+    where Newton stopped on the round-off floor, twice its last step is added
+    to the k estimate. A mesh with elements below :data:`QUADRATURE_FLOOR_H`
+    is never resolved (a limit of the method; the message says so).
+    Frictionless, full adhesion and nu = 0.5 are exact in k (estimate 0) and
+    carry the estimate of the load. The paper's scheme is measured against
+    the default method at n = 64 (its own k does not converge to the
+    physical value).
+    """
+    c = float(rec["stick_ratio"])
+    solved = _solved_ratio(geometry, c)
+    rec.setdefault("work_error_estimate", math.nan)
+    notes = []
+    limit = False  # below the quadrature floor: refining does not help
+    if "error_estimate" in rec:  # a tolerance scene estimated k itself
+        rec.setdefault("load_error_estimate", math.nan)
+    elif method != "default":
+        ref = solve_default(geometry, solved, 64)
+        k_ref, load_ref = ref.k, geometry.load(ref.mesh.nodes, ref.p)
+        if 0.0 < c < 1.0 and np.isfinite(rec["k"]) and k_ref > 0.0:
+            rec["error_estimate"] = abs(rec["k"] - k_ref) / k_ref
+        else:
+            rec["error_estimate"] = 0.0
+        rec["load_error_estimate"] = abs(rec["load"] - load_ref) / load_ref
+        if samples:
+            rec["work_error_estimate"] = _relative([_work(geometry, ref), _record_work(
+                geometry, rec)]) if 0.0 < solved < 1.0 else 0.0
+        notes.append("the paper's scheme as printed: error measured against the default "
+                     "method at n = 64")
+    else:
+        levels = sorted(coarse)  # n/4, n/2
+        sols = [coarse[m] for m in levels]
+        if bool(rec["converged"]) and 0.0 < solved < 1.0:
+            # a coarse Newton that started from the continuation guess and failed
+            # starts again from the fine k, within the discretization error of its root
+            sols = [s if s.converged else solve_default(geometry, solved, m,
+                                                        k_guess=float(rec["k"]))
+                    for m, s in zip(levels, sols)]
+        if not 0.0 < solved < 1.0:  # k exact (0 or inf); the load still has an error
+            sols = [solve_default(geometry, solved, m) for m in (n // 4, n // 2) if m >= 8]
+            rec["error_estimate"] = 0.0
+        elif not sols:
+            rec["error_estimate"] = math.nan
+        elif not all(s.converged for s in sols):
+            rec["error_estimate"] = math.inf
+            bad = ", ".join(str(m) for m, s in zip(levels, sols) if not s.converged)
+            notes.append(f"no error estimate: the same case on the nested mesh n = {bad} "
+                         "did not converge")
+        else:
+            rec["error_estimate"] = _relative([s.k for s in sols] + [float(rec["k"])])
+        loads = [geometry.load(s.mesh.nodes, s.p) for s in sols] + [float(rec["load"])]
+        rec["load_error_estimate"] = _relative(loads) if len(loads) > 1 else math.nan
+        if samples and sols and rec["slip_x"].size and 0.0 < solved < 1.0:
+            rec["work_error_estimate"] = _relative([_work(geometry, s) for s in sols]
+                                                   + [_record_work(geometry, rec)])
+        elif samples:  # no slip (full adhesion) or no shear (frictionless): no work
+            rec["work_error_estimate"] = 0.0
+        h_min = float(np.min(np.diff(np.asarray(rec["nodes"], dtype=float))))
+        floor = QUADRATURE_FLOOR_H["stick" if solved < 0.5 else "annulus"]
+        limit = 0.0 < solved < 1.0 and h_min < floor
+        if limit:
+            notes.append(f"not resolved: the mesh needs elements of {h_min:.0e} a next to "
+                         f"c; below about {floor:g} a the kernels' quadrature "
+                         "error (about 1e-11) is amplified in the stick-edge condition, k is "
+                         "uncertain at the 1e-4 ... 1e-3 level and refining makes it worse, "
+                         "so no n resolves it (a limit of the method)")
+        # Newton stopped on the round-off floor: its iterates scatter by about the
+        # last step, twice which is added to the discretization estimate
+        rec["error_estimate"] = float(rec["error_estimate"]) + 2.0 * float(
+            rec.get("round_off", 0.0))
+    est = float(rec["error_estimate"])
+    good = bool(rec["converged"]) and np.isfinite(est) and est <= max_error and not limit
+    rec["resolved"] = good
+    rec["max_error"] = float(max_error)
+    if not good and bool(rec["converged"]) and np.isfinite(est) and est > max_error:
+        need = resolving_n(n, est, max_error) if method == "default" and not limit else None
+        hint = (f"n = {need} should resolve it" if need is not None else
+                "no n resolves it" if limit else
+                f"no supported n (up to {MAX_N}) resolves it" if method == "default" else
+                "use the default method")
+        notes.append(f"estimated k error {est:.1e} exceeds max_error {max_error:g}: {hint}")
+    if notes:
+        rec["message"] = "; ".join(x for x in [rec["message"]] + notes if x)
+
+
+def _work(geometry: Contact, d: DiscreteSolution) -> float:
+    """Frictional work of a discrete solution from its Simpson slip samples."""
+    xs, ws, q, sl = d.slip_samples()
+    return float(energy.frictional_work(xs, ws, q, sl, geometry.work_factor,
+                                        geometry.work_weight_power))
+
+
+def _record_work(geometry: Contact, rec: Record) -> float:
+    """Frictional work of a case record from its stored slip samples."""
+    return float(energy.frictional_work(rec["slip_x"], rec["slip_w"], rec["slip_q"],
+                                        rec["slip_s"], geometry.work_factor,
+                                        geometry.work_weight_power))
 
 
 def _continuation_guess(geometry: Contact, c: float,
@@ -361,6 +621,12 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
         consistent=bool(fl.get("consistent", True)),
         converged=bool(rec["converged"]), residual_norm=float(rec["residual_norm"]),
         iterations=int(rec["iterations"]), message=msg,
+        error_estimate=float(rec.get("error_estimate", math.nan)),
+        load_error_estimate=float(rec.get("load_error_estimate", math.nan)),
+        work_error_estimate=(float(rec.get("work_error_estimate", math.nan))
+                             if np.isfinite(work) else math.nan),
+        resolved=bool(rec.get("resolved", False)),
+        max_error=float(rec.get("max_error", math.nan)),
         extra={"stick_violation": fl.get("stick_violation", float("nan")),
                "slip_violation": fl.get("slip_violation", float("nan")),
                "indentation": float(rec["delta"])},

@@ -19,7 +19,8 @@ GOOD = ["--geometry", "sphere", "--nu", "0.3"]
 
 
 def _fake_solution(geometry: str, nu: float, stick_ratio: float, *, n: int | None,
-                   method: str, slab_ratio: float, energy: bool) -> Solution:
+                   method: str, slab_ratio: float, energy: bool,
+                   max_error: float = 1e-3) -> Solution:
     n = n or 8
     xi = np.linspace(0.0, 1.0, n + 1)
     return Solution(
@@ -29,6 +30,8 @@ def _fake_solution(geometry: str, nu: float, stick_ratio: float, *, n: int | Non
         xi=xi, pressure=np.sqrt(1 - xi**2), shear=0.1 * xi, tangential_displacement=xi,
         load_ratio=1.0, frictional_work=0.02 if energy else math.nan, iterations=5,
         residual_norm=1e-13, message="fake" if stick_ratio == 1 else "",
+        error_estimate=0.0 if stick_ratio == 1 else 2e-5, load_error_estimate=1e-5,
+        work_error_estimate=3e-5 if energy else math.nan, resolved=True, max_error=max_error,
     )
 
 
@@ -39,26 +42,28 @@ class FakeApi:
         self.calls: list[tuple[str, dict]] = []
 
     def solve(self, geometry, nu, *, stick_ratio=None, friction=None, n=None,
-              method="default", slab_ratio=0.0, energy=True):
+              method="default", slab_ratio=0.0, energy=True, max_error=1e-3):
         self.calls.append(("solve", dict(geometry=geometry, nu=nu, stick_ratio=stick_ratio,
                                          friction=friction, n=n, method=method,
-                                         slab_ratio=slab_ratio, energy=energy)))
+                                         slab_ratio=slab_ratio, energy=energy,
+                                         max_error=max_error)))
         if friction is not None and friction > 100:
             raise ValueError("friction is too large for this fake, got 1000")
         g = stick_ratio if stick_ratio is not None else min(friction, 1.0)
         return _fake_solution(geometry, nu, g, n=n, method=method,
-                              slab_ratio=slab_ratio, energy=energy)
+                              slab_ratio=slab_ratio, energy=energy, max_error=max_error)
 
     def sweep(self, geometry, nu, stick_ratios="all", *, n=None, method="default",
-              slab_ratio=0.0, energy=True, progress=None):
+              slab_ratio=0.0, energy=True, progress=None, max_error=1e-3):
         self.calls.append(("sweep", dict(stick_ratios=stick_ratios, n=n, energy=energy,
-                                         progress=progress)))
+                                         progress=progress, max_error=max_error)))
         m = n or 8
         ratios = [i / m for i in range(1, m)] if stick_ratios == "all" else stick_ratios
         out = []
         for i, g in enumerate(ratios, 1):
             out.append(_fake_solution(geometry, nu, g, n=n, method=method,
-                                      slab_ratio=slab_ratio, energy=energy))
+                                      slab_ratio=slab_ratio, energy=energy,
+                                      max_error=max_error))
             if progress is not None:
                 progress(i, len(ratios))
         return out
@@ -167,7 +172,7 @@ def test_solve_writes_and_summarizes(capsys, tmp_path, api) -> None:
     assert ds.attrs["slab_ratio"] == 0.5
     assert api.calls[0][1] == dict(geometry="cylinder", nu=0.25, stick_ratio=1.0,
                                    friction=None, n=16, method="default",
-                                   slab_ratio=0.5, energy=True)
+                                   slab_ratio=0.5, energy=True, max_error=1e-3)
 
 
 def test_solve_friction_no_output(capsys, tmp_path, api, monkeypatch) -> None:

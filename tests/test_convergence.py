@@ -31,8 +31,19 @@ def test_study_rejects_non_doubling_resolutions():
         study("sphere", 0.3, "default", [16, 32, 48], [0.5])
 
 
+@pytest.mark.slow
 def test_default_method_errors_shrink_at_order_two_on_the_cylinder():
-    st = study("cylinder", 0.3, "default", [16, 32, 64, 128], [0.3, 0.8], slab_ratio=0.05)
+    """k converges at order 2, approached from below on the two-scale mesh.
+
+    The mesh resolves two lengths (c and a - c) and the contact edge, whose
+    errors have different signs: at c/a = 0.3 (a/h = 1/20) the k error
+    crosses zero between n = 32 and 64 and the observed order over
+    successive triples is 3.6, -, 1.39, 1.75 (n = 32 ... 1024); at 0.8 it is
+    0.44, 1.44, 1.71, 1.82. (The earlier mesh showed order 2 from n = 16, but
+    missed k at the extremes by up to 61 %.) So the order is measured where
+    it is asymptotic, from the finest three of n = 128 ... 1024.
+    """
+    st = study("cylinder", 0.3, "default", [128, 256, 512, 1024], [0.3, 0.8], slab_ratio=0.05)
     order = st.order_of("friction_coefficient")
     assert np.all((order > 1.7) & (order < 2.7)), order
     err = st.error_of("load_ratio")

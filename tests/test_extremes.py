@@ -63,7 +63,9 @@ def assert_no_nan_or_inf(sol, *, energy: bool = True) -> None:
 # ----------------------------------------------------------------------------- c/a -> 0
 @pytest.mark.parametrize("geometry, n, ratios", [
     ("sphere", 128, [0.1, 1e-2, 1e-3, 1e-4]),
-    ("cylinder", 32, [0.1, 1e-2, 1e-4, 1e-6, 1e-8]),
+    # n = 64: at n = 32 the load error (4e-3 at c/a = 1e-8, estimated 1e-2) exceeds the
+    # physical excess over Hertz it is tested for (4.3e-3)
+    ("cylinder", 64, [0.1, 1e-2, 1e-4, 1e-6, 1e-8]),
 ])
 def test_small_stick_zone_tends_to_hertz(geometry, n, ratios):
     nu = 0.3
@@ -99,7 +101,10 @@ def test_tiny_stick_zone_is_never_a_wrong_converged_answer(c):
 # ----------------------------------------------------------------------------- c/a -> 1
 @pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
 def test_large_stick_zone_tends_to_full_adhesion(geometry):
-    nu, n = 0.3, 64
+    # n = 128: at n = 64 the full-adhesion solution's own pressure error at the edge
+    # (3e-4 at xi = 0.995; its mesh is graded to the edge, not to c) exceeds the
+    # physical difference at c/a = 0.9999 (9e-5), which then stops shrinking
+    nu, n = 0.3, 128
     full = solve(geometry, nu, stick_ratio=1.0, n=n)
     assert full.friction_coefficient == np.inf and full.frictional_work == 0.0
     assert_no_nan_or_inf(full)
@@ -112,7 +117,14 @@ def test_large_stick_zone_tends_to_full_adhesion(geometry):
     for c, s in zip(ratios, sols):
         assert s.converged and s.consistent, c
         assert_no_nan_or_inf(s)
-        assert 1.0 < s.friction_coefficient / uncoupled(geometry, nu, c) < 1.45, c
+        assert 1.0 < s.friction_coefficient / uncoupled(geometry, nu, c), c
+    # the ratio to the closed form grows toward c/a = 1 (1.15, 1.28, 1.55 sphere; the old
+    # mesh's bound 1.45 held only because it missed k at 0.9999 by 10 %: k = 1.39456,
+    # 1.39450, 1.39449 at n = 64, 128, 256); each k is resolved (estimate <= 1e-3;
+    # tests/test_error_estimate.py checks the estimates against refined solutions)
+    ratio = [s.friction_coefficient / uncoupled(geometry, nu, c) for c, s in zip(ratios, sols)]
+    assert np.all(np.diff(ratio) > 0)
+    assert all(s.resolved for s in sols)
     inner = full.xi < 0.9
     d_load = [abs(s.load_ratio - full.load_ratio) for s in sols]
     d_shear = [np.max(np.abs(s.shear[inner] - full.shear[inner])) for s in sols]

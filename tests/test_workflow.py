@@ -6,68 +6,18 @@ folder, writes its own config, and runs snakemake there as a subprocess.
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
-import subprocess
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 import yaml
 
 import contactlib
+from conftest import REPO, job_counts, make_workdir, needs_snakemake, nothing_to_do, snakemake
 from contactlib.io import read_dataset
 
-REPO = Path(__file__).resolve().parents[1]
-SNAKEMAKE = [sys.executable, "-m", "snakemake"]
-
-pytestmark = pytest.mark.skipif(shutil.which("snakemake") is None and
-                                subprocess.run(SNAKEMAKE + ["--version"],
-                                               capture_output=True).returncode != 0,
-                                reason="snakemake is not installed")
-
-
-def make_workdir(tmp: Path, config: dict | None = None) -> Path:
-    """A copy of the workflow in tmp, with the given config (default: the repo's)."""
-    shutil.copy(REPO / "Snakefile", tmp / "Snakefile")
-    shutil.copytree(REPO / "workflow", tmp / "workflow",
-                    ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copytree(REPO / "config", tmp / "config")
-    if config is not None:
-        (tmp / "config" / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    return tmp
-
-
-def run(workdir: Path, *args: str, check: bool = True) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PYTHONHASHSEED="0")
-    proc = subprocess.run(SNAKEMAKE + ["--cores", "2", *args], cwd=workdir, env=env,
-                          capture_output=True, text=True, timeout=900)
-    if check and proc.returncode != 0:
-        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{proc.stdout}\n{proc.stderr}")
-    return proc
-
-
-def job_counts(workdir: Path, *args: str) -> dict[str, int]:
-    """Jobs a dry run would execute, by rule."""
-    out = run(workdir, "--dry-run", *args)
-    text = out.stdout + out.stderr
-    table = text[text.index("Job stats:"):]
-    counts = {}
-    for line in table.splitlines()[3:]:
-        parts = line.split()
-        if len(parts) != 2 or not parts[1].isdigit() or parts[0] == "total":
-            if parts and parts[0] == "total":
-                break
-            continue
-        counts[parts[0]] = int(parts[1])
-    return counts
-
-
-def nothing_to_do(workdir: Path) -> bool:
-    out = run(workdir, "--dry-run")
-    return "Nothing to be done" in out.stdout + out.stderr
+pytestmark = [needs_snakemake, pytest.mark.workflow]
 
 
 TINY = {
@@ -140,7 +90,7 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     assert counts["energy"] == 1  # curve-again
     assert counts["displacements"] == 1  # paper-b
     assert not any(rule.startswith("figure") for rule in counts)
-    dry = run(wd, "--dry-run").stdout
+    dry = snakemake(wd, "--dry-run").stdout
     shear_jobs = re.findall(r"results/influence/([^/\s]+)/shear\.npz", dry)
     assert not any(k.startswith("sphere-nu0.3-default-n32-c") and "hertz" in k
                    for k in shear_jobs)
@@ -161,7 +111,7 @@ def test_bad_scene_is_refused_before_any_job_naming_the_key(tmp_path, key, value
     bad = {"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3]}
     bad[key] = value
     (tmp_path / "bad.yaml").write_text(yaml.safe_dump({"scenes": {"bad": bad}}))
-    proc = run(wd, "--configfile", "bad.yaml", check=False)
+    proc = snakemake(wd, "--configfile", "bad.yaml", check=False)
     assert proc.returncode != 0
     text = proc.stdout + proc.stderr
     assert f"scenes.bad.{key}" in text, text
@@ -173,7 +123,7 @@ def test_library_rules_are_applied_after_the_schema(tmp_path):
     cfg = {"scenes": {"bad": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": 16,
                               "stick_ratios": [0.3]}}}
     (tmp_path / "bad.yaml").write_text(yaml.safe_dump(cfg))
-    proc = run(wd, "--configfile", "bad.yaml", check=False)
+    proc = snakemake(wd, "--configfile", "bad.yaml", check=False)
     assert proc.returncode != 0
     assert "scenes.bad.stick_ratios" in proc.stderr + proc.stdout
     assert "multiple of 1/n" in proc.stderr + proc.stdout
@@ -184,7 +134,7 @@ def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
                             "outputs": ["k_curve"]}},
            "figures": {"fig4": ["s"]}}
     wd = make_workdir(tmp_path, cfg)
-    proc = run(wd, "--dry-run", check=False)
+    proc = snakemake(wd, "--dry-run", check=False)
     assert proc.returncode != 0
     assert "figures.fig4" in proc.stderr + proc.stdout
     assert "displacements" in proc.stderr + proc.stdout
@@ -194,7 +144,7 @@ def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
 @pytest.fixture(scope="module")
 def tiny_run(tmp_path_factory):
     wd = make_workdir(tmp_path_factory.mktemp("tiny"), TINY)
-    run(wd)
+    snakemake(wd)
     return wd
 
 
@@ -243,7 +193,7 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
     cfg = yaml.safe_load((wd / "config/config.yaml").read_text())
     cfg["scenes"]["tiny-paper"]["nu"] = 0.25
     (wd / "config/config.yaml").write_text(yaml.safe_dump(cfg, sort_keys=False))
-    dry = run(wd, "--dry-run").stdout
+    dry = snakemake(wd, "--dry-run").stdout
     jobs = re.findall(r"^rule (\w+):\n(?:.*\n)*?    output: (\S+)", dry, flags=re.M)
     outputs = [o for _, o in jobs]
     assert outputs, dry
@@ -259,7 +209,7 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
 
 def test_convergence_target(tiny_run):
     assert not (tiny_run / "results/convergence").exists()  # not part of the main job
-    run(tiny_run, "convergence")
+    snakemake(tiny_run, "convergence")
     own = read_dataset(tiny_run / "results/convergence/s-default.nc")
     order = own["observed_order"].sel(quantity="friction_coefficient").values
     assert np.all((order > 1.7) & (order < 2.7)), order  # the method's order 2
@@ -276,7 +226,7 @@ def test_convergence_target(tiny_run):
 
 
 def test_report_builds(tiny_run):
-    run(tiny_run, "--report", "results/report.html")
+    snakemake(tiny_run, "--report", "results/report.html")
     html = (tiny_run / "results/report.html").read_text(errors="replace")
     assert len(html) > 10000
 
@@ -284,7 +234,7 @@ def test_report_builds(tiny_run):
 # ----------------------------------------------------------------------------- lint
 def test_lint_is_clean(tmp_path):
     wd = make_workdir(tmp_path)
-    proc = run(wd, "--lint", check=False)
+    proc = snakemake(wd, "--lint", check=False)
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text
     assert "Lints for" not in text, text

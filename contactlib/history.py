@@ -128,6 +128,15 @@ class HistoryResult:
         elements, and neither estimate exceeds ``max_error``.
     max_error : float
         The accuracy a step must reach to be resolved.
+
+    Examples
+    --------
+    >>> from contactlib.history import history
+    >>> res = history("cylinder", 0.3, 0.2, [0, 1], 4, n=40)
+    >>> res.pressure.shape, res.state.shape    # (steps + 1, n)
+    ((5, 40), (5, 40))
+    >>> int(res.segment[0]), int(res.segment[-1])
+    (0, 1)
     """
 
     geometry: str
@@ -268,6 +277,25 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     ValueError
         For invalid input; the message names the argument.
 
+    Examples
+    --------
+    A load-unload cycle, 10 steps a segment:
+
+    >>> from contactlib import history
+    >>> res = history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=60)
+    >>> res.load_ratio.shape      # step 0 (unloaded), then 2 x 10 steps
+    (21,)
+    >>> float(res.load_ratio[10]), float(res.load_ratio[-1])
+    (1.0, 0.0)
+    >>> bool(res.frictional_work[-1] > res.frictional_work[10] > 0)  # unloading slips too
+    True
+
+    Without friction, or without slip, nothing is dissipated:
+
+    >>> [float(history("sphere", 0.3, k, [0, 1], 5, n=60).frictional_work[-1])
+    ...  for k in (0.0, float("inf"))]
+    [0.0, 0.0]
+
     Notes
     -----
     Error estimates: the same path is followed on a mesh of ``n // 2``
@@ -389,6 +417,15 @@ def history_to_dataset(result: HistoryResult):
     poisson_ratio, elements, friction_coefficient, load_path, steps,
     slab_ratio (cylinder), mesh_extent, contactlib_version, Conventions.
     Write it with :func:`contactlib.io.write_dataset`.
+
+    Examples
+    --------
+    >>> from contactlib.history import history, history_to_dataset
+    >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1], 5, n=40))
+    >>> ds.sizes["step"], ds.sizes["xi"]
+    (6, 40)
+    >>> ds["load_ratio"].attrs["units"], ds.attrs["geometry"]
+    ('1', 'sphere')
     """
     import xarray as xr
 

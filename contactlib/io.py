@@ -509,6 +509,20 @@ def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     -------
     pathlib.Path
         The destination path.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from contactlib import solve
+    >>> from contactlib.io import read_dataset, to_dataset, write_dataset
+    >>> ds = to_dataset(solve("sphere", 0.3, stick_ratio=0.5, n=64))
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = write_dataset(ds, pathlib.Path(tmp) / "case.nc")
+    ...     back = read_dataset(path)
+    ...     again = write_dataset(back, pathlib.Path(tmp) / "again.nc")
+    ...     same_bytes = path.read_bytes() == again.read_bytes()
+    >>> bool(back["friction_coefficient"].equals(ds["friction_coefficient"])), same_bytes
+    (True, True)
     """
     path, tmp = _atomic_target(path)
     try:

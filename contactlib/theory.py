@@ -41,6 +41,17 @@ def uncoupled_friction(geometry: str, nu: float, gamma):
     Sphere: k = beta artanh(g) / (g K'(g)); cylinder on a half-plane:
     k = beta K(g) / K'(g), with K the complete elliptic integral of modulus g
     and K'(g) = K(sqrt(1 - g^2)) (Spence 1973, 1975).
+
+    Examples
+    --------
+    At g = 1/sqrt(2), K(g) = K'(g), so the cylinder's k is beta:
+
+    >>> from contactlib.theory import beta_of_nu, uncoupled_friction
+    >>> k = uncoupled_friction("cylinder", 0.3, 2**-0.5)
+    >>> round(float(k), 12) == round(beta_of_nu(0.3), 12)
+    True
+    >>> float(uncoupled_friction("sphere", 0.5, 0.5))  # beta = 0: no coupling
+    0.0
     """
     g = np.asarray(gamma, dtype=float)
     b = beta_of_nu(nu)

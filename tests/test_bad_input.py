@@ -435,9 +435,10 @@ def test_workflow_reports_every_schema_problem_by_key(tmp_path):
 
 @pytest.mark.parametrize("scene, where", [
     ({"geometry": "sphere", "nu": float("nan"), "stick_ratios": [0.3]}, "scenes.x.nu"),
-    ({"geometry": "cylinder", "nu": 0.3, "slab_ratio": float("inf"), "stick_ratios": [0.3]},
-     "scenes.x.slab_ratio"),
-    ({"geometry": "sphere", "nu": 0.3, "n": 8, "stick_ratios": [0.3]}, "scenes.x.n"),
+    pytest.param({"geometry": "cylinder", "nu": 0.3, "slab_ratio": float("inf"),
+                  "stick_ratios": [0.3]}, "scenes.x.slab_ratio", marks=pytest.mark.slow),
+    pytest.param({"geometry": "sphere", "nu": 0.3, "n": 8, "stick_ratios": [0.3]}, "scenes.x.n",
+                 marks=pytest.mark.slow),
 ])
 @needs_snakemake
 @pytest.mark.workflow

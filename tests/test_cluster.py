@@ -123,6 +123,7 @@ def cluster_run(tmp_path_factory):
 
 @needs_snakemake
 @pytest.mark.workflow
+@pytest.mark.slow
 def test_local_cluster_profile_runs_the_default_target(cluster_run):
     wd, text = cluster_run
     assert "cluster-generic" in text or "external jobid" in text
@@ -199,6 +200,7 @@ def test_slurm_profile_names_the_executor_and_leaves_account_to_the_user():
 
 @needs_snakemake
 @pytest.mark.workflow
+@pytest.mark.slow
 def test_slurm_profile_dry_run(tmp_path):
     """With the optional plugin installed (``pip install -e '.[slurm]'``) the profile loads."""
     pytest.importorskip("snakemake_executor_plugin_slurm")

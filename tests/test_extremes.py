@@ -222,6 +222,7 @@ print(json.dumps({"n": s.n, "k": s.friction_coefficient, "converged": s.converge
 """
 
 
+@pytest.mark.slow
 def test_largest_supported_n_and_its_memory():
     """n = MAX_N = 4096 (sphere, c/a = 0.5, with work): peak memory about 3.3 GiB."""
     proc = subprocess.run([sys.executable, "-c", _LARGEST], capture_output=True, text=True,

@@ -26,7 +26,7 @@ import pytest
 from conftest import ENV, SNAKEMAKE, make_workdir, needs_snakemake, snakemake
 from contactlib.io import read_arrays, read_dataset
 
-pytestmark = [needs_snakemake, pytest.mark.workflow]
+pytestmark = [needs_snakemake, pytest.mark.workflow, pytest.mark.slow]
 
 
 SMALL = {

@@ -63,6 +63,7 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
                       "key_numbers": 1, "all": 1}
 
 
+@pytest.mark.slow
 def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     cfg = {"scenes": {
         # frictionless: no shear matrices, no energy, no displacements
@@ -102,10 +103,9 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
 
 
 # ----------------------------------------------------------------------------- schema
-@pytest.mark.parametrize("key, value", [
-    ("nu", 0.7), ("geometry", "cone"), ("n", 1), ("stick_ratios", [1.7]),
-    ("method", "fem"), ("slab_ratio", -1.0), ("outputs", ["pictures"]),
-])
+@pytest.mark.parametrize("key, value", [("nu", 0.7)] + [pytest.param(*p, marks=pytest.mark.slow) for p in (
+    ("geometry", "cone"), ("n", 1), ("stick_ratios", [1.7]),
+    ("method", "fem"), ("slab_ratio", -1.0), ("outputs", ["pictures"]))])
 def test_bad_scene_is_refused_before_any_job_naming_the_key(tmp_path, key, value):
     wd = make_workdir(tmp_path)
     bad = {"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3]}
@@ -118,6 +118,7 @@ def test_bad_scene_is_refused_before_any_job_naming_the_key(tmp_path, key, value
     assert not (wd / "results").exists()  # nothing ran
 
 
+@pytest.mark.slow
 def test_library_rules_are_applied_after_the_schema(tmp_path):
     wd = make_workdir(tmp_path)
     cfg = {"scenes": {"bad": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": 16,
@@ -129,6 +130,7 @@ def test_library_rules_are_applied_after_the_schema(tmp_path):
     assert "multiple of 1/n" in proc.stderr + proc.stdout
 
 
+@pytest.mark.slow
 def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
     cfg = {"scenes": {"s": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.5],
                             "outputs": ["k_curve"]}},
@@ -141,6 +143,24 @@ def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
 
 
 # ----------------------------------------------------------------------------- end to end
+MICRO = {"scenes": {"micro": {"geometry": "sphere", "nu": 0.3, "method": "default", "n": 16,
+                              "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]}}}
+
+
+def test_micro_run_dataset_matches_the_library(tmp_path):
+    """The fast tier's end-to-end run: one scene, two cases, no figures."""
+    wd = make_workdir(tmp_path, MICRO)
+    snakemake(wd)
+    ds = read_dataset(wd / "results/datasets/micro.nc")
+    ref = contactlib.sweep("sphere", 0.3, [0.0, 0.5], n=16, energy=False)
+    np.testing.assert_array_equal(ds["friction_coefficient"].values,
+                                  [s.friction_coefficient for s in ref])
+    assert abs(float(ds["load_ratio"].values[0]) - 1.0) < 3e-3  # frictionless: Hertz
+    assert ds["consistent"].values.all()
+    assert (wd / "results/tables/key-numbers.csv").read_text().startswith("scene,")
+    assert not list((wd / "results").rglob("*.tmp"))
+
+
 @pytest.fixture(scope="module")
 def tiny_run(tmp_path_factory):
     wd = make_workdir(tmp_path_factory.mktemp("tiny"), TINY)
@@ -148,6 +168,7 @@ def tiny_run(tmp_path_factory):
     return wd
 
 
+@pytest.mark.slow
 def test_tiny_run_datasets_match_the_library(tiny_run):
     ds = read_dataset(tiny_run / "results/datasets/tiny-default.nc")
     ref = contactlib.sweep("sphere", 0.3, [0.0, 0.3, 0.6, 1.0], n=32)
@@ -168,6 +189,7 @@ def test_tiny_run_datasets_match_the_library(tiny_run):
         assert "long_name" in ds[name].attrs and "units" in ds[name].attrs, name
 
 
+@pytest.mark.slow
 def test_tiny_run_datasets_hold_only_what_was_asked(tiny_run):
     ds = read_dataset(tiny_run / "results/datasets/tiny-paper.nc")
     assert "frictional_work" in ds and "consistent" in ds
@@ -176,6 +198,7 @@ def test_tiny_run_datasets_hold_only_what_was_asked(tiny_run):
     assert not (tiny_run / "results/profiles/tiny-paper.npz").exists()
 
 
+@pytest.mark.slow
 def test_tiny_run_outputs_and_no_partial_files(tiny_run):
     for fig in ("fig2", "fig3", "fig4", "fig5"):
         for ext in ("png", "pdf"):
@@ -185,6 +208,7 @@ def test_tiny_run_outputs_and_no_partial_files(tiny_run):
     assert not list((tiny_run / "results").rglob("*.tmp"))
 
 
+@pytest.mark.slow
 def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_run, tmp_path):
     wd = make_workdir(tmp_path, TINY)
     shutil.copytree(tiny_run / "results", wd / "results")
@@ -207,6 +231,7 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
     assert figs == {"figure_fig2", "figure_fig5"}  # the figures that draw tiny-paper
 
 
+@pytest.mark.slow
 def test_convergence_target(tiny_run):
     assert not (tiny_run / "results/convergence").exists()  # not part of the main job
     snakemake(tiny_run, "convergence")
@@ -225,6 +250,7 @@ def test_convergence_target(tiny_run):
     assert len(table) == 1 + 4 + 3  # one row a resolution of each study
 
 
+@pytest.mark.slow
 def test_report_builds(tiny_run):
     snakemake(tiny_run, "--report", "results/report.html")
     html = (tiny_run / "results/report.html").read_text(errors="replace")

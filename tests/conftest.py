@@ -3,9 +3,10 @@
 Markers (registered in ``pyproject.toml``):
 
 ``slow``
-    more than about 10 s on a quiet 2-core machine. ``python -m pytest -m "not slow"``
+    more than about 10 s on a loaded 2-core machine. ``python -m pytest -m "not slow"``
     is the fast tier for development; every property checked by a slow test keeps a
-    cheaper check (smaller n, a tiny configuration) in the fast tier.
+    cheaper check (smaller n, a tiny configuration, one of several refusals) in the
+    fast tier.
 ``workflow``
     runs snakemake as a subprocess (dry runs, tiny end-to-end runs, the main job).
 ``cluster``

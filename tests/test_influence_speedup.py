@@ -12,7 +12,7 @@ or the package's own kernels as the reference:
   the form the package used before the speed-up), row by row: the largest
   difference in a row must stay below 1e-10 of the row's largest entry, for w,
   u and du/dx, at the nodes and at the Gauss points of the slip zone, on the
-  graded meshes of n = 64 (fast) and 256 (``slow``);
+  graded meshes of n = 64 and 256;
 * the element integrals against a 40-point smoothstep rule on every element
   (split at x), with the reference kernel: the quadrature of the operators.
 """
@@ -154,7 +154,7 @@ def _row_errors(new: np.ndarray, ref: np.ndarray) -> np.ndarray:
     return np.where(scale > 0, diff / np.where(scale > 0, scale, 1.0), np.where(diff > 0, np.inf, 0.0))
 
 
-@pytest.mark.parametrize("n", [64, pytest.param(256, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("n", [64, 256])
 @pytest.mark.parametrize("stick_ratio", [0.02, 0.5, 0.98])
 def test_operators_match_the_reference_kernels(n, stick_ratio):
     mesh = graded_mesh(n, stick_ratio)

@@ -8,8 +8,8 @@ set by the caller.
 Run: python benchmarks/bench_history.py [geometry ...]   (default: sphere cylinder)
 
 For each geometry (nu = 0.3, k = 0.15, path 0 -> 1 -> 0 with 100 steps a
-segment, n = contactlib.history.DEFAULT_N) prints the wall time of
-``contactlib.history.history`` (operators, every step, post-processing), the
+segment, n = contactlib.history_api.DEFAULT_N) prints the wall time of
+``contactlib.history`` (operators, every step, post-processing), the
 time of one ``scipy.linalg.lu_factor`` of a random dense matrix as large as
 the largest linear system the run solved (contact pressures + stick shears +
 indentation), measured in the same run (median of 7), the per-step cost in
@@ -32,7 +32,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np
 from scipy import linalg
 
-from contactlib.history import DEFAULT_N, history
+from contactlib.history_api import DEFAULT_N, history
 
 
 def lu_time(size: int, repeats: int = 7) -> float:

@@ -27,7 +27,7 @@ import numpy as np  # noqa: E402
 from contactlib import history_solver as hs  # noqa: E402
 from contactlib import solve  # noqa: E402
 from contactlib.geometry import Geometry  # noqa: E402
-from contactlib.history import history  # noqa: E402
+from contactlib import history  # noqa: E402
 
 NU = 0.3
 P_MAX = {"sphere": 4.0 / 3.0, "cylinder": np.pi / 4.0}

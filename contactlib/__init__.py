@@ -8,7 +8,7 @@ central stick zone, verified against exact limits.
 __version__ = "0.1.0"
 
 from .api import solve, sweep  # noqa: E402
-from .history import history  # noqa: E402
+from .history_api import history  # noqa: E402
 from .result import Solution  # noqa: E402
 
 __all__ = ["__version__", "solve", "sweep", "history", "Solution"]

@@ -33,15 +33,16 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from .geometry import Geometry
+from . import validate
+from .model import Contact
 
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
            "plan", "estimate", "solve_to_tolerance"]
 
-MAX_N = 4096
+MAX_N = validate.MAX_N
 MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
-MIN_TOLERANCE = 1e-8
-MAX_TOLERANCE = 0.1
+MIN_TOLERANCE = validate.MIN_TOLERANCE
+MAX_TOLERANCE = validate.MAX_TOLERANCE
 SAFETY = 2.0  # the plan aims at tolerance / SAFETY
 
 # Relative k error of the default method at n = 256 (nu = 0.3) against the
@@ -58,15 +59,8 @@ ERROR_AT_256 = {
 
 
 def check_tolerance(value: object) -> float:
-    """A relative tolerance on k, a number in [MIN_TOLERANCE, MAX_TOLERANCE]."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ValueError(f"tolerance must be a number in [{MIN_TOLERANCE:g}, "
-                         f"{MAX_TOLERANCE:g}], got {value!r}")
-    v = float(value)
-    if not (math.isfinite(v) and MIN_TOLERANCE <= v <= MAX_TOLERANCE):
-        raise ValueError(f"tolerance must be in [{MIN_TOLERANCE:g}, {MAX_TOLERANCE:g}] "
-                         f"(relative error in k), got {value!r}")
-    return v
+    """A relative tolerance on k, in [MIN_TOLERANCE, MAX_TOLERANCE] (:func:`validate.tolerance`)."""
+    return validate.tolerance(value)
 
 
 def predicted_error(geometry: str, stick_ratio: float, n: int) -> float:
@@ -83,7 +77,7 @@ def predicted_error(geometry: str, stick_ratio: float, n: int) -> float:
     return float(at256 * (256.0 / n) ** 2)
 
 
-def plan(geometry: Geometry, stick_ratios: Sequence[float], tolerance: float) -> tuple[str, int]:
+def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float) -> tuple[str, int]:
     """The cheapest (method, n) predicted to meet ``tolerance`` at every stick ratio.
 
     Returns ``("default", n)`` with n a multiple of 64 in [64, MAX_N].
@@ -95,8 +89,8 @@ def plan(geometry: Geometry, stick_ratios: Sequence[float], tolerance: float) ->
         worst stick ratio and the n it would need).
     """
     tol = check_tolerance(tolerance)
-    worst = max(stick_ratios, key=lambda c: predicted_error(geometry.name, c, 256))
-    e256 = predicted_error(geometry.name, worst, 256)
+    worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
+    e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:
         return "default", MIN_N
     need = 256.0 * math.sqrt(SAFETY * e256 / tol)

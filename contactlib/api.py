@@ -11,13 +11,12 @@ True
 from __future__ import annotations
 
 import math
-from numbers import Integral, Real
 from typing import Callable, Sequence
 
 import numpy as np
 from scipy import optimize
 
-from . import stages
+from . import stages, validate
 from .default_method import DiscreteSolution, solve_default
 from .geometry import Geometry
 from .paper_method import PaperSolution
@@ -27,10 +26,10 @@ from .theory import beta_of_nu, uncoupled_friction
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
            "output_grid"]
 
-GEOMETRIES = ("sphere", "cylinder")
-METHODS = ("default", "paper", "paper-literal")
-DEFAULT_N = {"default": 256, "paper": 16, "paper-literal": 16}
-MAX_N = 4096
+GEOMETRIES = validate.GEOMETRIES
+METHODS = validate.METHODS
+DEFAULT_N = validate.DEFAULT_N
+MAX_N = validate.MAX_N
 _OUTPUT_POINTS = 201
 
 
@@ -40,71 +39,13 @@ def output_grid() -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- validation
-def _number(name: str, value, lo: float | None = None, hi: float | None = None,
-            lo_open: bool = False, hi_open: bool = False) -> float:
-    if isinstance(value, bool) or not isinstance(value, Real):
-        raise ValueError(f"{name} must be a number, got {value!r}")
-    try:
-        v = float(value)
-    except OverflowError:  # an int beyond the float range
-        v = math.inf
-    if not math.isfinite(v):
-        raise ValueError(f"{name} must be finite, got {value!r}")
-    bad = (lo is not None and (v < lo or (lo_open and v == lo))) or \
-          (hi is not None and (v > hi or (hi_open and v == hi)))
-    if bad:
-        raise ValueError(f"{name} must be {_range_text(lo, hi, lo_open, hi_open)}, "
-                         f"got {value!r}")
-    return v
-
-
-def _range_text(lo: float | None, hi: float | None, lo_open: bool = False,
-                hi_open: bool = False) -> str:
-    """``in (-1, 0.5]``, ``>= 0``, ``< 1``: the allowed range in words."""
-    if lo is not None and hi is not None:
-        return f"in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
-    if lo is not None:
-        return f"{'>' if lo_open else '>='} {lo:g}"
-    if hi is not None:
-        return f"{'<' if hi_open else '<='} {hi:g}"
-    return "a number"
-
-
-def _flag(name: str, value) -> bool:
-    """A real boolean (``True``/``False``, numpy bools too); never a truthy string."""
-    if isinstance(value, (bool, np.bool_)):
-        return bool(value)
-    raise ValueError(f"{name} must be True or False, got {value!r}")
-
-
-def _callback(name: str, value) -> Callable | None:
-    """None or a callable (checked before any work)."""
-    if value is not None and not callable(value):
-        raise ValueError(f"{name} must be callable or None, got {value!r}")
-    return value
-
-
 def _validate_common(geometry, nu, n, method, slab_ratio) -> tuple[Geometry, int, str]:
-    if geometry not in GEOMETRIES:
-        raise ValueError(f"geometry must be one of {', '.join(GEOMETRIES)}, got {geometry!r}")
-    if method not in METHODS:
-        raise ValueError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
-    nu = _number("nu", nu, -1.0, 0.5, lo_open=True)
-    slab = _number("slab_ratio", slab_ratio, 0.0, None)
-    if geometry == "sphere" and slab != 0.0:
-        raise ValueError(f"slab_ratio applies to the cylinder only, got {slab_ratio!r} for a sphere")
-    if n is None:
-        n = DEFAULT_N[method]
-    if isinstance(n, bool) or not isinstance(n, Integral):
-        if isinstance(n, Real) and float(n).is_integer():
-            n = int(n)
-        else:
-            raise ValueError(f"n must be an integer, got {n!r}")
-    n = int(n)
-    if n < 2 or n > MAX_N:
-        raise ValueError(f"n must be in [2, {MAX_N}], got {n}")
-    if method == "default" and n < 16:
-        raise ValueError(f"n must be at least 16 for the default method, got {n}")
+    """The problem's arguments, checked one by one with :mod:`contactlib.validate`."""
+    geometry = validate.geometry(geometry)
+    method = validate.method(method)
+    nu = validate.nu(nu)
+    slab = validate.slab_ratio(slab_ratio, geometry)
+    n = validate.n(n, method)
     return Geometry(geometry, nu, slab), n, method
 
 
@@ -227,20 +168,21 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     (0.5, True)
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
-    energy = _flag("energy", energy)
+    energy = validate.flag("energy", energy)
     if (stick_ratio is None) == (friction is None):
-        raise ValueError("give exactly one of stick_ratio and friction")
+        raise validate.InputError("stick_ratio", "given, or friction given", stick_ratio,
+                                  "give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
-        c = _number("stick_ratio", stick_ratio, 0.0, 1.0)
+        c = validate.stick_ratio(stick_ratio)
         if method != "default":
-            stages._paper_m(c, n)  # validate before solving
+            validate.paper_multiple(c, n)  # before solving
         rec = stages.solve_cases(geom, method, n, [c])[0]
         return _from_record(geom, rec, method, n, energy)
 
-    if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
+    k = validate.friction(friction)
+    if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy)
-    k = _number("friction", friction, 0.0, None)
     if k == 0.0:
         return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy)
     if beta_of_nu(geom.nu) == 0.0:
@@ -262,29 +204,6 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                    f"paper method: c/a restricted to m/n; nearest m/n = {m}/{n} has "
                    f"k = {ks[m]:.6g}; linear interpolation in the k(m/n) table gives "
                    f"c/a = {c_interp:.6g} for k = {k:.6g}")
-
-
-def _parse_ratios(stick_ratios, n: int) -> list[float]:
-    if isinstance(stick_ratios, str):
-        if stick_ratios != "all":
-            raise ValueError(f"stick_ratios must be 'all' or a list of numbers, got {stick_ratios!r}")
-        return [m / n for m in range(1, n)]
-    try:
-        values = list(stick_ratios)
-    except TypeError:
-        raise ValueError(f"stick_ratios must be 'all' or a list of numbers, got {stick_ratios!r}") \
-            from None
-    if not values:
-        raise ValueError("stick_ratios must not be empty")
-    ratios = [_number("stick_ratios", v, 0.0, 1.0) for v in values]
-    seen: dict[float, int] = {}
-    for i, c in enumerate(ratios):
-        if c in seen:
-            raise ValueError(f"stick_ratios must not repeat a value: {values[i]!r} at position "
-                             f"{i} repeats position {seen[c]} (c/a = {c:g}); each c/a is one "
-                             f"row of the dataset")
-        seen[c] = i
-    return ratios
 
 
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
@@ -326,12 +245,12 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ['1.000', '1.000']
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio)
-    energy = _flag("energy", energy)
-    progress = _callback("progress", progress)
-    ratios = _parse_ratios(stick_ratios, n)
+    energy = validate.flag("energy", energy)
+    progress = validate.callback("progress", progress)
+    ratios = validate.stick_ratios(stick_ratios, n)
     if method != "default":
         for c in ratios:
-            stages._paper_m(c, n)  # validate every ratio before solving any
+            validate.paper_multiple(c, n, "stick_ratios")  # all before solving any
     out = []
     for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True)):
         out.append(_from_record(geom, rec, method, n, energy))

@@ -33,13 +33,12 @@ from types import ModuleType
 from typing import Any, NoReturn, TextIO
 
 from contactlib import __version__
+from contactlib import validate
 from contactlib.result import Solution
 
 __all__ = ["main", "build_parser", "check_output", "UsageError"]
 
 PROG = "contactlib"
-GEOMETRIES = ("sphere", "cylinder")
-DEFAULT_METHODS = ("default", "paper", "paper-literal")
 # argument strings that are values, not options: a negative number in any form
 # (-1, -.5, -1e-3, -inf, -nan) or a list starting with one (-0.1,0.2)
 _NEGATIVE_NUMBER = re.compile(r"^-(\.?[0-9]|inf|nan)", re.IGNORECASE)
@@ -55,109 +54,103 @@ class UsageError(Exception):
 # --------------------------------------------------------------------------
 
 
-def _number(option: str, text: str, requirement: str) -> float:
+def _option(name: str) -> str:
+    """The option of a library argument: ``slab_ratio`` -> ``--slab-ratio``."""
+    return "--" + name.replace("_", "-")
+
+
+def _usage(exc: ValueError, text: str | None = None) -> UsageError:
+    """A library input error as a one-line usage error naming the option.
+
+    The rule's name and requirement come from the exception's fields
+    (:class:`contactlib.validate.InputError`), not from its text; the value
+    is shown as the user typed it.
+    """
+    name = getattr(exc, "name", None)
+    if name is None:
+        return UsageError(str(exc))
+    option = _option(name)
+    shown = exc.value if text is None else text
+    if isinstance(shown, str) and len(shown) > 40:
+        shown = shown[:37] + "..."
+    standard = f"{name} must be {exc.requirement}, got {exc.value!r}"
+    if str(exc) == standard:
+        return UsageError(f"{option} must be {exc.requirement}, got {shown!r}")
+    message = str(exc)
+    return UsageError(option + message[len(name):] if message.startswith(name) else message)
+
+
+def _float(text: str) -> float | str:
+    """The number a string spells, or the string itself (which the rule refuses)."""
     try:
-        value = float(text)
+        return float(text)
     except (TypeError, ValueError):
-        value = math.nan
-    if math.isnan(value):
-        raise UsageError(f"{option} must be {requirement}, got {text!r}")
-    return value
+        return text
+
+
+def _int(text: str) -> int | str:
+    """The integer a string spells (digits only), or the string itself."""
+    return int(text) if _INT_RE.match(text) and len(text.strip()) <= 12 else text
+
+
+def _check(rule: Callable[..., Any], text: str, value: Any, *args: Any) -> Any:
+    """``rule(value, *args)``, its :class:`ValueError` as a usage error showing ``text``."""
+    try:
+        return rule(value, *args)
+    except ValueError as exc:
+        raise _usage(exc, text) from None
+
+
+def _list(text: str) -> list[float | str]:
+    return [_float(item) for item in text.split(",")]
 
 
 def parse_nu(text: str) -> float:
     """Poisson's ratio in (-1, 0.5]."""
-    req = "a number in (-1, 0.5]"
-    value = _number("--nu", text, req)
-    if not -1.0 < value <= 0.5:
-        raise UsageError(f"--nu must be {req}, got {text!r}")
-    return value
+    return _check(validate.nu, text, _float(text))
 
 
 def parse_fraction(option: str, text: str) -> float:
-    """A ratio in [0, 1] (stick ratio c/a)."""
-    req = "a number in [0, 1]"
-    value = _number(option, text, req)
-    if not 0.0 <= value <= 1.0:
-        raise UsageError(f"{option} must be {req}, got {text!r}")
-    return value
+    """A stick ratio c/a in [0, 1] (``option``: ``--stick-ratio``)."""
+    return _check(validate.stick_ratio, text, _float(text), option.lstrip("-").replace("-", "_"))
 
 
 def parse_friction(text: str) -> float:
     """Friction coefficient k >= 0 (``inf`` allowed: full adhesion)."""
-    req = "a number >= 0 (inf for full adhesion)"
-    value = _number("--friction", text, req)
-    if value < 0.0:
-        raise UsageError(f"--friction must be {req}, got {text!r}")
-    return value
+    return _check(validate.friction, text, _float(text))
 
 
-def parse_slab_ratio(text: str) -> float:
-    """Slab ratio a/h, finite and >= 0 (0 = half-plane)."""
-    req = "a finite number >= 0 (0 = half-plane)"
-    value = _number("--slab-ratio", text, req)
-    if not (math.isfinite(value) and value >= 0.0):
-        raise UsageError(f"--slab-ratio must be {req}, got {text!r}")
-    return value
+def parse_slab_ratio(text: str, geometry: str | None = None) -> float:
+    """Slab ratio a/h, finite and >= 0 (0 = half-plane), cylinder only."""
+    return _check(validate.slab_ratio, text, _float(text), geometry)
 
 
-def parse_n(text: str, lo: int = 2, hi: int = 4096) -> int:
-    """Number of elements, an integer in [lo, hi]."""
-    if not _INT_RE.match(text) or len(text.strip()) > 12 or not lo <= int(text) <= hi:
-        shown = text if len(text) <= 40 else text[:37] + "..."
-        raise UsageError(f"--n must be an integer >= {lo} (at most {hi}), got {shown!r}")
-    return int(text)
+def parse_n(text: str, method: str = "default") -> int:
+    """Number of elements of a self-similar solve, for ``method``."""
+    return _check(validate.n, text, _int(text), method)
 
 
-def parse_stick_ratios(text: str) -> str | list[float]:
+def parse_history_n(text: str) -> int:
+    """Number of elements of the history solver."""
+    return _check(validate.history_n, text, _int(text))
+
+
+def parse_stick_ratios(text: str, n: int) -> str | list[float]:
     """``all`` or a comma-separated list of distinct numbers in [0, 1]."""
     if text.strip().lower() == "all":
         return "all"
-    req = "'all' or a comma-separated list of distinct numbers in [0, 1]"
-    items = text.split(",")
-    values: list[float] = []
-    for item in items:
-        try:
-            values.append(parse_fraction("--stick-ratios", item))
-        except UsageError:
-            raise UsageError(f"--stick-ratios must be {req}, got {text!r}") from None
-    seen: dict[float, str] = {}
-    for item, value in zip(items, values):
-        if value in seen:
-            raise UsageError(f"--stick-ratios must not repeat a value: {item.strip()!r} repeats "
-                             f"{seen[value].strip()!r} (c/a = {value:g})")
-        seen[value] = item
-    return values
+    labels = [item.strip() for item in text.split(",")]
+    return _check(validate.stick_ratios, text, _list(text), n, labels)
 
 
 def parse_load_path(text: str) -> list[float]:
     """Comma-separated load levels P/P_max in [0, 1], starting at 0 (at least two)."""
-    req = "a comma-separated list of at least two load levels in [0, 1] starting at 0"
-    values: list[float] = []
-    for item in text.split(","):
-        try:
-            values.append(parse_fraction("--load-path", item))
-        except UsageError:
-            raise UsageError(f"--load-path must be {req}, got {text!r}") from None
-    if len(values) < 2 or values[0] != 0.0:
-        raise UsageError(f"--load-path must be {req}, got {text!r}")
-    return values
+    return list(_check(validate.load_path, text, _list(text)))
 
 
-def parse_steps(text: str, hi: int = 100_000) -> int:
-    """Load steps per path segment, a positive integer (at most ``hi``)."""
-    if not _INT_RE.match(text) or len(text.strip()) > 12 or not 1 <= int(text) <= hi:
-        shown = text if len(text) <= 40 else text[:37] + "..."
-        raise UsageError(f"--steps must be a positive integer (at most {hi}), got {shown!r}")
-    return int(text)
-
-
-def _known_methods(api: ModuleType | None = None) -> tuple[str, ...]:
-    """Method names accepted by the library (``api.METHODS`` when provided)."""
-    methods = getattr(api, "METHODS", None) if api is not None else None
-    if methods:
-        return tuple(str(m) for m in methods)
-    return DEFAULT_METHODS
+def parse_steps(text: str) -> int:
+    """Load steps per path segment, a positive integer."""
+    return _check(validate.steps, text, _int(text))
 
 
 # --------------------------------------------------------------------------
@@ -285,58 +278,41 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _validate(args: argparse.Namespace) -> dict[str, Any]:
-    """Turn raw option strings into checked keyword arguments.
-
-    The method name is checked separately (:func:`_check_method`), since the
-    list of methods belongs to the library.
-    """
-    if args.geometry not in GEOMETRIES:
-        raise UsageError(
-            f"--geometry must be one of {', '.join(GEOMETRIES)}, got {args.geometry!r}")
+    """Turn raw option strings into checked keyword arguments of solve/sweep."""
+    geometry = _check(validate.geometry, args.geometry, args.geometry)
+    method = _check(validate.method, args.method, args.method)
+    n = None if args.n is None else parse_n(args.n, method)
     kwargs: dict[str, Any] = {
-        "geometry": args.geometry,
+        "geometry": geometry,
         "nu": parse_nu(args.nu),
-        "n": None if args.n is None else parse_n(args.n),
-        "method": args.method,
-        "slab_ratio": parse_slab_ratio(args.slab_ratio),
+        "n": n,
+        "method": method,
+        "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
         "energy": not args.no_energy,
     }
-    if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
-        raise UsageError(
-            f"--slab-ratio applies only to --geometry cylinder, got {args.slab_ratio!r}")
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
         else:
             kwargs["friction"] = parse_friction(args.friction)
     else:
-        kwargs["stick_ratios"] = parse_stick_ratios(args.stick_ratios)
+        kwargs["stick_ratios"] = parse_stick_ratios(args.stick_ratios,
+                                                    validate.n(n, method))
     return kwargs
-
-
-def _history_limit(name: str) -> int:
-    return int(getattr(_history_api(), name))
 
 
 def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
-    """Checked keyword arguments of :func:`contactlib.history.history`."""
-    if args.geometry not in GEOMETRIES:
-        raise UsageError(
-            f"--geometry must be one of {', '.join(GEOMETRIES)}, got {args.geometry!r}")
-    kwargs: dict[str, Any] = {
-        "geometry": args.geometry,
+    """Checked keyword arguments of :func:`contactlib.history`."""
+    geometry = _check(validate.geometry, args.geometry, args.geometry)
+    return {
+        "geometry": geometry,
         "nu": parse_nu(args.nu),
         "friction": parse_friction(args.friction),
         "load_path": parse_load_path(args.load_path),
-        "steps": parse_steps(args.steps, _history_limit("MAX_STEPS")),
-        "n": None if args.n is None else parse_n(args.n, _history_limit("MIN_N"),
-                                                 _history_limit("MAX_N")),
-        "slab_ratio": parse_slab_ratio(args.slab_ratio),
+        "steps": parse_steps(args.steps),
+        "n": None if args.n is None else parse_history_n(args.n),
+        "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
     }
-    if args.geometry != "cylinder" and kwargs["slab_ratio"] != 0.0:
-        raise UsageError(
-            f"--slab-ratio applies only to --geometry cylinder, got {args.slab_ratio!r}")
-    return kwargs
 
 
 def _shorten(text: str, limit: int = 80) -> str:
@@ -363,12 +339,6 @@ def check_output(text: str | None) -> None:
         raise UsageError(f"--output: {str(exc).replace(text, _shorten(text))}") from None
 
 
-def _check_method(method: str, api: ModuleType) -> None:
-    methods = _known_methods(api)
-    if method not in methods:
-        raise UsageError(f"--method must be one of {', '.join(methods)}, got {method!r}")
-
-
 # --------------------------------------------------------------------------
 # output formatting
 # --------------------------------------------------------------------------
@@ -387,14 +357,25 @@ def _g(value: float, digits: int = 6) -> str:
     return "inf" if math.isinf(value) else f"{value:.{digits}g}"
 
 
+def _indenter(geometry: str) -> Any:
+    from contactlib.indenter import indenter
+
+    return indenter(geometry)
+
+
+def _head(sol: Solution) -> str:
+    """``sphere, nu = 0.3, method = default, n = 256`` (and a/h where a layer is possible)."""
+    head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
+    if _indenter(sol.geometry).accepts_layer:
+        head += f", a/h = {sol.slab_ratio:g}"
+    return head
+
+
 def format_summary(sol: Solution) -> str:
     """Human-readable summary of one solution (several lines)."""
-    work_scale = "V R^2/(E* a^5)" if sol.geometry == "sphere" else "V R^2/(E* a^4)"
-    head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
-    if sol.geometry == "cylinder":
-        head += f", a/h = {sol.slab_ratio:g}"
+    work_scale = f"V R^2/(E* a^{_indenter(sol.geometry).work_exponent})"
     lines = [
-        head,
+        _head(sol),
         f"  c/a    = {_g(sol.stick_ratio)}",
         f"  k      = {_g(sol.friction_coefficient)}",
         f"  P/P_H  = {_g(sol.load_ratio)}",
@@ -414,10 +395,7 @@ def format_table(solutions: Sequence[Solution]) -> str:
     """Compact table of a sweep, one row per stick ratio."""
     if not solutions:
         return "(no points)"
-    s0 = solutions[0]
-    head = f"{s0.geometry}, nu = {s0.nu:g}, method = {s0.method}, n = {s0.n}"
-    if s0.geometry == "cylinder":
-        head += f", a/h = {s0.slab_ratio:g}"
+    head = _head(solutions[0])
     cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
             f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9}")
     rows = [head, cols]
@@ -435,11 +413,11 @@ def format_table(solutions: Sequence[Solution]) -> str:
 
 def format_history(res: Any) -> str:
     """Summary of a history: the state at the end of every path segment, and the work."""
-    work_scale = ("V R^2/(E* a_max^5)" if res.geometry == "sphere"
-                  else "V R^2/(E* a_max^4)")
+    ind = _indenter(res.geometry)
+    work_scale = f"V R^2/(E* a_max^{ind.work_exponent})"
     head = (f"{res.geometry}, nu = {res.nu:g}, k = {_g(res.friction)}, n = {res.n}, "
             f"{res.steps} steps per segment")
-    if res.geometry == "cylinder":
+    if ind.accepts_layer:
         head += f", a_max/h = {res.slab_ratio:g}"
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
                   f"{'V segment':>11} {'V total':>11}"]
@@ -496,7 +474,7 @@ def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType) -> i
     try:
         sol = api.solve(**kwargs)
     except ValueError as exc:  # the library's own input validation
-        raise UsageError(str(exc)) from exc
+        raise _usage(exc) from exc
     print(format_summary(sol))
     if output is not None:
         _write(sol, output)
@@ -514,7 +492,7 @@ def _progress(label: str):
     try:
         yield progress
     except ValueError as exc:  # the library's own input validation
-        raise UsageError(str(exc)) from exc
+        raise _usage(exc) from exc
     finally:
         if progress is not None:
             sys.stderr.write("\r\033[K")
@@ -534,10 +512,9 @@ def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
 
 def _history_api() -> ModuleType:
     """Import the history module lazily (so ``--help`` never needs it)."""
-    import importlib
+    from contactlib import history_api
 
-    # the module, not the function contactlib.history that shadows it as an attribute
-    return importlib.import_module("contactlib.history")
+    return history_api
 
 
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
@@ -546,7 +523,7 @@ def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int
     print(format_history(res))
     from contactlib import io
 
-    io.write_dataset(module.history_to_dataset(res), output)
+    io.write_dataset(io.history_to_dataset(res), output)
     print(f"wrote {output}")
     return 0
 
@@ -583,7 +560,6 @@ def main(argv: list[str] | None = None) -> int:
             return _run_history(hist_kwargs, args.output, _history_api())
         kwargs = _validate(args)  # before importing the numerics
         api = _api()
-        _check_method(args.method, api)
         check_output(args.output)
         if args.command == "solve":
             return _run_solve(kwargs, args.output, api)

@@ -6,11 +6,13 @@ friction coefficient k, the load ratio, the frictional work and the peak
 shear, with the wall time and the peak memory of the solve, and measures the
 error of each against a Richardson-extrapolated value from the three finest
 resolutions (observed order p = log2 of the ratio of successive differences).
+It returns a :class:`Study` (arrays); :func:`contactlib.io.study_to_dataset`
+makes it a dataset.
 
 Examples
 --------
->>> ds = study("sphere", 0.3, "default", [32, 64, 128], [0.5])
->>> float(ds["observed_order"].sel(quantity="friction_coefficient", stick_ratio=0.5)) > 1.5
+>>> st = study("sphere", 0.3, "default", [32, 64, 128], [0.5])
+>>> float(st.order_of("friction_coefficient")[0]) > 1.5
 True
 """
 
@@ -18,16 +20,72 @@ from __future__ import annotations
 
 import time
 import tracemalloc
+from dataclasses import dataclass
 from typing import Callable, Sequence
 
 import numpy as np
 import xarray as xr
 
 from . import api
+from .indenter import indenter
 
-__all__ = ["study", "trade_table", "QUANTITIES", "richardson"]
+__all__ = ["study", "Study", "trade_table", "QUANTITIES", "richardson"]
 
 QUANTITIES = ("friction_coefficient", "load_ratio", "frictional_work", "peak_shear")
+
+
+@dataclass(frozen=True)
+class Study:
+    """A convergence study: values, errors and costs on (quantity, n, stick_ratio).
+
+    Attributes
+    ----------
+    geometry, nu, method, slab_ratio
+        The problem, as for :func:`contactlib.solve`.
+    ns : tuple of int
+        Resolutions (elements), each twice the previous.
+    stick_ratios : tuple of float
+        c/a of every case.
+    quantities : tuple of str
+        :data:`QUANTITIES`: k, P/P_Hertz, the scaled frictional work, max q/p0.
+    values : ndarray, shape (quantities, ns, stick_ratios)
+        Computed values (dimensionless, docs/conventions.md).
+    reference : ndarray, shape (quantities, stick_ratios)
+        The values taken as the truth (Richardson-extrapolated).
+    observed_order : ndarray, shape (quantities, stick_ratios)
+        log2 of the ratio of successive differences (NaN when they do not shrink).
+    error : ndarray, shape (quantities, ns, stick_ratios)
+        Relative error against ``reference`` (NaN where it cannot be estimated).
+    wall_time : ndarray, shape (ns, stick_ratios)
+        Wall time of one solve, s.
+    peak_memory : ndarray, shape (ns, stick_ratios)
+        Peak traced memory of one solve, MiB.
+    reference_source : str
+        Where ``reference`` comes from.
+    """
+
+    geometry: str
+    nu: float
+    method: str
+    slab_ratio: float
+    ns: tuple[int, ...]
+    stick_ratios: tuple[float, ...]
+    quantities: tuple[str, ...]
+    values: np.ndarray
+    reference: np.ndarray
+    observed_order: np.ndarray
+    error: np.ndarray
+    wall_time: np.ndarray
+    peak_memory: np.ndarray
+    reference_source: str
+
+    def order_of(self, quantity: str) -> np.ndarray:
+        """Observed order of ``quantity`` (one of :attr:`quantities`), one a stick ratio."""
+        return self.observed_order[self.quantities.index(quantity)]
+
+    def error_of(self, quantity: str) -> np.ndarray:
+        """Relative error of ``quantity``, shape (ns, stick_ratios)."""
+        return self.error[self.quantities.index(quantity)]
 
 
 def richardson(values: np.ndarray) -> tuple[float, float]:
@@ -50,12 +108,6 @@ def richardson(values: np.ndarray) -> tuple[float, float]:
     return float(v[-1] + d2 / (ratio - 1.0)), order
 
 
-def _version() -> str:
-    from . import __version__
-
-    return __version__
-
-
 def _measure(fn: Callable[[], api.Solution]) -> tuple[api.Solution, float, float]:
     tracemalloc.start()
     t0 = time.perf_counter()
@@ -70,8 +122,8 @@ def _measure(fn: Callable[[], api.Solution]) -> tuple[api.Solution, float, float
 
 def study(geometry: str, nu: float, method: str, ns: Sequence[int],
           stick_ratios: Sequence[float], *, slab_ratio: float = 0.0,
-          reference: xr.Dataset | None = None,
-          progress: Callable[[str], None] | None = None) -> xr.Dataset:
+          reference: Study | None = None,
+          progress: Callable[[str], None] | None = None) -> Study:
     """Solve every (n, c/a) and measure errors against the extrapolated values.
 
     Parameters
@@ -83,20 +135,20 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
         For the paper methods every stick ratio must be a multiple of 1/n.
     stick_ratios : sequence of float
         c/a values in (0, 1).
-    reference : xarray.Dataset, optional
+    reference : Study, optional
         Another study of the same problem (same geometry, nu, slab ratio and
         stick ratios) whose extrapolated values serve as the truth, e.g. the
         default method's for the paper's scheme, whose k converges too
-        slowly and erratically to extrapolate on its own.
+        slowly and erratically to extrapolate on its own (the workflow reads
+        it back with :func:`contactlib.io.study_from_dataset`).
 
     Returns
     -------
-    xarray.Dataset
-        ``value``, ``error`` (relative to the extrapolated value; NaN where
-        it cannot be estimated), ``wall_time`` (s) and ``peak_memory`` (MiB,
-        Python-tracked allocations, i.e. numpy arrays) on (quantity, n,
-        stick_ratio) or (n, stick_ratio); ``reference`` and
-        ``observed_order`` on (quantity, stick_ratio).
+    Study
+        Values, errors (relative to the extrapolated value; NaN where it
+        cannot be estimated), wall times (s) and peak memory (MiB,
+        Python-tracked allocations, i.e. numpy arrays);
+        :func:`contactlib.io.study_to_dataset` makes it a dataset.
     """
     ns = [int(n) for n in ns]
     if any(b != 2 * a for a, b in zip(ns, ns[1:])):
@@ -123,51 +175,21 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
     error = np.where(np.isfinite(order)[:, None, :], error, np.nan)
     ref_source = "own Richardson extrapolation"
     if reference is not None:
-        same = (reference.attrs["geometry"] == geometry
-                and float(reference.attrs["poisson_ratio"]) == float(nu)
-                and float(reference.attrs["slab_ratio"]) == float(slab_ratio)
-                and np.array_equal(reference["stick_ratio"].values, np.array(cs)))
+        same = (reference.geometry == geometry
+                and float(reference.nu) == float(nu)
+                and float(reference.slab_ratio) == float(slab_ratio)
+                and np.array_equal(np.asarray(reference.stick_ratios), np.array(cs)))
         if not same:
             raise ValueError("reference must be a study of the same geometry, nu, slab ratio "
                              "and stick ratios")
-        ref = reference["reference"].values
+        ref = np.asarray(reference.reference)
         with np.errstate(invalid="ignore", divide="ignore"):
             error = np.abs(values - ref[:, None, :]) / np.abs(ref[:, None, :])
-        ref_source = f"extrapolated values of the {reference.attrs['method']} method"
-
-    def attrs(long_name: str, units: str = "1", comment: str = "") -> dict:
-        a = {"long_name": long_name, "units": units}
-        if comment:
-            a["comment"] = comment
-        return a
-
-    return xr.Dataset(
-        {
-            "value": (("quantity", "n", "stick_ratio"), values,
-                      attrs("computed value", comment="friction_coefficient k; load_ratio "
-                            "P/P_Hertz; frictional_work as in docs/conventions.md; peak_shear "
-                            "max q/p0")),
-            "reference": (("quantity", "stick_ratio"), ref,
-                          attrs("reference value (see the global attribute reference)")),
-            "observed_order": (("quantity", "stick_ratio"), order,
-                               attrs("observed order of convergence",
-                                     comment="log2 of the ratio of successive differences; "
-                                     "NaN when they do not shrink")),
-            "error": (("quantity", "n", "stick_ratio"), error,
-                      attrs("relative error against the extrapolated value")),
-            "wall_time": (("n", "stick_ratio"), times, attrs("wall time of one solve", "s")),
-            "peak_memory": (("n", "stick_ratio"), memory,
-                            attrs("peak traced memory of one solve", "MiB",
-                                  "numpy and Python allocations (tracemalloc)")),
-        },
-        coords={"quantity": ("quantity", list(QUANTITIES), {"long_name": "quantity"}),
-                "n": ("n", np.array(ns), attrs("elements across the half-contact")),
-                "stick_ratio": ("stick_ratio", np.array(cs), attrs("c/a"))},
-        attrs={"geometry": geometry, "poisson_ratio": float(nu), "method": method,
-               "slab_ratio": float(slab_ratio), "Conventions": "CF-1.10",
-               "reference": ref_source,
-               "contactlib_version": _version()},
-    )
+        ref_source = f"extrapolated values of the {reference.method} method"
+    return Study(geometry=geometry, nu=float(nu), method=method, slab_ratio=float(slab_ratio),
+                 ns=tuple(ns), stick_ratios=tuple(cs), quantities=QUANTITIES, values=values,
+                 reference=ref, observed_order=order, error=error, wall_time=times,
+                 peak_memory=memory, reference_source=ref_source)
 
 
 def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coefficient",
@@ -186,7 +208,7 @@ def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coeffi
     for ds in datasets:
         geometry, method = ds.attrs["geometry"], ds.attrs["method"]
         label = f"{geometry} {method}"
-        if geometry == "cylinder":
+        if indenter(geometry).accepts_layer:
             label += f" a/h={float(ds.attrs['slab_ratio']):g}"
         err = ds["error"].sel(quantity=quantity).values  # (n, stick_ratio)
         times = ds["wall_time"].values

@@ -27,6 +27,11 @@ incremental problem). On the piecewise-linear mesh this reads t'(c-) = 0,
 i.e. t = 0 at the last node inside the stick zone, whose distance to c shrinks
 like 1/N^2 on the graded mesh. This is one scalar equation g(k) = 0, solved by
 Newton's method with the derivative from the same LU factorization.
+
+The collocation operators (:func:`operator_part`, :func:`operators`,
+:func:`nodal_operator_part`) are built by :mod:`contactlib.operators` and
+re-exported here; the model (indenter and body) is a
+:class:`~contactlib.model.Contact`.
 """
 
 from __future__ import annotations
@@ -38,10 +43,9 @@ from scipy import linalg
 
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
-from .geometry import Geometry
-from .influence import apply_difference, element_integrals
+from .model import Contact
+from .operators import nodal_operator_part, operator_part, operators
 from .result import short_repr
-from .theory import uncoupled_friction
 
 __all__ = ["DiscreteSolution", "solve_default", "operators", "operator_part",
            "nodal_operator_part"]
@@ -60,7 +64,7 @@ class DiscreteSolution:
 
     __repr__ = short_repr  # a few lines: scalars, arrays by shape
 
-    geometry: Geometry
+    geometry: Contact
     mesh: Mesh
     p: np.ndarray  # nodal pressure, p[-1] = 0
     phi: np.ndarray  # nodal shear coefficient, q = shape * phi, phi[-1] = 0
@@ -136,93 +140,17 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
     return xs, ws, sol.shear(xs), 2.0 * u - xs * du
 
 
-def operator_part(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
-                  part: str, with_w: bool = True, with_du: bool = True) -> np.ndarray:
-    """One displacement operator on nodal values, shape (3, len(x), N + 1).
-
-    ``part="normal"``: of the nodal pressures p; ``part="shear"``: of the
-    nodal shear coefficients phi. Row k = 0, 1, 2 gives w, u and du/dx at the
-    points ``x`` (units E* = a = R = 1).
-    """
-    if part == "normal":
-        kernel = geometry.pressure_kernel if with_w else (
-            lambda xx, ss: geometry.pressure_kernel(xx, ss, with_w=False))
-        g = element_integrals(kernel, x, nodes)
-    elif part == "shear":
-        kernel = geometry.shear_kernel if with_du else (
-            lambda xx, ss: geometry.shear_kernel(xx, ss, with_du=False))
-        g = element_integrals(kernel, x, nodes)
-    else:
-        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
-    # du/dx of an odd strip shear is log-infinite on the axis for every element
-    # (the infinities cancel for a traction with q(0) = 0); it is never used
-    # there, so the resulting inf - inf is left as NaN without a warning
-    with np.errstate(invalid="ignore"):
-        return apply_difference(g, nodes)
-
-
-# Degree of homogeneity in length of the element integrals g (rows w, u, du/dx)
-# of the disc kernels: g(lambda x; lambda nodes) = lambda^d g(x; nodes).
-_DISC_DEGREE = {"normal": np.array([2.0, 2.0, 1.0]), "shear": np.array([3.0, 3.0, 2.0])}
-_STICK_BLOCKS: dict[tuple, np.ndarray] = {}
-_STICK_BLOCKS_MAX = 64  # distinct (nu, part, stick mesh) kept: 64 x 3 x 129^2 doubles at most
-
-
-def nodal_operator_part(geometry: Geometry, mesh: Mesh, part: str) -> np.ndarray:
-    """:func:`operator_part` at the mesh's own nodes, reusing the stick block across c.
-
-    On the graded mesh the stick-zone nodes are c t_i with t_i fixed by
-    (n, M, power), and the disc kernels are homogeneous in length, so the
-    element integrals of stick points over stick elements are c^d times
-    those of the reference mesh t (d = :data:`_DISC_DEGREE`): a sweep over
-    c/a computes that block once per distinct M (15 values for n a multiple
-    of 16). Exact to round-off; the sphere only (the strip kernels of the
-    half-plane carry a log and the slab a fixed thickness).
-    """
-    nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
-    if geometry.name != "sphere" or not 0 < m < n or part not in _DISC_DEGREE:
-        return operator_part(geometry, nodes, nodes, part)
-    c = float(nodes[m])
-    kernel = geometry.pressure_kernel if part == "normal" else geometry.shear_kernel
-    ref_nodes = nodes[:m + 1] / c
-    # nodes / c equals the generator's t_i to round-off (not bit for bit across c)
-    key = (float(geometry.nu), part, np.round(ref_nodes, 13).tobytes())
-    ref = _STICK_BLOCKS.get(key)
-    if ref is None:
-        ref = element_integrals(kernel, ref_nodes, ref_nodes)
-        if len(_STICK_BLOCKS) >= _STICK_BLOCKS_MAX:
-            _STICK_BLOCKS.pop(next(iter(_STICK_BLOCKS)))
-        _STICK_BLOCKS[key] = ref
-    g = np.empty((3, n + 1, n))
-    g[:, :m + 1, :m] = ref * (c ** _DISC_DEGREE[part])[:, None, None]
-    g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])
-    g[:, m + 1:, :] = element_integrals(kernel, nodes[m + 1:], nodes)
-    return apply_difference(g, nodes)
-
-
-def operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray, with_w: bool = True):
-    """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
-
-    Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
-    w (k = 0), u (1) and du/dx (2) at the points ``x``. ``with_w=False``
-    leaves the pressure's w row unreliable (zeros for the sphere), which
-    saves the elliptic integrals when only tangential displacements are needed.
-    """
-    return (operator_part(geometry, nodes, x, "normal", with_w),
-            operator_part(geometry, nodes, x, "shear"))
-
-
-def _tie_columns(geometry: Geometry, q_ops: np.ndarray) -> np.ndarray:
-    """Columns for phi_1..phi_{N-1}: phi_0 = phi_1 (sphere) or phi_0 = 0 (cylinder)."""
+def _tie_columns(geometry: Contact, q_ops: np.ndarray) -> np.ndarray:
+    """Columns for phi_1..phi_{N-1}: phi_0 = phi_1 (rings) or phi_0 = 0 (odd strip shear)."""
     cols = q_ops[..., 1:-1].copy()
-    if geometry.name == "sphere":
+    if not geometry.indenter.odd_shear:
         cols[..., 0] += q_ops[..., 0]
     return cols
 
 
-def _expand_phi(geometry: Geometry, f: np.ndarray) -> np.ndarray:
+def _expand_phi(geometry: Contact, f: np.ndarray) -> np.ndarray:
     """Nodal phi (N + 1 values) from phi_1..phi_{N-1}."""
-    first = f[0] if geometry.name == "sphere" else 0.0
+    first = 0.0 if geometry.indenter.odd_shear else f[0]
     return np.concatenate([[first], f, [0.0]])
 
 
@@ -244,7 +172,7 @@ def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k:
     return out
 
 
-def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: float = 2.0,
+def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float = 2.0,
                   k_guess: float | None = None, tol: float = 1e-9,
                   max_iter: int = 30,
                   ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> DiscreteSolution:
@@ -252,7 +180,7 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
 
     Parameters
     ----------
-    geometry : Geometry
+    geometry : Contact
     stick_ratio : float
         c/a in [0, 1]; 0 is frictionless (k = 0), 1 full adhesion (k = inf).
     n : int
@@ -285,14 +213,14 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         pw = nodal_operator_part(geometry, mesh, "normal")
         qw = nodal_operator_part(geometry, mesh, "shear") if m > 0 else None
     else:
-        copy = geometry.name == "cylinder"  # the axis row is edited below
+        copy = geometry.indenter.odd_shear  # the axis row is edited below
         pw = np.array(ops[0], dtype=float, copy=copy)
         qw = None if ops[1] is None else np.array(ops[1], dtype=float, copy=copy)
         want = (3, nn + 1, nn + 1)
         if pw.shape != want or (m > 0 and (qw is None or qw.shape != want)):
             raise ValueError(f"precomputed operators must have shape {want} "
                              f"(normal{' and shear' if m > 0 else ''})")
-    if geometry.name == "cylinder":  # du/dx on the axis: unused, NaN (see operators)
+    if geometry.indenter.odd_shear:  # du/dx on the axis: unused, NaN (see operators)
         pw[2][0] = 0.0
         if qw is not None:
             qw[2][0] = 0.0
@@ -355,7 +283,7 @@ def solve_default(geometry: Geometry, stick_ratio: float, n: int, *, power: floa
         k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64).k
         k = k128 + (k128 - k64) / 3.0
     else:
-        k = float(uncoupled_friction(geometry.name, geometry.nu, r[m]))
+        k = float(geometry.uncoupled_friction(r[m]))
     converged, it, g = False, 0, np.inf
     stagnated = 0.0
     x = None

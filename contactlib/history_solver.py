@@ -1,8 +1,9 @@
 r"""Incremental stick-slip solver for an arbitrary normal load path (numerics only).
 
-The public entry point is :func:`contactlib.history.history`; this module holds
-the discretization, the per-step active-set solver and the post-processing of
-one state. It never touches the disk.
+The public entry point is :func:`contactlib.history` (module
+:mod:`contactlib.history_api`); this module holds the discretization, the
+per-step active-set solver and the post-processing of one state. It never
+touches the disk.
 
 Units and scalings
 ------------------
@@ -23,7 +24,9 @@ disc kernel's linear shear, zero on the axis) or constant ``q_j`` (cylinder,
 odd in x), with ``r_j`` the element midpoint. The influence matrices are exact
 differences of the closed-form disc/strip kernels at the element edges,
 evaluated at the midpoints (collocation points, never on an edge, so the
-logarithmic kernel singularities are not met).
+logarithmic kernel singularities are not met): the step operators of
+:func:`contactlib.operators.step_operator`, with element areas and shear
+resultants from the indenter (:mod:`contactlib.indenter`).
 
 Conditions at the collocation points (w positive into the body, u outward; the
 indenter is rigid and has no tangential motion):
@@ -77,16 +80,19 @@ cycle takes about 3 iterations.
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import linalg
 
-from .geometry import Geometry
+from .energy import step_work
+from .model import Contact
+from .operators import step_operator
 
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
-           "stick_radius", "MESH_EXTENT", "RawHistory", "run_history", "hertz_radius",
+           "stick_radius", "MESH_EXTENT", "RawHistory", "run_history",
            "MIN_SLIP_ELEMENTS", "path_interpolate", "error_estimates", "annulus_resolved"]
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
@@ -120,6 +126,8 @@ class Operators:
         Reference load P_max (Hertz load at a_max = 1).
     p0 : float
         Hertz peak pressure at a_max.
+    model : Contact
+        The model the matrices were built from (lengths in units of a_max).
     """
 
     edges: np.ndarray
@@ -132,32 +140,36 @@ class Operators:
     qu: np.ndarray
     p_max: float
     p0: float
+    model: Contact
 
     @property
     def n(self) -> int:
         return self.mid.size
 
 
-def build_operators(geometry: Geometry, n: int, extent: float = MESH_EXTENT) -> Operators:
-    """Influence matrices of ``n`` equal elements over ``[0, extent]`` (vectorised)."""
+def build_operators(model: Contact, n: int, extent: float = MESH_EXTENT) -> Operators:
+    """Influence matrices of ``n`` equal elements over ``[0, extent]`` (units a_max).
+
+    Parameters
+    ----------
+    model : Contact
+        The indenter and the body, lengths in units of a_max (so the body's
+        ``slab_ratio`` is a_max/h).
+    n : int
+        Number of elements.
+    extent : float
+        Mesh length over a_max.
+    """
     edges = np.linspace(0.0, extent, n + 1)
     mid = 0.5 * (edges[:-1] + edges[1:])
-    x = np.broadcast_to(mid[:, None], (n, n + 1))
-    s = np.broadcast_to(edges[None, :], (n, n + 1))
-    wp, up, _ = geometry.pressure_kernel(x, s)
-    wq, uq, _ = geometry.shear_kernel(x, s)
-    shape = geometry.shear_shape(mid)  # r (sphere) or 1 (cylinder)
-    if geometry.name == "sphere":
-        area = np.pi * np.diff(edges**2)
-        shear_area = (2.0 * np.pi / 3.0) * np.diff(edges**3) / mid
-    else:
-        area = 2.0 * np.diff(edges)
-        shear_area = area.copy()
-    return Operators(edges=edges, mid=mid, area=area, shear_area=shear_area,
-                     pw=np.diff(wp, axis=1), pu=np.diff(up, axis=1),
-                     qw=np.diff(wq, axis=1) / shape[None, :],
-                     qu=np.diff(uq, axis=1) / shape[None, :],
-                     p_max=float(geometry.hertz_load), p0=float(geometry.p0))
+    pw, pu, _ = step_operator(model, edges, mid, "normal")
+    qw, qu, _ = step_operator(model, edges, mid, "shear")
+    shape = model.shear_shape(mid)  # the shear unknown is its value at the midpoint
+    ind = model.indenter
+    return Operators(edges=edges, mid=mid, area=ind.element_areas(edges),
+                     shear_area=ind.shear_resultants(edges) / shape,
+                     pw=pw, pu=pu, qw=qw / shape[None, :], qu=qu / shape[None, :],
+                     p_max=float(model.hertz_load), p0=float(model.p0), model=model)
 
 
 @dataclass
@@ -173,7 +185,6 @@ class StepResult:
     converged: bool
     iterations: int
     residual: float
-    system_size: int  # size of the last linear system solved
 
 
 def _assemble(ops: Operators, k: float,
@@ -333,7 +344,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
     seen: set[bytes] = {state.tobytes()}
     one_at_a_time = False
     p = q = u = gap = np.zeros(ops.n)
-    delta, res, size = 0.0, np.inf, 0
+    delta, res = 0.0, np.inf
     it = 0
     for it in range(1, max_iter + 1):
         key = state.tobytes()
@@ -345,7 +356,6 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             cache.update(key=key, lu=lu, c=c, factor=factor, stick=stick)
         lu, c, factor, stick = cache["lu"], cache["c"], cache["factor"], cache["stick"]
         b = _rhs(ops, load, u_old, c, stick)
-        size = b.size
         x = linalg.lu_solve(lu, b, check_finite=False)
         if not np.all(np.isfinite(x)):  # singular system for these sets
             cache.clear()
@@ -364,7 +374,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
         du = u - u_old
         new, viol, res = _violations(ops, k, state, p, q, du, gap)
         if np.array_equal(new, state):
-            return StepResult(p, q, u, gap, delta, _label(k, state, du), True, it, res, size)
+            return StepResult(p, q, u, gap, delta, _label(k, state, du), True, it, res)
         if one_at_a_time or new.tobytes() in seen:
             # a cycle: from now on change one element at a time, largest violation first
             one_at_a_time = True
@@ -374,8 +384,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             new = nxt
         seen.add(new.tobytes())
         state = new
-    return StepResult(p, q, u, gap, delta, _label(k, state, u - u_old), False, it, res,
-                      size)
+    return StepResult(p, q, u, gap, delta, _label(k, state, u - u_old), False, it, res)
 
 
 def _label(k: float, state: np.ndarray, du: np.ndarray) -> np.ndarray:
@@ -473,70 +482,60 @@ class RawHistory:
     delta: np.ndarray  # (S+1,)
     state: np.ndarray  # (S+1, n) int8
     work: np.ndarray  # (S+1,) cumulative frictional work
-    work_implicit: np.ndarray  # (S+1,) same with end-of-step tractions (diagnostic)
     contact_radius: np.ndarray  # (S+1,)
     stick_radius: np.ndarray  # (S+1,)
     converged: np.ndarray  # (S+1,) bool
     iterations: np.ndarray  # (S+1,) int
     residual: np.ndarray  # (S+1,)
-    system_size: np.ndarray  # (S+1,) int
 
 
-def hertz_radius(geometry: str, level: float) -> float:
-    """Frictionless contact radius at load level P/P_max (units a_max)."""
-    return float(level ** (1.0 / 3.0) if geometry == "sphere" else np.sqrt(level))
-
-
-def run_history(ops: Operators, geometry: str, k: float, levels: np.ndarray,
-                progress=None, max_iter: int = 200) -> RawHistory:
+def run_history(ops: Operators, k: float, levels: np.ndarray,
+                progress: Callable[[int, int], None] | None = None,
+                max_iter: int = 200) -> RawHistory:
     """Follow the load levels ``levels`` (P/P_max; ``levels[0]`` must be 0).
 
-    Frictional work of a step: ``sum |(q_old + q_new)/2| |du| A_j`` over the
-    elements slipping at the end of the step (trapezoid in time; stuck
-    elements have ``du = 0``, and an element that separates releases its
-    traction without slip under load). ``work_implicit`` uses the end-of-step
-    traction instead (the dissipation of the implicit step), as a check.
+    The frictional work of a step is :func:`contactlib.energy.step_work`
+    (trapezoid in time over the elements slipping at the end of the step).
+    A step from no contact starts from the Hertz contact radius of its load
+    (:meth:`contactlib.indenter.Indenter.hertz_radius`).
     """
     levels = np.asarray(levels, dtype=float)
     steps = levels.size
     n = ops.n
     z = np.zeros((steps, n))
     out = RawHistory(levels.copy(), z.copy(), z.copy(), z.copy(), np.zeros(steps),
-                     np.zeros((steps, n), dtype=np.int8), np.zeros(steps), np.zeros(steps),
+                     np.zeros((steps, n), dtype=np.int8), np.zeros(steps),
                      np.zeros(steps), np.full(steps, np.nan), np.ones(steps, dtype=bool),
-                     np.zeros(steps, dtype=np.int64), np.zeros(steps),
-                     np.zeros(steps, dtype=np.int64))
+                     np.zeros(steps, dtype=np.int64), np.zeros(steps))
     state = np.zeros(n, dtype=np.int8)
     u_old = np.zeros(n)
     q_old = np.zeros(n)
     cache: dict = {}
-    work = work_imp = 0.0
+    work = 0.0
+    hertz_radius = ops.model.indenter.hertz_radius
     for i in range(1, steps):
         level = float(levels[i])
         if level == 0.0:
             res = StepResult(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), 0.0,
-                             np.zeros(n, dtype=np.int8), True, 0, 0.0, 0)
+                             np.zeros(n, dtype=np.int8), True, 0, 0.0)
         else:
             guess = state
             if not np.any(guess):
-                guess = np.where(ops.mid < hertz_radius(geometry, level), STICK,
+                guess = np.where(ops.mid < hertz_radius(level), STICK,
                                  SEPARATED).astype(np.int8)
             res = solve_step(ops, k, level * ops.p_max, u_old, guess, max_iter, cache)
-        du = res.u - u_old
-        slipping = res.state >= SLIP_INWARD
-        work += float(np.sum((np.abs(0.5 * (q_old + res.q)) * np.abs(du)
-                              * ops.shear_area)[slipping]))
-        work_imp += float(np.sum((np.abs(res.q) * np.abs(du) * ops.shear_area)[slipping]))
+        work += step_work(q_old, res.q, res.u - u_old, ops.shear_area,
+                          res.state >= SLIP_INWARD)
         out.p[i], out.q[i], out.u[i] = res.p, res.q, res.u
         out.delta[i] = res.delta
         out.state[i] = res.state
-        out.work[i], out.work_implicit[i] = work, work_imp
+        out.work[i] = work
         a = contact_radius(ops, res.state, res.gap)
         out.contact_radius[i] = a
         out.stick_radius[i] = stick_radius(ops, k, res.state, res.p, res.q, a) if a > 0 \
             else np.nan
         out.converged[i], out.iterations[i] = res.converged, res.iterations
-        out.residual[i], out.system_size[i] = res.residual, res.system_size
+        out.residual[i] = res.residual
         state, u_old, q_old = res.state, res.u, res.q
         if progress is not None:
             progress(i, steps - 1)

@@ -1,9 +1,25 @@
-"""netCDF input/output for :class:`~contactlib.result.Solution` objects.
+"""Datasets and files: every CF convention and the one atomic write of contactlib.
 
-This is the only module of :mod:`contactlib` that touches the disk. It turns
-solutions into a CF-annotated :class:`xarray.Dataset` (variable names and
-scalings of docs/conventions.md), writes it atomically and reproducibly, and
-reads it back.
+This is the only module of :mod:`contactlib` that touches the disk, and the
+only one that knows the file conventions. It turns the results of the
+numerics into CF-annotated :class:`xarray.Dataset` objects (variable names
+and scalings of docs/conventions.md):
+
+* :func:`to_dataset` for :class:`~contactlib.result.Solution` objects
+  (``contactlib solve``/``sweep``), :func:`scene_to_dataset` for a workflow
+  scene and :func:`set_provenance` for the workflow's attributes;
+* :func:`history_to_dataset` and :func:`stack_histories` for loading
+  histories (:class:`~contactlib.history_api.HistoryResult`);
+* :func:`study_to_dataset` and :func:`study_from_dataset` for convergence
+  studies (:class:`~contactlib.convergence.Study`);
+* :func:`write_records` and :func:`read_records` for the case records the
+  workflow passes between its stages (npz).
+
+Every writer (:func:`write_dataset`, :func:`write_arrays`,
+:func:`write_records`, :func:`write_table`, :func:`write_figure`) goes
+through one atomic write: a temporary file in the destination folder, then
+:func:`os.replace`. The numerics never import this module; it imports them
+only for their types and constants, and only when a conversion needs them.
 
 Examples
 --------
@@ -26,18 +42,27 @@ import os
 import tempfile
 import zipfile
 import zlib
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import xarray as xr
 
+from contactlib.indenter import indenter
 from contactlib.result import Solution
 
-__all__ = ["to_dataset", "write_dataset", "read_dataset", "write_arrays", "read_arrays",
-           "write_table", "write_figure", "check_writable", "check_yaml", "DamagedFileError"]
+if TYPE_CHECKING:  # types only: the conversions import the numerics when they run
+    from contactlib.convergence import Study
+    from contactlib.history_api import HistoryResult
 
+__all__ = ["to_dataset", "scene_to_dataset", "set_provenance", "history_to_dataset",
+           "stack_histories", "study_to_dataset", "study_from_dataset", "write_dataset",
+           "read_dataset", "write_arrays", "read_arrays", "write_records", "read_records",
+           "write_table", "write_figure", "check_writable", "check_yaml", "version",
+           "cf_attrs", "DamagedFileError", "CONVENTIONS"]
+
+# ----------------------------------------------------------------------------- conventions
 CONVENTIONS = "CF-1.10"
 COMPRESSION: dict[str, Any] = {"zlib": True, "complevel": 4, "shuffle": True}
 
@@ -63,13 +88,12 @@ _PROFILE_ATTRS: dict[str, tuple[str, str]] = {
     ),
 }
 
-_WORK_COMMENT = {
-    "sphere": "V R**2 / (E* a**5); loading 0 -> a; NaN when not computed",
-    "cylinder": (
-        "V R**2 / (E* a**4), V per unit length over the whole contact "
-        "(both sides of the axis); loading 0 -> a; NaN when not computed"
-    ),
-}
+def _work_comment(ind: Any) -> str:
+    """The scaling of ``frictional_work`` for an indenter (rings or strips)."""
+    per_length = (", V per unit length over the whole contact (both sides of the axis)"
+                  if ind.plane_strain else "")
+    return (f"V R**2 / (E* a**{ind.work_exponent}){per_length}; loading 0 -> a; "
+            f"NaN when not computed")
 
 _POINT_FLOAT_ATTRS: dict[str, tuple[str, str]] = {
     "friction_coefficient": (
@@ -103,19 +127,24 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
 _SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio")
 
 
-def _version() -> str:
-    """Return the contactlib version from its single source."""
-    try:
-        import contactlib
+def version() -> str:
+    """The contactlib version written into every dataset (``contactlib_version``).
 
-        return str(contactlib.__version__)
-    except (ImportError, AttributeError):  # pragma: no cover - defensive
-        from importlib.metadata import PackageNotFoundError, version
+    Returns
+    -------
+    str
+        ``contactlib.__version__``, the single source of the version (also
+        read by ``pyproject.toml`` and ``contactlib --version``).
 
-        try:
-            return version("contactlib")
-        except PackageNotFoundError:
-            return "unknown"
+    Examples
+    --------
+    >>> import contactlib
+    >>> version() == contactlib.__version__
+    True
+    """
+    from contactlib import __version__
+
+    return str(__version__)
 
 
 def _same(a: Any, b: Any) -> bool:
@@ -153,14 +182,40 @@ def _check(sols: list[Solution]) -> np.ndarray:
     return xi
 
 
-def _attrs(long_name: str, comment: str = "", **extra: Any) -> dict[str, Any]:
-    attrs: dict[str, Any] = {"units": "1", "long_name": long_name}
+def cf_attrs(long_name: str, units: str = "1", comment: str = "",
+             **extra: Any) -> dict[str, Any]:
+    """CF attributes of one variable: ``units``, ``long_name``, then ``comment`` and extras.
+
+    Parameters
+    ----------
+    long_name : str
+        CF ``long_name``.
+    units : str
+        CF ``units``; ``"1"`` (dimensionless, the default) for every scaled
+        quantity of docs/conventions.md.
+    comment : str
+        Scaling, sign or provenance; left out when empty.
+    **extra
+        Further attributes (e.g. ``flag_values``, ``bounds``).
+
+    Returns
+    -------
+    dict
+        In this order, so that files are byte-reproducible.
+
+    Examples
+    --------
+    >>> cf_attrs("wall time of one solve", "s")
+    {'units': 's', 'long_name': 'wall time of one solve'}
+    """
+    attrs: dict[str, Any] = {"units": units, "long_name": long_name}
     if comment:
         attrs["comment"] = comment
     attrs.update(extra)
     return attrs
 
 
+# ----------------------------------------------------------------------------- solutions
 def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     """Convert one solution or a sweep of solutions to a dataset.
 
@@ -206,24 +261,25 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     xi = _check(sols)
     first = sols[0]
     geometry = str(first.geometry)
-    axis = "r/a" if geometry == "sphere" else "x/a"
+    ind = indenter(geometry)
+    axis = f"{ind.coordinate}/a"
     dims = ("stick_ratio",)
 
     coords = {
         "xi": (
             "xi",
             xi,
-            _attrs(
+            cf_attrs(
                 f"position over contact radius ({axis})",
-                "0 on the axis, 1 at the contact edge",
+                comment="0 on the axis, 1 at the contact edge",
             ),
         ),
         "stick_ratio": (
             dims,
             np.array([float(s.stick_ratio) for s in sols]),
-            _attrs(
+            cf_attrs(
                 "stick zone radius over contact radius (c/a)",
-                "0 frictionless, 1 full adhesion",
+                comment="0 frictionless, 1 full adhesion",
             ),
         ),
     }
@@ -232,20 +288,20 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         if getattr(first, name) is None:
             continue  # not computed (a workflow scene that did not ask for it)
         values = np.stack([np.asarray(getattr(s, name), dtype=float) for s in sols])
-        data[name] = (dims + ("xi",), values, _attrs(long_name, comment))
+        data[name] = (dims + ("xi",), values, cf_attrs(long_name, comment=comment))
     for name, (long_name, comment) in _POINT_FLOAT_ATTRS.items():
         if name == "frictional_work":
-            comment = _WORK_COMMENT.get(geometry, "")
+            comment = _work_comment(ind)
         values = np.array([float(getattr(s, name)) for s in sols])
-        data[name] = (dims, values, _attrs(long_name, comment))
+        data[name] = (dims, values, cf_attrs(long_name, comment=comment))
     data["iterations"] = (
         dims,
         np.array([int(s.iterations) for s in sols], dtype=np.int32),
-        _attrs("solver iterations", "solver status"),
+        cf_attrs("solver iterations", comment="solver status"),
     )
     for name, (long_name, comment) in _POINT_BOOL_ATTRS.items():
         values = np.array([bool(getattr(s, name)) for s in sols], dtype=bool)
-        data[name] = (dims, values, _attrs(long_name, comment, **_BOOL_FLAGS))
+        data[name] = (dims, values, cf_attrs(long_name, comment=comment, **_BOOL_FLAGS))
     messages = [str(s.message or "") for s in sols]
     if any(messages):
         data["message"] = (
@@ -261,9 +317,9 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         "elements": int(first.n),
         "method": str(first.method),
     }
-    if geometry == "cylinder":
+    if ind.accepts_layer:
         attrs["slab_ratio"] = float(first.slab_ratio)
-    attrs["contactlib_version"] = _version()
+    attrs["contactlib_version"] = version()
     attrs["Conventions"] = CONVENTIONS
 
     ds = xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
@@ -272,6 +328,360 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     return ds
 
 
+_FLAG_NAMES = tuple(name for name in _POINT_BOOL_ATTRS if name != "converged")
+_VIOLATION_COMMENT = "relative measure behind the flag; <= 1e-4 passes"
+
+
+def scene_to_dataset(solutions: Sequence[Solution], *, outputs: Sequence[str],
+                     scene: str, config_hash: str,
+                     violations: Mapping[str, np.ndarray] | None = None,
+                     elements: np.ndarray | None = None,
+                     error_estimate: np.ndarray | None = None,
+                     tolerance: float | None = None) -> xr.Dataset:
+    """The dataset of a workflow scene: :func:`to_dataset` cut to the outputs it asked for.
+
+    Parameters
+    ----------
+    solutions : sequence of Solution
+        One a stick ratio (a sweep).
+    outputs : sequence of str
+        The scene's outputs: without ``k_curve`` the consistency flags are
+        dropped, without ``energy`` the frictional work.
+    scene, config_hash : str
+        Provenance (:func:`set_provenance`).
+    violations : mapping of str to ndarray, optional
+        ``stick_violation`` and ``slip_violation``, one value a case (added
+        with ``k_curve``).
+    elements, error_estimate : ndarray, optional
+        A scene with an accuracy target: the elements each case used and the
+        estimated relative error of k (both needed with ``tolerance``).
+    tolerance : float, optional
+        The scene's accuracy target; adds the ``tolerance``, ``elements``
+        (the most used) and ``tolerance_met`` attributes.
+
+    Returns
+    -------
+    xarray.Dataset
+    """
+    want = set(outputs)
+    ds = to_dataset(list(solutions))
+    drop = []
+    if "k_curve" not in want:
+        drop += list(_FLAG_NAMES)
+    if "energy" not in want:
+        drop.append("frictional_work")
+    ds = ds.drop_vars(drop)
+    if "k_curve" in want:
+        if violations is None:
+            raise ValueError("a scene with k_curve needs the violations")
+        for name in ("stick_violation", "slip_violation"):
+            ds[name] = ("stick_ratio", np.asarray(violations[name], dtype=float),
+                        cf_attrs(name.replace("_", " "), comment=_VIOLATION_COMMENT))
+    if tolerance is not None:
+        if elements is None or error_estimate is None:
+            raise ValueError("a scene with a tolerance needs elements and error_estimate")
+        used = np.asarray(elements, dtype=np.int32)
+        ds["elements"] = ("stick_ratio", used, cf_attrs(
+            "elements used for this stick ratio",
+            comment="planned from the measured convergence, doubled where the "
+            "a-posteriori estimate missed the tolerance"))
+        estimate = np.asarray(error_estimate, dtype=float)
+        ds["error_estimate"] = ("stick_ratio", estimate, cf_attrs(
+            "estimated relative error of friction_coefficient",
+            comment="from the same case at n/2 and n/4 (observed order, clipped to [1, 2])"))
+        ds.attrs["tolerance"] = float(tolerance)
+        ds.attrs["elements"] = int(used.max())
+        ds.attrs["tolerance_met"] = int(bool(np.all(ds["error_estimate"].values
+                                                    <= tolerance)))
+    return set_provenance(ds, scene, config_hash, outputs=outputs)
+
+
+def set_provenance(ds: xr.Dataset, scene: str, config_hash: str,
+                   outputs: Sequence[str] | None = None) -> xr.Dataset:
+    """Add the workflow's provenance attributes to ``ds`` (in place) and return it.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+    scene : str
+        The scene's name (attribute ``scene``).
+    config_hash : str
+        Hash of the scene's settings (attribute ``scene_config_hash``).
+    outputs : sequence of str, optional
+        The outputs the scene asked for (attribute ``outputs``, space separated).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``ds``.
+    """
+    ds.attrs["scene"] = scene
+    ds.attrs["scene_config_hash"] = config_hash
+    if outputs is not None:
+        ds.attrs["outputs"] = " ".join(outputs)
+    return ds
+
+
+# ----------------------------------------------------------------------------- histories
+def history_to_dataset(result: HistoryResult) -> xr.Dataset:
+    """CF-annotated :class:`xarray.Dataset` of a history (dimensions ``step``, ``xi``).
+
+    Every variable has ``units`` (``"1"``: all dimensionless) and
+    ``long_name``; the element state is int8 with ``flag_values`` and
+    ``flag_meanings``; ``xi`` has CF ``bounds``. Global attributes: geometry,
+    poisson_ratio, elements, friction_coefficient, load_path, steps,
+    slab_ratio (cylinder), mesh_extent, contactlib_version, Conventions.
+    Write it with :func:`write_dataset`.
+
+    Parameters
+    ----------
+    result : HistoryResult
+        From :func:`contactlib.history`.
+
+    Returns
+    -------
+    xarray.Dataset
+
+    Examples
+    --------
+    >>> from contactlib import history
+    >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1], 4, n=40))
+    >>> ds["pressure"].dims, ds.attrs["steps"]
+    (('step', 'xi'), 4)
+    """
+    from contactlib import history_solver as hs
+
+    r = result
+    ind = indenter(r.geometry)
+    axis = ind.coordinate
+    work_scale = f"V R**2 / (E* a_max**{ind.work_exponent})" + (
+        ", V per unit length over both sides of the axis" if ind.plane_strain else "")
+    sd, ed = ("step",), ("step", "xi")
+    coords = {
+        "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),
+                 cf_attrs("load step", comment="0: unloaded initial state")),
+        "xi": ("xi", r.xi, cf_attrs(f"element midpoint over a_max ({axis}/a_max)",
+                                    comment="collocation points; a_max = frictionless "
+                                            "contact radius at load level 1",
+                                    bounds="xi_bounds")),
+    }
+    bool_flags = _BOOL_FLAGS
+    data = {
+        "xi_bounds": (("xi", "nv"), r.xi_bounds, cf_attrs("element edges over a_max")),
+        "segment": (sd, r.segment.astype(np.int32),
+                    cf_attrs("load path segment", comment="1-based; 0 for the initial state")),
+        "load_ratio": (sd, r.load_ratio, cf_attrs("normal load over maximum load (P/P_max)")),
+        "contact_radius": (sd, r.contact_radius, cf_attrs(
+            "contact radius over a_max (a/a_max)",
+            comment="sub-element estimate from the gap outside the contact")),
+        "stick_ratio": (sd, r.stick_ratio, cf_attrs(
+            "central stick zone radius over contact radius (c/a)",
+            comment="run of stuck elements from the axis, edge refined from the traction "
+                    "deficit; NaN without contact")),
+        "indentation": (sd, r.indentation, cf_attrs(
+            "indentation (delta R / a_max**2)",
+            comment="half-plane: relative to the Flamant reference length a_max")),
+        "frictional_work": (sd, r.frictional_work, cf_attrs(
+            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time")),
+        "state": (ed, r.state.astype(np.int8), cf_attrs(
+            "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
+            flag_meanings=hs.STATE_MEANINGS,
+            comment="slip_inward: the body slips toward the axis (shear = +k p)")),
+        "pressure": (ed, r.pressure, cf_attrs(
+            "contact pressure over Hertz peak pressure at a_max",
+            comment="p / p0(a_max); positive in compression")),
+        "shear": (ed, r.shear, cf_attrs(
+            "shear traction over Hertz peak pressure at a_max",
+            comment="q / p0(a_max), traction on the elastic body, positive away from the axis")),
+        "tangential_displacement": (ed, r.tangential_displacement, cf_attrs(
+            "tangential surface displacement (u R / a_max**2)",
+            comment="positive away from the axis")),
+        "converged": (sd, r.converged.astype(bool), cf_attrs(
+            "step converged", comment="solver status; failed steps are kept", **bool_flags)),
+        "iterations": (sd, r.iterations.astype(np.int32), cf_attrs("active-set iterations")),
+        "residual_norm": (sd, r.residual_norm, cf_attrs(
+            "largest scaled violation of the contact and friction conditions")),
+    }
+    if r.resolved is not None:
+        coarse = ("from the same path on about half the elements with half the steps a "
+                  "segment, interpolated by path coordinate; NaN: not estimated")
+        data["stick_radius_error_estimate"] = (sd, r.stick_radius_error_estimate, cf_attrs(
+            "estimated absolute error of the central stick zone radius over a_max (dc/a_max)",
+            comment=coarse + "; at least half an element where the stick edge is an element "
+                             "edge; 0 without contact; the error of stick_ratio is this over "
+                             "contact_radius"))
+        data["work_error_estimate"] = (sd, r.work_error_estimate, cf_attrs(
+            "estimated relative error of the cumulative frictional work",
+            comment=coarse + "; 0 while no work is done"))
+        data["resolved"] = (sd, r.resolved.astype(bool), cf_attrs(
+            "step resolved to max_error",
+            comment=f"converged, slip zone absent or over at least {hs.MIN_SLIP_ELEMENTS} "
+                    f"elements, and both error estimates within the max_error attribute",
+            **bool_flags))
+    attrs: dict[str, Any] = {
+        "title": f"contactlib loading history ({r.geometry})",
+        "geometry": r.geometry,
+        "poisson_ratio": float(r.nu),
+        "elements": int(r.n),
+        "friction_coefficient": float(r.friction),
+        "load_path": np.asarray(r.load_path, dtype=float),
+        "steps": int(r.steps),
+    }
+    if ind.accepts_layer:
+        attrs["slab_ratio"] = float(r.slab_ratio)
+    attrs["mesh_extent"] = float(hs.MESH_EXTENT)
+    if r.resolved is not None:
+        attrs["max_error"] = float(r.max_error)
+    attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
+    if r.message:
+        attrs["message"] = r.message
+    attrs["contactlib_version"] = version()
+    attrs["Conventions"] = CONVENTIONS
+    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
+    """Histories that differ only in k, stacked along a ``friction_coefficient`` dimension.
+
+    Parameters
+    ----------
+    datasets : sequence of xarray.Dataset
+        From :func:`history_to_dataset`, same geometry, nu, load path, steps,
+        n and slab ratio, distinct friction coefficients.
+
+    Returns
+    -------
+    xarray.Dataset
+        Every variable gains a leading ``friction_coefficient`` dimension
+        (coordinate: k, increasing); the ``friction_coefficient`` attribute
+        is dropped, ``message`` joins the members' notes.
+
+    Raises
+    ------
+    ValueError
+        When the histories differ in anything but k, or repeat a k.
+    """
+    items = list(datasets)
+    if not items:
+        raise ValueError("stack_histories needs at least one history dataset")
+    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
+    first = items[0].attrs
+    for ds in items[1:]:
+        for key in same:
+            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
+                                                   np.asarray(first[key])):
+                raise ValueError(f"histories to stack must share {key}: "
+                                 f"{first[key]!r} vs {ds.attrs.get(key)!r}")
+        if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):
+            raise ValueError("histories to stack must share the load path")
+    ks = np.array([float(ds.attrs["friction_coefficient"]) for ds in items])
+    if np.unique(ks).size != ks.size:
+        raise ValueError(f"histories to stack repeat a friction coefficient: {ks.tolist()}")
+    order = np.argsort(ks)
+    members = []
+    for i in order:
+        ds = items[i].copy()
+        ds.attrs = {k: v for k, v in ds.attrs.items()
+                    if k not in ("friction_coefficient", "message")}
+        members.append(ds)
+    shared = ("xi_bounds", "segment", "load_ratio")  # the path and the mesh: no k in them
+    varying = [v for v in members[0].data_vars if v not in shared]
+    out = xr.concat(members, dim="friction_coefficient", data_vars=varying, coords="minimal",
+                    compat="equals", combine_attrs="override")
+    out = out.assign_coords(friction_coefficient=ks[order])
+    out["friction_coefficient"].attrs = cf_attrs("Coulomb friction coefficient k")
+    notes = [f"k = {ks[i]:g}: {items[i].attrs['message']}" for i in order
+             if items[i].attrs.get("message")]
+    if notes:
+        out.attrs["message"] = "; ".join(notes)
+    return out
+
+
+# ----------------------------------------------------------------------------- studies
+_STUDY_QUANTITIES_COMMENT = ("friction_coefficient k; load_ratio P/P_Hertz; frictional_work "
+                             "as in docs/conventions.md; peak_shear max q/p0")
+
+
+def study_to_dataset(study: Study, name: str | None = None) -> xr.Dataset:
+    """CF-annotated dataset of a convergence study (:func:`contactlib.convergence.study`).
+
+    Parameters
+    ----------
+    study : contactlib.convergence.Study
+    name : str, optional
+        The study's name in the workflow config (global attribute ``study``).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``value``, ``error`` (relative to the reference; NaN where it cannot
+        be estimated), ``wall_time`` (s) and ``peak_memory`` (MiB) on
+        (quantity, n, stick_ratio) or (n, stick_ratio); ``reference`` and
+        ``observed_order`` on (quantity, stick_ratio). Global attributes:
+        geometry, poisson_ratio, method, slab_ratio, reference (its source),
+        contactlib_version, Conventions, and ``study`` when ``name`` is given.
+    """
+    st = study
+    ds = xr.Dataset(
+        {
+            "value": (("quantity", "n", "stick_ratio"), st.values,
+                      cf_attrs("computed value", comment=_STUDY_QUANTITIES_COMMENT)),
+            "reference": (("quantity", "stick_ratio"), st.reference,
+                          cf_attrs("reference value (see the global attribute reference)")),
+            "observed_order": (("quantity", "stick_ratio"), st.observed_order,
+                               cf_attrs("observed order of convergence",
+                                        comment="log2 of the ratio of successive differences; "
+                                                "NaN when they do not shrink")),
+            "error": (("quantity", "n", "stick_ratio"), st.error,
+                      cf_attrs("relative error against the extrapolated value")),
+            "wall_time": (("n", "stick_ratio"), st.wall_time,
+                          cf_attrs("wall time of one solve", "s")),
+            "peak_memory": (("n", "stick_ratio"), st.peak_memory,
+                            cf_attrs("peak traced memory of one solve", "MiB",
+                                     "numpy and Python allocations (tracemalloc)")),
+        },
+        coords={"quantity": ("quantity", list(st.quantities), {"long_name": "quantity"}),
+                "n": ("n", np.asarray(st.ns), cf_attrs("elements across the half-contact")),
+                "stick_ratio": ("stick_ratio", np.asarray(st.stick_ratios), cf_attrs("c/a"))},
+        attrs={"geometry": st.geometry, "poisson_ratio": float(st.nu), "method": st.method,
+               "slab_ratio": float(st.slab_ratio), "Conventions": CONVENTIONS,
+               "reference": st.reference_source, "contactlib_version": version()},
+    )
+    if name is not None:
+        ds.attrs["study"] = name
+    return ds
+
+
+def study_from_dataset(ds: xr.Dataset) -> Study:
+    """The :class:`~contactlib.convergence.Study` of a dataset of :func:`study_to_dataset`.
+
+    The workflow reads a study back this way to serve as the reference of
+    another (the paper's scheme is measured against the default method's
+    extrapolated values).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+
+    Returns
+    -------
+    contactlib.convergence.Study
+    """
+    from contactlib.convergence import Study
+
+    return Study(
+        geometry=str(ds.attrs["geometry"]), nu=float(ds.attrs["poisson_ratio"]),
+        method=str(ds.attrs["method"]), slab_ratio=float(ds.attrs["slab_ratio"]),
+        ns=tuple(int(n) for n in ds["n"].values),
+        stick_ratios=tuple(float(c) for c in ds["stick_ratio"].values),
+        quantities=tuple(str(q) for q in ds["quantity"].values),
+        values=ds["value"].values, reference=ds["reference"].values,
+        observed_order=ds["observed_order"].values, error=ds["error"].values,
+        wall_time=ds["wall_time"].values, peak_memory=ds["peak_memory"].values,
+        reference_source=str(ds.attrs["reference"]))
+
+
+# ----------------------------------------------------------------------------- files
 def _encoding(ds: xr.Dataset) -> dict[str, dict[str, Any]]:
     """Per-variable netCDF encoding: no fill on coordinates, zlib on data."""
     encoding: dict[str, dict[str, Any]] = {}
@@ -295,6 +705,24 @@ def _atomic_target(path: str | os.PathLike[str]) -> tuple[Path, Path]:
     os.umask(umask)
     os.chmod(tmp_name, 0o666 & ~umask)
     return path, Path(tmp_name)
+
+
+def _atomic_write(path: str | os.PathLike[str], write: Callable[[Path], None]) -> Path:
+    """The one atomic write of contactlib: ``write(tmp)``, then ``os.replace(tmp, path)``.
+
+    ``write`` fills a fresh temporary file beside ``path`` (same folder, so
+    the replace is atomic; parent folders are created). On any failure,
+    including an interrupt, the temporary file is removed and ``path`` is
+    left as it was.
+    """
+    path, tmp = _atomic_target(path)
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path
 
 
 def check_writable(path: str | os.PathLike[str]) -> Path:
@@ -376,15 +804,12 @@ def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) ->
     for k, v in data.items():
         if v.dtype.kind not in "biufUS":
             raise TypeError(f"array {k!r} has dtype {v.dtype}, which needs pickling")
-    path, tmp = _atomic_target(path)
-    try:
+
+    def write(tmp: Path) -> None:
         with open(tmp, "wb") as fh:
             np.savez(fh, **data)
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
+
+    return _atomic_write(path, write)
 
 
 class DamagedFileError(OSError):
@@ -433,6 +858,67 @@ def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
         raise _damaged(path, "npz", exc) from exc
 
 
+def write_records(records: Sequence[Mapping[str, Any]], path: str | os.PathLike[str]) -> Path:
+    """Write the case records of a scene (:func:`contactlib.stages.solve_cases`) to ``.npz``.
+
+    The workflow's transport between its stages: each record (a dict of
+    scalars and arrays, one a stick ratio) is flattened into arrays named
+    ``"<i>/<field>"``, next to ``count``, and written with
+    :func:`write_arrays` (atomically, no pickles).
+
+    Parameters
+    ----------
+    records : sequence of mapping
+    path : str or os.PathLike
+        Destination; must end in ``.npz``.
+
+    Returns
+    -------
+    pathlib.Path
+    """
+    arrays: dict[str, np.ndarray] = {"count": np.array(len(records))}
+    for i, rec in enumerate(records):
+        for key, value in rec.items():
+            arrays[f"{i}/{key}"] = np.asarray(value)
+    return write_arrays(arrays, path)
+
+
+def read_records(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """Read case records written by :func:`write_records`.
+
+    0-d arrays come back as Python scalars, so a record read back equals the
+    one written.
+
+    Raises
+    ------
+    DamagedFileError
+        If the file exists but cannot be read back whole.
+    FileNotFoundError
+        If there is no such file.
+
+    Examples
+    --------
+    >>> import tempfile, os
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = write_records([{"stick_ratio": 0.5, "k": [0.1, 0.2]}],
+    ...                          os.path.join(folder, "r.npz"))
+    ...     read_records(path)[0]["stick_ratio"]
+    0.5
+    """
+    arrays = read_arrays(path)
+    try:
+        count = int(arrays["count"])
+        records: list[dict[str, Any]] = [{} for _ in range(count)]
+        for name, value in arrays.items():
+            if name == "count":
+                continue
+            i, key = name.split("/", 1)
+            records[int(i)][key] = value.item() if value.ndim == 0 else value
+    except (KeyError, ValueError, IndexError) as exc:
+        raise _damaged(path, "case-record npz", exc) from exc
+    return records
+
+
 def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
                 digits: int = 6, title: str = "") -> Path:
     """Write rows of a table (dicts with the same keys) as CSV or HTML, atomically.
@@ -479,14 +965,7 @@ def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
             buf.write("<tr>" + "".join(f"<td>{esc(cell(row[c]))}</td>" for c in columns)
                       + "</tr>\n")
         buf.write("</table>\n</body></html>\n")
-    path, tmp = _atomic_target(path)
-    try:
-        tmp.write_text(buf.getvalue(), encoding="utf-8")
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
+    return _atomic_write(path, lambda tmp: tmp.write_text(buf.getvalue(), encoding="utf-8"))
 
 
 def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
@@ -524,16 +1003,9 @@ def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     >>> bool(back["friction_coefficient"].equals(ds["friction_coefficient"])), same_bytes
     (True, True)
     """
-    path, tmp = _atomic_target(path)
-    try:
-        ds.to_netcdf(
-            tmp, mode="w", format="NETCDF4", engine="netcdf4", encoding=_encoding(ds)
-        )
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
+    encoding = _encoding(ds)
+    return _atomic_write(path, lambda tmp: ds.to_netcdf(
+        tmp, mode="w", format="NETCDF4", engine="netcdf4", encoding=encoding))
 
 
 def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
@@ -613,22 +1085,21 @@ _FIGURE_METADATA: dict[str, dict[str, None]] = {
 }
 
 
-def write_figure(fig: Any, path: str | os.PathLike[str]) -> Path:
+def write_figure(fig: Any, path: str | os.PathLike[str], *,
+                 style: str | os.PathLike[str] | Mapping[str, Any] | None = None) -> Path:
     """Save a matplotlib figure as PNG or PDF, atomically and reproducibly.
 
     The format follows the suffix (``.png`` or ``.pdf``, any case). The
     figure is rendered into a temporary file in the destination folder,
     which then replaces ``path`` with :func:`os.replace`; on any failure the
     temporary file is removed and ``path`` is left as it was. Parent folders
-    are created. Saving happens inside the contactlib style
-    (:func:`contactlib.figures.style_path`: 150 dpi, TrueType fonts in PDF),
-    and the metadata that would carry a matplotlib version or the time is
-    dropped (PNG ``Software``; PDF ``Creator``, ``Producer``,
+    are created. The metadata that would carry a matplotlib version or the
+    time is dropped (PNG ``Software``; PDF ``Creator``, ``Producer``,
     ``CreationDate``, ``ModDate``), so the same figure gives byte-identical
     files on every save, in every process (checked with different
     ``PYTHONHASHSEED`` values in ``tests/test_figures.py``). This needs a
     layout that does not move between draws: the figures of
-    :mod:`contactlib.figures` settle and freeze theirs, while a figure with a
+    :mod:`contactlib.plot` settle and freeze theirs, while a figure with a
     live constrained layout may shift by a fraction of a pixel per save.
     ``fig`` is typed ``Any`` so that this module does not import matplotlib
     until a figure is written.
@@ -636,9 +1107,16 @@ def write_figure(fig: Any, path: str | os.PathLike[str]) -> Path:
     Parameters
     ----------
     fig : matplotlib.figure.Figure
-        Typically from :mod:`contactlib.figures`.
+        Typically from :mod:`contactlib.plot`.
     path : str or os.PathLike
         Destination file, ending in ``.png`` or ``.pdf``.
+    style : str, os.PathLike or mapping, optional
+        A matplotlib style (a ``.mplstyle`` path, a style name or a dict of
+        rcParams) active while the figure is saved; it sets the resolution
+        and the PDF font type. The figures of :mod:`contactlib.plot` are
+        saved with theirs, :func:`contactlib.plot.style_path` (150 dpi,
+        TrueType fonts in PDF), as the workflow does. ``None`` (default):
+        the current rcParams.
 
     Returns
     -------
@@ -652,20 +1130,19 @@ def write_figure(fig: Any, path: str | os.PathLike[str]) -> Path:
     IsADirectoryError
         If ``path`` is an existing directory.
     """
-    import matplotlib.style
+    import contextlib
 
-    from contactlib.figures import style_path
+    import matplotlib.style
 
     path = Path(path)
     fmt = path.suffix.lower().lstrip(".")
     if fmt not in _FIGURE_METADATA:
         raise ValueError(f"figure path must end in .png or .pdf, got {path.name!r}")
-    path, tmp = _atomic_target(path)
-    try:
-        with open(tmp, "wb") as handle, matplotlib.style.context(style_path()):
+
+    def write(tmp: Path) -> None:
+        saving = (contextlib.nullcontext() if style is None
+                  else matplotlib.style.context(style))  # type: ignore[arg-type]
+        with open(tmp, "wb") as handle, saving:
             fig.savefig(handle, format=fmt, metadata=dict(_FIGURE_METADATA[fmt]))
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
+
+    return _atomic_write(path, write)

@@ -35,31 +35,23 @@ import numpy as np
 from scipy import linalg
 
 from .elements import Mesh, uniform_mesh
-from .geometry import Geometry
+from .model import Contact
+from .operators import step_operator
 from .result import short_repr
 
 __all__ = ["PaperSolution", "solve_paper", "ring_operator", "collocation_points"]
 
 
-def ring_operator(geometry: Geometry, nodes: np.ndarray, x: np.ndarray,
-                  part: str) -> np.ndarray:
-    """Displacements (3, len(x), n) of unit step pressures (``part="normal"``)
-    or unit shear elements (``part="shear"``) on the rings, at the points x."""
-    if part == "normal":
-        kernel = geometry.pressure_kernel
-    elif part == "shear":
-        kernel = geometry.shear_kernel
-    else:
-        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
-    xx = np.asarray(x, dtype=float)[:, None]
-    with np.errstate(invalid="ignore"):  # du/dx is log-infinite on ring edges (unused there)
-        return np.stack(kernel(xx, nodes[None, 1:])) - np.stack(kernel(xx, nodes[None, :-1]))
+ring_operator = step_operator
+"""Displacements (3, len(x), n) of unit step pressures (``part="normal"``) or unit
+shear elements (``part="shear"``) on the rings: :func:`contactlib.operators.step_operator`."""
 
 
-def _ring_operators(geometry: Geometry, nodes: np.ndarray, x: np.ndarray):
+def _ring_operators(geometry: Contact, nodes: np.ndarray,
+                    x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Displacements (3, len(x), n) of unit step pressures and unit shear elements."""
-    return (ring_operator(geometry, nodes, x, "normal"),
-            ring_operator(geometry, nodes, x, "shear"))
+    return (step_operator(geometry, nodes, x, "normal"),
+            step_operator(geometry, nodes, x, "shear"))
 
 
 def collocation_points(n: int) -> np.ndarray:
@@ -74,7 +66,7 @@ class PaperSolution:
 
     __repr__ = short_repr  # a few lines: scalars, arrays by shape
 
-    geometry: Geometry
+    geometry: Contact
     mesh: Mesh
     p: np.ndarray  # step pressures, one per ring
     qc: np.ndarray  # shear coefficients, one per ring
@@ -128,20 +120,18 @@ class PaperSolution:
         return mids[m:], np.diff(r)[m:], self.shear(mids[m:]), s[m:]
 
     def load(self) -> float:
-        r = self.mesh.nodes
-        if self.geometry.name == "sphere":
-            return float(np.sum(self.p * np.pi * (r[1:] ** 2 - r[:-1] ** 2)))
-        return float(2.0 * np.sum(self.p * np.diff(r)))
+        """Total load of the step pressures (units E* a^3/R, or E* a^2/R per unit length)."""
+        return self.geometry.indenter.load_of_steps(self.mesh.nodes, self.p)
 
 
-def solve_paper(geometry: Geometry, m: int, n: int, *, coulomb: str = "resultant",
+def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant",
                 max_iter: int = 50, tol: float = 1e-12,
                 ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> PaperSolution:
     """Solve the paper's equations for stick ratio m/n.
 
     Parameters
     ----------
-    geometry : Geometry
+    geometry : Contact
     m : int
         Number of stick rings, 0 (frictionless) ... n (full adhesion).
     n : int
@@ -177,12 +167,10 @@ def solve_paper(geometry: Geometry, m: int, n: int, *, coulomb: str = "resultant
                        u_p[1] - 0.25 * u_p[2]])
     adh_q = np.vstack([u_q[idx] - (np.arange(2, m + 1) ** 2)[:, None] * u_q[2],
                        u_q[1] - 0.25 * u_q[2]])
-    if geometry.name == "sphere" and coulomb == "resultant":
-        ratio = (2.0 / 3.0) * (r[1:] ** 3 - r[:-1] ** 3) / (r[1:] ** 2 - r[:-1] ** 2)
-    else:
-        ratio = np.ones(n)
+    # Eq. 11 on the element's resultant: mean shear shape <r^2>/<r> of a ring, 1 of a strip
+    ratio = geometry.indenter.mean_shear_shape(r) if coulomb == "resultant" else np.ones(n)
     eq12 = np.zeros(2 * n)
-    eq12[n], eq12[n + 1] = (1.0, -1.0) if geometry.name == "sphere" else (1.0, -0.5)
+    eq12[n], eq12[n + 1] = 1.0, -geometry.indenter.paper_axis_shear_ratio
 
     if m == n:  # full adhesion: Eqs. 9, 10 and the i = 1/2 condition, linear
         a = np.vstack([np.hstack([w_p, w_q]), np.hstack([adh_p, adh_q])])

@@ -2,9 +2,10 @@
 
 Each function here is what one Snakemake rule runs (the scripts in
 ``workflow/scripts`` only read inputs and write outputs through
-:mod:`contactlib.io`). The numerics are those of :mod:`contactlib.stages`,
-which :func:`contactlib.solve` runs in one process, so a scene's dataset holds
-the same numbers as ``contactlib sweep`` with the same settings.
+:mod:`contactlib.io`, which also holds the dataset conventions). The numerics
+are those of :mod:`contactlib.stages`, which :func:`contactlib.solve` runs in
+one process, so a scene's dataset holds the same numbers as ``contactlib
+sweep`` with the same settings.
 
 Examples
 --------
@@ -27,8 +28,8 @@ import xarray as xr
 
 from . import stages
 from .api import output_grid
-from .geometry import Geometry
-from .io import to_dataset
+from .io import scene_to_dataset
+from .model import contact
 from .scene import Scene
 
 __all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
@@ -39,7 +40,7 @@ _VIOLATIONS = ("stick_violation", "slip_violation")
 
 def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
-    geom = Geometry(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]))
+    geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]))
     return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
 
 
@@ -85,6 +86,8 @@ def assemble(scene: Scene, records: Sequence[dict], *,
     the pressure and shear, ``displacements`` the tangential displacement
     (needs ``profiles``), ``energy`` the frictional work (needs ``work``).
     Global attributes add ``scene`` and ``scene_config_hash`` (provenance).
+    The conventions (names, CF attributes) are those of
+    :func:`contactlib.io.scene_to_dataset`.
     """
     geom, xi = scene.geometry_object, output_grid()
     want = set(scene.outputs)
@@ -106,33 +109,12 @@ def assemble(scene: Scene, records: Sequence[dict], *,
             geom, scene.method, scene.n, rec, xi, flags=flags,
             work=float(work["frictional_work"][i]) if "energy" in want else float("nan"),
             profile=prof))
-    ds = to_dataset(sols)
-    drop = []
-    if "k_curve" not in want:
-        drop += list(_FLAG_FIELDS)
-    if "energy" not in want:
-        drop.append("frictional_work")
-    ds = ds.drop_vars(drop)
-    if "k_curve" in want:
-        for name in _VIOLATIONS:
-            ds[name] = ("stick_ratio", np.asarray(checks[name], dtype=float),
-                        {"units": "1", "long_name": name.replace("_", " "),
-                         "comment": "relative measure behind the flag; <= 1e-4 passes"})
+    violations = None if "k_curve" not in want else {name: checks[name] for name in _VIOLATIONS}
+    tolerance = elements = estimate = None
     if scene.tolerance is not None:
-        used = np.array([int(r["elements"]) for r in records], dtype=np.int32)
-        ds["elements"] = ("stick_ratio", used, {
-            "units": "1", "long_name": "elements used for this stick ratio",
-            "comment": "planned from the measured convergence, doubled where the "
-                       "a-posteriori estimate missed the tolerance"})
-        ds["error_estimate"] = ("stick_ratio", np.array(
-            [float(r["error_estimate"]) for r in records]), {
-            "units": "1", "long_name": "estimated relative error of friction_coefficient",
-            "comment": "from the same case at n/2 and n/4 (observed order, clipped to [1, 2])"})
-        ds.attrs["tolerance"] = float(scene.tolerance)
-        ds.attrs["elements"] = int(used.max())
-        ds.attrs["tolerance_met"] = int(bool(np.all(ds["error_estimate"].values
-                                                    <= scene.tolerance)))
-    ds.attrs["scene"] = scene.name
-    ds.attrs["scene_config_hash"] = scene.hash
-    ds.attrs["outputs"] = " ".join(scene.outputs)
-    return ds
+        tolerance = scene.tolerance
+        elements = np.array([int(r["elements"]) for r in records], dtype=np.int32)
+        estimate = np.array([float(r["error_estimate"]) for r in records])
+    return scene_to_dataset(sols, outputs=scene.outputs, scene=scene.name,
+                            config_hash=scene.hash, violations=violations, elements=elements,
+                            error_estimate=estimate, tolerance=tolerance)

@@ -21,6 +21,8 @@ from typing import Any
 
 import numpy as np
 
+from .indenter import indenter
+
 __all__ = ["Solution", "format_fields", "short_repr", "history_repr"]
 
 
@@ -89,13 +91,13 @@ def _status(converged: Any, iterations: Any, residual: Any) -> str:
 
 
 def history_repr(res: Any) -> str:
-    """Short ``repr`` of a :class:`contactlib.history.HistoryResult`."""
+    """Short ``repr`` of a :class:`contactlib.history_api.HistoryResult`."""
     path = " -> ".join(f"{v:g}" for v in res.load_path[:8])
     if len(res.load_path) > 8:
         path += f" -> ... ({len(res.load_path)} levels)"
     head = (f"HistoryResult: {res.geometry}, nu = {res.nu:g}, k = {_scalar(res.friction)}, "
             f"n = {res.n}")
-    if res.geometry == "cylinder":
+    if indenter(res.geometry).accepts_layer:
         head += f", a_max/h = {res.slab_ratio:g}"
     steps = int(np.size(res.load_ratio)) - 1
     done = int(np.count_nonzero(np.asarray(res.converged)[1:]))
@@ -200,7 +202,7 @@ class Solution:
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:g}, method = {self.method}, n = {self.n}"
-        if self.geometry == "cylinder":
+        if indenter(self.geometry).accepts_layer:
             head += f", a/h = {self.slab_ratio:g}"
         items: list[tuple[str, Any]] = [
             ("stick_ratio", self.stick_ratio),

@@ -7,7 +7,7 @@ A scene (``config/config.yaml``, under ``scenes:``) is of one of two kinds:
   k; the method and n are then picked from the measured convergence, see
   :mod:`contactlib.accuracy`), the stick ratios to solve and the outputs it
   needs -> a :class:`Scene`;
-* ``history``: an incremental load path (:func:`contactlib.history.history`)
+* ``history``: an incremental load path (:func:`contactlib.history`)
   for one or several friction coefficients -> a :class:`HistoryScene`.
  This module turns one scene's mapping into a :class:`Scene`,
 validated with the library's own rules (the JSON schema of the workflow
@@ -32,10 +32,11 @@ import json
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from . import accuracy, api
+from . import accuracy, validate
 from .geometry import Geometry
+from .indenter import indenter
 from .result import short_repr
-from .stages import OUTPUTS, _paper_m, parts_needed
+from .stages import OUTPUTS, parts_needed
 
 __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_scenes",
            "config_hash"]
@@ -115,7 +116,7 @@ class Scene:
         do (a node at c), so its key carries a digest of the stick ratios.
         """
         key = f"{self.geometry}-nu{self.nu!r}-{self.method}-n{self.n}"
-        if self.geometry == "cylinder":
+        if indenter(self.geometry).accepts_layer:
             key += f"-h{self.slab_ratio!r}"
         if self.method == "default":
             key += "-c" + _ratio_digest(self.solved_ratios)
@@ -186,12 +187,6 @@ class _Problems:
             raise ConfigError(self.lines)
 
 
-def _choice(what: str, value: Any, allowed: tuple[str, ...]) -> str:
-    if not isinstance(value, str) or value not in allowed:
-        raise ValueError(f"{what} must be one of {', '.join(allowed)}, got {value!r}")
-    return value
-
-
 def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     """Validate one scene mapping with the library's rules.
 
@@ -230,45 +225,39 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                                     "list the stick ratios")
     method = raw.get("method", "default")
     # each key on its own first, so that every bad key is named ...
-    ok = [bad.check("geometry", _choice, "geometry", raw.get("geometry"), api.GEOMETRIES)
-          if "geometry" in raw else None,
-          bad.check("method", _choice, "method", method, api.METHODS),
-          bad.check("nu", api._number, "nu", raw.get("nu"), -1.0, 0.5, True)
-          if "nu" in raw else None,
-          bad.check("slab_ratio", api._number, "slab_ratio", raw.get("slab_ratio", 0.0), 0.0)]
+    geometry = bad.check("geometry", validate.geometry, raw.get("geometry")) \
+        if "geometry" in raw else None
+    method = bad.check("method", validate.method, method)
+    nu = bad.check("nu", validate.nu, raw.get("nu")) if "nu" in raw else None
+    slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0))
     outputs = raw.get("outputs", list(OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
-    geom = n = None
-    if all(v is not None for v in ok):  # ... then what depends on several keys
-        try:
-            geom, n, method = api._validate_common(raw["geometry"], raw["nu"], raw.get("n"),
-                                                   method, raw.get("slab_ratio", 0.0))
-        except ValueError as exc:
-            key = str(exc).split(" ", 1)[0]
-            bad.add(key if key in _KEYS else "scene", str(exc))
+    n = None
+    if None not in (geometry, method, nu, slab):  # ... then what depends on several keys
+        slab = bad.check("slab_ratio", validate.slab_ratio, slab, geometry)
+        n = bad.check("n", validate.n, raw.get("n"), method)
     ratios = None
     if n is not None and "stick_ratios" in raw:
-        try:
-            ratios = api._parse_ratios(raw["stick_ratios"], n)
-            if method != "default":
-                for c in ratios:
-                    _paper_m(c, n)
-        except ValueError as exc:
-            bad.add("stick_ratios", str(exc))
+        ratios = bad.check("stick_ratios", validate.stick_ratios, raw["stick_ratios"], n)
+        if ratios is not None and method != "default":
+            for c in ratios:
+                if bad.check("stick_ratios", validate.paper_multiple, c, n,
+                             "stick_ratios") is None:
+                    break
     bad.raise_any()
     if tolerance is not None:
-        method, n = accuracy.plan(geom, ratios, tolerance)
-    return Scene(name=name, geometry=geom.name, nu=geom.nu, method=method, n=n,
-                 stick_ratios=tuple(ratios), slab_ratio=geom.slab_ratio,
+        method, n = accuracy.plan(Geometry(geometry, nu, slab), ratios, tolerance)
+    return Scene(name=name, geometry=geometry, nu=nu, method=method, n=n,
+                 stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
                  tolerance=tolerance)
 
 
 @dataclass(frozen=True, repr=False)
 class HistoryScene:
-    """One validated scene of kind ``history`` (see :func:`contactlib.history.history`).
+    """One validated scene of kind ``history`` (see :func:`contactlib.history`).
 
     Attributes
     ----------
@@ -299,17 +288,13 @@ class HistoryScene:
     kind: str = "history"
 
     def run_spec(self, index: int) -> dict[str, Any]:
-        """Keyword arguments of :func:`contactlib.history.history` for friction ``index``."""
+        """Keyword arguments of :func:`contactlib.history` for friction ``index``."""
         return {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
                 "slab_ratio": self.slab_ratio}
 
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
-    import importlib
-
-    hist = importlib.import_module("contactlib.history")  # the module (the package
-    # attribute ``history`` is the function)
     bad = _Problems(name)
     for key in sorted(str(k) for k in set(raw) - set(_HISTORY_KEYS)):
         bad.add(key, f"unknown key for a history scene (allowed: {', '.join(_HISTORY_KEYS)})")
@@ -323,22 +308,17 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
         if not values:
             bad.add("friction", "must not be empty")
         else:
-            ks = bad.check("friction", lambda: tuple(hist._friction(k) for k in values))
+            ks = bad.check("friction", lambda: tuple(validate.friction(k) for k in values))
             if ks is not None and len(set(ks)) != len(ks):
                 bad.add("friction", f"repeats a value: {values!r}")
-    path = bad.check("load_path", hist._load_path, raw["load_path"]) \
+    path = bad.check("load_path", validate.load_path, raw["load_path"]) \
         if "load_path" in raw else None
-    steps = bad.check("steps", hist._integer, "steps", raw["steps"], 1, hist.MAX_STEPS) \
-        if "steps" in raw else None
-    n = hist.DEFAULT_N if raw.get("n") is None else bad.check(
-        "n", hist._integer, "n", raw["n"], hist.MIN_N, hist.MAX_N)
-    geometry = bad.check("geometry", _choice, "geometry", raw["geometry"], api.GEOMETRIES) \
+    steps = bad.check("steps", validate.steps, raw["steps"]) if "steps" in raw else None
+    n = bad.check("n", validate.history_n, raw.get("n"))
+    geometry = bad.check("geometry", validate.geometry, raw["geometry"]) \
         if "geometry" in raw else None
-    nu = bad.check("nu", api._number, "nu", raw["nu"], -1.0, 0.5, True) \
-        if "nu" in raw else None
-    slab = bad.check("slab_ratio", api._number, "slab_ratio", raw.get("slab_ratio", 0.0), 0.0)
-    if geometry == "sphere" and slab:
-        bad.add("slab_ratio", "applies to the cylinder only")
+    nu = bad.check("nu", validate.nu, raw["nu"]) if "nu" in raw else None
+    slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry)
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,

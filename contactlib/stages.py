@@ -27,16 +27,15 @@ from typing import Any, Callable, Iterator, Sequence
 
 import numpy as np
 
-from . import checks, energy
+from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .elements import Mesh, graded_mesh, uniform_mesh
-from .geometry import Geometry
+from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import Solution
-from .theory import beta_of_nu, uncoupled_friction
 
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases", "check_case",
-           "work_case", "profiles", "to_solution", "pack", "unpack", "decoupled_message"]
+           "work_case", "profiles", "to_solution", "decoupled_message"]
 
 PARTS = ("normal", "shear")
 OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
@@ -50,38 +49,30 @@ def decoupled_message() -> str:
             "and every stick ratio is consistent with any k >= 0")
 
 
-def _decoupled(geometry: Geometry) -> bool:
-    return beta_of_nu(geometry.nu) == 0.0
+def _decoupled(geometry: Contact) -> bool:
+    return geometry.decoupled
 
 
-def parts_needed(geometry: Geometry, stick_ratios: Sequence[float]) -> tuple[str, ...]:
+def parts_needed(geometry: Contact, stick_ratios: Sequence[float]) -> tuple[str, ...]:
     """The influence parts a set of cases needs: no shear when frictionless or nu = 0.5."""
     if _decoupled(geometry) or all(float(c) == 0.0 for c in stick_ratios):
         return ("normal",)
     return PARTS
 
 
-def _solved_ratio(geometry: Geometry, c: float) -> float:
+def _solved_ratio(geometry: Contact, c: float) -> float:
     """The stick ratio actually solved: nu = 0.5 reduces every case to Hertz (c = 0)."""
     return 0.0 if _decoupled(geometry) else float(c)
 
 
-def _paper_m(c: float, n: int) -> int:
-    m = int(round(c * n))
-    if abs(m - c * n) > 1e-9 * n:
-        raise ValueError(f"stick_ratio must be a multiple of 1/n = 1/{n} for the paper method, "
-                         f"got {c!r}")
-    return m
-
-
 # ----------------------------------------------------------------------------- influence
-def influence(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[float],
+def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[float],
               part: str) -> dict[str, np.ndarray]:
     """Collocation operators of one part for a set of cases.
 
     Parameters
     ----------
-    geometry : Geometry
+    geometry : Contact
     method : {"default", "paper", "paper-literal"}
     n : int
         Elements across the half-contact.
@@ -126,7 +117,7 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
 
 
 # ----------------------------------------------------------------------------- solve
-def _discrete(geometry: Geometry, method: str, n: int, c: float, normal, shear,
+def _discrete(geometry: Contact, method: str, n: int, c: float, normal, shear,
               k_guess: float | None = None):
     if method == "default":
         mesh = graded_mesh(n, c)
@@ -134,7 +125,7 @@ def _discrete(geometry: Geometry, method: str, n: int, c: float, normal, shear,
         qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
         ops = None if pw is None else (pw, qw)
         return solve_default(geometry, c, n, ops=ops, k_guess=k_guess)
-    m = _paper_m(c, n)
+    m = validate.paper_multiple(c, n)
     r = uniform_mesh(n, m).nodes
     pr = _lookup(normal, method, c, r)
     sh = _lookup(shear, method, c, r) if m > 0 else None
@@ -143,7 +134,7 @@ def _discrete(geometry: Geometry, method: str, n: int, c: float, normal, shear,
     return solve_paper(geometry, m, n, coulomb=coulomb, ops=ops)
 
 
-def _record(geometry: Geometry, d: DiscreteSolution | PaperSolution, samples: bool) -> Record:
+def _record(geometry: Contact, d: DiscreteSolution | PaperSolution, samples: bool) -> Record:
     nodes, m = d.mesh.nodes, d.mesh.stick_index
     paper = isinstance(d, PaperSolution)
     rec: Record = {
@@ -177,7 +168,7 @@ def _record(geometry: Geometry, d: DiscreteSolution | PaperSolution, samples: bo
     return rec
 
 
-def _rebuild(geometry: Geometry, rec: Record) -> DiscreteSolution | PaperSolution:
+def _rebuild(geometry: Contact, rec: Record) -> DiscreteSolution | PaperSolution:
     mesh = Mesh(np.asarray(rec["nodes"], dtype=float), int(rec["stick_index"]))
     common = dict(k=float(rec["k"]), converged=bool(rec["converged"]),
                   residual_norm=float(rec["residual_norm"]),
@@ -188,7 +179,7 @@ def _rebuild(geometry: Geometry, rec: Record) -> DiscreteSolution | PaperSolutio
                             nodal_u=rec.get("nodal_u"), nodal_du=rec.get("nodal_du"), **common)
 
 
-def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[float], *,
+def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[float], *,
                 normal: dict[str, np.ndarray] | None = None,
                 shear: dict[str, np.ndarray] | None = None, samples: bool = True,
                 tolerance: float | None = None,
@@ -197,7 +188,7 @@ def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[
 
     Parameters
     ----------
-    geometry : Geometry
+    geometry : Contact
     method : {"default", "paper", "paper-literal"}
     n : int
     stick_ratios : sequence of float
@@ -230,7 +221,7 @@ def solve_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[
     return out
 
 
-def iter_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[float], *,
+def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[float], *,
                normal: dict[str, np.ndarray] | None = None,
                shear: dict[str, np.ndarray] | None = None, samples: bool = True,
                tolerance: float | None = None) -> Iterator[Record]:
@@ -246,8 +237,7 @@ def iter_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[f
         guess = _continuation_guess(geometry, solved, known) if method == "default" else None
         d = _discrete(geometry, method, n, solved, normal, shear, guess)
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
-            known.append((solved, d.k / float(uncoupled_friction(geometry.name, geometry.nu,
-                                                                 solved))))
+            known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
         extra = {}
         if tolerance is not None:
             d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance)
@@ -263,7 +253,7 @@ def iter_cases(geometry: Geometry, method: str, n: int, stick_ratios: Sequence[f
         yield rec
 
 
-def _continuation_guess(geometry: Geometry, c: float,
+def _continuation_guess(geometry: Contact, c: float,
                         known: Sequence[tuple[float, float]]) -> float | None:
     """Newton's starting k for c/a from the cases already solved in this sweep.
 
@@ -286,12 +276,12 @@ def _continuation_guess(geometry: Geometry, c: float,
     for i in range(cs.size):
         others = np.delete(cs, i)
         ratio += rs[i] * float(np.prod((c - others) / (cs[i] - others)))
-    k_unc = float(uncoupled_friction(geometry.name, geometry.nu, c))
+    k_unc = float(geometry.uncoupled_friction(c))
     guess = ratio * k_unc
     return guess if np.isfinite(guess) and guess > 0.0 else None
 
 
-def _to_tolerance(geometry: Geometry, method: str, n: int, c: float, d: DiscreteSolution,
+def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteSolution,
                   tolerance: float) -> tuple[DiscreteSolution, Record]:
     """Refine one case until its a-posteriori k error meets the tolerance."""
     from . import accuracy
@@ -317,7 +307,7 @@ def check_case(rec: Record) -> dict[str, Any]:
     return checks.flags(rec["stick_q"], rec["stick_p"], rec["k"], rec["slip_q"], rec["slip_s"])
 
 
-def work_case(geometry: Geometry, rec: Record) -> float:
+def work_case(geometry: Contact, rec: Record) -> float:
     """Frictional work of the loading half-cycle (docs/conventions.md scaling; 0 without slip)."""
     if rec["slip_x"].size == 0:
         return 0.0  # frictionless (k = 0), full adhesion, or nu = 0.5: nothing slips
@@ -325,7 +315,7 @@ def work_case(geometry: Geometry, rec: Record) -> float:
                                   geometry.work_factor, geometry.work_weight_power)
 
 
-def profiles(geometry: Geometry, rec: Record, xi: np.ndarray, *, stresses: bool = True,
+def profiles(geometry: Contact, rec: Record, xi: np.ndarray, *, stresses: bool = True,
              displacements: bool = True) -> dict[str, np.ndarray]:
     """Profiles on ``xi`` in the docs/conventions.md scalings (p/p0, q/p0, u R/a^2).
 
@@ -342,7 +332,7 @@ def profiles(geometry: Geometry, rec: Record, xi: np.ndarray, *, stresses: bool 
     return out
 
 
-def to_solution(geometry: Geometry, method: str, n: int, rec: Record, xi: np.ndarray, *,
+def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndarray, *,
                 flags: dict[str, Any] | None = None, work: float = float("nan"),
                 profile: dict[str, np.ndarray] | None = None,
                 message: str = "") -> Solution:
@@ -351,8 +341,8 @@ def to_solution(geometry: Geometry, method: str, n: int, rec: Record, xi: np.nda
     fl = flags or {}
     msg = "; ".join(x for x in (message, rec["message"]) if x)
     return Solution(
-        geometry=geometry.name, nu=geometry.nu, method=method, n=n,
-        slab_ratio=geometry.slab_ratio, stick_ratio=float(rec["stick_ratio"]),
+        geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,
+        slab_ratio=geometry.body.slab_ratio, stick_ratio=float(rec["stick_ratio"]),
         friction_coefficient=float(rec["k"]), xi=xi,
         pressure=profile.get("pressure"), shear=profile.get("shear"),
         tangential_displacement=profile.get("tangential_displacement"),
@@ -365,26 +355,3 @@ def to_solution(geometry: Geometry, method: str, n: int, rec: Record, xi: np.nda
         extra={"stick_violation": fl.get("stick_violation", float("nan")),
                "slip_violation": fl.get("slip_violation", float("nan")),
                "indentation": float(rec["delta"])})
-
-
-# ----------------------------------------------------------------------------- (de)serialisation
-def pack(records: Sequence[Record]) -> dict[str, np.ndarray]:
-    """Flatten case records into named arrays (``"<i>/<field>"``) for :mod:`contactlib.io`."""
-    out: dict[str, np.ndarray] = {"count": np.array(len(records))}
-    for i, rec in enumerate(records):
-        for key, value in rec.items():
-            out[f"{i}/{key}"] = np.asarray(value)
-    return out
-
-
-def unpack(arrays: dict[str, np.ndarray]) -> list[Record]:
-    """Inverse of :func:`pack` (0-d arrays come back as Python scalars)."""
-    count = int(arrays["count"])
-    records: list[Record] = [{} for _ in range(count)]
-    for name, value in arrays.items():
-        if name == "count":
-            continue
-        i, key = name.split("/", 1)
-        value = np.asarray(value)
-        records[int(i)][key] = value.item() if value.ndim == 0 else value
-    return records

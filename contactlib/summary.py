@@ -1,7 +1,7 @@
 """Key numbers of a set of scene datasets: one row a scene, for the report.
 
 Self-similar scenes (a ``stick_ratio`` sweep) and loading histories (a
-``step`` dimension, :mod:`contactlib.history`) both get a row;
+``step`` dimension, :func:`contactlib.history`) both get a row;
 :func:`key_numbers` gives the full, tidy rows (the CSV) and
 :func:`report_rows` a compact view of them (the HTML table of the report:
 fewer, merged columns, four significant digits).
@@ -23,6 +23,8 @@ from typing import Any, Sequence
 
 import numpy as np
 import xarray as xr
+
+from .indenter import indenter
 
 __all__ = ["key_numbers", "report_rows", "COLUMNS", "REPORT_COLUMNS"]
 
@@ -251,7 +253,7 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
     for row in rows:
         body = f"{row['geometry']}, ν = {_g(row['nu'])}"
         slab = float(row["slab ratio a/h"])
-        if row["geometry"] == "cylinder":
+        if indenter(row["geometry"]).accepts_layer:
             body += f", a/h = {_g(slab)}" if slab > 0 else ", half-plane"
         history = row["method"] == "history"
         p0 = _g(row["frictionless P/P_Hertz"], 5)

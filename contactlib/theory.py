@@ -1,14 +1,19 @@
-"""Closed-form references: Hertz and the uncoupled partial-slip limit.
+"""Closed-form references: Hertz and the uncoupled partial-slip limit, by geometry name.
 
 Units throughout the package: E* = 1, contact radius (half-width) a = 1,
 indenter radius R = 1, so that lengths are r/a, tractions are in E* a/R and
 displacements in a^2/R.
+
+The formulas that depend on the shape live with the indenter
+(:mod:`contactlib.indenter`); the functions here look the indenter up by its
+geometry name, for callers that hold a name (figures, tests).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from scipy import special
+
+from .indenter import indenter
 
 __all__ = ["beta_of_nu", "hertz_p0", "hertz_load", "hertz_pressure",
            "uncoupled_friction", "small_k_work_sphere"]
@@ -21,12 +26,12 @@ def beta_of_nu(nu: float) -> float:
 
 def hertz_p0(geometry: str) -> float:
     """Hertz peak pressure in units E* a / R: 2/pi (sphere), 1/2 (cylinder)."""
-    return 2.0 / np.pi if geometry == "sphere" else 0.5
+    return indenter(geometry).p0
 
 
 def hertz_load(geometry: str) -> float:
     """Hertz load: 4/3 (sphere, E* a^3/R) or pi/4 (cylinder, E* a^2/R per length)."""
-    return 4.0 / 3.0 if geometry == "sphere" else np.pi / 4.0
+    return indenter(geometry).hertz_load
 
 
 def hertz_pressure(xi):
@@ -40,7 +45,9 @@ def uncoupled_friction(geometry: str, nu: float, gamma):
 
     Sphere: k = beta artanh(g) / (g K'(g)); cylinder on a half-plane:
     k = beta K(g) / K'(g), with K the complete elliptic integral of modulus g
-    and K'(g) = K(sqrt(1 - g^2)) (Spence 1973, 1975).
+    and K'(g) = K(sqrt(1 - g^2)) (Spence 1973, 1975); beta of a rigid
+    indenter on a body of Poisson's ratio ``nu``. The formulas are
+    :meth:`contactlib.indenter.Indenter.uncoupled_friction`.
 
     Examples
     --------
@@ -53,14 +60,7 @@ def uncoupled_friction(geometry: str, nu: float, gamma):
     >>> float(uncoupled_friction("sphere", 0.5, 0.5))  # beta = 0: no coupling
     0.0
     """
-    g = np.asarray(gamma, dtype=float)
-    b = beta_of_nu(nu)
-    kp = special.ellipkm1(g**2)  # K(1 - g^2) without losing it as g -> 0
-    if geometry == "sphere":
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = np.where(g > 0, np.arctanh(g) / np.where(g > 0, g, 1.0), 1.0)
-        return b * ratio / kp
-    return b * special.ellipk(g**2) / kp
+    return indenter(geometry).uncoupled_friction(beta_of_nu(nu), gamma)
 
 
 def small_k_work_sphere(nu: float, k: float) -> float:

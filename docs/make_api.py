@@ -23,22 +23,34 @@ OUT = Path(__file__).resolve().parent / "api.md"
 MODULES: list[tuple[str, str, list[str] | None]] = [
     ("contactlib", "The three entry points and the result object, importable from the "
      "package.", ["solve", "sweep", "history", "Solution"]),
-    ("contactlib.api", "Validation, the self-similar solve and sweep, the inverse problem and "
-     "the constants that bound the input.",
+    ("contactlib.validate", "Every input rule and limit, written once; a bad value raises "
+     "``InputError`` naming the argument.", None),
+    ("contactlib.api", "The self-similar solve and sweep, the inverse problem and the "
+     "constants that bound the input (from ``contactlib.validate``).",
      ["stick_ratio_for_friction", "output_grid", "GEOMETRIES", "METHODS", "DEFAULT_N", "MAX_N"]),
-    ("contactlib.history", "The incremental load-path solver and its dataset.",
-     ["HistoryResult", "history_to_dataset", "stack_histories", "load_levels", "DEFAULT_N",
-      "MAX_N", "MAX_STEPS"]),
-    ("contactlib.io", "Datasets, intermediates, tables and figures on disk (the only module "
-     "that writes).", None),
+    ("contactlib.history_api", "The incremental load-path solver (``contactlib.history``) "
+     "and its result.",
+     ["HistoryResult", "load_levels", "DEFAULT_N", "MAX_N", "MAX_STEPS"]),
+    ("contactlib.io", "Datasets and files: every CF convention, the one atomic write, "
+     "intermediates, tables and figures on disk (the only module that writes).", None),
     ("contactlib.theory", "Closed-form references (Hertz, the uncoupled limit, small-k work).",
      None),
+    ("contactlib.model", "The model every solver takes: an indenter pressed into a body.", None),
+    ("contactlib.indenter", "The sphere and the cylinder: shape, element measures, Hertz "
+     "formulas.", None),
+    ("contactlib.body", "The elastic body: half-space, half-plane or slab, and its kernels.",
+     None),
+    ("contactlib.operators", "Influence operators of a model, for every solver.", None),
     ("contactlib.accuracy", "Accuracy targets: plan n for a tolerance on k, estimate the error "
      "afterwards.", None),
     ("contactlib.convergence", "Convergence studies and the speed-accuracy table.", None),
     ("contactlib.summary", "Key numbers of a set of datasets.", None),
-    ("contactlib.figures", "The paper's figures 2-5 and the convergence figure.", None),
-    ("contactlib.history_figures", "Figures of loading histories.", None),
+    ("contactlib.plot", "Every figure, importable from the package (save with "
+     "``io.write_figure(fig, path, style=plot.style_path())``).", None),
+    ("contactlib.plot.base", "The shared base of the figures: style, colours, panels, "
+     "layout (``style_path`` above).",
+     ["style_context", "palette", "MARKERS", "NOT_CONVERGED_GID", "fmt", "k_text", "as_list",
+      "describe", "label_of", "legend_height", "panel_grid", "finish"]),
     ("contactlib.kernels.disc", "Surface displacements of disc loads on a half-space.", None),
     ("contactlib.kernels.strip", "Surface displacements of strip loads on a half-plane or a "
      "slab.", None),
@@ -61,8 +73,9 @@ sol = solve("sphere", 0.3, stick_ratio=0.5)       # one case: sol.friction_coeff
 sols = sweep("cylinder", 0.3, [0.1, 0.5, 0.9], slab_ratio=0.05)
 res = history("sphere", 0.3, 0.2, [0, 1, 0], 200)  # a load-unload cycle
 
-from contactlib.io import to_dataset, write_dataset
+from contactlib.io import history_to_dataset, to_dataset, write_dataset
 write_dataset(to_dataset(sols), "sweep.nc")
+write_dataset(history_to_dataset(res), "cycle.nc")
 ```
 """
 

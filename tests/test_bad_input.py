@@ -139,7 +139,7 @@ def test_cli_sweep_refuses_invalid_stick_ratio_lists(ratios, tmp_path):
 
 
 @pytest.mark.parametrize("argv, name", [
-    (["--n", "5000"], "--n must be an integer >= 2 (at most 4096)"),
+    (["--n", "5000"], "--n must be an integer in [2, 4096]"),
     (["--n", "8"], "n must be at least 16"),
     (["--method", "paper", "--n", "16", "--stick-ratio", "0.3"], "multiple of 1/n"),
     (["--geometry", "sphere", "--slab-ratio", "0.1"], "--slab-ratio"),

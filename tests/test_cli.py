@@ -156,17 +156,17 @@ def test_unexpected_error_status_1(capsys, tmp_path, monkeypatch, debug) -> None
 def test_solve_writes_and_summarizes(capsys, tmp_path, api) -> None:
     out_file = tmp_path / "deep" / "one.nc"
     code, out, err = run(capsys, "solve", "--geometry", "cylinder", "--nu", "0.25",
-                         "--stick-ratio", "1", "--n", "6", "--slab-ratio", "0.5",
+                         "--stick-ratio", "1", "--n", "16", "--slab-ratio", "0.5",
                          "--output", str(out_file))
     assert code == 0 and err == ""
-    for text in ("cylinder", "nu = 0.25", "n = 6", "c/a", "k      = inf", "P/P_H",
+    for text in ("cylinder", "nu = 0.25", "n = 16", "c/a", "k      = inf", "P/P_H",
                  "converged: yes", "message: fake", "wrote"):
         assert text in out, text
     ds = io.read_dataset(out_file)
     assert float(ds["stick_ratio"]) == 1.0 and ds["pressure"].dims == ("xi",)
     assert ds.attrs["slab_ratio"] == 0.5
     assert api.calls[0][1] == dict(geometry="cylinder", nu=0.25, stick_ratio=1.0,
-                                   friction=None, n=6, method="default",
+                                   friction=None, n=16, method="default",
                                    slab_ratio=0.5, energy=True)
 
 
@@ -183,7 +183,9 @@ def test_solve_friction_no_output(capsys, tmp_path, api, monkeypatch) -> None:
 @pytest.mark.parametrize("ratios,expected", [("all", "all"), ("0.1, 0.3,0.5", [0.1, 0.3, 0.5])])
 def test_sweep_writes_table(capsys, tmp_path, api, ratios, expected) -> None:
     out_file = tmp_path / "sweep.nc"
-    code, out, err = run(capsys, "sweep", *GOOD, "--n", "4", "--stick-ratios", ratios,
+    # the paper method: n = 4 is allowed (the default method needs n >= 16)
+    code, out, err = run(capsys, "sweep", *GOOD, "--method", "paper", "--n", "4",
+                         "--stick-ratios", ratios,
                          "--output", str(out_file))
     assert code == 0
     assert err == ""  # stderr is not a TTY here: no progress

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from contactlib import io
 from contactlib.convergence import richardson, study
 
 
@@ -31,11 +32,18 @@ def test_study_rejects_non_doubling_resolutions():
 
 
 def test_default_method_errors_shrink_at_order_two_on_the_cylinder():
-    ds = study("cylinder", 0.3, "default", [16, 32, 64, 128], [0.3, 0.8], slab_ratio=0.05)
-    order = ds["observed_order"].sel(quantity="friction_coefficient").values
+    st = study("cylinder", 0.3, "default", [16, 32, 64, 128], [0.3, 0.8], slab_ratio=0.05)
+    order = st.order_of("friction_coefficient")
     assert np.all((order > 1.7) & (order < 2.7)), order
-    err = ds["error"].sel(quantity="load_ratio").values
+    err = st.error_of("load_ratio")
     assert np.all(np.isfinite(err[:-1]))
+    ds = io.study_to_dataset(st)  # the dataset the workflow writes, and back
+    np.testing.assert_array_equal(ds["observed_order"].sel(quantity="friction_coefficient"),
+                                  order)
+    assert ds["wall_time"].attrs["units"] == "s" and ds.attrs["Conventions"] == "CF-1.10"
+    back = io.study_from_dataset(ds)
+    assert back.ns == st.ns and back.reference_source == st.reference_source
+    np.testing.assert_array_equal(back.error, st.error)
 
 
 def test_trade_table_time_per_digit_follows_from_order_and_cost():

@@ -1,4 +1,4 @@
-"""Tests for contactlib.figures (the paper's figs 2-5) and contactlib.io.write_figure."""
+"""Tests for contactlib.plot.paper (the paper's figs 2-5), the plot base and contactlib.io.write_figure."""
 
 from __future__ import annotations
 
@@ -17,7 +17,8 @@ from matplotlib.layout_engine import ConstrainedLayoutEngine
 from PIL import Image
 
 import contactlib
-from contactlib import figures
+from contactlib import plot
+from contactlib.plot import paper as figures
 from contactlib.io import read_dataset, to_dataset, write_dataset, write_figure
 
 FIGURES = {
@@ -288,7 +289,7 @@ def test_not_converged_cases_are_drawn_and_marked(data):
 
 # ----------------------------------------------------------------------------- style
 def test_style_file_is_bundled_and_self_contained():
-    path = figures.style_path()
+    path = plot.style_path()
     assert path.is_file() and path.suffix == ".mplstyle"
     with matplotlib.style.context(path):
         rc = matplotlib.rcParams
@@ -304,8 +305,9 @@ def test_style_file_is_bundled_and_self_contained():
 def test_write_figure_is_byte_reproducible(data, name, tmp_path):
     fig = FIGURES[name]([data["sphere"], data["cylinder-paper"]])
     for ext in ("png", "pdf", "PNG"):
-        first = write_figure(fig, tmp_path / f"a.{ext}").read_bytes()
-        second = write_figure(fig, tmp_path / "sub" / f"b.{ext}").read_bytes()
+        first = write_figure(fig, tmp_path / f"a.{ext}", style=plot.style_path()).read_bytes()
+        second = write_figure(fig, tmp_path / "sub" / f"b.{ext}",
+                              style=plot.style_path()).read_bytes()
         assert first == second
     pdf = (tmp_path / "a.pdf").read_bytes()
     assert pdf.startswith(b"%PDF")
@@ -322,16 +324,16 @@ def test_write_figure_is_byte_reproducible(data, name, tmp_path):
 _SCRIPT = textwrap.dedent("""
     import sys
     import contactlib
-    from contactlib import figures
+    from contactlib import plot
     from contactlib.io import to_dataset, write_figure
     out = sys.argv[1]
     sphere = to_dataset(contactlib.sweep("sphere", 0.3, [0, 0.1, 0.5, 1], n=16))
     paper = to_dataset(contactlib.sweep("cylinder", 0.3, [0, 0.25, 0.5, 1], n=8,
                                         method="paper"))
     for name in ("fig2_friction", "fig3_tractions", "fig4_displacement", "fig5_work"):
-        fig = getattr(figures, name)([sphere, paper])
+        fig = getattr(plot, name)([sphere, paper])
         for ext in ("png", "pdf"):
-            write_figure(fig, f"{out}/{name}.{ext}")
+            write_figure(fig, f"{out}/{name}.{ext}", style=plot.style_path())
     print("pyplot imported:", "matplotlib.pyplot" in sys.modules)
 """)
 

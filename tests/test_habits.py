@@ -68,7 +68,7 @@ class FakeApi:
 
 
 class FakeHistory:
-    """Stands in for the contactlib.history module: records the call, then stops."""
+    """Stands in for the contactlib.history_api module: records the call, then stops."""
 
     MAX_STEPS, MIN_N, MAX_N = 100_000, 16, 2048
 
@@ -300,7 +300,7 @@ def test_cli_names_the_duplicate(capsys, tmp_path, fake) -> None:
     code, _, err = run(capsys, "sweep", *GOOD, "--stick-ratios", "0.1,0.5,0.50",
                        "--output", str(tmp_path / "s.nc"))
     assert_refused(code, err, "--stick-ratios")
-    assert "'0.50' repeats '0.5'" in err
+    assert "'0.50' at position 2 repeats '0.5' at position 1" in err
 
 
 @pytest.mark.parametrize("kwargs, message", [

@@ -1,4 +1,4 @@
-"""Incremental stick-slip along a load path (contactlib.history).
+"""Incremental stick-slip along a load path (contactlib.history, module contactlib.history_api).
 
 Every check is against an independent truth: Hertz theory, the self-similar
 default method (``contactlib.solve``, a different discretization and
@@ -17,8 +17,8 @@ import pytest
 from contactlib import cli, io, solve
 from contactlib import history_solver as hs
 from contactlib.geometry import Geometry
-from contactlib.history import (DEFAULT_N, HistoryResult, history, history_to_dataset,
-                                load_levels)
+from contactlib.history_api import DEFAULT_N, HistoryResult, history, load_levels
+from contactlib.io import history_to_dataset
 
 P_MAX = {"sphere": 4.0 / 3.0, "cylinder": math.pi / 4.0}  # E* = R = a_max = 1
 P0 = {"sphere": 2.0 / math.pi, "cylinder": 0.5}

@@ -1,4 +1,4 @@
-"""Error estimates and the ``resolved`` flag of the loading history (contactlib.history).
+"""Error estimates and the ``resolved`` flag of the loading history (contactlib.history_api).
 
 The truth is the same history refined fourfold (4n elements, 4 x steps a
 segment): the estimates must cover its difference from the run within a
@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 from contactlib import history_solver as hs
-from contactlib.history import DEFAULT_MAX_ERROR, history, history_to_dataset
+from contactlib.history_api import DEFAULT_MAX_ERROR, history
+from contactlib.io import history_to_dataset
 
 NU = 0.3
 PATHS = {"cycle": (0, 1, 0), "fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5, 1)}

@@ -1,4 +1,4 @@
-"""Tests for contactlib.history_figures (figures of a loading history)."""
+"""Tests for contactlib.plot.history (figures of a loading history)."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ from matplotlib.collections import QuadMesh
 from matplotlib.figure import Figure
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 
-from contactlib import history_figures as hf
-from contactlib.history import history, history_to_dataset, stack_histories
-from contactlib.io import write_figure
+from contactlib import history
+from contactlib.io import history_to_dataset, stack_histories, write_figure
+from contactlib.plot import history as hf
 
 N = 60
 STEPS = 10

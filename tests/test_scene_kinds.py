@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from conftest import dry_run, make_workdir, needs_snakemake, snakemake
-from contactlib.history import history, history_to_dataset, stack_histories
+from contactlib import history
+from contactlib.io import history_to_dataset, stack_histories
 from contactlib.io import read_dataset
 from contactlib.scene import HistoryScene, Scene, parse_scene
 

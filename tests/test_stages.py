@@ -40,8 +40,8 @@ def test_precomputed_influence_gives_the_same_numbers(geometry, nu, slab, method
 def test_records_survive_the_npz_round_trip(tmp_path):
     geom = Geometry("sphere", 0.3)
     recs = stages.solve_cases(geom, "default", 32, [0.0, 0.5, 1.0])
-    path = io.write_arrays(stages.pack(recs), tmp_path / "s.npz")
-    back = stages.unpack(io.read_arrays(path))
+    path = io.write_records(recs, tmp_path / "s.npz")
+    back = io.read_records(path)
     assert len(back) == 3
     for a, b in zip(recs, back):
         assert a.keys() == b.keys()

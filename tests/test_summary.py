@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 import contactlib
-from contactlib.history import history, history_to_dataset, stack_histories
+from contactlib import history
+from contactlib.io import history_to_dataset, stack_histories
 from contactlib.io import to_dataset
 from contactlib.summary import COLUMNS, REPORT_COLUMNS, key_numbers, report_rows
 

@@ -1,7 +1,8 @@
 r"""Plane-strain surface displacements under uniform strip loads.
 
-Two bodies: the elastic half-plane (``h = inf``) and an elastic layer (slab) of
-thickness ``h`` resting on a smooth (frictionless) rigid base. Two loadings,
+Three bodies: the elastic half-plane (``h = inf``) and an elastic layer (slab) of
+thickness ``h`` on a rigid base, smooth (frictionless; the default) or bonded
+(``base="bonded"``, see the last section). Two loadings,
 each on a strip of half-width ``s`` centred at the origin:
 
 ``pressure_strip``
@@ -124,6 +125,47 @@ chunked (16384 points) to stay in cache; for the shear the terms at ``x/h``
 are evaluated once on ``x``'s own shape when ``x`` is broadcast against a
 larger ``s``.
 
+Slab on a bonded rigid base
+---------------------------
+Same layer, with ``u_x = u_z = 0`` at ``z = h``. With ``kappa = 3 - 4 nu`` and
+``N = 2 kappa cosh 2t + 1 + kappa^2 + 4 t^2`` the coefficients of ``w^`` and ``u^``
+above become (``2/|k|`` times, for the direct terms; ``2 i/k`` for the cross term)::
+
+    Cww = (2 kappa sinh 2t - 4t)/N,   Cuu = (2 kappa sinh 2t + 4t)/N,
+    Cwu = [2 kappa (kappa - 1)(cosh 2t - 1) - 8 t^2] / ((kappa + 1) N)
+
+(the same functions as the axisymmetric layer of :mod:`contactlib.kernels.layer`,
+where they are checked against a Love-function solution). Their remainders
+``Rww = Cww - 1``, ``Rwu = Cwu - beta``, ``Ruu = Cuu - 1`` (all ``-> -1, -beta,
+-1`` as ``t -> 0``; ``O(t^2 e^{-2t})`` as ``t -> inf``) define, for the line
+loads::
+
+    A(eta)  = (2/pi) [int_0^inf (Rww cos(t eta) + e^{-2t})/t dt + ln 2]
+    B(eta)  = -(2/pi) int_0^inf Rwu sin(t eta)/t dt
+    C(eta)  = (2/pi) int_0^inf Ruu (cos(t eta) - 1)/t dt
+
+(with the smooth base's ``R`` these are exactly the ``A, B, C`` above), and the
+strip kernels are built from ``A1, B1, C1`` by the same formulas. They depend
+on ``nu``: one table per ``nu`` (``lru_cache``, 8 entries). The bonded layer's
+line-load response is local (its transforms are analytic at ``k = 0``), so far
+from the load (``|eta| -> inf``)::
+
+    A  -> (2/pi) ln eta,          A1 -> (2/pi)(eta ln eta - eta) + a1,  a1 = (1 - 2nu)/(2 (1 - nu)^2)
+    B  -> beta,                   B1 -> beta eta + b1
+    C  -> (2/pi) ln eta + c0,     C1 -> (2/pi)(eta ln eta - eta) + c0 eta + c1,  c1 = 1/(1 - nu)
+
+so that a uniform strip far from its edges gives Winkler's ``w = p h / M``
+(``M = E (1 - nu)/((1 + nu)(1 - 2 nu))``, i.e. ``2 a1 h`` for ``E* = 1``), no
+``u``, and the shear ``u = q h / G`` (``2 c1 h``). The corrections decay like
+``exp(-gamma |eta|)`` with gamma from the complex zeros of ``N``: measured
+~1.2 at nu = 0, ~0.9 at nu = 0.3 and only ~0.74 at nu = 1/2. The tables
+therefore cover ``|eta| <= 48`` (same spacing 0.02, quintic Hermite; quadrature
+panels of 0.25), and ``a1, b1, c0, c1`` are matched to the quadrature at
+``eta = 48`` (``a1`` and ``c1`` agree with their closed forms to the
+quadrature's precision: a test). Beyond, the far-field forms are used, and
+where every argument is beyond, the local closed forms of ``_bonded_far``.
+At ``nu = 1/2`` (``kappa = 1``, ``beta = 0``) nothing is 0/0.
+
 Removable points and limits: ``x = +-s`` (``F(0) = 0``), ``x = 0`` and ``s = 0``
 (all outputs 0) are exact. ``du`` of the pressure strip jumps at ``x = +-s``:
 the value there is the mean of the one-sided limits. ``du`` of the shear strip
@@ -140,7 +182,7 @@ from math import factorial
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["pressure_strip", "shear_strip"]
+__all__ = ["BASES", "pressure_strip", "shear_strip"]
 
 Arr = NDArray[np.float64]
 _TWO_PI = 2.0 / np.pi
@@ -151,6 +193,9 @@ _N_PIECES = 1000  # pieces on each side of eta = 0
 _DELTA = _ETA_MAX / _N_PIECES
 _INV_DELTA = 1.0 / _DELTA
 _T_MAX = 25.0  # transform integrands are O(t^2 exp(-2t)) beyond
+_ETA_MAX_BONDED = 48.0  # bonded base: corrections decay like exp(-0.74 |eta|) at nu = 1/2
+_PANEL_BONDED = 0.25  # finer panels: t * eta up to 25 * 48
+BASES = ("smooth", "bonded")
 _PANEL = 0.5
 _GL_ORDER = 20
 _CHUNK = 16384  # points per chunk (keeps temporaries in cache)
@@ -195,10 +240,10 @@ def _sinh_tail(x: NDArray[np.float64]) -> NDArray[np.float64]:
     return out
 
 
-def _gauss_panels() -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+def _gauss_panels(panel: float = _PANEL) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Composite Gauss-Legendre nodes and weights on 0 < t < _T_MAX."""
     g, w = np.polynomial.legendre.leggauss(_GL_ORDER)
-    edges = np.arange(0.0, _T_MAX + 0.5 * _PANEL, _PANEL)
+    edges = np.arange(0.0, _T_MAX + 0.5 * panel, panel)
     lo, hi = edges[:-1, None], edges[1:, None]
     t = (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel()
     wt = (0.5 * (hi - lo) * w).ravel()
@@ -263,6 +308,80 @@ def _remainder_exact(eta: ArrayLike) -> dict[str, NDArray[np.float64]]:
     return out
 
 
+def _sin_tail(x: NDArray[np.float64]) -> NDArray[np.float64]:
+    """sin(x) - x without cancellation."""
+    out = np.empty_like(x)
+    small = np.abs(x) < 2.0
+    xs = x[small]
+    term = -xs**3 / 6.0
+    acc = term.copy()
+    for n in range(5, 80, 2):
+        term = -term * xs * xs / ((n - 1) * n)
+        acc += term
+    out[small] = acc
+    out[~small] = np.sin(x[~small]) - x[~small]
+    return out
+
+
+def _bonded_transfer(t: NDArray[np.float64], nu: float) -> tuple[NDArray[np.float64], ...]:
+    """Bonded-base remainders (Cww - 1, Cwu - beta, Cuu - 1), written with e = exp(-2t).
+
+    ``N e = kappa (1 + e^2) + (1 + kappa^2 + 4t^2) e``, ``kappa = 3 - 4 nu``; see the
+    module notes.
+    """
+    k = 3.0 - 4.0 * nu
+    e = np.exp(-2.0 * t)
+    ns = k * (1.0 + e * e) + (1.0 + k * k + 4.0 * t * t) * e
+    common = 2.0 * k * e + 1.0 + k * k + 4.0 * t * t
+    return (-e * (common + 4.0 * t) / ns, -e * (k * k - 1.0 + 4.0 * t * t) / ns,
+            -e * (common - 4.0 * t) / ns)
+
+
+def _remainder_exact_bonded(eta: ArrayLike, nu: float) -> dict[str, NDArray[np.float64]]:
+    """Bonded-base remainder functions by quadrature (slow path; tables and tests).
+
+    Parameters
+    ----------
+    eta : array_like
+        Points ``eta = xi/h >= 0``.
+    nu : float
+        Poisson's ratio.
+
+    Returns
+    -------
+    dict
+        ``A, dA, A1, B, dB, B1, C, dC, C1`` of the module notes (bonded base).
+
+    Notes
+    -----
+    ``A`` uses Frullani's ``ln|eta| = ln 2 + int_0^inf (exp(-2t) - cos t eta)/t dt``
+    so that its integrand ``(Rww cos t eta + exp(-2t))/t`` is regular at ``t = 0``
+    (``Rww(0) = -1``); ``1 - cos`` and ``sin x - x`` are formed without cancellation.
+    """
+    t, wt = _gauss_panels(_PANEL_BONDED)
+    rww, rwu, ruu = _bonded_transfer(t, float(nu))
+    e = np.atleast_1d(np.asarray(eta, dtype=float))
+    te = t * e[:, None]
+    cs = np.cos(te)
+    sn = np.sin(te)
+    hs2 = 2.0 * np.sin(0.5 * te) ** 2  # 1 - cos
+    ex = np.exp(-2.0 * t)
+    ln2 = np.log(2.0)
+    out = {}
+    out["A"] = _TWO_PI * (((rww * cs + ex) / t) @ wt + ln2)
+    out["dA"] = -_TWO_PI * (sn @ (wt * rww))
+    # A1: (Rww sin(t eta)/t + eta exp(-2t))/t = Rww (sin - t eta)/t^2 + eta (Rww + exp(-2t))/t
+    out["A1"] = _TWO_PI * (_sin_tail(te) @ (wt * rww / t**2)
+                           + e * (((rww + ex) / t) @ wt) + e * ln2)
+    out["B"] = -_TWO_PI * (sn @ (wt * rwu / t))
+    out["dB"] = -_TWO_PI * (cs @ (wt * rwu))
+    out["B1"] = -_TWO_PI * (hs2 @ (wt * rwu / t**2))
+    out["C"] = -_TWO_PI * (hs2 @ (wt * ruu / t))
+    out["dC"] = -_TWO_PI * (sn @ (wt * ruu))
+    out["C1"] = _TWO_PI * (_sin_tail(te) @ (wt * ruu / t**2))
+    return out
+
+
 def _far_constants() -> tuple[float, float]:
     """(b1, c0) of the far-field forms, by the same quadrature."""
     t, wt = _gauss_panels()
@@ -286,11 +405,20 @@ class _SlabTable:
     shear: tuple[NDArray[np.complex128], ...]
     b1_const: float
     c0_const: float
+    # far-field forms (eta > eta_max): B -> b_inf, B1 -> b_inf eta + b1_const,
+    # A1 -> (2/pi)(eta ln eta - eta) + a1_inf, C -> 2 c_quad eta + (2/pi) ln eta + c0_const,
+    # C1 -> c_quad eta^2 + (2/pi)(eta ln eta - eta) + c0_const eta + c1_inf
+    base: str = "smooth"
+    n_pieces: int = _N_PIECES
+    b_inf: float = 0.5
+    a1_inf: float = 0.5
+    c_quad: float = -0.25
+    c1_inf: float = 1.0 / 3.0
 
 
 def _quintic_hermite(f: NDArray[np.float64], df: NDArray[np.float64],
                      d2f: NDArray[np.float64]) -> list[NDArray[np.float64]]:
-    """Monomial coefficients in u in [0, 1] on each piece from nodal f, f', f''."""
+    """Monomial coefficients in u in [0, 1] on each piece (width _DELTA) from nodal f, f', f''."""
     d = _DELTA
     f0, f1 = f[:-1], f[1:]
     g0, g1 = d * df[:-1], d * df[1:]
@@ -305,22 +433,18 @@ def _quintic_hermite(f: NDArray[np.float64], df: NDArray[np.float64],
     return [c0, c1, c2, c3, c4, c5]
 
 
-@functools.lru_cache(maxsize=1)
-def _slab_table() -> _SlabTable:
-    """Build (once per process) the interpolation tables of A1, B1, C1."""
+@functools.lru_cache(maxsize=8)
+def _slab_table(base: str = "smooth", nu: float | None = None) -> _SlabTable:
+    """Build (once per process and key) the interpolation tables of A1, B1, C1.
+
+    The smooth base's tables depend on nothing (``nu`` ignored: pass None);
+    the bonded base's depend on ``nu``.
+    """
+    if base == "bonded":
+        return _bonded_table(float(nu))
     pos = np.linspace(0.0, _ETA_MAX, _N_PIECES + 1)
     r = _remainder_exact(pos)
-
-    def full(v, odd):  # extend from eta >= 0 to eta <= 0 by parity
-        neg = -v[:0:-1] if odd else v[:0:-1]
-        return np.concatenate([neg, v])
-
-    parity = {"A1": True, "A": False, "dA": True, "B1": False, "B": True, "dB": False,
-              "C1": True, "C": False, "dC": True}
-    r = {k: full(v, parity[k]) for k, v in r.items()}
-    a1 = _quintic_hermite(r["A1"], r["A"], r["dA"])
-    b1 = _quintic_hermite(r["B1"], r["B"], r["dB"])
-    c1 = _quintic_hermite(r["C1"], r["C"], r["dC"])
+    a1, b1, c1 = _full_tables(r)
     b1c, c0c = _far_constants()
     return _SlabTable(
         pres=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(a1, b1)),
@@ -330,20 +454,59 @@ def _slab_table() -> _SlabTable:
     )
 
 
+def _full_tables(r: dict[str, NDArray[np.float64]]) -> tuple[list, list, list]:
+    """Quintic pieces of A1, B1, C1 on -eta_max..eta_max from values at eta >= 0."""
+
+    def full(v, odd):  # extend from eta >= 0 to eta <= 0 by parity
+        neg = -v[:0:-1] if odd else v[:0:-1]
+        return np.concatenate([neg, v])
+
+    parity = {"A1": True, "A": False, "dA": True, "B1": False, "B": True, "dB": False,
+              "C1": True, "C": False, "dC": True}
+    r = {k: full(v, parity[k]) for k, v in r.items()}
+    return (_quintic_hermite(r["A1"], r["A"], r["dA"]),
+            _quintic_hermite(r["B1"], r["B"], r["dB"]),
+            _quintic_hermite(r["C1"], r["C"], r["dC"]))
+
+
+def _bonded_table(nu: float) -> _SlabTable:
+    """Tables of the bonded base on 0 <= |eta| <= _ETA_MAX_BONDED.
+
+    The far-field constants are matched to the quadrature at the last node
+    (exact up to the exponentially small corrections, <= 1e-15 there).
+    """
+    n = int(round(_ETA_MAX_BONDED / _DELTA))
+    pos = np.linspace(0.0, _ETA_MAX_BONDED, n + 1)
+    r = _remainder_exact_bonded(pos, nu)
+    e, le = _ETA_MAX_BONDED, np.log(_ETA_MAX_BONDED)
+    b_inf = _beta(nu)
+    b1c = float(r["B1"][-1] - b_inf * e)
+    a1c = float(r["A1"][-1] - _TWO_PI * (e * le - e))
+    c0c = float(r["C"][-1] - _TWO_PI * le)
+    c1c = float(r["C1"][-1] - _TWO_PI * (e * le - e) - c0c * e)
+    a1, b1, c1 = _full_tables(r)
+    return _SlabTable(
+        pres=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(a1, b1)),
+        shear=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(c1, b1)),
+        b1_const=b1c, c0_const=c0c, base="bonded", n_pieces=n, b_inf=b_inf,
+        a1_inf=a1c, c_quad=0.0, c1_inf=c1c,
+    )
+
+
 def _far_pair(kind: str, eta: NDArray[np.float64], tab: _SlabTable) -> tuple[Arr, Arr, Arr, Arr]:
     """Far-field forms (|eta| > _ETA_MAX): values and derivatives of the packed pair."""
     ae = np.abs(eta)
     sg = np.sign(eta)
     la = np.log(ae)
     xl = ae * la - ae
-    b1 = 0.5 * ae + tab.b1_const
-    b = 0.5 * sg
+    b1 = tab.b_inf * ae + tab.b1_const
+    b = tab.b_inf * sg
     if kind == "pressure":
-        f1 = sg * (_TWO_PI * xl + 0.5)  # A1
+        f1 = sg * (_TWO_PI * xl + tab.a1_inf)  # A1
         f = _TWO_PI * la  # A
     else:
-        f1 = sg * (-0.25 * ae * ae + _TWO_PI * xl + tab.c0_const * ae + 1.0 / 3.0)  # C1
-        f = -0.5 * ae + _TWO_PI * la + tab.c0_const  # C
+        f1 = sg * (tab.c_quad * ae * ae + _TWO_PI * xl + tab.c0_const * ae + tab.c1_inf)  # C1
+        f = 2.0 * tab.c_quad * ae + _TWO_PI * la + tab.c0_const  # C
     return f1, b1, f, b
 
 
@@ -357,12 +520,13 @@ def _pair(kind: str, eta: Arr, tab: _SlabTable) -> tuple[NDArray[np.complex128],
     pressure = kind == "pressure"
     coef = tab.pres if pressure else tab.shear
     comp = 1 if pressure else 0  # component whose derivative is needed
+    pieces = tab.n_pieces
     v = eta * _INV_DELTA
-    v += _N_PIECES
-    vc = np.clip(v, 0.0, 2.0 * _N_PIECES)
+    v += pieces
+    vc = np.clip(v, 0.0, 2.0 * pieces)
     far = vc != v
     idx = vc.astype(np.intp)
-    np.minimum(idx, 2 * _N_PIECES - 1, out=idx)
+    np.minimum(idx, 2 * pieces - 1, out=idx)
     vc -= idx
     u2 = np.empty(2 * vc.size)
     u2[0::2] = vc
@@ -482,7 +646,8 @@ def _slab_shear(x: Arr, s: Arr, h: float, tab: _SlabTable, out_w: Arr, out_u: Ar
     return farp & farm & far0
 
 
-def _layer_far(kind: str, x: Arr, s: Arr, h: float, nu: float) -> tuple[Arr, Arr, Arr]:
+def _layer_far(kind: str, x: Arr, s: Arr, h: float, nu: float,
+               tab: _SlabTable) -> tuple[Arr, Arr, Arr]:
     """Exact slab kernels when every |eta| > _ETA_MAX (up to O(exp(-42))).
 
     The far-field forms of the remainders cancel the half-plane logarithms
@@ -495,8 +660,10 @@ def _layer_far(kind: str, x: Arr, s: Arr, h: float, nu: float) -> tuple[Arr, Arr
                   du = -(2|x| - |x+s| - |x-s|)/(2h),
                   w = k (|x+s| + |x-s| - 2|x|)
     """
-    k = nu / (2.0 * (1.0 - nu))
     xp, xm = x + s, x - s
+    if tab.base == "bonded":
+        return _bonded_far(kind, x, xp, xm, h, tab)
+    k = nu / (2.0 * (1.0 - nu))
     if kind == "pressure":
         jump = np.sign(xp) - np.sign(xm)
         return 0.5 * h * jump, k * (np.abs(xp) - np.abs(xm)), k * jump
@@ -508,8 +675,29 @@ def _layer_far(kind: str, x: Arr, s: Arr, h: float, nu: float) -> tuple[Arr, Arr
     return w, u, du
 
 
+def _bonded_far(kind: str, x: Arr, xp: Arr, xm: Arr, h: float,
+                tab: _SlabTable) -> tuple[Arr, Arr, Arr]:
+    """Bonded base, every |eta| > _ETA_MAX_BONDED: the local (thin-layer) answer.
+
+    The half-plane logarithms and the linear terms cancel analytically::
+
+        pressure: w = a1_inf h (sgn(x+s) - sgn(x-s)),  u = 0,  du = 0
+        shear:    u = c1_inf h (2 sgn x - sgn(x+s) - sgn(x-s)),  du = 0,  w = 0
+
+    with ``a1_inf = (1 - 2nu)/(2 (1 - nu)^2)`` (Winkler: ``w = p h / M``) and
+    ``c1_inf = 1/(1 - nu)`` (simple shear: ``u = q h / G``), both from the tables.
+    """
+    zero = np.zeros_like(x)
+    if kind == "pressure":
+        return tab.a1_inf * h * (np.sign(xp) - np.sign(xm)), zero, zero.copy()
+    u = tab.c1_inf * h * (2.0 * np.sign(x) - np.sign(xp) - np.sign(xm))
+    return zero, u, zero.copy()
+
+
 # --- driver --------------------------------------------------------------------
-def _validate(s: NDArray[np.float64], nu: float, h: float) -> float:
+def _validate(s: NDArray[np.float64], nu: float, h: float, base: str = "smooth") -> float:
+    if base not in BASES:
+        raise ValueError(f"base={base!r} must be one of {BASES}")
     nu = float(nu)
     if not -1.0 < nu <= 0.5:
         raise ValueError(f"Poisson's ratio nu={nu!r} must satisfy -1 < nu <= 0.5")
@@ -521,14 +709,17 @@ def _validate(s: NDArray[np.float64], nu: float, h: float) -> float:
     return h
 
 
-def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float) -> tuple[Arr, Arr, Arr]:
+def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float,
+              base: str = "smooth") -> tuple[Arr, Arr, Arr]:
     """Broadcast, validate and evaluate chunk by chunk."""
     x = np.asarray(x, dtype=float)
     s = np.asarray(s, dtype=float)
-    h = _validate(s, nu, h)
+    h = _validate(s, nu, h, base)
     b = _beta(nu)
     slab = bool(np.isfinite(h))
-    tab = _slab_table() if slab else None
+    tab = None
+    if slab:
+        tab = _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
     hp = _hp_pressure if kind == "pressure" else _hp_shear
     ops: list = [x, s]
     dtypes: list = [np.float64, np.float64]
@@ -562,7 +753,7 @@ def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float) -> tup
                 else:
                     far = _slab_pressure(xc, sc, h, tab, w, u, du)
                 if far.any():
-                    wf, uf, df = _layer_far(kind, xc[far], sc[far], h, float(nu))
+                    wf, uf, df = _layer_far(kind, xc[far], sc[far], h, float(nu), tab)
                     w[far] = wf
                     u[far] = uf
                     du[far] = df
@@ -578,7 +769,7 @@ def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float) -> tup
 
 
 def pressure_strip(
-    x: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf
+    x: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf, base: str = "smooth"
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Surface displacements under a uniform unit pressure on ``|x'| < s``.
 
@@ -593,8 +784,10 @@ def pressure_strip(
     nu : float
         Poisson's ratio, -1 < nu <= 0.5.
     h : float, optional
-        Thickness of the layer on a smooth rigid base, same unit; ``np.inf``
+        Thickness of the layer on a rigid base, same unit; ``np.inf``
         (default) is the half-plane.
+    base : {"smooth", "bonded"}, optional
+        The rigid base: frictionless (default) or bonded.
 
     Returns
     -------
@@ -618,11 +811,11 @@ def pressure_strip(
     >>> [round(float(v), 12) for v in u] == [0.0, round(-2 * 0.2857142857142857, 12)]
     True
     """
-    return _evaluate("pressure", x, s, nu, h)
+    return _evaluate("pressure", x, s, nu, h, base)
 
 
 def shear_strip(
-    x: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf
+    x: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf, base: str = "smooth"
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Surface displacements under an outward unit shear on ``|x'| < s``.
 
@@ -638,7 +831,9 @@ def shear_strip(
     nu : float
         Poisson's ratio, -1 < nu <= 0.5.
     h : float, optional
-        Layer thickness on a smooth rigid base; ``np.inf`` is the half-plane.
+        Layer thickness on a rigid base; ``np.inf`` is the half-plane.
+    base : {"smooth", "bonded"}, optional
+        The rigid base: frictionless (default) or bonded.
 
     Returns
     -------
@@ -659,4 +854,4 @@ def shear_strip(
     >>> abs(float(u) / (2 / 3.141592653589793 * 1e-4) - 1) < 1e-8
     True
     """
-    return _evaluate("shear", x, s, nu, h)
+    return _evaluate("shear", x, s, nu, h, base)

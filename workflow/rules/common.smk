@@ -15,7 +15,7 @@ from contactlib.scene import parse_scene
 SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 VERSION = contactlib.__version__
 PAPER_FIGURES = ("fig2", "fig3", "fig4", "fig5")
-# loading-history figures (scenes of kind history) -> contactlib.history_figures
+# loading-history figures (scenes of kind history) -> contactlib.plot.history
 HISTORY_FIGURES = ("history_stick_radius", "history_stick_map", "history_loop", "history_energy")
 FIGURES = PAPER_FIGURES + HISTORY_FIGURES
 # outputs a figure draws from each of its scenes

@@ -8,11 +8,11 @@ from contactlib import convergence, io  # noqa: E402
 
 st = snakemake.params.study  # noqa: F821
 ref = snakemake.input.get("reference")  # noqa: F821
-ds = convergence.study(
+result = convergence.study(
     st["geometry"], st["nu"], st["method"], st["n"], snakemake.params.stick_ratios,  # noqa: F821
     slab_ratio=st.get("slab_ratio", 0.0),
-    reference=io.read_dataset(ref) if ref else None,
+    reference=io.study_from_dataset(io.read_dataset(ref)) if ref else None,
     progress=lambda text: print(text, flush=True),
 )
-ds.attrs["study"] = snakemake.wildcards.study  # noqa: F821
+ds = io.study_to_dataset(result, name=snakemake.wildcards.study)  # noqa: F821
 io.write_dataset(ds, snakemake.output[0])  # noqa: F821

@@ -4,8 +4,8 @@ import sys
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
-from contactlib import figures, io  # noqa: E402
+from contactlib import io, plot  # noqa: E402
 
-fig = figures.fig_convergence([io.read_dataset(p) for p in snakemake.input])  # noqa: F821
-io.write_figure(fig, snakemake.output.png)  # noqa: F821
-io.write_figure(fig, snakemake.output.pdf)  # noqa: F821
+fig = plot.fig_convergence([io.read_dataset(p) for p in snakemake.input])  # noqa: F821
+io.write_figure(fig, snakemake.output.png, style=plot.style_path())  # noqa: F821
+io.write_figure(fig, snakemake.output.pdf, style=plot.style_path())  # noqa: F821

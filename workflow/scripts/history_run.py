@@ -4,8 +4,7 @@ import sys
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
-from contactlib import io  # noqa: E402
-from contactlib.history import history, history_to_dataset  # noqa: E402
+from contactlib import history, io  # noqa: E402
 
 spec = dict(snakemake.params.run)  # noqa: F821
 scene, config_hash = spec.pop("scene"), spec.pop("hash")
@@ -18,9 +17,7 @@ def progress(i, n):
 
 
 res = history(progress=progress, **spec)
-ds = history_to_dataset(res)
-ds.attrs["scene"] = scene
-ds.attrs["scene_config_hash"] = config_hash
+ds = io.set_provenance(io.history_to_dataset(res), scene, config_hash)
 if res.message:
     print(f"{scene} k = {spec['friction']:g}: {res.message}", flush=True)
 io.write_dataset(ds, snakemake.output[0])  # noqa: F821

@@ -4,7 +4,7 @@ import sys
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
-from contactlib import io, pipeline, stages  # noqa: E402
+from contactlib import io, pipeline  # noqa: E402
 from contactlib.scene import parse_scene  # noqa: E402
 
 name = snakemake.params.scene["name"]  # noqa: F821
@@ -20,4 +20,4 @@ records = pipeline.solve(scene, parts.get("normal"), parts.get("shear"), progres
 failed = [r["stick_ratio"] for r in records if not r["converged"]]
 if failed:
     print(f"{scene.name}: not converged (kept, flagged): {failed}", flush=True)
-io.write_arrays(stages.pack(records), snakemake.output[0])  # noqa: F821
+io.write_records(records, snakemake.output[0])  # noqa: F821

@@ -50,11 +50,13 @@ spanning few elements (c/a close to 1, large k) also needs a finer mesh, and
 elements.
 
 The numerics live in :mod:`contactlib.history_solver`; writing a dataset is
-``contactlib.io.write_dataset(history_to_dataset(result), path)``.
+``contactlib.io.write_dataset(contactlib.io.history_to_dataset(result), path)``.
+This module is ``contactlib.history_api`` so that the package's public
+function ``contactlib.history`` does not hide it.
 
 Examples
 --------
->>> from contactlib.history import history
+>>> from contactlib import history
 >>> res = history("sphere", 0.3, 0.15, [0, 1, 0], 10, n=60)
 >>> bool(res.converged.all()), float(res.load_ratio[10]), float(res.pressure[-1].max())
 (True, 1.0, 0.0)
@@ -64,25 +66,24 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from numbers import Integral, Real
-from typing import Any, Callable, Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 
 from . import history_solver as hs
-from .api import GEOMETRIES, _number
-from .geometry import Geometry
+from . import validate
+from .model import contact
 from .result import history_repr
 
-__all__ = ["history", "history_to_dataset", "stack_histories", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS",
-           "DEFAULT_MAX_ERROR", "load_levels"]
+__all__ = ["history", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
+           "load_levels"]
 
-DEFAULT_N = 240  # elements over [0, 1.2 a_max]: element size a_max / 200
-MIN_N = 16
-MAX_N = 2048
-MAX_STEPS = 100_000  # steps a segment (about 3 min a segment at the default n)
+DEFAULT_N = validate.HISTORY_DEFAULT_N  # elements over [0, 1.2 a_max]: size a_max / 200
+MIN_N = validate.HISTORY_MIN_N
+MAX_N = validate.HISTORY_MAX_N
+MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
-DEFAULT_MAX_ERROR = 1e-3
+DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
 
 
 @dataclass(repr=False)
@@ -131,7 +132,7 @@ class HistoryResult:
 
     Examples
     --------
-    >>> from contactlib.history import history
+    >>> from contactlib import history
     >>> res = history("cylinder", 0.3, 0.2, [0, 1], 4, n=40)
     >>> res.pressure.shape, res.state.shape    # (steps + 1, n)
     ((5, 40), (5, 40))
@@ -178,43 +179,6 @@ class HistoryResult:
     def segment_end(self, segment: int) -> int:
         """Step index at the end of path segment ``segment`` (1-based)."""
         return int(segment * self.steps)
-
-
-# ----------------------------------------------------------------------------- validation
-def _integer(name: str, value, lo: int, hi: int | None = None) -> int:
-    if isinstance(value, bool) or not isinstance(value, (Integral, Real)):
-        raise ValueError(f"{name} must be an integer, got {value!r}")
-    if not isinstance(value, Integral):
-        if not (math.isfinite(float(value)) and float(value).is_integer()):
-            raise ValueError(f"{name} must be an integer, got {value!r}")
-    v = int(value)
-    if v < lo or (hi is not None and v > hi):
-        rng = f">= {lo}" if hi is None else f"in [{lo}, {hi}]"
-        raise ValueError(f"{name} must be an integer {rng}, got {value!r}")
-    return v
-
-
-def _load_path(load_path) -> tuple[float, ...]:
-    if isinstance(load_path, (str, bytes)) or not hasattr(load_path, "__iter__"):
-        raise ValueError(f"load_path must be a sequence of load levels in [0, 1], "
-                         f"got {load_path!r}")
-    values = list(load_path)
-    if not values:
-        raise ValueError("load_path must not be empty")
-    levels = tuple(_number("load_path", v, 0.0, 1.0) for v in values)
-    if len(levels) < 2:
-        raise ValueError(f"load_path needs at least two levels (a start and an end), "
-                         f"got {values!r}")
-    if levels[0] != 0.0:
-        raise ValueError(f"load_path must start at 0 (the body starts unloaded), "
-                         f"got {values[0]!r}")
-    return levels
-
-
-def _friction(friction) -> float:
-    if isinstance(friction, Real) and not isinstance(friction, bool) and friction == math.inf:
-        return math.inf
-    return _number("friction", friction, 0.0, None)
 
 
 def load_levels(load_path: Sequence[float], steps: int) -> tuple[np.ndarray, np.ndarray]:
@@ -277,25 +241,6 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     ValueError
         For invalid input; the message names the argument.
 
-    Examples
-    --------
-    A load-unload cycle, 10 steps a segment:
-
-    >>> from contactlib import history
-    >>> res = history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=60)
-    >>> res.load_ratio.shape      # step 0 (unloaded), then 2 x 10 steps
-    (21,)
-    >>> float(res.load_ratio[10]), float(res.load_ratio[-1])
-    (1.0, 0.0)
-    >>> bool(res.frictional_work[-1] > res.frictional_work[10] > 0)  # unloading slips too
-    True
-
-    Without friction, or without slip, nothing is dissipated:
-
-    >>> [float(history("sphere", 0.3, k, [0, 1], 5, n=60).frictional_work[-1])
-    ...  for k in (0.0, float("inf"))]
-    [0.0, 0.0]
-
     Notes
     -----
     Error estimates: the same path is followed on a mesh of ``n // 2``
@@ -320,35 +265,48 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     50 ... 800 steps. The work of a 0 -> 1 -> 0 cycle at the default n and
     1600 steps a segment agrees with n = 480 to 0.1 % (c/a = 0.7 at the top)
     and 0.5 % (c/a = 0.9); see ``benchmarks/report_history.py``.
-    """
-    if geometry not in GEOMETRIES:
-        raise ValueError(f"geometry must be one of {', '.join(GEOMETRIES)}, got {geometry!r}")
-    nu = _number("nu", nu, -1.0, 0.5, lo_open=True)
-    k = _friction(friction)
-    levels_in = _load_path(load_path)
-    steps = _integer("steps", steps, 1, MAX_STEPS)
-    n = DEFAULT_N if n is None else _integer("n", n, MIN_N, MAX_N)
-    slab = _number("slab_ratio", slab_ratio, 0.0, None)
-    if geometry == "sphere" and slab != 0.0:
-        raise ValueError(f"slab_ratio applies to the cylinder only, got {slab_ratio!r} "
-                         f"for a sphere")
-    if progress is not None and not callable(progress):
-        raise ValueError(f"progress must be callable, got {progress!r}")
-    max_error = _number("max_error", max_error, 0.0, 1.0, lo_open=True, hi_open=True)
-    if not isinstance(error_estimate, (bool, np.bool_)):
-        raise ValueError(f"error_estimate must be True or False, got {error_estimate!r}")
 
-    geom = Geometry(geometry, nu, slab)
-    ops = hs.build_operators(geom, n)
+    Examples
+    --------
+    A load-unload cycle, 10 steps a segment:
+
+    >>> from contactlib import history
+    >>> res = history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=60)
+    >>> res.load_ratio.shape      # step 0 (unloaded), then 2 x 10 steps
+    (21,)
+    >>> float(res.load_ratio[10]), float(res.load_ratio[-1])
+    (1.0, 0.0)
+    >>> bool(res.frictional_work[-1] > res.frictional_work[10] > 0)  # unloading slips too
+    True
+
+    Without friction, or without slip, nothing is dissipated:
+
+    >>> [float(history("sphere", 0.3, k, [0, 1], 5, n=60).frictional_work[-1])
+    ...  for k in (0.0, float("inf"))]
+    [0.0, 0.0]
+    """
+    geometry = validate.geometry(geometry)
+    nu = validate.nu(nu)
+    k = validate.friction(friction)
+    levels_in = validate.load_path(load_path)
+    steps = validate.steps(steps)
+    n = validate.history_n(n)
+    slab = validate.slab_ratio(slab_ratio, geometry)
+    progress = validate.callback("progress", progress)
+    max_error = validate.max_error(max_error)
+    error_estimate = validate.flag("error_estimate", error_estimate)
+
+    model = contact(geometry, nu, slab)
+    ops = hs.build_operators(model, n)
     levels, segment = load_levels(levels_in, steps)
-    raw = hs.run_history(ops, geometry, k, levels, progress=progress)
+    raw = hs.run_history(ops, k, levels, progress=progress)
     err_c = np.full(levels.size, np.nan)
     err_w = np.full(levels.size, np.nan)
     if error_estimate:
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
         levels_c, segment_c = load_levels(levels_in, steps_c)
-        raw_c = hs.run_history(hs.build_operators(geom, n_c), geometry, k, levels_c)
+        raw_c = hs.run_history(hs.build_operators(model, n_c), k, levels_c)
         err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c)
     annulus = hs.annulus_resolved(k, raw.state)
     with np.errstate(invalid="ignore"):
@@ -397,186 +355,3 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         iterations=raw.iterations, residual_norm=raw.residual, message="; ".join(notes),
         stick_radius_error_estimate=err_c, work_error_estimate=err_w, resolved=resolved,
         max_error=max_error)
-
-
-# ----------------------------------------------------------------------------- dataset
-def _attrs(long_name: str, units: str = "1", comment: str = "", **extra: Any) -> dict:
-    out: dict[str, Any] = {"units": units, "long_name": long_name}
-    if comment:
-        out["comment"] = comment
-    out.update(extra)
-    return out
-
-
-def history_to_dataset(result: HistoryResult):
-    """CF-annotated :class:`xarray.Dataset` of a history (dimensions ``step``, ``xi``).
-
-    Every variable has ``units`` (``"1"``: all dimensionless) and
-    ``long_name``; the element state is int8 with ``flag_values`` and
-    ``flag_meanings``; ``xi`` has CF ``bounds``. Global attributes: geometry,
-    poisson_ratio, elements, friction_coefficient, load_path, steps,
-    slab_ratio (cylinder), mesh_extent, contactlib_version, Conventions.
-    Write it with :func:`contactlib.io.write_dataset`.
-
-    Examples
-    --------
-    >>> from contactlib.history import history, history_to_dataset
-    >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1], 5, n=40))
-    >>> ds.sizes["step"], ds.sizes["xi"]
-    (6, 40)
-    >>> ds["load_ratio"].attrs["units"], ds.attrs["geometry"]
-    ('1', 'sphere')
-    """
-    import xarray as xr
-
-    import contactlib
-
-    from .io import CONVENTIONS
-
-    r = result
-    sphere = r.geometry == "sphere"
-    axis = "r" if sphere else "x"
-    work_scale = ("V R**2 / (E* a_max**5)" if sphere else
-                  "V R**2 / (E* a_max**4), V per unit length over both sides of the axis")
-    sd, ed = ("step",), ("step", "xi")
-    coords = {
-        "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),
-                 _attrs("load step", comment="0: unloaded initial state")),
-        "xi": ("xi", r.xi, _attrs(f"element midpoint over a_max ({axis}/a_max)",
-                                  comment="collocation points; a_max = frictionless "
-                                          "contact radius at load level 1",
-                                  bounds="xi_bounds")),
-    }
-    bool_flags = {"flag_values": np.array([0, 1], dtype=np.int8),
-                  "flag_meanings": "false true"}
-    data = {
-        "xi_bounds": (("xi", "nv"), r.xi_bounds, _attrs(f"element edges over a_max")),
-        "segment": (sd, r.segment.astype(np.int32),
-                    _attrs("load path segment", comment="1-based; 0 for the initial state")),
-        "load_ratio": (sd, r.load_ratio, _attrs("normal load over maximum load (P/P_max)")),
-        "contact_radius": (sd, r.contact_radius, _attrs(
-            "contact radius over a_max (a/a_max)",
-            comment="sub-element estimate from the gap outside the contact")),
-        "stick_ratio": (sd, r.stick_ratio, _attrs(
-            "central stick zone radius over contact radius (c/a)",
-            comment="run of stuck elements from the axis, edge refined from the traction "
-                    "deficit; NaN without contact")),
-        "indentation": (sd, r.indentation, _attrs(
-            "indentation (delta R / a_max**2)",
-            comment="half-plane: relative to the Flamant reference length a_max")),
-        "frictional_work": (sd, r.frictional_work, _attrs(
-            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time")),
-        "state": (ed, r.state.astype(np.int8), _attrs(
-            "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
-            flag_meanings=hs.STATE_MEANINGS,
-            comment="slip_inward: the body slips toward the axis (shear = +k p)")),
-        "pressure": (ed, r.pressure, _attrs(
-            "contact pressure over Hertz peak pressure at a_max",
-            comment="p / p0(a_max); positive in compression")),
-        "shear": (ed, r.shear, _attrs(
-            "shear traction over Hertz peak pressure at a_max",
-            comment="q / p0(a_max), traction on the elastic body, positive away from the axis")),
-        "tangential_displacement": (ed, r.tangential_displacement, _attrs(
-            "tangential surface displacement (u R / a_max**2)",
-            comment="positive away from the axis")),
-        "converged": (sd, r.converged.astype(bool), _attrs(
-            "step converged", comment="solver status; failed steps are kept", **bool_flags)),
-        "iterations": (sd, r.iterations.astype(np.int32), _attrs("active-set iterations")),
-        "residual_norm": (sd, r.residual_norm, _attrs(
-            "largest scaled violation of the contact and friction conditions")),
-    }
-    if r.resolved is not None:
-        coarse = ("from the same path on about half the elements with half the steps a "
-                  "segment, interpolated by path coordinate; NaN: not estimated")
-        data["stick_radius_error_estimate"] = (sd, r.stick_radius_error_estimate, _attrs(
-            "estimated absolute error of the central stick zone radius over a_max (dc/a_max)",
-            comment=coarse + "; at least half an element where the stick edge is an element "
-                             "edge; 0 without contact; the error of stick_ratio is this over "
-                             "contact_radius"))
-        data["work_error_estimate"] = (sd, r.work_error_estimate, _attrs(
-            "estimated relative error of the cumulative frictional work",
-            comment=coarse + "; 0 while no work is done"))
-        data["resolved"] = (sd, r.resolved.astype(bool), _attrs(
-            "step resolved to max_error",
-            comment=f"converged, slip zone absent or over at least {_MIN_SLIP_ELEMENTS} "
-                    f"elements, and both error estimates within the max_error attribute",
-            **bool_flags))
-    attrs: dict[str, Any] = {
-        "title": f"contactlib loading history ({r.geometry})",
-        "geometry": r.geometry,
-        "poisson_ratio": float(r.nu),
-        "elements": int(r.n),
-        "friction_coefficient": float(r.friction),
-        "load_path": np.asarray(r.load_path, dtype=float),
-        "steps": int(r.steps),
-    }
-    if not sphere:
-        attrs["slab_ratio"] = float(r.slab_ratio)
-    attrs["mesh_extent"] = float(hs.MESH_EXTENT)
-    if r.resolved is not None:
-        attrs["max_error"] = float(r.max_error)
-    attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
-    if r.message:
-        attrs["message"] = r.message
-    attrs["contactlib_version"] = str(contactlib.__version__)
-    attrs["Conventions"] = CONVENTIONS
-    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
-
-
-def stack_histories(datasets: Sequence[Any]):
-    """Histories that differ only in k, stacked along a ``friction_coefficient`` dimension.
-
-    Parameters
-    ----------
-    datasets : sequence of xarray.Dataset
-        From :func:`history_to_dataset`, same geometry, nu, load path, steps,
-        n and slab ratio, distinct friction coefficients.
-
-    Returns
-    -------
-    xarray.Dataset
-        Every variable gains a leading ``friction_coefficient`` dimension
-        (coordinate: k, increasing); the ``friction_coefficient`` attribute
-        is dropped, ``message`` joins the members' notes.
-
-    Raises
-    ------
-    ValueError
-        When the histories differ in anything but k, or repeat a k.
-    """
-    import xarray as xr
-
-    items = list(datasets)
-    if not items:
-        raise ValueError("stack_histories needs at least one history dataset")
-    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
-    first = items[0].attrs
-    for ds in items[1:]:
-        for key in same:
-            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
-                                                   np.asarray(first[key])):
-                raise ValueError(f"histories to stack must share {key}: "
-                                 f"{first[key]!r} vs {ds.attrs.get(key)!r}")
-        if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):
-            raise ValueError("histories to stack must share the load path")
-    ks = np.array([float(ds.attrs["friction_coefficient"]) for ds in items])
-    if np.unique(ks).size != ks.size:
-        raise ValueError(f"histories to stack repeat a friction coefficient: {ks.tolist()}")
-    order = np.argsort(ks)
-    members = []
-    for i in order:
-        ds = items[i].copy()
-        ds.attrs = {k: v for k, v in ds.attrs.items()
-                    if k not in ("friction_coefficient", "message")}
-        members.append(ds)
-    shared = ("xi_bounds", "segment", "load_ratio")  # the path and the mesh: no k in them
-    varying = [v for v in members[0].data_vars if v not in shared]
-    out = xr.concat(members, dim="friction_coefficient", data_vars=varying, coords="minimal",
-                    compat="equals", combine_attrs="override")
-    out = out.assign_coords(friction_coefficient=ks[order])
-    out["friction_coefficient"].attrs = _attrs("Coulomb friction coefficient k")
-    notes = [f"k = {ks[i]:g}: {items[i].attrs['message']}" for i in order
-             if items[i].attrs.get("message")]
-    if notes:
-        out.attrs["message"] = "; ".join(notes)
-    return out

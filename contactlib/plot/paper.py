@@ -4,14 +4,15 @@ Every function takes one :class:`xarray.Dataset` or a sequence of them, as
 produced by :func:`contactlib.io.to_dataset` or read back by
 :func:`contactlib.io.read_dataset` (variables and scalings of docs/conventions.md
 section 2), and returns a new :class:`matplotlib.figure.Figure`. Nothing here
-touches the disk except reading the style file that ships with the package;
-save with :func:`contactlib.io.write_figure`.
+touches the disk; save with ``contactlib.io.write_figure(fig, path,
+style=style_path())``.
 
-Figures are built with :class:`matplotlib.figure.Figure` directly, never with
-:mod:`matplotlib.pyplot`, so no backend is selected or needed (saving uses Agg
-for PNG and the PDF backend for PDF) and no global figure registry holds on to
-them. Each function draws inside ``matplotlib.style.context(style_path())``;
-the caller's ``rcParams`` are left as they were.
+Style, colours, panels and the frozen layout come from
+:mod:`contactlib.plot.base`: figures are built with
+:class:`matplotlib.figure.Figure` directly, never with :mod:`matplotlib.pyplot`,
+so no backend is selected or needed (saving uses Agg for PNG and the PDF
+backend for PDF), and each function draws inside the contactlib style; the
+caller's ``rcParams`` are left as they were.
 
 Conventions common to all figures:
 
@@ -30,7 +31,7 @@ Examples
 --------
 >>> import contactlib
 >>> from contactlib.io import to_dataset
->>> from contactlib.figures import fig2_friction
+>>> from contactlib.plot import fig2_friction
 >>> ds = to_dataset(contactlib.sweep("sphere", 0.3, [0, 0.1, 0.5, 1], n=32))
 >>> fig = fig2_friction(ds)
 >>> [ax.get_title() for ax in fig.axes if ax.get_title()]
@@ -40,14 +41,11 @@ Examples
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
+from collections.abc import Sequence
 from dataclasses import dataclass
 from numbers import Real
-from pathlib import Path
 
 import matplotlib
-import matplotlib.style
 import numpy as np
 import xarray as xr
 from matplotlib.axes import Axes
@@ -55,71 +53,48 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
+from contactlib.plot.base import (
+    MARKERS,
+    NOT_CONVERGED_GID,
+    as_list,
+    describe,
+    finish,
+    fmt,
+    k_text,
+    label_of,
+    legend_height,
+    palette,
+    panel_grid,
+    style_context,
+)
+from contactlib.indenter import indenter
 from contactlib.theory import hertz_pressure, uncoupled_friction
+from contactlib.validate import GEOMETRIES
 
 __all__ = [
-    "style_path",
     "fig2_friction",
     "fig3_tractions",
     "fig4_displacement",
     "fig5_work",
 ]
 
-STYLE_FILE = "contactlib.mplstyle"
 DEFAULT_STICK_RATIOS: tuple[float, ...] = (0.1, 0.3, 0.5, 0.7, 0.9)
 # fig 3 compares the paper's scheme with ours at the same c/a: values m/16 (the
 # paper's) that the default scenes also hold
 FIG3_STICK_RATIOS: tuple[float, ...] = (1 / 16, 4 / 16, 8 / 16, 12 / 16)
 PAPER_SMALLEST_STICK_RATIO = 1.0 / 16.0
 
-_GEOMETRIES = ("sphere", "cylinder")
+_GEOMETRIES = GEOMETRIES
 _TITLES = {
     "sphere": "sphere on an elastic half-space",
     "cylinder": "cylinder on an elastic slab (plane strain)",
 }
-_AXIS = {"sphere": "r/a", "cylinder": "x/a"}
 _WORK_LABEL = {
     "sphere": r"frictional work $V R^2/(E^* a^5)$",
     "cylinder": r"frictional work $V R^2/(E^* a^4)$ per unit length",
 }
-_MARKERS = ("o", "s", "D", "h", "p", "8")
 _DASHES = ((5.0, 2.5), (1.5, 1.5), (6.0, 2.0, 1.5, 2.0), (3.0, 1.0))
-_NOT_CONVERGED_GID = "not-converged"
 _REF_COLOR = "0.3"
-
-
-# ----------------------------------------------------------------------------- style
-def style_path() -> Path:
-    """Return the path of the style file bundled with contactlib.
-
-    Returns
-    -------
-    pathlib.Path
-        ``contactlib/contactlib.mplstyle``: DejaVu Sans (ships with
-        matplotlib), figure size 7 x 3.2 in, 150 dpi when saved, TrueType
-        (type 42) fonts in PDF, fixed SVG hash salt.
-
-    Raises
-    ------
-    FileNotFoundError
-        If the package was installed without its data file.
-
-    Examples
-    --------
-    >>> from contactlib.figures import style_path
-    >>> style_path().name
-    'contactlib.mplstyle'
-    """
-    path = Path(__file__).resolve().with_name(STYLE_FILE)
-    if not path.is_file():
-        raise FileNotFoundError(f"contactlib style file is missing: {path}")
-    return path
-
-
-@contextmanager
-def _style() -> Iterator[None]:
-    with matplotlib.style.context(style_path()):
-        yield
 
 
 # ----------------------------------------------------------------------------- datasets
@@ -152,40 +127,11 @@ class _Case:
         return np.asarray(self.ds[name].values).astype(bool)
 
 
-def _fmt(x: float) -> str:
-    """Short number for labels (three significant digits)."""
-    return f"{x:.3g}"
-
-
-def _describe(ds: xr.Dataset) -> str:
-    attrs = ds.attrs
-    parts = [str(attrs.get("method", "?"))]
-    if "elements" in attrs:
-        parts.append(f"n = {int(attrs['elements'])}")
-    if "poisson_ratio" in attrs:
-        parts.append(f"ν = {_fmt(float(attrs['poisson_ratio']))}")
-    if attrs.get("geometry") == "cylinder":
-        parts.append(f"a/h = {_fmt(float(attrs.get('slab_ratio', 0.0)))}")
-    return ", ".join(parts)
-
-
-def _as_list(datasets: xr.Dataset | Sequence[xr.Dataset]) -> list[xr.Dataset]:
-    items = [datasets] if isinstance(datasets, xr.Dataset) else list(datasets)
-    if not items:
-        raise ValueError("datasets must contain at least one xarray.Dataset")
-    for i, ds in enumerate(items):
-        if not isinstance(ds, xr.Dataset):
-            raise TypeError(f"datasets[{i}] is not an xarray.Dataset: {type(ds).__name__}")
-    return items
-
-
 def _prepare(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
-             *, sphere_required: Sequence[str] = (), profiles: bool = False) -> _Case:
+             *, profiles: bool = False) -> _Case:
     """Validate one dataset for ``figure`` and return it as a :class:`_Case`."""
-    description = _describe(ds)
-    scene = ds.attrs.get("scene")
-    label = str(scene) if scene not in (None, "") else description
-    where = f"dataset {index} ({label!r})"
+    description = describe(ds, "method")
+    label, where = label_of(ds, index, description)
     geometry = ds.attrs.get("geometry")
     if geometry not in _GEOMETRIES:
         raise ValueError(
@@ -194,7 +140,7 @@ def _prepare(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
         )
     if "poisson_ratio" not in ds.attrs:
         raise ValueError(f"{figure}: {where} lacks the attribute 'poisson_ratio'")
-    needed = list(required) + (list(sphere_required) if geometry == "sphere" else [])
+    needed = list(required)
     if profiles:
         needed.append("xi")
     if "stick_ratio" not in ds.coords and "stick_ratio" not in ds.dims:
@@ -224,7 +170,7 @@ def _prepare(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
 def _cases(datasets: xr.Dataset | Sequence[xr.Dataset], figure: str,
            required: Sequence[str], **kw: object) -> list[_Case]:
     return [_prepare(ds, i, figure, required, **kw)  # type: ignore[arg-type]
-            for i, ds in enumerate(_as_list(datasets))]
+            for i, ds in enumerate(as_list(datasets))]
 
 
 def _ratios(stick_ratios: Sequence[float], figure: str) -> list[float]:
@@ -256,21 +202,11 @@ def _nearest(stick: np.ndarray, requested: Sequence[float], allowed: np.ndarray)
 
 
 # ----------------------------------------------------------------------------- drawing helpers
-def _colors() -> list[str]:
-    return list(matplotlib.rcParams["axes.prop_cycle"].by_key()["color"])
 
 
 def _ratio_color(c: float) -> tuple[float, float, float, float]:
     """Colour of a stick ratio on profile plots (viridis, yellow end left out)."""
     return matplotlib.colormaps["viridis"](0.02 + 0.86 * float(np.clip(c, 0.0, 1.0)))
-
-
-def _k_text(k: float) -> str:
-    if math.isinf(k):
-        return "∞" if k > 0 else "−∞"
-    if math.isnan(k):
-        return "NaN"
-    return f"{k:.3g}"
 
 
 def _status(converged: bool, consistent: bool | None) -> str:
@@ -305,7 +241,7 @@ def _draw_not_converged(ax: Axes, x: np.ndarray, y: np.ndarray) -> None:
     """Black crosses over failed cases (gid ``not-converged``)."""
     if x.size:
         ax.plot(x, y, ls="none", marker="x", ms=7, mew=1.3, color="black", zorder=5,
-                clip_on=False, gid=_NOT_CONVERGED_GID)
+                clip_on=False, gid=NOT_CONVERGED_GID)
 
 
 def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
@@ -323,42 +259,6 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
     return runs
 
 
-_LEGEND_LINE_IN = 0.12  # height of one legend entry at the style's legend font, inches
-_LEGEND_PAD_IN = 0.12
-
-
-def _legend_height(entries: int) -> float:
-    return _LEGEND_PAD_IN + _LEGEND_LINE_IN * max(entries, 1)
-
-
-def _panel_grid(ncol: int, rows_in: Sequence[float], legend_entries: int,
-                width: float | None = None) -> tuple[Figure, np.ndarray, list[Axes]]:
-    """Figure with ``len(rows_in)`` rows of plot panels and a legend row below.
-
-    ``rows_in`` are the plot row heights in inches; the legend row is sized
-    for ``legend_entries`` single-column entries. Plot panels share x within
-    a column. Returns the figure, the plot axes (rows x columns) and one
-    axis-free legend holder per column.
-    """
-    legend_in = _legend_height(legend_entries)
-    height = sum(rows_in) + legend_in + 0.35 * len(rows_in) + 0.35
-    if width is None:
-        width = max(4.2, 0.7 + 3.2 * ncol)
-    fig = Figure(figsize=(width, height), layout="constrained")
-    grid = fig.add_gridspec(len(rows_in) + 1, ncol, height_ratios=[*rows_in, legend_in])
-    axes = np.empty((len(rows_in), ncol), dtype=object)
-    holders: list[Axes] = []
-    for j in range(ncol):
-        for i in range(len(rows_in)):
-            axes[i, j] = fig.add_subplot(grid[i, j], sharex=axes[0, j] if i else None)
-            if i < len(rows_in) - 1:
-                axes[i, j].tick_params(labelbottom=False)
-        holder = fig.add_subplot(grid[-1, j])
-        holder.set_axis_off()
-        holders.append(holder)
-    return fig, axes, holders
-
-
 def _legend_below(holder: Axes, handles: Sequence[object]) -> None:
     """Legend at the top of an axis-free holder panel under the plots."""
     holder.legend(handles=handles, loc="upper center", borderaxespad=0.0)
@@ -368,32 +268,6 @@ def _column_title(case: _Case) -> str:
     if case.label != case.description:
         return f"{case.label}\n{case.geometry}, {case.description}"
     return f"{case.geometry}, {case.description}"
-
-
-_SETTLE_DRAWS = 5
-_SETTLE_TOLERANCE = 2e-5  # figure fraction: a fiftieth of a pixel at 150 dpi
-
-
-def _finish(fig: Figure) -> Figure:
-    """Settle the constrained layout under the style, then freeze it.
-
-    Constrained layout is not idempotent: each draw starts from the previous
-    positions and moves the axes by a shrinking amount. Drawing (at the
-    style's dpi, the saving dpi) until the axes stop moving and then fixing
-    the positions makes every later save of the figure render the same
-    layout, whatever the format or the number of earlier saves, which is
-    what byte-reproducible files need. Ticks are also created here, while
-    the style is active.
-    """
-    previous = None
-    for _ in range(_SETTLE_DRAWS):
-        fig.draw_without_rendering()
-        current = np.array([ax.get_position().bounds for ax in fig.axes])
-        if previous is not None and np.max(np.abs(current - previous)) < _SETTLE_TOLERANCE:
-            break
-        previous = current
-    fig.set_layout_engine("none")
-    return fig
 
 
 # ----------------------------------------------------------------------------- fig 2
@@ -452,10 +326,10 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     rows = max(sum(c.geometry == g for c in cases) for g in geometries)
     entries = max(sum(c.geometry == g for c in cases) + _reference_count(g, cases)
                   for g in geometries)
-    with _style():
-        colors = _colors()
+    with style_context():
+        colors = palette()
         ncol = len(geometries)
-        main_in, strip_in, legend_in = 2.3, 0.1 + 0.13 * rows, _legend_height(entries)
+        main_in, strip_in, legend_in = 2.3, 0.1 + 0.13 * rows, legend_height(entries)
         fig = Figure(figsize=(7.0 if ncol == 2 else 5.2,
                               main_in + strip_in + legend_in + 1.15),
                      layout="constrained")
@@ -469,7 +343,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             bottom = _k_axis_bottom(members, k_max)
             for row, case in enumerate(members):
                 color = colors[case.index % len(colors)]
-                marker = _MARKERS[case.index % len(_MARKERS)]
+                marker = MARKERS[case.index % len(MARKERS)]
                 size = _marker_size(case)
                 x = case.stick
                 k = case.values("friction_coefficient")
@@ -494,7 +368,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
                 y_marks = np.where(high, k_max, np.where(edge, bottom, k))
                 _draw_not_converged(ax, x[~converged], y_marks[~converged])
                 for xv, kv in zip(x[low], k[low]):  # the value of a case below the axis
-                    ax.annotate(f"k = {_k_text(float(kv))}", (xv, bottom), xytext=(4, 3),
+                    ax.annotate(f"k = {k_text(float(kv))}", (xv, bottom), xytext=(4, 3),
                                 textcoords="offset points", fontsize=5.8, color=color,
                                 annotation_clip=False)
                 handles.append(_series_key(case, color, marker, size, consistent))
@@ -513,7 +387,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             ax.set_xlim(-0.02, 1.02)
             ax.set_ylim(bottom, k_max)
             ax.set_title(_TITLES[geometry], pad=9)  # clear of the markers on the top edge
-            ax.set_ylabel(f"friction coefficient k (axis cut at {_fmt(k_max)})")
+            ax.set_ylabel(f"friction coefficient k (axis cut at {fmt(k_max)})")
             ax.tick_params(labelbottom=False)
             holder = fig.add_subplot(grid[2, j])
             holder.set_axis_off()
@@ -532,7 +406,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             Line2D([], [], ls="none", marker="x", ms=7, mew=1.3, color="black",
                    label="solver not converged"),
             Line2D([], [], ls="none", marker="^", color="0.35",
-                   label=f"k > {_fmt(k_max)} (or k = ∞): on the top edge"),
+                   label=f"k > {fmt(k_max)} (or k = ∞): on the top edge"),
             Line2D([], [], color="0.35", lw=1.4, label="default method: solid line"),
             Line2D([], [], color="0.35", lw=0.7, marker="o", ms=4,
                    label="paper scheme: markers, thin line"),
@@ -544,7 +418,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
                               label="k below the axis (value given) or NaN: on the bottom edge"))
         fig.legend(handles=key, loc="outside lower center", ncols=3 if ncol == 2 else 2,
                    fontsize=6.3)
-        return _finish(fig)
+        return finish(fig)
 
 
 _K_AXIS_FLOOR = 0.1  # the k axis reaches below zero by at most this fraction of k_max
@@ -576,10 +450,8 @@ def _series_key(case: _Case, color: str, marker: str, size: float,
 
 
 def _uncoupled_eligible(geometry: str, members: Sequence[_Case]) -> list[_Case]:
-    """Datasets the uncoupled closed form applies to (cylinder: half-plane only)."""
-    if geometry == "sphere":
-        return [c for c in members if c.geometry == "sphere"]
-    return [c for c in members if c.geometry == "cylinder" and c.slab_ratio == 0.0]
+    """Datasets the uncoupled closed form applies to (a half-space or half-plane only)."""
+    return [c for c in members if c.geometry == geometry and c.slab_ratio == 0.0]
 
 
 def _reference_count(geometry: str, cases: Sequence[_Case]) -> int:
@@ -596,11 +468,12 @@ def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list
     gamma = 1.0 - (1.0 - np.linspace(0.0, 1.0, 401)[:-1]) ** 2
     for i, nu in enumerate(nus):
         k = uncoupled_friction(geometry, nu, gamma)
-        where = "" if geometry == "sphere" else ", half-plane"
+        where = f", {indenter(geometry).half_space_name}" if indenter(geometry).accepts_layer \
+            else ""
         (line,) = ax.plot(gamma, k, color=_REF_COLOR, lw=1.0, dashes=_DASHES[i % len(_DASHES)],
-                          zorder=1, label=f"uncoupled closed form, ν = {_fmt(nu)}{where}")
+                          zorder=1, label=f"uncoupled closed form, ν = {fmt(nu)}{where}")
         handles.append(line)
-    if geometry == "cylinder" and not eligible:
+    if indenter(geometry).accepts_layer and not eligible:
         handles.append(Line2D([], [], ls="none", label="(no uncoupled closed form "
                                                         "for a/h > 0)"))
     return handles
@@ -656,8 +529,8 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
     cases = _cases(datasets, "fig3_tractions", ("pressure", "shear", "converged"),
                    profiles=True)
     chosen = [_nearest(c.stick, requested, np.ones(c.stick.shape, bool)) for c in cases]
-    with _style():
-        fig, axes, holders = _panel_grid(len(cases), (2.1, 2.1),
+    with style_context():
+        fig, axes, holders = panel_grid(len(cases), (2.1, 2.1),
                                          max(len(ch) for ch in chosen) + 2)
         for j, (case, picks) in enumerate(zip(cases, chosen)):
             ax_p, ax_q = axes[0, j], axes[1, j]
@@ -680,14 +553,14 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
                 if 0.0 < c < 1.0:
                     _stick_edge(ax_q, c, np.interp(c, xi, q), color)
             ax_p.set_title(_column_title(case))
-            ax_q.set_xlabel(f"ξ = {_AXIS[case.geometry]}")
+            ax_q.set_xlabel(f"ξ = {indenter(case.geometry).coordinate}/a")
             ax_p.set_ylabel(r"pressure $p/p_0$")
             ax_q.set_ylabel(r"shear $q/p_0$ (positive outward)")
             ax_p.set_xlim(0.0, 1.0)
             ax_q.axhline(0.0, color="0.6", lw=0.6, zorder=0)
             handles, _ = ax_p.get_legend_handles_labels()
             _legend_below(holders[j], [*handles, _STICK_EDGE_KEY()])
-        return _finish(fig)
+        return finish(fig)
 
 
 def _scale_to(ax: Axes, case: _Case, name: str, good: Sequence[int], picks: Sequence[int],
@@ -718,7 +591,7 @@ def _case_label(case: _Case, i: int) -> str:
     """'c/a = 0.3, k = 0.117' plus [inconsistent, NOT CONVERGED] as they apply."""
     label = f"c/a = {float(case.stick[i]):.4g}"
     if "friction_coefficient" in case.ds:
-        label += f", k = {_k_text(float(case.values('friction_coefficient')[i]))}"
+        label += f", k = {k_text(float(case.values('friction_coefficient')[i]))}"
     consistent = bool(case.flag("consistent")[i]) if "consistent" in case.ds else None
     return label + _status(bool(case.flag("converged")[i]), consistent)
 
@@ -738,7 +611,7 @@ def _profile_style(converged: bool) -> dict[str, object]:
     if converged:
         return {"ls": "-", "lw": 1.3}
     return {"ls": ":", "lw": 1.3, "marker": "x", "ms": 5, "mew": 1.1, "markevery": 20,
-            "gid": _NOT_CONVERGED_GID}
+            "gid": NOT_CONVERGED_GID}
 
 
 # ----------------------------------------------------------------------------- fig 4
@@ -791,8 +664,8 @@ def fig4_displacement(datasets: xr.Dataset | Sequence[xr.Dataset],
     cases = _cases(datasets, "fig4_displacement", ("tangential_displacement", "converged"),
                    profiles=True)
     chosen = [_nearest(c.stick, requested, (c.stick > 0.0) & (c.stick < 1.0)) for c in cases]
-    with _style():
-        fig, axes, holders = _panel_grid(len(cases), (2.4,),
+    with style_context():
+        fig, axes, holders = panel_grid(len(cases), (2.4,),
                                          max(max(len(ch), 1) for ch in chosen) + 3)
         for j, (case, picks) in enumerate(zip(cases, chosen)):
             ax = axes[0, j]
@@ -823,12 +696,12 @@ def fig4_displacement(datasets: xr.Dataset | Sequence[xr.Dataset],
                         **style)  # type: ignore[arg-type]
             ax.axhline(0.0, color="0.6", lw=0.6, zorder=0)
             ax.set_title(_column_title(case))
-            ax.set_xlabel(f"ξ = {_AXIS[case.geometry]}")
+            ax.set_xlabel(f"ξ = {indenter(case.geometry).coordinate}/a")
             ax.set_ylabel(r"displacement $u R/a^2$ (positive outward)")
             ax.set_xlim(0.0, 1.0)
             handles, _ = ax.get_legend_handles_labels()
             _legend_below(holders[j], [*handles, *notes, _STICK_EDGE_KEY()])
-        return _finish(fig)
+        return finish(fig)
 
 
 # ----------------------------------------------------------------------------- fig 5
@@ -874,10 +747,10 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     cases = _cases(datasets, "fig5_work", ("frictional_work", "consistent", "converged"))
     geometries = [g for g in _GEOMETRIES if any(c.geometry == g for c in cases)]
     entries = max(sum(c.geometry == g for c in cases) for g in geometries) + 2
-    with _style():
-        colors = _colors()
+    with style_context():
+        colors = palette()
         ncol = len(geometries)
-        fig, axes, holders = _panel_grid(ncol, (2.5,), entries,
+        fig, axes, holders = panel_grid(ncol, (2.5,), entries,
                                          width=7.0 if ncol == 2 else 4.4)
         for j, geometry in enumerate(geometries):
             ax = axes[0, j]
@@ -889,7 +762,7 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
             failed: list[tuple[_Case, float, float]] = []
             for case in members:
                 color = colors[case.index % len(colors)]
-                marker = _MARKERS[case.index % len(_MARKERS)]
+                marker = MARKERS[case.index % len(MARKERS)]
                 size = _marker_size(case)
                 x = case.stick
                 v = case.values("frictional_work")
@@ -943,7 +816,7 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                 handles.append(Line2D([], [], ls="none", marker="x", ms=7, mew=1.3,
                                       color="black", label="solver not converged"))
             _legend_below(holders[j], handles)
-        return _finish(fig)
+        return finish(fig)
 
 
 def _skip_note(x: np.ndarray, v: np.ndarray, converged: np.ndarray) -> str:
@@ -968,53 +841,3 @@ def _skip_note(x: np.ndarray, v: np.ndarray, converged: np.ndarray) -> str:
     return text
 
 
-# ----------------------------------------------------------------------------- convergence
-def fig_convergence(datasets: xr.Dataset | Sequence[xr.Dataset],
-                    quantity: str = "friction_coefficient") -> Figure:
-    """Error against wall time (the speed-accuracy trade), one curve a study.
-
-    Parameters
-    ----------
-    datasets : Dataset or sequence of Dataset
-        From :func:`contactlib.convergence.study` (one geometry and method each).
-    quantity : str
-        Which error to draw (``friction_coefficient``, ``load_ratio``,
-        ``frictional_work`` or ``peak_shear``).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Left: median relative error over the stick ratios against the median
-        wall time of one solve, each point one n (labelled); log-log. Right:
-        the observed order of convergence of each study per stick ratio.
-    """
-    items = _as_list(datasets)
-    for i, ds in enumerate(items):
-        for name in ("error", "wall_time", "observed_order"):
-            if name not in ds:
-                raise ValueError(f"convergence dataset {i} has no variable {name!r}")
-    with _style():
-        fig = Figure(figsize=(9.0, 3.8))
-        ax, ax2 = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.6, 1.0]})
-        for i, ds in enumerate(items):
-            label = f"{ds.attrs['geometry']}, {ds.attrs['method']}"
-            err = ds["error"].sel(quantity=quantity).median("stick_ratio").values
-            t = ds["wall_time"].median("stick_ratio").values
-            ok = np.isfinite(err) & (err > 0)
-            color = _colors()[i % len(_colors())]
-            ax.loglog(t[ok], err[ok], marker=_MARKERS[i % len(_MARKERS)], color=color,
-                      label=label)
-            for n, x, y in zip(ds["n"].values[ok], t[ok], err[ok]):
-                ax.annotate(f"{n}", (x, y), textcoords="offset points", xytext=(3, 3),
-                            fontsize=7, color=color)
-            order = ds["observed_order"].sel(quantity=quantity)
-            ax2.plot(ds["stick_ratio"].values, order.values, marker=_MARKERS[i % len(_MARKERS)],
-                     color=color, label=label)
-        ax.set_xlabel("wall time of one solve (s)")
-        ax.set_ylabel(f"relative error in {quantity.replace('_', ' ')}")
-        ax.set_title("error against time (labels: n)")
-        ax.legend(fontsize=8)
-        ax2.set_xlabel("stick ratio c/a")
-        ax2.set_ylabel("observed order")
-        ax2.set_title("order of convergence")
-        return _finish(fig)

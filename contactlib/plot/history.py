@@ -1,23 +1,23 @@
-"""Figures of a loading history, drawn from :mod:`contactlib.history` datasets.
+"""Figures of a loading history, drawn from the datasets of :func:`contactlib.history`.
 
 Every function takes a history dataset from
-:func:`contactlib.history.history_to_dataset` (dimensions ``step`` and ``xi``,
+:func:`contactlib.io.history_to_dataset` (dimensions ``step`` and ``xi``,
 a scalar ``friction_coefficient`` attribute), a stack of them from
-:func:`contactlib.history.stack_histories` (a ``friction_coefficient``
+:func:`contactlib.io.stack_histories` (a ``friction_coefficient``
 dimension on the k-dependent variables; ``load_ratio``, ``segment`` and
 ``xi_bounds`` without it), or, where stated, a sequence of either, and
 returns a new :class:`matplotlib.figure.Figure`. A single history is treated
 as a stack of one k, so both forms draw the same curves. Lengths are scaled
 by ``a_max``, the frictionless (Hertz) contact radius at load level 1; the
-scalings are those of :mod:`contactlib.history`.
+scalings are those of :mod:`contactlib.history_api`.
 
-As in :mod:`contactlib.figures`, figures are built with
+As for every figure of :mod:`contactlib.plot` (the shared base
+:mod:`contactlib.plot.base`), figures are built with
 :class:`matplotlib.figure.Figure` directly, never with
-:mod:`matplotlib.pyplot`, and drawn inside
-``matplotlib.style.context(style_path())``; the caller's ``rcParams`` are
-left as they were, the layout is settled and frozen so that every save gives
-the same bytes, and nothing here touches the disk (save with
-:func:`contactlib.io.write_figure`).
+:mod:`matplotlib.pyplot`, and drawn inside the contactlib style; the caller's
+``rcParams`` are left as they were, the layout is settled and frozen so that
+every save gives the same bytes, and nothing here touches the disk (save with
+``contactlib.io.write_figure(fig, path, style=style_path())``).
 
 Conventions common to all figures:
 
@@ -35,8 +35,9 @@ Conventions common to all figures:
 
 Examples
 --------
->>> from contactlib.history import history, history_to_dataset
->>> from contactlib.history_figures import hist_stick_radius
+>>> from contactlib import history
+>>> from contactlib.io import history_to_dataset
+>>> from contactlib.plot import hist_stick_radius
 >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=60))
 >>> fig = hist_stick_radius(ds)
 >>> fig.axes[1].get_ylabel()
@@ -60,16 +61,20 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter, NullLocator
 
-from contactlib.figures import (
-    _MARKERS,
-    _NOT_CONVERGED_GID,
-    _as_list,
-    _colors,
-    _finish,
-    _fmt,
-    _k_text,
-    _panel_grid,
-    _style,
+from contactlib.indenter import indenter
+from contactlib.validate import GEOMETRIES
+from contactlib.plot.base import (
+    MARKERS,
+    NOT_CONVERGED_GID,
+    as_list,
+    describe,
+    finish,
+    fmt,
+    k_text,
+    label_of,
+    palette,
+    panel_grid,
+    style_context,
 )
 
 __all__ = [
@@ -79,10 +84,9 @@ __all__ = [
     "hist_stick_radius",
 ]
 
-_GEOMETRIES = ("sphere", "cylinder")
+_GEOMETRIES = GEOMETRIES
 _K = "friction_coefficient"
 _SHARED = ("load_ratio", "segment", "xi_bounds")  # the path and the mesh: no k in them
-_AXIS = {"sphere": "r", "cylinder": "x"}
 _ENERGY_LABEL = {
     "sphere": r"energy per cycle $V R^2/(E^* a_{max}^5)$",
     "cylinder": r"energy per cycle $V R^2/(E^* a_{max}^4)$, per unit length",
@@ -145,27 +149,11 @@ class _History:
         return np.atleast_1d(np.asarray(self.ds.attrs["load_path"], dtype=float))
 
 
-def _describe(ds: xr.Dataset) -> str:
-    attrs = ds.attrs
-    parts = [str(attrs.get("geometry", "?"))]
-    if "elements" in attrs:
-        parts.append(f"n = {int(attrs['elements'])}")
-    if "poisson_ratio" in attrs:
-        parts.append(f"ν = {_fmt(float(attrs['poisson_ratio']))}")
-    if attrs.get("geometry") == "cylinder":
-        parts.append(f"a_max/h = {_fmt(float(attrs.get('slab_ratio', 0.0)))}")
-    if "steps" in attrs:
-        parts.append(f"{int(attrs['steps'])} steps a segment")
-    return ", ".join(parts)
-
-
 def _history(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
              attrs: Sequence[str] = ()) -> _History:
     """Validate one history dataset for ``figure``; a single k becomes a stack of one."""
-    description = _describe(ds)
-    scene = ds.attrs.get("scene")
-    label = str(scene) if scene not in (None, "") else description
-    where = f"dataset {index} ({label!r})"
+    description = describe(ds, "geometry", slab_name="a_max/h", steps=True)
+    label, where = label_of(ds, index, description)
     geometry = ds.attrs.get("geometry")
     if geometry not in _GEOMETRIES:
         raise ValueError(f"{figure}: {where} has geometry attribute {geometry!r}, "
@@ -198,23 +186,21 @@ def _history(ds: xr.Dataset, index: int, figure: str, required: Sequence[str],
 def _histories(datasets: xr.Dataset | Sequence[xr.Dataset], figure: str,
                required: Sequence[str], attrs: Sequence[str] = ()) -> list[_History]:
     return [_history(ds, i, figure, required, attrs)
-            for i, ds in enumerate(_as_list(datasets))]
+            for i, ds in enumerate(as_list(datasets))]
 
 
 # ----------------------------------------------------------------------------- helpers
 def _surface(h: _History) -> str:
-    if h.geometry == "sphere":
-        return "sphere on an elastic half-space"
+    ind = indenter(h.geometry)
     slab = float(h.ds.attrs.get("slab_ratio", 0.0))
-    if slab == 0.0:
-        return "cylinder on an elastic half-plane (plane strain)"
-    return f"cylinder on an elastic slab, a_max/h = {_fmt(slab)} (plane strain)"
+    body = f"slab, a_max/h = {fmt(slab)}" if slab else ind.half_space_name
+    return f"{ind.name} on an elastic {body}" + (" (plane strain)" if ind.plane_strain else "")
 
 
 def _path_text(h: _History) -> str:
     if "load_path" not in h.ds.attrs:
         return "load path not recorded"
-    return "P/P_max " + " → ".join(_fmt(float(v)) for v in h.levels)
+    return "P/P_max " + " → ".join(fmt(float(v)) for v in h.levels)
 
 
 def _title(h: _History) -> str:
@@ -224,7 +210,7 @@ def _title(h: _History) -> str:
 
 def _curve_colors(count: int) -> list[object]:
     """Okabe-Ito colours while they last, evenly spaced viridis beyond."""
-    cycle = _colors()
+    cycle = palette()
     if count <= len(cycle):
         return list(cycle[:count])
     cmap = matplotlib.colormaps["viridis"]
@@ -233,14 +219,14 @@ def _curve_colors(count: int) -> list[object]:
 
 def _distinct_colors(count: int) -> list[object]:
     """Like :func:`_curve_colors`, without the light blue that reads as a second blue."""
-    cycle = [c for c in _colors() if c.lower().lstrip("#") != "56b4e9"]
+    cycle = [c for c in palette() if c.lower().lstrip("#") != "56b4e9"]
     if count <= len(cycle):
         return list(cycle[:count])
     return _curve_colors(count)
 
 
 def _curve_label(h: _History, k: float, converged: np.ndarray, several: bool) -> str:
-    label = f"k = {_k_text(k)}"
+    label = f"k = {k_text(k)}"
     if several:
         label = f"{h.label}: {label}"
     failed = int(np.count_nonzero(~converged))
@@ -253,7 +239,7 @@ def _crosses(ax: Axes, x: np.ndarray, y: np.ndarray) -> None:
     """Black crosses (gid ``not-converged``) at the finite points given."""
     keep = np.isfinite(x) & np.isfinite(y)
     if np.any(keep):
-        ax.plot(x[keep], y[keep], zorder=5, clip_on=False, gid=_NOT_CONVERGED_GID,
+        ax.plot(x[keep], y[keep], zorder=5, clip_on=False, gid=NOT_CONVERGED_GID,
                 **_CROSS)  # type: ignore[arg-type]
 
 
@@ -368,7 +354,8 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
 
     Examples
     --------
-    >>> from contactlib.history import history, history_to_dataset
+    >>> from contactlib import history
+    >>> from contactlib.io import history_to_dataset
     >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1], 5, n=40))
     >>> fig = hist_stick_radius(ds)
     >>> [line.get_label() for line in fig.axes[1].lines if line.get_gid() == "stick-radius"]
@@ -385,9 +372,9 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
               for h in members for k, ok in zip(h.ks, h.values("converged").astype(bool))]
     labels += ["stick-zone radius c/a_max (c/a × a/a_max)"]
     ncols = 1 if entries <= 6 else _legend_columns(labels, width, 2)
-    with _style():
+    with style_context():
         colors = _distinct_colors(curves)
-        fig, axes, holders = _panel_grid(1, (0.85, 2.5), _legend_rows(entries, ncols),
+        fig, axes, holders = panel_grid(1, (0.85, 2.5), _legend_rows(entries, ncols),
                                          width=width)
         ax_p, ax = axes[0, 0], axes[1, 0]
         path_handles = _load_panel(ax_p, members, "travel")
@@ -432,7 +419,7 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
         ax_p.set_title(_title(members[0]) if not several
                        else "stick-zone and contact radius along the load path")
         _legend(holders[0], handles, ncols)
-        return _finish(fig)
+        return finish(fig)
 
 
 # ----------------------------------------------------------------------------- state map
@@ -441,7 +428,7 @@ def _friction_choice(friction: float | None, ks: np.ndarray) -> list[int]:
         if ks.size > _MAX_MAP_PANELS:
             raise ValueError(
                 f"hist_stick_map: the stack holds {ks.size} friction coefficients "
-                f"({', '.join(_k_text(float(k)) for k in ks)}); at most "
+                f"({', '.join(k_text(float(k)) for k in ks)}); at most "
                 f"{_MAX_MAP_PANELS} are drawn as panels: choose one with friction=")
         return list(range(ks.size))
     if isinstance(friction, bool) or not isinstance(friction, Real) or math.isnan(friction) \
@@ -493,7 +480,8 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
 
     Examples
     --------
-    >>> from contactlib.history import history, history_to_dataset
+    >>> from contactlib import history
+    >>> from contactlib.io import history_to_dataset
     >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1, 0], 5, n=40))
     >>> fig = hist_stick_map(ds)
     >>> len(fig.axes)  # load, map, legend holder
@@ -508,8 +496,8 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
     picks = _friction_choice(friction, h.ks)
     any_failed = any(not np.all(h.values("converged")[i]) for i in picks)
     entries = len(_STATES) + 2 + int(any_failed)
-    with _style():
-        fig, axes, holders = _panel_grid(1, (0.8, *([1.75] * len(picks))),
+    with style_context():
+        fig, axes, holders = panel_grid(1, (0.8, *([1.75] * len(picks))),
                                          _legend_rows(entries, 3), width=6.0)
         _load_panel(axes[0, 0], [h])
         _mark_segments([axes[0, 0]], [h])
@@ -535,8 +523,8 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
             ax.grid(False)
             ax.set_ylim(0.0, top)
             ax.set_xlim(x_edges[0], x_edges[-1])
-            ax.set_ylabel(f"ξ = {_AXIS[h.geometry]}/$a_{{max}}$")
-            text = f"k = {_k_text(float(h.ks[i]))}"
+            ax.set_ylabel(f"ξ = {indenter(h.geometry).coordinate}/$a_{{max}}$")
+            text = f"k = {k_text(float(h.ks[i]))}"
             if bad.any():
                 text += f"  [NOT CONVERGED at {int(bad.sum())} steps]"
             ax.set_title(text, loc="left", fontsize=7.5, pad=2)
@@ -550,7 +538,7 @@ def hist_stick_map(dataset: xr.Dataset, *, friction: float | None = None) -> Fig
         if any_failed:
             handles.append(_cross_key())
         _legend(holders[0], handles, 3)
-        return _finish(fig)
+        return finish(fig)
 
 
 # ----------------------------------------------------------------------------- displacement loop
@@ -606,7 +594,8 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
 
     Examples
     --------
-    >>> from contactlib.history import history, history_to_dataset
+    >>> from contactlib import history
+    >>> from contactlib.io import history_to_dataset
     >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1, 0], 5, n=40))
     >>> fig = hist_displacement_loop(ds, xi=0.5)
     >>> fig.axes[0].get_xlabel()
@@ -625,12 +614,12 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
         end = float(bounds[-1, 1]) if bounds is not None else float(mid[-1])
         if not 0.0 <= float(xi) <= end:
             raise ValueError(f"hist_displacement_loop: xi = {xi!r} is outside the mesh of "
-                             f"dataset {h.index} ({h.label!r}): 0 ... {_fmt(end)}")
+                             f"dataset {h.index} ({h.label!r}): 0 ... {fmt(end)}")
         picks.append(int(np.argmin(np.abs(mid - float(xi)))))
     any_failed = any(not np.all(h.values("converged")) for h in members)
     entries = max(h.ks.size for h in members) + 2 + int(any_failed)
-    with _style():
-        fig, axes, holders = _panel_grid(len(members), (2.6,), entries,
+    with style_context():
+        fig, axes, holders = panel_grid(len(members), (2.6,), entries,
                                          width=max(4.4, 0.7 + 3.7 * len(members)))
         for col, (h, j) in enumerate(zip(members, picks)):
             ax = axes[0, col]
@@ -665,7 +654,7 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             ]
             if not ok_all.all():
                 handles.append(_cross_key())
-            axis = _AXIS[h.geometry]
+            axis = indenter(h.geometry).coordinate
             note = f"u at {axis}/a_max = {used:.4g}"
             if not np.any(h.values("state")[:, :, j] > 0):
                 note += ", never in contact"
@@ -677,7 +666,7 @@ def hist_displacement_loop(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             ax.set_ylabel(r"displacement $u R/a_{max}^2$ (positive outward)")
             holders[col].legend(handles=handles, loc="upper center", borderaxespad=0.0,
                                 title=h.description if h.label != h.description else None)
-        return _finish(fig)
+        return finish(fig)
 
 
 # ----------------------------------------------------------------------------- energy
@@ -721,7 +710,7 @@ def _energy(h: _History) -> _Energy:
         doubled=2.0 * (work[:, first_end] - work[:, 0]),
         cycle_ok=ok.all(axis=1), doubled_ok=ok[:, : first_end + 1].all(axis=1),
         start=start,
-        cycle_text=" → ".join(_fmt(float(v)) for v in levels[-3:]))
+        cycle_text=" → ".join(fmt(float(v)) for v in levels[-3:]))
 
 
 def _log_shown(k: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -766,7 +755,8 @@ def hist_energy_per_cycle(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure
 
     Examples
     --------
-    >>> from contactlib.history import history, history_to_dataset
+    >>> from contactlib import history
+    >>> from contactlib.io import history_to_dataset
     >>> ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1, 0], 5, n=40))
     >>> fig = hist_energy_per_cycle(ds)
     >>> fig.axes[0].get_xscale(), fig.axes[0].get_yscale()
@@ -779,10 +769,10 @@ def hist_energy_per_cycle(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure
     any_failed = any(not (e.cycle_ok.all() and e.doubled_ok.all()) for e in energies)
     entries = 2 * max(sum(h.geometry == g for h in members) for g in geometries) + 4 \
         + int(any_failed)
-    with _style():
-        colors = _colors()
+    with style_context():
+        colors = palette()
         ncol = len(geometries)
-        fig, axes, holders = _panel_grid(ncol, (2.4, 1.1), entries,
+        fig, axes, holders = panel_grid(ncol, (2.4, 1.1), entries,
                                          width=7.0 if ncol == 2 else 4.6)
         for col, geometry in enumerate(geometries):
             ax, ax_r = axes[0, col], axes[1, col]
@@ -794,7 +784,7 @@ def hist_energy_per_cycle(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure
                 if h.geometry != geometry:
                     continue
                 color = colors[h.index % len(colors)]
-                marker = _MARKERS[h.index % len(_MARKERS)]
+                marker = MARKERS[h.index % len(MARKERS)]
                 k = e.ks
                 for values, ok, filled, dashes, gid in (
                         (e.cycle, e.cycle_ok, True, None, "cycle-energy"),
@@ -864,7 +854,7 @@ def hist_energy_per_cycle(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure
                            fontsize=6.8, pad=3)
             ax_r.set_xlabel("friction coefficient k (log scale)")
             _legend(holders[col], handles, 1)
-        return _finish(fig)
+        return finish(fig)
 
 
 def _surface_of(geometry: str, members: Sequence[_History]) -> str:
@@ -872,4 +862,4 @@ def _surface_of(geometry: str, members: Sequence[_History]) -> str:
     surfaces = {_surface(h) for h in members if h.geometry == geometry}
     if len(surfaces) == 1:
         return surfaces.pop()
-    return "sphere" if geometry == "sphere" else "cylinder (plane strain)"
+    return geometry + (" (plane strain)" if indenter(geometry).plane_strain else "")

@@ -1,0 +1,213 @@
+r"""Influence operators of a model: the displacements its element tractions produce.
+
+Every solver builds its matrices here, from a :class:`~contactlib.model.Contact`
+(any object with its ``pressure_kernel``, ``shear_kernel`` and
+``length_degrees``). Two kinds of element traction on the half contact, cut
+at ``edges`` (``nodes``) 0 = s_0 < ... < s_N:
+
+* **steps** (:func:`step_operator`): a constant pressure, or a constant
+  coefficient times the shear shape (``q = shape(r) q_j``: r on a ring, +-1 on
+  a strip pair), on each element. Element j's load is the basic load of radius
+  s_{j+1} minus that of radius s_j, so the operator is an exact difference of
+  the closed-form kernels. The paper's rings and the incremental solver's
+  elements.
+* **piecewise linear** (:func:`operator_part`): the pressure ``p``, or the
+  shear coefficient ``phi`` (``q = shape(r) phi(r)``), linear between nodal
+  values with ``p_N = phi_N = 0``. The operator acts on the nodal values;
+  its entries are element integrals of the kernels
+  (:func:`contactlib.influence.element_integrals`). The default method's.
+
+Units and scalings
+------------------
+Those of the model (:mod:`contactlib.model`): E* = R = 1, lengths in units of
+the contact radius a (a_max in the incremental solver). Every operator has
+shape (3, len(x), columns) with rows 0, 1, 2 the normal displacement w (into
+the body), the tangential displacement u (away from the axis), both in
+a^2/R per unit traction (E* a/R), and du/dx, at the points ``x``.
+
+Examples
+--------
+>>> from contactlib.model import contact
+>>> m = contact("sphere", 0.3)
+>>> edges = np.linspace(0.0, 1.0, 5)
+>>> step_operator(m, edges, 0.5 * (edges[1:] + edges[:-1]), "normal").shape
+(3, 4, 4)
+>>> operator_part(m, edges, edges, "shear").shape
+(3, 5, 5)
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .elements import Mesh
+from .influence import apply_difference, element_integrals
+
+if TYPE_CHECKING:
+    from .model import Contact
+
+__all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
+           "StickBlocks", "clear_shared_stick_blocks"]
+
+PARTS = ("normal", "shear")
+
+Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
+
+
+def _kernel(model: Contact, part: str, with_w: bool = True, with_du: bool = True) -> Kernel:
+    """The basic-load kernel of one part, as ``kernel(x, s) -> (w, u, du/dx)``."""
+    if part == "normal":
+        if with_w:
+            return model.pressure_kernel
+        return lambda xx, ss: model.pressure_kernel(xx, ss, with_w=False)
+    if part == "shear":
+        if with_du:
+            return model.shear_kernel
+        return lambda xx, ss: model.shear_kernel(xx, ss, with_du=False)
+    raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+
+
+# ----------------------------------------------------------------------------- steps
+def step_operator(model: Contact, edges: np.ndarray, x: np.ndarray, part: str) -> np.ndarray:
+    """Displacements of unit step tractions on every element, shape (3, len(x), N).
+
+    Parameters
+    ----------
+    model : Contact
+    edges : ndarray, shape (N + 1,)
+        Element edges, increasing from 0 (units a).
+    x : ndarray, shape (m,)
+        Evaluation points (>= 0, units a).
+    part : {"normal", "shear"}
+        A unit pressure on each element, or a unit shear coefficient (the
+        traction is ``shape(r)``: r on a ring, +-1 on a strip pair).
+
+    Returns
+    -------
+    ndarray, shape (3, m, N)
+        w, u and du/dx at ``x`` (units a^2/R per unit traction; du/dx is
+        log-infinite, and NaN here, where a point lies on an edge of a shear
+        element).
+    """
+    kernel = _kernel(model, part)
+    edges = np.asarray(edges, dtype=float)
+    xx = np.asarray(x, dtype=float)[:, None]
+    with np.errstate(invalid="ignore"):  # du/dx is log-infinite on element edges
+        return np.diff(np.stack(kernel(xx, edges[None, :])), axis=2)
+
+
+# ----------------------------------------------------------------------------- piecewise linear
+def operator_part(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
+                  with_w: bool = True, with_du: bool = True) -> np.ndarray:
+    """One displacement operator on nodal values, shape (3, len(x), N + 1).
+
+    ``part="normal"``: of the nodal pressures p; ``part="shear"``: of the
+    nodal shear coefficients phi. Row k = 0, 1, 2 gives w, u and du/dx at the
+    points ``x`` (units E* = a = R = 1). ``with_w=False`` (normal) and
+    ``with_du=False`` (shear) let the kernels skip an output they can skip
+    cheaply (w as zeros, du/dx as NaN).
+    """
+    g = element_integrals(_kernel(model, part, with_w, with_du), x, nodes)
+    # du/dx of an odd strip shear is log-infinite on the axis for every element
+    # (the infinities cancel for a traction with q(0) = 0); it is never used
+    # there, so the resulting inf - inf is left as NaN without a warning
+    with np.errstate(invalid="ignore"):
+        return apply_difference(g, nodes)
+
+
+def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
+              with_w: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
+
+    Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
+    w (k = 0), u (1) and du/dx (2) at the points ``x``. ``with_w=False``
+    leaves the pressure's w row unreliable (zeros for the sphere), which
+    saves the elliptic integrals when only tangential displacements are needed.
+    """
+    return (operator_part(model, nodes, x, "normal", with_w),
+            operator_part(model, nodes, x, "shear"))
+
+
+class StickBlocks:
+    """Element integrals of reference stick meshes, kept for reuse across c/a.
+
+    A bounded store (oldest entry dropped first) of the blocks
+    :func:`nodal_operator_part` computes once per distinct (kernels, part,
+    reference stick mesh). Memory: at most ``size`` blocks of 3 (M + 1) M
+    doubles (64 blocks at n = 256: 19 MB).
+    """
+
+    def __init__(self, size: int = 64) -> None:
+        self.size = int(size)
+        self._blocks: OrderedDict[tuple, np.ndarray] = OrderedDict()
+
+    def get(self, key: tuple, compute: Callable[[], np.ndarray]) -> np.ndarray:
+        """The block of ``key``, computed by ``compute()`` and stored when missing."""
+        block = self._blocks.get(key)
+        if block is None:
+            block = compute()
+            if len(self._blocks) >= self.size:
+                self._blocks.popitem(last=False)
+            self._blocks[key] = block
+        return block
+
+    def clear(self) -> None:
+        """Forget every block."""
+        self._blocks.clear()
+
+    def __len__(self) -> int:
+        return len(self._blocks)
+
+
+# The process-wide store used when a caller passes none (see nodal_operator_part).
+_SHARED_BLOCKS = StickBlocks(64)
+
+
+def clear_shared_stick_blocks() -> None:
+    """Empty the process-wide store of :func:`nodal_operator_part` (a cold start)."""
+    _SHARED_BLOCKS.clear()
+
+
+def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
+                        cache: StickBlocks | None = None) -> np.ndarray:
+    """:func:`operator_part` at the mesh's own nodes, reusing the stick block across c.
+
+    On the graded mesh the stick-zone nodes are c t_i with t_i fixed by
+    (n, M, power), and where the kernels are homogeneous in length (the disc
+    kernels of the half-space, see :meth:`Contact.length_degrees`) the
+    element integrals of stick points over stick elements are c^d times
+    those of the reference mesh t: a sweep over c/a computes that block once
+    per distinct M (15 values for n a multiple of 16). Exact to round-off.
+
+    Parameters
+    ----------
+    model : Contact
+    mesh : Mesh
+    part : {"normal", "shear"}
+    cache : StickBlocks, optional
+        Where the reference blocks are kept; by default one store shared by
+        the process. The reference block is computed from the first c that
+        needs it (``nodes / c`` equals t to round-off, not bit for bit across
+        c), so results are reproducible for a given sequence of calls on one
+        store.
+    """
+    nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
+    degrees = model.length_degrees(part) if part in PARTS else None
+    if degrees is None or not 0 < m < n:
+        return operator_part(model, nodes, nodes, part)
+    store = _SHARED_BLOCKS if cache is None else cache
+    c = float(nodes[m])
+    kernel = _kernel(model, part)
+    ref_nodes = nodes[:m + 1] / c
+    # nodes / c equals the generator's t_i to round-off (not bit for bit across c)
+    key = (model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
+    ref = store.get(key, lambda: element_integrals(kernel, ref_nodes, ref_nodes))
+    g = np.empty((3, n + 1, n))
+    g[:, :m + 1, :m] = ref * (c ** degrees)[:, None, None]
+    g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])
+    g[:, m + 1:, :] = element_integrals(kernel, nodes[m + 1:], nodes)
+    return apply_difference(g, nodes)

@@ -1,0 +1,298 @@
+"""Every input rule and every limit, written once.
+
+The library entry points (:func:`contactlib.solve`, :func:`contactlib.sweep`,
+:func:`contactlib.history`), the command line and the workflow's scenes all
+check their input here. A bad value raises :class:`InputError`, a
+:class:`ValueError` that carries the name of the argument (``exc.name``),
+the requirement in words (``exc.requirement``) and the value, so that the
+command line can name its option (``--slab-ratio``) and a scene its key
+(``scenes.<name>.slab_ratio``) without reading the message text.
+
+This module imports neither numpy nor the solvers, so the command line can
+check its options before loading the numerics.
+
+Examples
+--------
+>>> from contactlib import validate
+>>> validate.nu(0.3)
+0.3
+>>> try:
+...     validate.nu(0.7)
+... except validate.InputError as exc:
+...     print(exc.name, "|", exc)
+nu | nu must be in (-1, 0.5], got 0.7
+"""
+
+from __future__ import annotations
+
+import math
+from numbers import Integral, Real
+from typing import Any, Callable, Iterable
+
+__all__ = [
+    "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
+    "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
+    "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
+    "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
+    "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
+    "MIN_TOLERANCE", "MAX_TOLERANCE",
+]
+
+# ----------------------------------------------------------------------------- limits
+GEOMETRIES: tuple[str, ...] = ("sphere", "cylinder")
+"""Indenter shapes: a rigid sphere (rings) or a rigid cylinder (strips)."""
+
+METHODS: tuple[str, ...] = ("default", "paper", "paper-literal")
+"""Self-similar methods: ours, the paper's scheme, and the paper's scheme as printed."""
+
+DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16}
+"""Default number of elements across the half-contact, per method."""
+
+MIN_N_DEFAULT_METHOD = 16
+"""Fewest elements the default method accepts (its mesh is in sixteenths)."""
+
+MAX_N = 4096
+"""Most elements of a self-similar solve (about 3.3 GiB at n = 4096)."""
+
+HISTORY_DEFAULT_N = 240
+"""Default elements of the history solver over [0, 1.2 a_max] (size a_max / 200)."""
+
+HISTORY_MIN_N = 16
+HISTORY_MAX_N = 2048
+MAX_STEPS = 100_000
+"""Most load steps per path segment (about 3 min a segment at the default n)."""
+
+DEFAULT_MAX_ERROR = 1e-3
+"""Default accuracy asked of a result: a larger error estimate is not resolved."""
+
+MIN_TOLERANCE = 1e-8
+MAX_TOLERANCE = 0.1
+"""Range of a scene's ``tolerance`` (relative error in k)."""
+
+
+class InputError(ValueError):
+    """A bad input value.
+
+    Parameters
+    ----------
+    name : str
+        The argument's library name (``"nu"``, ``"slab_ratio"``); the command
+        line shows it as ``--nu``, ``--slab-ratio``.
+    requirement : str
+        What a good value is, in words (``"in (-1, 0.5]"``).
+    value : object
+        The value given.
+    message : str, optional
+        The whole message, when ``"<name> must be <requirement>, got <value>"``
+        does not fit (it always starts with the name).
+    """
+
+    def __init__(self, name: str, requirement: str, value: Any, message: str | None = None):
+        self.name = name
+        self.requirement = requirement
+        self.value = value
+        super().__init__(message or f"{name} must be {requirement}, got {value!r}")
+
+
+def requirement(lo: float | None = None, hi: float | None = None, lo_open: bool = False,
+                hi_open: bool = False) -> str:
+    """An allowed range in words: ``in (-1, 0.5]``, ``>= 0``, ``< 1``."""
+    if lo is not None and hi is not None:
+        return f"in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+    if lo is not None:
+        return f"{'>' if lo_open else '>='} {lo:g}"
+    if hi is not None:
+        return f"{'<' if hi_open else '<='} {hi:g}"
+    return "a number"
+
+
+def _is_bool(value: Any) -> bool:
+    """Python and numpy booleans (numpy is not imported here)."""
+    return isinstance(value, bool) or type(value).__name__ == "bool_"
+
+
+# ----------------------------------------------------------------------------- generic rules
+def number(name: str, value: Any, lo: float | None = None, hi: float | None = None,
+           lo_open: bool = False, hi_open: bool = False) -> float:
+    """A finite real number in the given range (booleans and strings refused)."""
+    req = requirement(lo, hi, lo_open, hi_open)
+    if _is_bool(value) or not isinstance(value, Real):
+        raise InputError(name, f"a number {req}" if req != "a number" else req, value)
+    try:
+        v = float(value)
+    except OverflowError:  # an int beyond the float range
+        v = math.inf
+    if not math.isfinite(v):
+        raise InputError(name, f"finite ({req})" if req != "a number" else "finite", value)
+    if (lo is not None and (v < lo or (lo_open and v == lo))) or \
+            (hi is not None and (v > hi or (hi_open and v == hi))):
+        raise InputError(name, req, value)
+    return v
+
+
+def integer(name: str, value: Any, lo: int, hi: int | None = None) -> int:
+    """An integer in [lo, hi] (an integral float such as ``64.0`` is accepted)."""
+    req = f"an integer >= {lo}" if hi is None else f"an integer in [{lo}, {hi}]"
+    if _is_bool(value) or not isinstance(value, (Integral, Real)):
+        raise InputError(name, req, value)
+    if not isinstance(value, Integral):
+        if not (math.isfinite(float(value)) and float(value).is_integer()):
+            raise InputError(name, req, value)
+    v = int(value)
+    if v < lo or (hi is not None and v > hi):
+        raise InputError(name, req, value)
+    return v
+
+
+def flag(name: str, value: Any) -> bool:
+    """A real boolean (``True``/``False``, numpy bools too); never a truthy string."""
+    if _is_bool(value):
+        return bool(value)
+    raise InputError(name, "True or False", value)
+
+
+def callback(name: str, value: Any) -> Callable | None:
+    """None or a callable (checked before any work)."""
+    if value is not None and not callable(value):
+        raise InputError(name, "callable or None", value)
+    return value
+
+
+def choice(name: str, value: Any, allowed: Iterable[str]) -> str:
+    """One of the allowed names."""
+    allowed = tuple(allowed)
+    if not isinstance(value, str) or value not in allowed:
+        raise InputError(name, f"one of {', '.join(allowed)}", value)
+    return value
+
+
+# ----------------------------------------------------------------------------- the problem
+def geometry(value: Any) -> str:
+    """``"sphere"`` or ``"cylinder"``."""
+    return choice("geometry", value, GEOMETRIES)
+
+
+def method(value: Any) -> str:
+    """``"default"``, ``"paper"`` or ``"paper-literal"``."""
+    return choice("method", value, METHODS)
+
+
+def nu(value: Any) -> float:
+    """Poisson's ratio of the body, in (-1, 0.5]."""
+    return number("nu", value, -1.0, 0.5, lo_open=True)
+
+
+def slab_ratio(value: Any, geometry_name: str | None = None) -> float:
+    """a/h of the slab, finite and >= 0 (0: half-plane); cylinder only.
+
+    ``geometry_name`` (already checked) refuses a non-zero ratio for the sphere.
+    """
+    v = number("slab_ratio", value, 0.0, None)
+    if geometry_name == "sphere" and v != 0.0:
+        raise InputError("slab_ratio", "0 for a sphere", value,
+                         f"slab_ratio applies to the cylinder only, got {value!r} for a sphere")
+    return v
+
+
+def stick_ratio(value: Any, name: str = "stick_ratio") -> float:
+    """A stick ratio c/a in [0, 1]."""
+    return number(name, value, 0.0, 1.0)
+
+
+def stick_ratios(values: Any, n: int, labels: list[str] | None = None) -> list[float]:
+    """``"all"`` (m/n for m = 1 ... n-1) or a non-empty list of distinct c/a in [0, 1].
+
+    ``labels`` (the values as the user typed them) name a repeated value.
+    """
+    req = "'all' or a list of distinct numbers in [0, 1]"
+    if isinstance(values, str):
+        if values != "all":
+            raise InputError("stick_ratios", req, values)
+        return [m / n for m in range(1, n)]
+    try:
+        items = list(values)
+    except TypeError:
+        raise InputError("stick_ratios", req, values) from None
+    if not items:
+        raise InputError("stick_ratios", req, values, "stick_ratios must not be empty")
+    ratios = [stick_ratio(v, "stick_ratios") for v in items]
+    shown = [repr(v) for v in items] if labels is None else [repr(t) for t in labels]
+    seen: dict[float, int] = {}
+    for i, c in enumerate(ratios):
+        if c in seen:
+            j = seen[c]
+            raise InputError("stick_ratios", req, values,
+                             f"stick_ratios must not repeat a value: {shown[i]} at position "
+                             f"{i} repeats {shown[j]} at position {j} (c/a = {c:g}); each c/a "
+                             f"is one row of the dataset")
+        seen[c] = i
+    return ratios
+
+
+def paper_multiple(c: float, n: int, name: str = "stick_ratio") -> int:
+    """m with c = m/n: the paper's scheme puts c/a on its element edges."""
+    m = int(round(c * n))
+    if abs(m - c * n) > 1e-9 * n:
+        raise InputError(name, f"a multiple of 1/n = 1/{n} for the paper method", c)
+    return m
+
+
+def friction(value: Any) -> float:
+    """Friction coefficient k >= 0; ``inf`` (full adhesion) is allowed."""
+    if isinstance(value, Real) and not _is_bool(value) and value == math.inf:
+        return math.inf
+    return number("friction", value, 0.0, None)
+
+
+def n(value: Any, method_name: str) -> int:
+    """Elements of a self-similar solve (None: the method's default)."""
+    if value is None:
+        return DEFAULT_N[method_name]
+    lo = MIN_N_DEFAULT_METHOD if method_name == "default" else 2
+    v = integer("n", value, 2, MAX_N)
+    if v < lo:
+        raise InputError("n", f"an integer in [{lo}, {MAX_N}]", value,
+                         f"n must be at least {lo} for the default method, got {value!r}")
+    return v
+
+
+def history_n(value: Any) -> int:
+    """Elements of the history solver over [0, 1.2 a_max] (None: the default)."""
+    if value is None:
+        return HISTORY_DEFAULT_N
+    return integer("n", value, HISTORY_MIN_N, HISTORY_MAX_N)
+
+
+def steps(value: Any) -> int:
+    """Load steps per path segment, in [1, MAX_STEPS]."""
+    return integer("steps", value, 1, MAX_STEPS)
+
+
+def load_path(values: Any) -> tuple[float, ...]:
+    """Load levels P/P_max in [0, 1], at least two, starting at 0."""
+    req = "a sequence of at least two load levels in [0, 1] starting at 0"
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise InputError("load_path", req, values)
+    items = list(values)
+    if not items:
+        raise InputError("load_path", req, values, "load_path must not be empty")
+    levels = tuple(number("load_path", v, 0.0, 1.0) for v in items)
+    if len(levels) < 2:
+        raise InputError("load_path", req, values,
+                         f"load_path needs at least two levels (a start and an end), "
+                         f"got {items!r}")
+    if levels[0] != 0.0:
+        raise InputError("load_path", req, values,
+                         f"load_path must start at 0 (the body starts unloaded), "
+                         f"got {items[0]!r}")
+    return levels
+
+
+def max_error(value: Any) -> float:
+    """The accuracy asked of a result, in (0, 1) (a relative error)."""
+    return number("max_error", value, 0.0, 1.0, lo_open=True, hi_open=True)
+
+
+def tolerance(value: Any) -> float:
+    """A relative tolerance on k, in [MIN_TOLERANCE, MAX_TOLERANCE]."""
+    return number("tolerance", value, MIN_TOLERANCE, MAX_TOLERANCE)

@@ -1,0 +1,94 @@
+"""The import rules of docs/architecture.md: data flows one way through the layers.
+
+Read from the source (``ast``), so function-local imports count too.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+import contactlib
+
+PACKAGE = Path(contactlib.__file__).resolve().parent
+
+# model, operators, solver, checks/energy, result: they return data
+NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "influence",
+            "default_method", "paper_method", "history_solver", "stages", "accuracy",
+            "checks", "energy", "result", "api", "history_api", "convergence")
+# what the numerics never import: files and conventions (io), figures, workflow
+FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
+                         "contactlib.pipeline", "contactlib.scene", "contactlib.cli")
+# private names imported across modules that the validation module of issue 13 removes;
+# nothing may be added here
+KNOWN_PRIVATE_IMPORTS: set[tuple[str, str, str]] = set()  # none left
+
+
+def _module_name(path: Path) -> str:
+    parts = path.relative_to(PACKAGE).with_suffix("").parts
+    return ".".join(["contactlib", *parts]).removesuffix(".__init__")
+
+
+def _imports(path: Path) -> list[tuple[str, list[str]]]:
+    """(imported module, names) of every import in the file, relative ones resolved."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    here = _module_name(path).split(".")
+    if path.name != "__init__.py":
+        here = here[:-1]  # the package the module lives in
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [(alias.name, []) for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = here[:len(here) - node.level + 1] if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            names = [alias.name for alias in node.names]
+            found.append((module, names))
+            found += [(f"{module}.{n}", []) for n in names]  # `from contactlib import io`
+    return found
+
+
+def _source(name: str) -> Path:
+    return PACKAGE / f"{name}.py"
+
+
+@pytest.mark.parametrize("name", NUMERICS)
+def test_numerics_import_neither_io_nor_plotting(name):
+    for module, _ in _imports(_source(name)):
+        for banned in FORBIDDEN_IN_NUMERICS:
+            assert not (module == banned or module.startswith(banned + ".")), (
+                f"contactlib/{name}.py imports {module}: the numerics return data, "
+                f"io and plot turn it into files and figures")
+
+
+def test_io_does_not_import_plotting():
+    for module, _ in _imports(_source("io")):
+        assert not module.startswith("contactlib.plot"), module
+
+
+@pytest.mark.parametrize("path", sorted(PACKAGE.rglob("*.py")), ids=lambda p: p.name)
+def test_no_module_imports_private_names_of_another(path):
+    own = _module_name(path).removeprefix("contactlib.")
+    for module, names in _imports(path):
+        if not module.startswith("contactlib"):
+            continue
+        for name in names:
+            if name.startswith("_") and not name.startswith("__"):
+                assert (own, module, name) in KNOWN_PRIVATE_IMPORTS, (
+                    f"{path.relative_to(PACKAGE.parent)} imports the private name {name} "
+                    f"of {module}")
+
+
+def test_no_public_function_hides_a_module():
+    for name in contactlib.__all__:
+        assert not _source(name).exists() and not (PACKAGE / name).is_dir(), (
+            f"contactlib.{name} is both a public name and a module")
+
+
+def test_plot_modules_build_on_the_public_base_only():
+    for path in (PACKAGE / "plot").glob("*.py"):
+        for module, names in _imports(path):
+            if module.startswith("contactlib.plot"):
+                assert all(not n.startswith("_") for n in names), (path.name, module, names)

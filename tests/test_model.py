@@ -1,0 +1,158 @@
+"""The model layer: indenter measures, body kernels, the contact and its operators.
+
+Every formula of :mod:`contactlib.indenter` is checked against an independent
+evaluation (quadrature of its definition, the Hertz relations), and the two
+operator kinds of :mod:`contactlib.operators` against each other.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from contactlib import history_solver as hs
+from contactlib.body import ElasticBody
+from contactlib.elements import graded_mesh
+from contactlib.geometry import Geometry
+from contactlib.indenter import GEOMETRIES, Cylinder, Sphere, indenter
+from contactlib.kernels import disc, strip
+from contactlib.model import Contact, contact
+from contactlib.operators import StickBlocks, nodal_operator_part, operator_part, step_operator
+from contactlib.theory import beta_of_nu, hertz_pressure
+
+EDGES = np.array([0.0, 0.1, 0.35, 0.6, 0.95, 1.2])
+
+
+def _quad(f, lo: float, hi: float, order: int = 12) -> float:
+    t, w = np.polynomial.legendre.leggauss(order)
+    x = lo + 0.5 * (hi - lo) * (t + 1.0)
+    return float(0.5 * (hi - lo) * np.sum(w * f(x)))
+
+
+def _measure(ind, x):
+    """dA/dx: 2 pi r (ring) or 2 (strip pair, both sides of the axis)."""
+    return 2.0 * np.pi * x if isinstance(ind, Sphere) else 2.0 * np.ones_like(x)
+
+
+@pytest.mark.parametrize("name", GEOMETRIES)
+def test_element_measures_are_integrals_of_their_definitions(name):
+    ind = indenter(name)
+    lo, hi = EDGES[:-1], EDGES[1:]
+    area = [_quad(lambda x: _measure(ind, x), a, b) for a, b in zip(lo, hi)]
+    res = [_quad(lambda x: ind.shear_shape(x) * _measure(ind, x), a, b) for a, b in zip(lo, hi)]
+    np.testing.assert_allclose(ind.element_areas(EDGES), area, rtol=1e-13)
+    np.testing.assert_allclose(ind.shear_resultants(EDGES), res, rtol=1e-13)
+    np.testing.assert_allclose(ind.mean_shear_shape(EDGES), np.divide(res, area), rtol=1e-13)
+    p = np.array([3.0, 1.0, 2.0, 0.5, 4.0])
+    assert ind.load_of_steps(EDGES, p) == pytest.approx(float(np.dot(p, area)), rel=1e-13)
+    # a piecewise-linear pressure, integrated exactly
+    nodal = np.array([2.0, 1.5, 1.0, 0.7, 0.2, 0.0])
+
+    def linear(x):
+        return np.interp(x, EDGES, nodal) * _measure(ind, x)
+    exact = sum(_quad(linear, a, b) for a, b in zip(lo, hi))
+    assert ind.load_of_linear(EDGES, nodal) == pytest.approx(exact, rel=1e-13)
+
+
+@pytest.mark.parametrize("name", GEOMETRIES)
+def test_hertz_formulas_agree(name):
+    """The Hertz load is the load of the Hertz pressure p0 sqrt(1 - x^2), and P ~ a^d."""
+    ind = indenter(name)
+    nodes = np.linspace(0.0, 1.0, 20001)
+    p = ind.p0 * hertz_pressure(nodes)
+    assert ind.load_of_linear(nodes, p) == pytest.approx(ind.hertz_load, rel=1e-5)
+    for level in (0.001, 0.3, 1.0):
+        a = ind.hertz_radius(level)
+        assert a ** ind.load_exponent == pytest.approx(level, rel=1e-14)
+    assert ind.work_exponent == ind.load_exponent + 2
+
+
+def test_uncoupled_friction_limits():
+    """Both closed forms vanish at c/a = 0 and grow without bound as c/a -> 1."""
+    beta = beta_of_nu(0.3)
+    for ind in (Sphere(), Cylinder()):
+        k = ind.uncoupled_friction(beta, np.array([0.0, 0.5, 1.0 - 1e-12]))
+        assert k[0] == 0.0 and 0.0 < k[1] < k[2] and k[2] > 1.0
+    # sphere near c = 0: k ~ beta / K'(g), which is ~ beta / ln(4/g)
+    g = 1e-8
+    assert Sphere().uncoupled_friction(beta, g) == pytest.approx(beta / math.log(4 / g), rel=1e-6)
+
+
+def test_unknown_geometry_is_refused_with_the_name():
+    with pytest.raises(ValueError, match="'cone'"):
+        indenter("cone")
+    with pytest.raises(ValueError, match="sphere, cylinder"):
+        contact("cone", 0.3)
+
+
+def test_the_body_answers_rings_and_strips_with_the_closed_forms():
+    x, s = np.array([0.2, 0.7, 1.5]), np.array([1.0, 1.0, 1.0])
+    half = ElasticBody(0.25)
+    for got, want in ((half.ring_pressure(x, s), disc.pressure_disc(x, s, 0.25)),
+                      (half.ring_shear(x, s), disc.shear_disc(x, s, 0.25)),
+                      (half.strip_pressure(x, s), strip.pressure_strip(x, s, 0.25, np.inf)),
+                      (ElasticBody(0.25, 0.1).strip_shear(x, s),
+                       strip.shear_strip(x, s, 0.25, 10.0))):
+        for a, b in zip(got, want):
+            np.testing.assert_array_equal(a, b)
+    with pytest.raises(NotImplementedError, match="layer"):
+        ElasticBody(0.3, 0.1).ring_pressure(x, s)
+
+
+@pytest.mark.parametrize("name, slab", [("sphere", 0.0), ("cylinder", 0.0), ("cylinder", 0.05)])
+def test_geometry_is_the_contact_of_its_names(name, slab):
+    g = Geometry(name, 0.3, slab)
+    m = contact(name, 0.3, slab)
+    assert isinstance(g, Contact)
+    assert (g.indenter, g.body) == (m.indenter, m.body)
+    assert g.thickness == m.body.thickness
+    assert (g.p0, g.hertz_load, g.work_factor) == (m.p0, m.hertz_load, m.work_factor)
+    assert m.decoupled is False and contact(name, 0.5, slab).decoupled is True
+
+
+@pytest.mark.parametrize("name, slab", [("sphere", 0.0), ("cylinder", 0.0), ("cylinder", 0.05)])
+def test_step_operator_is_the_linear_operator_of_step_tractions(name, slab):
+    """A step traction on element j is a piecewise-linear one with a jump: the
+    difference of two nearly coincident nodes gives the same displacements."""
+    m = contact(name, 0.3, slab)
+    edges = np.linspace(0.0, 1.0, 5)
+    x = np.array([0.05, 0.4, 0.77, 1.3])
+    eps = 1e-7
+    for part in ("normal", "shear"):
+        steps = step_operator(m, edges, x, part)
+        # the step on [e_j, e_{j+1}] = linear hat sum on nodes with eps-wide ramps
+        nodes = np.unique(np.concatenate([edges, edges[1:] - eps]))
+        lin = operator_part(m, nodes, x, part)
+        for j in range(edges.size - 1):
+            phi = ((nodes >= edges[j]) & (nodes <= edges[j + 1] - eps)).astype(float)
+            if j == edges.size - 2:
+                phi[-1] = 0.0  # phi_N = 0: the last ramp ends at the contact edge
+            np.testing.assert_allclose((lin @ phi)[:2], steps[:2, :, j], atol=2e-6)
+
+
+def test_history_operators_come_from_the_step_operator_and_the_indenter():
+    m = contact("sphere", 0.3)
+    ops = hs.build_operators(m, 12)
+    np.testing.assert_array_equal(ops.pw, step_operator(m, ops.edges, ops.mid, "normal")[0])
+    np.testing.assert_array_equal(ops.qu,
+                                  step_operator(m, ops.edges, ops.mid, "shear")[1] / ops.mid)
+    np.testing.assert_array_equal(ops.area, m.indenter.element_areas(ops.edges))
+    assert ops.model is m and ops.p_max == m.hertz_load
+
+
+def test_stick_blocks_are_a_caller_owned_store():
+    """With a store of its own a caller gets the same operator, and the store holds the block."""
+    m = contact("sphere", 0.3)
+    mesh = graded_mesh(32, 0.5)
+    store = StickBlocks(size=1)
+    a = nodal_operator_part(m, mesh, "normal", cache=store)
+    b = operator_part(m, mesh.nodes, mesh.nodes, "normal")
+    assert len(store) == 1
+    np.testing.assert_allclose(a, b, rtol=0, atol=1e-12 * np.max(np.abs(b)))
+    nodal_operator_part(m, graded_mesh(32, 0.5), "shear", cache=store)
+    assert len(store) == 1  # bounded: the oldest block went
+    # the half-plane's kernels are not homogeneous: nothing is stored
+    nodal_operator_part(contact("cylinder", 0.3), mesh, "normal", cache=store)
+    assert len(store) == 1

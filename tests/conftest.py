@@ -3,7 +3,8 @@
 Markers (registered in ``pyproject.toml``):
 
 ``slow``
-    more than about 10 s on a loaded 2-core machine. ``python -m pytest -m "not slow"``
+    more than about 10 s on a loaded 2-core machine, or a snakemake run that repeats
+    a check the fast tier makes in the library. ``python -m pytest -m "not slow"``
     is the fast tier for development; every property checked by a slow test keeps a
     cheaper check (smaller n, a tiny configuration, one of several refusals) in the
     fast tier.

@@ -353,6 +353,7 @@ def test_parse_scenes_reports_every_problem_at_once() -> None:
 
 @needs_snakemake
 @pytest.mark.workflow
+@pytest.mark.slow  # fast tier: test_parse_scenes_reports_every_problem_at_once
 def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> None:
     config = {
         "scenes": {
@@ -375,6 +376,7 @@ def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> Non
 
 @needs_snakemake
 @pytest.mark.workflow
+@pytest.mark.slow  # fast tier: test_check_yaml
 def test_workflow_yaml_syntax_error_names_file_and_line(tmp_path) -> None:
     text = "scenes:\n  a:\n    geometry: sphere\n    nu: 0.3\n   n: [32\n"
     code, out = dry_run(make_workdir(tmp_path, text, folders=("workflow",)))

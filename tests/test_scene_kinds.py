@@ -113,6 +113,7 @@ def test_workflow_refuses_a_history_scene_in_a_paper_figure(tmp_path):
 
 @needs_snakemake
 @pytest.mark.workflow
+@pytest.mark.slow  # fast tier: test_bad_history_scene_is_refused_naming_the_key
 def test_workflow_schema_names_a_bad_history_key(tmp_path):
     cfg = {"scenes": {"cyc": dict(HIST, steps=0)}}
     wd = make_workdir(tmp_path, cfg)

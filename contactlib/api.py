@@ -171,6 +171,22 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     ------
     ValueError
         For invalid input; the message names the argument.
+
+    Examples
+    --------
+    Without friction the load and the central pressure are Hertz's:
+
+    >>> from contactlib import solve
+    >>> sol = solve("sphere", 0.3, stick_ratio=0.0, n=64)
+    >>> round(sol.load_ratio, 3), round(float(sol.pressure[0]), 3)
+    (1.0, 1.0)
+
+    The stick zone a friction coefficient produces; Spence (1975) has
+    c/a = 0.5 for nu = 0 and k = 0.2986:
+
+    >>> sol = solve("sphere", 0.0, friction=0.2986, n=64)
+    >>> round(sol.stick_ratio, 3), bool(sol.consistent)
+    (0.5, True)
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu)
@@ -247,6 +263,17 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     -------
     list of Solution
         One per stick ratio, all on the same ``xi`` grid.
+
+    Examples
+    --------
+    Near incompressibility (beta -> 0) the uncoupled closed form is exact:
+
+    >>> from contactlib import sweep
+    >>> from contactlib.theory import uncoupled_friction
+    >>> sols = sweep("sphere", 0.499, [0.25, 0.5], n=64)
+    >>> [f"{s.friction_coefficient / uncoupled_friction('sphere', 0.499, s.stick_ratio):.3f}"
+    ...  for s in sols]
+    ['1.000', '1.000']
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu)

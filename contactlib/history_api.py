@@ -130,6 +130,15 @@ class HistoryResult:
         elements, and neither estimate exceeds ``max_error``.
     max_error : float
         The accuracy a step must reach to be resolved.
+
+    Examples
+    --------
+    >>> from contactlib import history
+    >>> res = history("cylinder", 0.3, 0.2, [0, 1], 4, n=40)
+    >>> res.pressure.shape, res.state.shape    # (steps + 1, n)
+    ((5, 40), (5, 40))
+    >>> int(res.segment[0]), int(res.segment[-1])
+    (0, 1)
     """
 
     geometry: str
@@ -267,6 +276,25 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     50 ... 800 steps. The work of a 0 -> 1 -> 0 cycle at the default n and
     1600 steps a segment agrees with n = 480 to 0.1 % (c/a = 0.7 at the top)
     and 0.5 % (c/a = 0.9); see ``benchmarks/report_history.py``.
+
+    Examples
+    --------
+    A load-unload cycle, 10 steps a segment:
+
+    >>> from contactlib import history
+    >>> res = history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=60)
+    >>> res.load_ratio.shape      # step 0 (unloaded), then 2 x 10 steps
+    (21,)
+    >>> float(res.load_ratio[10]), float(res.load_ratio[-1])
+    (1.0, 0.0)
+    >>> bool(res.frictional_work[-1] > res.frictional_work[10] > 0)  # unloading slips too
+    True
+
+    Without friction, or without slip, nothing is dissipated:
+
+    >>> [float(history("sphere", 0.3, k, [0, 1], 5, n=60).frictional_work[-1])
+    ...  for k in (0.0, float("inf"))]
+    [0.0, 0.0]
     """
     geometry = validate.geometry(geometry)
     nu = validate.nu(nu)

@@ -24,8 +24,7 @@ only for their types and constants, and only when a conversion needs them.
 Examples
 --------
 >>> import numpy as np
->>> from contactlib.indenter import indenter
-from contactlib.result import Solution
+>>> from contactlib.result import Solution
 >>> from contactlib.io import to_dataset
 >>> xi = np.linspace(0.0, 1.0, 5)
 >>> sol = Solution("sphere", 0.3, "default", 4, 0.0, 0.5, 0.2, xi,
@@ -266,8 +265,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     Examples
     --------
     >>> import numpy as np
-    >>> from contactlib.indenter import indenter
-from contactlib.result import Solution
+    >>> from contactlib.result import Solution
     >>> xi = np.linspace(0.0, 1.0, 3)
     >>> sols = [Solution("cylinder", 0.3, "default", 2, 0.0, g, g, xi,
     ...                  1 - xi**2, 0 * xi, 0 * xi, 1.0) for g in (0.2, 0.4)]
@@ -1023,6 +1021,20 @@ def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     -------
     pathlib.Path
         The destination path.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from contactlib import solve
+    >>> from contactlib.io import read_dataset, to_dataset, write_dataset
+    >>> ds = to_dataset(solve("sphere", 0.3, stick_ratio=0.5, n=64))
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = write_dataset(ds, pathlib.Path(tmp) / "case.nc")
+    ...     back = read_dataset(path)
+    ...     again = write_dataset(back, pathlib.Path(tmp) / "again.nc")
+    ...     same_bytes = path.read_bytes() == again.read_bytes()
+    >>> bool(back["friction_coefficient"].equals(ds["friction_coefficient"])), same_bytes
+    (True, True)
     """
     encoding = _encoding(ds)
     return _atomic_write(path, lambda tmp: ds.to_netcdf(

@@ -182,6 +182,17 @@ class Solution:
         is not resolved is not to be used as a good number.
     max_error : float
         The accuracy asked for (relative error of k).
+
+    Examples
+    --------
+    >>> from contactlib import solve
+    >>> sol = solve("cylinder", 0.3, stick_ratio=0.5, n=64)
+    >>> print(repr(sol).splitlines()[0])
+    Solution: cylinder, nu = 0.3, method = default, n = 64, a/h = 0
+    >>> float(sol.xi[0]), float(sol.xi[-1]), float(sol.pressure[-1])  # smooth edge: p(a) = 0
+    (0.0, 1.0, 0.0)
+    >>> float(sol.shear[0]), float(sol.tangential_displacement[0])  # nothing moves on the axis
+    (0.0, 0.0)
     """
 
     geometry: str

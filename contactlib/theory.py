@@ -48,6 +48,17 @@ def uncoupled_friction(geometry: str, nu: float, gamma):
     and K'(g) = K(sqrt(1 - g^2)) (Spence 1973, 1975); beta of a rigid
     indenter on a body of Poisson's ratio ``nu``. The formulas are
     :meth:`contactlib.indenter.Indenter.uncoupled_friction`.
+
+    Examples
+    --------
+    At g = 1/sqrt(2), K(g) = K'(g), so the cylinder's k is beta:
+
+    >>> from contactlib.theory import beta_of_nu, uncoupled_friction
+    >>> k = uncoupled_friction("cylinder", 0.3, 2**-0.5)
+    >>> round(float(k), 12) == round(beta_of_nu(0.3), 12)
+    True
+    >>> float(uncoupled_friction("sphere", 0.5, 0.5))  # beta = 0: no coupling
+    0.0
     """
     return indenter(geometry).uncoupled_friction(beta_of_nu(nu), gamma)
 

@@ -19,10 +19,6 @@ import io as _io
 import math
 import os
 import re
-import shutil
-import subprocess
-import sys
-from pathlib import Path
 from unittest import mock
 
 import jsonschema
@@ -33,11 +29,11 @@ from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 import contactlib
+from conftest import REPO, dry_run, make_workdir, needs_snakemake
 from contactlib import api, cli
 from contactlib.result import Solution
 from contactlib.scene import parse_scene
 
-REPO = Path(__file__).resolve().parents[1]
 SCHEMA = yaml.safe_load((REPO / "workflow/schemas/config.schema.yaml").read_text())
 FAST = settings(max_examples=150, deadline=None,
                 suppress_health_check=[HealthCheck.function_scoped_fixture])
@@ -408,21 +404,8 @@ def test_parse_scene_refuses_odd_types(extra):
 
 
 # ----------------------------------------------------------------------------- workflow config
-def _workdir(tmp: Path, config: dict) -> Path:
-    shutil.copy(REPO / "Snakefile", tmp / "Snakefile")
-    shutil.copytree(REPO / "workflow", tmp / "workflow",
-                    ignore=shutil.ignore_patterns("__pycache__"))
-    (tmp / "config").mkdir()
-    (tmp / "config/config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    return tmp
-
-
-def _dry_run(wd: Path) -> tuple[int, str]:
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "1", "--dry-run"],
-                          cwd=wd, capture_output=True, text=True, timeout=300)
-    return proc.returncode, proc.stdout + proc.stderr
-
-
+@needs_snakemake
+@pytest.mark.workflow
 def test_workflow_reports_every_schema_problem_by_key(tmp_path):
     ok = {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.3]}
     config = {
@@ -440,7 +423,7 @@ def test_workflow_reports_every_schema_problem_by_key(tmp_path):
         "figures": {"fig9": ["nu-text"]},
         "scene": {},
     }
-    code, text = _dry_run(_workdir(tmp_path, config))
+    code, text = dry_run(make_workdir(tmp_path, config, folders=("workflow",)))
     assert code != 0
     for where in ("scenes.nu-text.nu", "scenes.n-float.n", "scenes.n-huge.n",
                   "scenes.ratios-word.stick_ratios", "scenes.ratios-empty.stick_ratios",
@@ -452,12 +435,15 @@ def test_workflow_reports_every_schema_problem_by_key(tmp_path):
 
 @pytest.mark.parametrize("scene, where", [
     ({"geometry": "sphere", "nu": float("nan"), "stick_ratios": [0.3]}, "scenes.x.nu"),
-    ({"geometry": "cylinder", "nu": 0.3, "slab_ratio": float("inf"), "stick_ratios": [0.3]},
-     "scenes.x.slab_ratio"),
-    ({"geometry": "sphere", "nu": 0.3, "n": 8, "stick_ratios": [0.3]}, "scenes.x.n"),
+    pytest.param({"geometry": "cylinder", "nu": 0.3, "slab_ratio": float("inf"),
+                  "stick_ratios": [0.3]}, "scenes.x.slab_ratio", marks=pytest.mark.slow),
+    pytest.param({"geometry": "sphere", "nu": 0.3, "n": 8, "stick_ratios": [0.3]}, "scenes.x.n",
+                 marks=pytest.mark.slow),
 ])
+@needs_snakemake
+@pytest.mark.workflow
 def test_workflow_library_rules_catch_what_the_schema_lets_through(tmp_path, scene, where):
     assert not list(jsonschema.Draft202012Validator(SCHEMA).iter_errors({"scenes": {"x": scene}}))
-    code, text = _dry_run(_workdir(tmp_path, {"scenes": {"x": scene}}))
+    code, text = dry_run(make_workdir(tmp_path, {"scenes": {"x": scene}}, folders=("workflow",)))
     assert code != 0 and where in text, text
     assert not (tmp_path / "results").exists()

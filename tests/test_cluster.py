@@ -15,7 +15,6 @@ from __future__ import annotations
 import collections
 import os
 import re
-import shutil
 import signal
 import subprocess
 import sys
@@ -27,13 +26,12 @@ import pytest
 import yaml
 
 import contactlib
+from conftest import REPO, make_workdir, needs_snakemake, snakemake
 from contactlib.io import read_dataset
 
-REPO = Path(__file__).resolve().parents[1]
 LOCAL = REPO / "profiles" / "local-cluster"
 SLURM = REPO / "profiles" / "slurm"
-SNAKEMAKE = [sys.executable, "-m", "snakemake"]
-ENV = dict(os.environ, PYTHONHASHSEED="0")
+pytestmark = pytest.mark.cluster
 
 
 # ----------------------------------------------------------------------------- the stand-in scheduler
@@ -117,18 +115,15 @@ EXPECTED_JOBS = {"influence": 1, "solve": 1, "check": 1, "assemble": 1, "figures
 
 @pytest.fixture(scope="module")
 def cluster_run(tmp_path_factory):
-    wd = tmp_path_factory.mktemp("cluster")
-    shutil.copy(REPO / "Snakefile", wd / "Snakefile")
-    for folder in ("workflow", "profiles"):
-        shutil.copytree(REPO / folder, wd / folder, ignore=shutil.ignore_patterns("__pycache__"))
-    (wd / "config").mkdir()
-    (wd / "config/config.yaml").write_text(yaml.safe_dump(CLUSTER_CONFIG, sort_keys=False))
-    proc = subprocess.run(SNAKEMAKE + ["--profile", "profiles/local-cluster"], cwd=wd, env=ENV,
-                          capture_output=True, text=True, timeout=900)
-    assert proc.returncode == 0, f"{proc.stdout}\n{proc.stderr}"
+    wd = make_workdir(tmp_path_factory.mktemp("cluster"), CLUSTER_CONFIG,
+                      folders=("workflow", "profiles"))
+    proc = snakemake(wd, "--profile", "profiles/local-cluster", cores=None)
     return wd, proc.stdout + proc.stderr
 
 
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
 def test_local_cluster_profile_runs_the_default_target(cluster_run):
     wd, text = cluster_run
     assert "cluster-generic" in text or "external jobid" in text
@@ -158,9 +153,7 @@ def test_local_cluster_profile_runs_the_default_target(cluster_run):
     np.testing.assert_allclose(ds["pressure"].values, np.stack([s.pressure for s in ref]),
                                rtol=1e-13, atol=1e-15)
     # a second invocation finds nothing to do and submits nothing
-    again = subprocess.run(SNAKEMAKE + ["--profile", "profiles/local-cluster"], cwd=wd, env=ENV,
-                           capture_output=True, text=True, timeout=300)
-    assert again.returncode == 0
+    again = snakemake(wd, "--profile", "profiles/local-cluster", cores=None, timeout=300)
     assert "Nothing to be done" in again.stdout + again.stderr
     assert len((wd / "results/logs/cluster-submissions.log").read_text().splitlines()) == \
         len(lines)
@@ -207,15 +200,15 @@ def test_slurm_profile_names_the_executor_and_leaves_account_to_the_user():
     assert "snakemake-executor-plugin-cluster-generic" in pyproject
 
 
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
 def test_slurm_profile_dry_run(tmp_path):
     """With the optional plugin installed (``pip install -e '.[slurm]'``) the profile loads."""
     pytest.importorskip("snakemake_executor_plugin_slurm")
-    shutil.copy(REPO / "Snakefile", tmp_path / "Snakefile")
-    for folder in ("workflow", "profiles", "config"):
-        shutil.copytree(REPO / folder, tmp_path / folder,
-                        ignore=shutil.ignore_patterns("__pycache__"))
-    proc = subprocess.run(SNAKEMAKE + ["--profile", "profiles/slurm", "--dry-run"],
-                          cwd=tmp_path, env=ENV, capture_output=True, text=True, timeout=300)
+    wd = make_workdir(tmp_path, folders=("workflow", "profiles", "config"))
+    proc = snakemake(wd, "--profile", "profiles/slurm", "--dry-run", cores=None, check=False,
+                     timeout=300)
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text
     assert "influence" in text and "solve" in text

@@ -234,6 +234,7 @@ print(json.dumps({"n": s.n, "k": s.friction_coefficient, "converged": s.converge
 """
 
 
+@pytest.mark.slow
 def test_largest_supported_n_and_its_memory():
     """n = MAX_N = 4096 (sphere, c/a = 0.5, with work): peak memory about 3.3 GiB."""
     proc = subprocess.run([sys.executable, "-c", _LARGEST], capture_output=True, text=True,
@@ -246,8 +247,13 @@ def test_largest_supported_n_and_its_memory():
     assert abs(out["k"] - 0.152481) < 2e-5  # converged value (docs/validation.md)
     assert abs(out["load"] - 1.027397) < 1e-5 and math.isfinite(out["work"])
     assert out["peak_mib"] < 4096  # the limit in docs/validation.md: under 4 GiB
+
+
+def test_n_above_the_largest_supported_is_refused():
+    """The fast tier's part of the largest-n check: above MAX_N nothing is solved."""
+    assert api.MAX_N == 4096
     for n in (api.MAX_N + 1, 10**6):
-        with pytest.raises(ValueError, match=r"^n must be in \[2, 4096\]"):
+        with pytest.raises(ValueError, match=r"^n must be an integer in \[2, 4096\]"):
             solve("sphere", 0.3, stick_ratio=0.5, n=n)
 
 

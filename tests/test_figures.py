@@ -338,6 +338,7 @@ _SCRIPT = textwrap.dedent("""
 """)
 
 
+@pytest.mark.slow
 def test_write_figure_is_byte_reproducible_across_processes(tmp_path):
     """Fresh interpreters with different hash seeds write identical files."""
     procs = []

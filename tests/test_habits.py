@@ -9,9 +9,7 @@ damaged intermediates named with the fix.
 
 from __future__ import annotations
 
-import math
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -23,11 +21,11 @@ import pytest
 import yaml
 
 import contactlib
+from conftest import ENV, REPO, dry_run, make_workdir, needs_snakemake
 from contactlib import api, cli, io, stages
 from contactlib.result import Solution, short_repr
 from contactlib.scene import ConfigError, parse_scene, parse_scenes
 
-REPO = Path(__file__).resolve().parents[1]
 GOOD = ["--geometry", "sphere", "--nu", "0.3"]
 
 
@@ -107,9 +105,7 @@ def test_version(capsys) -> None:
 
 
 def test_version_python_m() -> None:
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
-        p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
-    proc = subprocess.run([sys.executable, "-m", "contactlib", "--version"], cwd=REPO, env=env,
+    proc = subprocess.run([sys.executable, "-m", "contactlib", "--version"], cwd=REPO, env=ENV,
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0 and proc.stdout == f"contactlib {contactlib.__version__}\n"
 
@@ -355,29 +351,9 @@ def test_parse_scenes_reports_every_problem_at_once() -> None:
     assert str(err.value).count("\n") == len(where) - 1
 
 
-def _workdir(tmp: Path, config_text: str) -> Path:
-    shutil.copy(REPO / "Snakefile", tmp / "Snakefile")
-    shutil.copytree(REPO / "workflow", tmp / "workflow",
-                    ignore=shutil.ignore_patterns("__pycache__"))
-    (tmp / "config").mkdir()
-    (tmp / "config" / "config.yaml").write_text(config_text)
-    return tmp
-
-
-def _dry_run(wd: Path) -> tuple[int, str]:
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
-        p for p in (str(REPO), os.environ.get("PYTHONPATH", "")) if p)}
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "1", "--dry-run"],
-                          cwd=wd, env=env, capture_output=True, text=True, timeout=300)
-    return proc.returncode, proc.stdout + proc.stderr
-
-
-needs_snakemake = pytest.mark.skipif(
-    subprocess.run([sys.executable, "-m", "snakemake", "--version"],
-                   capture_output=True).returncode != 0, reason="snakemake is not installed")
-
-
 @needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow  # fast tier: test_parse_scenes_reports_every_problem_at_once
 def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> None:
     config = {
         "scenes": {
@@ -387,7 +363,7 @@ def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> Non
         },
         "figures": {"history_loop": ["cylce"], "fig2": ["curve", "curves"]},
     }
-    code, text = _dry_run(_workdir(tmp_path, yaml.safe_dump(config)))
+    code, text = dry_run(make_workdir(tmp_path, config, folders=("workflow",)))
     assert code != 0
     for where in ("scenes.cycle: 'steps' is a required property",
                   "scenes.curve.n: n must be at least 16",
@@ -399,9 +375,11 @@ def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> Non
 
 
 @needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow  # fast tier: test_check_yaml
 def test_workflow_yaml_syntax_error_names_file_and_line(tmp_path) -> None:
     text = "scenes:\n  a:\n    geometry: sphere\n    nu: 0.3\n   n: [32\n"
-    code, out = _dry_run(_workdir(tmp_path, text))
+    code, out = dry_run(make_workdir(tmp_path, text, folders=("workflow",)))
     assert code != 0 and "config/config.yaml, line 5, column 4: YAML syntax error" in out, out
 
 

@@ -15,22 +15,19 @@ at n = 8, all four figures.
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import subprocess
-import sys
 import time
 from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
+from conftest import ENV, SNAKEMAKE, make_workdir, needs_snakemake, snakemake
 from contactlib.io import read_arrays, read_dataset
 
-REPO = Path(__file__).resolve().parents[1]
-SNAKEMAKE = [sys.executable, "-m", "snakemake"]
-ENV = dict(os.environ, PYTHONHASHSEED="0")
+pytestmark = [needs_snakemake, pytest.mark.workflow, pytest.mark.slow]
+
 
 SMALL = {
     "scenes": {
@@ -45,22 +42,6 @@ SMALL = {
 }
 
 FINAL = ("datasets/*.nc", "figures/*.png", "figures/*.pdf", "tables/*")
-
-
-def make_workdir(tmp: Path) -> Path:
-    shutil.copy(REPO / "Snakefile", tmp / "Snakefile")
-    shutil.copytree(REPO / "workflow", tmp / "workflow",
-                    ignore=shutil.ignore_patterns("__pycache__"))
-    (tmp / "config").mkdir()
-    (tmp / "config" / "config.yaml").write_text(yaml.safe_dump(SMALL, sort_keys=False))
-    return tmp
-
-
-def snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
-    proc = subprocess.run(SNAKEMAKE + ["--cores", "2", *args], cwd=workdir, env=ENV,
-                          capture_output=True, text=True, timeout=900)
-    assert proc.returncode == 0, f"snakemake {args} failed:\n{proc.stdout}\n{proc.stderr}"
-    return proc
 
 
 def final_files(workdir: Path) -> dict[str, bytes]:
@@ -88,14 +69,14 @@ def assert_same_outputs(a: Path, b: Path) -> None:
 @pytest.fixture(scope="module")
 def reference(tmp_path_factory) -> Path:
     """An uninterrupted run of the default target."""
-    wd = make_workdir(tmp_path_factory.mktemp("reference"))
+    wd = make_workdir(tmp_path_factory.mktemp("reference"), SMALL)
     snakemake(wd)
     return wd
 
 
 # ----------------------------------------------------------------------------- determinism
 def test_two_runs_give_identical_datasets_and_figures(reference, tmp_path):
-    wd = make_workdir(tmp_path)
+    wd = make_workdir(tmp_path, SMALL)
     snakemake(wd)
     assert_same_outputs(reference, wd)
 
@@ -185,7 +166,7 @@ def _no_half_written_files(workdir: Path) -> list[Path]:
 
 
 def test_kill_and_resume_gives_the_uninterrupted_results(reference, tmp_path):
-    wd = make_workdir(tmp_path)
+    wd = make_workdir(tmp_path, SMALL)
     when = _kill_mid_run(wd)
     datasets = sorted(p.name for p in (wd / "results" / "datasets").glob("*.nc"))
     finished = list((wd / "results" / "influence").rglob("*.npz"))

@@ -1,21 +1,20 @@
 """Scenes of kind history and scenes with a tolerance: parsing, the workflow, the data.
 
-The workflow part copies the workflow into a temporary folder (as
-tests/test_workflow.py does) and runs a tiny history scene end to end.
+The workflow part copies the workflow into a temporary folder (the
+helpers of tests/conftest.py) and runs a tiny history scene end to end.
 """
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-import yaml
 
+from conftest import dry_run, make_workdir, needs_snakemake, snakemake
 from contactlib import history
 from contactlib.io import history_to_dataset, stack_histories
 from contactlib.io import read_dataset
 from contactlib.scene import HistoryScene, Scene, parse_scene
 
-from test_workflow import make_workdir, run  # noqa: E402 (the shared workflow helpers)
 
 HIST = {"kind": "history", "geometry": "sphere", "nu": 0.3, "friction": [0.3, 0.1],
         "load_path": [0, 1, 0], "steps": 4, "n": 40}
@@ -84,12 +83,15 @@ def test_stacked_histories_equal_the_single_runs():
 
 
 # ----------------------------------------------------------------------------- workflow
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
 def test_workflow_runs_a_history_scene_and_its_figures(tmp_path):
     cfg = {"scenes": {"cyc": HIST},
            "figures": {"history_stick_radius": ["cyc"], "history_stick_map": ["cyc"],
                        "history_loop": ["cyc"], "history_energy": ["cyc"]}}
     wd = make_workdir(tmp_path, cfg)
-    run(wd)
+    snakemake(wd)
     ds = read_dataset(wd / "results" / "datasets" / "cyc.nc")
     assert ds.attrs["scene"] == "cyc" and ds.sizes["friction_coefficient"] == 2
     direct = history("sphere", 0.3, 0.1, [0, 1, 0], 4, n=40)
@@ -99,19 +101,24 @@ def test_workflow_runs_a_history_scene_and_its_figures(tmp_path):
         assert (wd / "results" / "figures" / f"{fig}.png").stat().st_size > 0
 
 
+@needs_snakemake
+@pytest.mark.workflow
 def test_workflow_refuses_a_history_scene_in_a_paper_figure(tmp_path):
     cfg = {"scenes": {"cyc": HIST}, "figures": {"fig2": ["cyc"]}}
     wd = make_workdir(tmp_path, cfg)
-    out = run(wd, "--dry-run", check=False)
-    assert out.returncode != 0
-    assert "figures.fig2: scene 'cyc' is of kind history" in out.stdout + out.stderr
+    code, text = dry_run(wd)
+    assert code != 0
+    assert "figures.fig2: scene 'cyc' is of kind history" in text
 
 
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow  # fast tier: test_bad_history_scene_is_refused_naming_the_key
 def test_workflow_schema_names_a_bad_history_key(tmp_path):
     cfg = {"scenes": {"cyc": dict(HIST, steps=0)}}
     wd = make_workdir(tmp_path, cfg)
-    out = run(wd, "--dry-run", check=False)
-    assert out.returncode != 0 and "scenes.cyc.steps" in out.stdout + out.stderr
+    code, text = dry_run(wd)
+    assert code != 0 and "scenes.cyc.steps" in text
 
 
 # ----------------------------------------------------------------------------- tolerance
@@ -127,7 +134,8 @@ def _reference_k(geometry: str, slab: float, c: float, n: int) -> float:
 
 @pytest.mark.parametrize("geometry, slab, tolerance, reference_n", [
     ("cylinder", 0.05, 1e-3, 512),   # planned n ~ 64: the reference is 8x finer
-    ("sphere", 0.0, 1e-5, 2048),     # planned n ~ 640: the reference is 3x finer
+    pytest.param("sphere", 0.0, 1e-5, 2048,  # planned n ~ 640: the reference is 3x finer
+                 marks=pytest.mark.slow),
 ])
 def test_tolerance_scene_meets_its_target_against_a_much_finer_solution(
         geometry, slab, tolerance, reference_n):

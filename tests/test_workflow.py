@@ -6,68 +6,18 @@ folder, writes its own config, and runs snakemake there as a subprocess.
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
-import subprocess
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 import yaml
 
 import contactlib
+from conftest import REPO, job_counts, make_workdir, needs_snakemake, nothing_to_do, snakemake
 from contactlib.io import read_dataset
 
-REPO = Path(__file__).resolve().parents[1]
-SNAKEMAKE = [sys.executable, "-m", "snakemake"]
-
-pytestmark = pytest.mark.skipif(shutil.which("snakemake") is None and
-                                subprocess.run(SNAKEMAKE + ["--version"],
-                                               capture_output=True).returncode != 0,
-                                reason="snakemake is not installed")
-
-
-def make_workdir(tmp: Path, config: dict | None = None) -> Path:
-    """A copy of the workflow in tmp, with the given config (default: the repo's)."""
-    shutil.copy(REPO / "Snakefile", tmp / "Snakefile")
-    shutil.copytree(REPO / "workflow", tmp / "workflow",
-                    ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copytree(REPO / "config", tmp / "config")
-    if config is not None:
-        (tmp / "config" / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    return tmp
-
-
-def run(workdir: Path, *args: str, check: bool = True) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PYTHONHASHSEED="0")
-    proc = subprocess.run(SNAKEMAKE + ["--cores", "2", *args], cwd=workdir, env=env,
-                          capture_output=True, text=True, timeout=900)
-    if check and proc.returncode != 0:
-        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{proc.stdout}\n{proc.stderr}")
-    return proc
-
-
-def job_counts(workdir: Path, *args: str) -> dict[str, int]:
-    """Jobs a dry run would execute, by rule."""
-    out = run(workdir, "--dry-run", *args)
-    text = out.stdout + out.stderr
-    table = text[text.index("Job stats:"):]
-    counts = {}
-    for line in table.splitlines()[3:]:
-        parts = line.split()
-        if len(parts) != 2 or not parts[1].isdigit() or parts[0] == "total":
-            if parts and parts[0] == "total":
-                break
-            continue
-        counts[parts[0]] = int(parts[1])
-    return counts
-
-
-def nothing_to_do(workdir: Path) -> bool:
-    out = run(workdir, "--dry-run")
-    return "Nothing to be done" in out.stdout + out.stderr
+pytestmark = [needs_snakemake, pytest.mark.workflow]
 
 
 TINY = {
@@ -111,6 +61,7 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
                       "key_numbers": 1, "all": 1}
 
 
+@pytest.mark.slow
 def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     cfg = {"scenes": {
         # frictionless: no shear matrices, no energy, no displacements
@@ -142,7 +93,7 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     scenes = parse_scenes(cfg["scenes"])
     # the frictionless set gets no shear part: build it and look
     key = scenes["hertz"].influence_key
-    run(wd, f"results/influence/{key}")
+    snakemake(wd, f"results/influence/{key}")
     assert sorted(p.name for p in (wd / "results" / "influence" / key).glob("*.npz")) == \
         ["normal.npz"]
     assert scenes["curve"].influence_key == scenes["curve-again"].influence_key
@@ -150,52 +101,72 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
 
 
 # ----------------------------------------------------------------------------- schema
-@pytest.mark.parametrize("key, value", [
-    ("nu", 0.7), ("geometry", "cone"), ("n", 1), ("stick_ratios", [1.7]),
-    ("method", "fem"), ("slab_ratio", -1.0), ("outputs", ["pictures"]),
-])
+@pytest.mark.parametrize("key, value", [("nu", 0.7)] + [pytest.param(*p, marks=pytest.mark.slow) for p in (
+    ("geometry", "cone"), ("n", 1), ("stick_ratios", [1.7]),
+    ("method", "fem"), ("slab_ratio", -1.0), ("outputs", ["pictures"]))])
 def test_bad_scene_is_refused_before_any_job_naming_the_key(tmp_path, key, value):
     wd = make_workdir(tmp_path)
     bad = {"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3]}
     bad[key] = value
     (tmp_path / "bad.yaml").write_text(yaml.safe_dump({"scenes": {"bad": bad}}))
-    proc = run(wd, "--configfile", "bad.yaml", check=False)
+    proc = snakemake(wd, "--configfile", "bad.yaml", check=False)
     assert proc.returncode != 0
     text = proc.stdout + proc.stderr
     assert f"scenes.bad.{key}" in text, text
     assert not (wd / "results").exists()  # nothing ran
 
 
+@pytest.mark.slow
 def test_library_rules_are_applied_after_the_schema(tmp_path):
     wd = make_workdir(tmp_path)
     cfg = {"scenes": {"bad": {"geometry": "sphere", "nu": 0.3, "method": "paper", "n": 16,
                               "stick_ratios": [0.3]}}}
     (tmp_path / "bad.yaml").write_text(yaml.safe_dump(cfg))
-    proc = run(wd, "--configfile", "bad.yaml", check=False)
+    proc = snakemake(wd, "--configfile", "bad.yaml", check=False)
     assert proc.returncode != 0
     assert "scenes.bad.stick_ratios" in proc.stderr + proc.stdout
     assert "multiple of 1/n" in proc.stderr + proc.stdout
 
 
+@pytest.mark.slow
 def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
     cfg = {"scenes": {"s": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.5],
                             "outputs": ["k_curve"]}},
            "figures": {"fig4": ["s"]}}
     wd = make_workdir(tmp_path, cfg)
-    proc = run(wd, "--dry-run", check=False)
+    proc = snakemake(wd, "--dry-run", check=False)
     assert proc.returncode != 0
     assert "figures.fig4" in proc.stderr + proc.stdout
     assert "displacements" in proc.stderr + proc.stdout
 
 
 # ----------------------------------------------------------------------------- end to end
+MICRO = {"scenes": {"micro": {"geometry": "sphere", "nu": 0.3, "method": "default", "n": 16,
+                              "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]}}}
+
+
+def test_micro_run_dataset_matches_the_library(tmp_path):
+    """The fast tier's end-to-end run: one scene, two cases, no figures."""
+    wd = make_workdir(tmp_path, MICRO)
+    snakemake(wd)
+    ds = read_dataset(wd / "results/datasets/micro.nc")
+    ref = contactlib.sweep("sphere", 0.3, [0.0, 0.5], n=16, energy=False)
+    np.testing.assert_array_equal(ds["friction_coefficient"].values,
+                                  [s.friction_coefficient for s in ref])
+    assert abs(float(ds["load_ratio"].values[0]) - 1.0) < 3e-3  # frictionless: Hertz
+    assert ds["consistent"].values.all()
+    assert (wd / "results/tables/key-numbers.csv").read_text().startswith("scene,")
+    assert not list((wd / "results").rglob("*.tmp"))
+
+
 @pytest.fixture(scope="module")
 def tiny_run(tmp_path_factory):
     wd = make_workdir(tmp_path_factory.mktemp("tiny"), TINY)
-    run(wd)
+    snakemake(wd)
     return wd
 
 
+@pytest.mark.slow
 def test_tiny_run_datasets_match_the_library(tiny_run):
     ds = read_dataset(tiny_run / "results/datasets/tiny-default.nc")
     ref = contactlib.sweep("sphere", 0.3, [0.0, 0.3, 0.6, 1.0], n=32)
@@ -216,6 +187,7 @@ def test_tiny_run_datasets_match_the_library(tiny_run):
         assert "long_name" in ds[name].attrs and "units" in ds[name].attrs, name
 
 
+@pytest.mark.slow
 def test_tiny_run_datasets_hold_only_what_was_asked(tiny_run):
     ds = read_dataset(tiny_run / "results/datasets/tiny-paper.nc")
     assert "frictional_work" in ds and "consistent" in ds
@@ -224,6 +196,7 @@ def test_tiny_run_datasets_hold_only_what_was_asked(tiny_run):
     assert not (tiny_run / "results/profiles/tiny-paper.npz").exists()
 
 
+@pytest.mark.slow
 def test_tiny_run_outputs_and_no_partial_files(tiny_run):
     for fig in ("fig2", "fig3", "fig4", "fig5"):
         for ext in ("png", "pdf"):
@@ -233,6 +206,7 @@ def test_tiny_run_outputs_and_no_partial_files(tiny_run):
     assert not list((tiny_run / "results").rglob("*.tmp"))
 
 
+@pytest.mark.slow
 def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_run, tmp_path):
     wd = make_workdir(tmp_path, TINY)
     shutil.copytree(tiny_run / "results", wd / "results")
@@ -241,7 +215,7 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
     cfg = yaml.safe_load((wd / "config/config.yaml").read_text())
     cfg["scenes"]["tiny-paper"]["nu"] = 0.25
     (wd / "config/config.yaml").write_text(yaml.safe_dump(cfg, sort_keys=False))
-    dry = run(wd, "--dry-run").stdout
+    dry = snakemake(wd, "--dry-run").stdout
     jobs = re.findall(r"^rule (\w+):\n(?:.*\n)*?    output: (\S+)", dry, flags=re.M)
     outputs = [o for _, o in jobs]
     assert outputs, dry
@@ -255,9 +229,10 @@ def test_second_run_has_nothing_to_do_and_a_change_reruns_only_its_scene(tiny_ru
     assert figs == {"figures_paper"}  # the family whose figures draw tiny-paper
 
 
+@pytest.mark.slow
 def test_convergence_target(tiny_run):
     assert not (tiny_run / "results/convergence").exists()  # not part of the main job
-    run(tiny_run, "convergence")
+    snakemake(tiny_run, "convergence")
     own = read_dataset(tiny_run / "results/convergence/s-default.nc")
     order = own["observed_order"].sel(quantity="friction_coefficient").values
     # refinement converges (the differences shrink); at n <= 128 the sphere's k error
@@ -276,8 +251,9 @@ def test_convergence_target(tiny_run):
     assert len(table) == 1 + 4 + 3  # one row a resolution of each study
 
 
+@pytest.mark.slow
 def test_report_builds(tiny_run):
-    run(tiny_run, "--report", "results/report.html")
+    snakemake(tiny_run, "--report", "results/report.html")
     html = (tiny_run / "results/report.html").read_text(errors="replace")
     assert len(html) > 10000
 
@@ -285,7 +261,7 @@ def test_report_builds(tiny_run):
 # ----------------------------------------------------------------------------- lint
 def test_lint_is_clean(tmp_path):
     wd = make_workdir(tmp_path)
-    proc = run(wd, "--lint", check=False)
+    proc = snakemake(wd, "--lint", check=False)
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text
     assert "Lints for" not in text, text

@@ -40,7 +40,9 @@ COLUMNS = (
 
 ``cases``/``converged`` count stick ratios (self-similar) or runs, one a
 friction coefficient (history: a run counts as converged when every step
-did). ``frictionless source`` is ``dataset`` when the scene holds the case
+did). A self-similar case counts as converged only when it is also
+resolved (its error estimate within the scene's ``max_error``): a case
+that is not resolved is treated as a failure. ``frictionless source`` is ``dataset`` when the scene holds the case
 c/a = 0, ``solve`` when it was computed by a frictionless solve with the
 scene's geometry, ν, method, n and a/h. The ``history`` columns hold
 space-separated lists, one entry a friction coefficient.
@@ -94,6 +96,8 @@ def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
     c = np.atleast_1d(ds["stick_ratio"].values)
     k = np.atleast_1d(ds["friction_coefficient"].values)
     conv = np.atleast_1d(ds["converged"].values).astype(bool)
+    if "resolved" in ds:  # not resolved to max_error: a failure too
+        conv &= np.atleast_1d(ds["resolved"].values).astype(bool)
     order = np.argsort(c)
     if "consistent" in ds:
         ok = (np.atleast_1d(ds["consistent"].values).astype(bool) & conv)[order]

@@ -385,3 +385,15 @@ def test_write_figure_is_atomic(data, tmp_path, monkeypatch):
     (tmp_path / "dir.png").mkdir()
     with pytest.raises(IsADirectoryError):
         write_figure(fig, tmp_path / "dir.png")
+
+
+def test_a_case_not_resolved_is_drawn_as_a_failure(data):
+    """A converged case whose error estimate exceeds max_error is crossed out like a failure."""
+    ds = data["sphere"]
+    assert bool(ds["converged"].all()) and "resolved" in ds
+    base = crosses(figures.fig2_friction(ds)) + crosses(figures.fig5_work(ds))
+    unresolved = ds.copy(deep=True)
+    unresolved["resolved"].values[2] = False  # converged, but not to the accuracy asked
+    after = crosses(figures.fig2_friction(unresolved)) + crosses(figures.fig5_work(unresolved))
+    assert after == base + 2  # one more cross in each figure
+    assert "not converged or not resolved" in legend_texts(figures.fig2_friction(unresolved))

@@ -69,3 +69,15 @@ def test_report_rows_are_compact(rows):
     assert view[2]["history, each k: c/a at peak load, work per cycle"].startswith("0: ")
     assert view[2]["k at c/a = 0.25 | 0.5 | 0.75"] == "–"
     assert view[0]["cases / converged / consistent"] == "3 / 3 / 3"
+
+
+def test_a_case_not_resolved_counts_as_a_failure():
+    """The key numbers count a converged but unresolved case as not converged."""
+    ds = to_dataset(contactlib.sweep("sphere", 0.3, [0.25, 0.5, 0.75], n=64))
+    ds.attrs["scene"] = "s"
+    row = key_numbers([ds])[0]
+    assert row["converged"] == 3 == int(ds["resolved"].sum())
+    ds["resolved"].values[1] = False  # c/a = 0.5: its estimate above max_error
+    row = key_numbers([ds])[0]
+    assert row["converged"] == 2
+    assert row["consistent up to c/a"] < 0.5  # the good range stops before it

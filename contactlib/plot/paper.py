@@ -18,9 +18,11 @@ Conventions common to all figures:
 
 * a dataset is labelled by its ``scene`` attribute when present, otherwise
   by its method, element count, Poisson's ratio and (cylinder) a/h;
-* a case with ``converged`` false is always drawn, marked by a black cross
-  (k and work curves) or a dotted line with crosses (profiles), and
-  "not converged" in its legend label;
+* a case with ``converged`` false, or ``resolved`` false (its error
+  estimate above the accuracy asked for), is always drawn, marked by a
+  black cross (k and work curves) or a dotted line with crosses (profiles),
+  and "not converged" in its legend label: a case that is not resolved is
+  treated as a failure;
 * filled markers are consistent cases, open markers inconsistent ones;
 * the paper's scheme (``method`` ``"paper"`` or ``"paper-literal"``) is drawn
   as markers joined by a thin line, the default method as a solid line;
@@ -120,6 +122,9 @@ class _Case:
         return np.asarray(self.ds[name].values, dtype=float)
 
     def flag(self, name: str, default: bool | None = None) -> np.ndarray:
+        if name == "converged" and "resolved" in self.ds:  # not resolved: a failure too
+            return (np.asarray(self.ds["converged"].values).astype(bool)
+                    & np.asarray(self.ds["resolved"].values).astype(bool))
         if name not in self.ds:
             if default is None:  # pragma: no cover - guarded by _prepare
                 raise KeyError(name)
@@ -404,7 +409,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             Line2D([], [], ls="none", marker="o", color="0.35", mfc="white",
                    label="inconsistent case"),
             Line2D([], [], ls="none", marker="x", ms=7, mew=1.3, color="black",
-                   label="solver not converged"),
+                   label="not converged or not resolved"),
             Line2D([], [], ls="none", marker="^", color="0.35",
                    label=f"k > {fmt(k_max)} (or k = ∞): on the top edge"),
             Line2D([], [], color="0.35", lw=1.4, label="default method: solid line"),
@@ -814,7 +819,7 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
             ax.set_ylabel(_WORK_LABEL[geometry])
             if failed:
                 handles.append(Line2D([], [], ls="none", marker="x", ms=7, mew=1.3,
-                                      color="black", label="solver not converged"))
+                                      color="black", label="not converged or not resolved"))
             _legend_below(holders[j], handles)
         return finish(fig)
 

@@ -55,7 +55,7 @@ def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n:
             want_energy: bool, message: str = "",
             max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
-    rec = stages._record(geom, d, samples=True)
+    rec = stages.case_record(geom, d, samples=True)
     stages.estimate_case(geom, method, n, rec, max_error=max_error)
     return _from_record(geom, rec, method, n, want_energy, message)
 
@@ -73,7 +73,7 @@ def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | No
     """Solve one stick ratio with the chosen method (no post-processing)."""
     if method == "default":
         return solve_default(geom, c, n, k_guess=k_guess)
-    return stages._discrete(geom, method, n, c, None, None)
+    return stages.solve_one(geom, method, n, c, None, None)
 
 
 # ----------------------------------------------------------------------------- inverse problem

@@ -36,9 +36,9 @@ from .paper_method import PaperSolution, collocation_points, ring_operator, solv
 from .result import Solution
 from .accuracy import MAX_N, estimate, resolving_n
 
-__all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases", "check_case",
-           "work_case", "profiles", "to_solution", "decoupled_message", "estimate_case",
-           "QUADRATURE_FLOOR_H"]
+__all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases",
+           "check_case", "work_case", "profiles", "to_solution", "decoupled_message", "solve_one",
+           "case_record", "estimate_case", "QUADRATURE_FLOOR_H"]
 
 PARTS = ("normal", "shear")
 # Elements shorter than this (in a) next to c: the kernels' quadrature error (about 1e-11)
@@ -141,8 +141,13 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
 
 
 # ----------------------------------------------------------------------------- solve
-def _discrete(geometry: Contact, method: str, n: int, c: float, normal, shear,
+def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
               k_guess: float | None = None, ops: tuple | None = None):
+    """One stick ratio with the chosen method, no post-processing (a discrete solution).
+
+    ``normal``/``shear`` are influence sets from :func:`influence` (or None:
+    computed on the fly); ``ops`` the default method's operators on its mesh.
+    """
     if method == "default":
         if ops is None:
             mesh = graded_mesh(n, c)
@@ -159,7 +164,8 @@ def _discrete(geometry: Contact, method: str, n: int, c: float, normal, shear,
     return solve_paper(geometry, m, n, coulomb=coulomb, ops=ops)
 
 
-def _record(geometry: Contact, d: DiscreteSolution | PaperSolution, samples: bool) -> Record:
+def case_record(geometry: Contact, d: DiscreteSolution | PaperSolution, samples: bool) -> Record:
+    """The case record of a discrete solution (and, with ``samples``, what checks and work need)."""
     nodes, m = d.mesh.nodes, d.mesh.stick_index
     paper = isinstance(d, PaperSolution)
     rec: Record = {
@@ -283,20 +289,20 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                 guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
                 if quarter is not None and quarter.converged:
                     guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
-        d = _discrete(geometry, method, n, solved, normal, shear, guess, ops=ops)
+        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops)
         if method == "default" and not d.converged and guess is not None and 0.0 < solved < 1.0:
             # the continuation guess extrapolates k/k_uncoupled in c/a and can land
             # outside Newton's basin (nu = 0, c/a = 0.01 after 1e-8, 1e-6, 1e-4): start
             # again from the nested n/2 solution, or from the solver's own warm start
             half = coarse.get(n // 2)
             retry = half.k if half is not None and half.converged else None
-            d = _discrete(geometry, method, n, solved, normal, shear, retry, ops=ops)
+            d = solve_one(geometry, method, n, solved, normal, shear, retry, ops=ops)
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
         extra = {}
         if tolerance is not None:
             d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance)
-        rec = _record(geometry, d, samples)
+        rec = case_record(geometry, d, samples)
         rec.update(extra)
         if extra.get("tolerance_message"):
             rec["message"] = "; ".join(x for x in (rec["message"], extra["tolerance_message"])

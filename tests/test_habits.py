@@ -264,7 +264,7 @@ def test_internal_results_and_scenes_have_a_short_repr() -> None:
                               "stick_ratios": "all", "outputs": ["k_curve"]})
     assert len(repr(scene)) < 800 and "4095 values" in repr(scene)
     geom = scene.geometry_object
-    d = stages._discrete(geom, "paper", 16, 0.5, None, None)
+    d = stages.solve_one(geom, "paper", 16, 0.5, None, None)
     assert len(repr(d)) < 800 and "(16,)" in repr(d)
     assert "Mesh" in short_repr(d) and "array(" not in repr(d)
 

@@ -81,6 +81,28 @@ def test_no_module_imports_private_names_of_another(path):
                     f"of {module}")
 
 
+@pytest.mark.parametrize("path", sorted(PACKAGE.rglob("*.py")), ids=lambda p: p.name)
+def test_no_module_reaches_into_another_modules_private_names(path):
+    """``stages._record(...)`` is the same reach as importing ``_record``: refused too."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    modules = set()  # local names bound to modules of the package
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith(
+                "contactlib")):
+            modules |= {alias.asname or alias.name for alias in node.names
+                        if (PACKAGE / f"{alias.name}.py").exists()
+                        or (PACKAGE / alias.name).is_dir()}
+        elif isinstance(node, ast.Import):
+            modules |= {alias.asname for alias in node.names
+                        if alias.asname and alias.name.startswith("contactlib.")}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) \
+                and node.value.id in modules and node.attr.startswith("_") \
+                and not node.attr.startswith("__"):
+            raise AssertionError(f"{path.relative_to(PACKAGE.parent)}:{node.lineno} uses the "
+                                 f"private name {node.value.id}.{node.attr}")
+
+
 def test_no_public_function_hides_a_module():
     for name in contactlib.__all__:
         assert not _source(name).exists() and not (PACKAGE / name).is_dir(), (

@@ -32,7 +32,6 @@ import numpy as np
 from scipy import linalg
 
 import contactlib
-from contactlib.operators import clear_shared_stick_blocks
 
 
 def lu_time(size: int, repeat: int = 5) -> float:
@@ -78,7 +77,6 @@ def main() -> None:
     print(f"contactlib.sweep: sphere, nu = 0.3, n = {n}, {cases} stick ratios in 0.02 ... 0.98 "
           f"(BLAS threads {os.environ['OPENBLAS_NUM_THREADS']}, load average "
           f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs)")
-    clear_shared_stick_blocks()
     for i in range(3):
         wall, cpu, sols = timed_sweep(ratios, n)
         ok = sum(s.converged and s.consistent for s in sols)

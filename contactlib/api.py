@@ -19,6 +19,7 @@ from . import stages, validate
 from .default_method import DiscreteSolution, solve_default
 from .geometry import Geometry
 from .paper_method import PaperSolution
+from .operators import StickBlocks
 from .result import Solution
 from .threads import blas_single_threaded
 
@@ -86,10 +87,11 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     Brent's method, warm-starting Newton on k from the last solve.
     """
     cache: dict[float, DiscreteSolution] = {}
+    blocks = StickBlocks()  # this search's store of stick blocks, shared by its solves
     last = {"k": None}
 
     def f(c: float) -> float:
-        d = solve_default(geometry, c, n, k_guess=last["k"])
+        d = solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
         cache[c] = d
         last["k"] = d.k
         return d.k - friction
@@ -115,7 +117,7 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
 
     c = optimize.brentq(f, lo, hi, xtol=xtol)
-    d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"])
+    d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
     return c, d
 
 

@@ -57,7 +57,7 @@ from . import checks
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
-from .operators import nodal_operator_part, operator_part, operators
+from .operators import StickBlocks, nodal_operator_part, operator_part, operators
 from .result import short_repr
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
@@ -379,7 +379,8 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
 
 
 def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
-            k_guess: float | None = None, edge: float | None = None) -> float:
+            k_guess: float | None = None, edge: float | None = None,
+            cache: StickBlocks | None = None) -> float:
     """Newton's starting k >= 0: the caller's guess, else a cheap estimate.
 
     For n > 128 the Richardson extrapolation of the n = 64 and n = 128
@@ -391,20 +392,21 @@ def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
     if k_guess is not None:
         return float(k_guess)
     if n > 128:
-        k64 = solve_default(geometry, stick_ratio, 64, power=power).k
-        k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64).k
+        k64 = solve_default(geometry, stick_ratio, 64, power=power, cache=cache).k
+        k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64,
+                             cache=cache).k
         return k128 + (k128 - k64) / 3.0
     return float(geometry.uncoupled_friction(stick_ratio if edge is None else edge))
 
 
 def _nodal_operators(geometry: Contact, mesh: Mesh,
-                     ops: tuple[np.ndarray, np.ndarray | None] | None
-                     ) -> tuple[np.ndarray, np.ndarray | None]:
+                     ops: tuple[np.ndarray, np.ndarray | None] | None,
+                     cache: StickBlocks | None = None) -> tuple[np.ndarray, np.ndarray | None]:
     """(P, Q) nodal operators on ``mesh``: given (checked, copied where edited) or built."""
     nn, m = mesh.n, mesh.stick_index
     if ops is None:
-        pw = nodal_operator_part(geometry, mesh, "normal")
-        qw = nodal_operator_part(geometry, mesh, "shear") if m > 0 else None
+        pw = nodal_operator_part(geometry, mesh, "normal", cache=cache)
+        qw = nodal_operator_part(geometry, mesh, "shear", cache=cache) if m > 0 else None
     else:
         copy = geometry.indenter.odd_shear  # the axis row is edited below
         pw = np.array(ops[0], dtype=float, copy=copy)
@@ -454,7 +456,8 @@ def _full_adhesion(geometry: Contact, mesh: Mesh, pw: np.ndarray,
 def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float = 2.0,
                   k_guess: float | None = None, tol: float = 1e-9,
                   max_iter: int = 30,
-                  ops: tuple[np.ndarray, np.ndarray | None] | None = None) -> DiscreteSolution:
+                  ops: tuple[np.ndarray, np.ndarray | None] | None = None,
+                  cache: StickBlocks | None = None) -> DiscreteSolution:
     """Solve the self-similar partial-slip problem for a given stick ratio.
 
     The stages: the mesh and its nodal operators; :func:`assemble` the
@@ -482,6 +485,10 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         Precomputed collocation operators ``operator_part(geometry, nodes,
         nodes, "normal")`` and ``(..., "shear")`` on this mesh (Q may be None
         when stick_ratio = 0); computed here when not given.
+    cache : StickBlocks, optional
+        The caller's store of stick blocks (see
+        :func:`~contactlib.operators.nodal_operator_part`), shared by the
+        cases of a sweep; the numbers do not depend on it.
 
     Returns
     -------
@@ -490,7 +497,7 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     mesh = graded_mesh(n, stick_ratio, power=power)
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
-    pw, qw = _nodal_operators(geometry, mesh, ops)
+    pw, qw = _nodal_operators(geometry, mesh, ops, cache)
     if m == 0:
         return _frictionless(geometry, mesh, pw)
     if m == nn:
@@ -498,7 +505,7 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
 
     system = assemble(geometry, mesh, pw, qw)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
-    k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m])
+    k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)
     x, k = newton.x, newton.k  # signed: q = k p in the slip zone
     res = system.residual(x, k)

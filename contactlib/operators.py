@@ -51,7 +51,7 @@ if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "StickBlocks", "clear_shared_stick_blocks"]
+           "StickBlocks"]
 
 PARTS = ("normal", "shear")
 
@@ -163,15 +163,6 @@ class StickBlocks:
         return len(self._blocks)
 
 
-# The process-wide store used when a caller passes none (see nodal_operator_part).
-_SHARED_BLOCKS = StickBlocks(64)
-
-
-def clear_shared_stick_blocks() -> None:
-    """Empty the process-wide store of :func:`nodal_operator_part` (a cold start)."""
-    _SHARED_BLOCKS.clear()
-
-
 def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
                         cache: StickBlocks | None = None) -> np.ndarray:
     """:func:`operator_part` at the mesh's own nodes, reusing the stick block across c.
@@ -189,23 +180,31 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
     mesh : Mesh
     part : {"normal", "shear"}
     cache : StickBlocks, optional
-        Where the reference blocks are kept; by default one store shared by
-        the process. The reference block is computed from the first c that
-        needs it (``nodes / c`` equals t to round-off, not bit for bit across
-        c), so results are reproducible for a given sequence of calls on one
-        store.
+        Where the reference blocks are kept, owned by the caller (a sweep or
+        a workflow job passes one store to all its cases); without one the
+        block is computed for this call only. The reference block comes from
+        the first c that needs it (``nodes / c`` equals t to round-off, not
+        bit for bit across c), so within one store the last bits follow the
+        order of the cases (k to ~1e-10); a call that owns its store gives
+        the same bits whatever was computed before it in the process.
     """
     nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
     degrees = model.length_degrees(part) if part in PARTS else None
     if degrees is None or not 0 < m < n:
         return operator_part(model, nodes, nodes, part)
-    store = _SHARED_BLOCKS if cache is None else cache
     c = float(nodes[m])
     kernel = _kernel(model, part)
+    # nodes / c equals the generator's t_i to round-off, not bit for bit across c: the
+    # key rounds them, the block is computed from the exact nodes of the first c that
+    # needs it (rounding the nodes themselves would move the elements of ~1e-11 a next to
+    # c by a relative 1e-3)
     ref_nodes = nodes[:m + 1] / c
-    # nodes / c equals the generator's t_i to round-off (not bit for bit across c)
     key = (model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
-    ref = store.get(key, lambda: element_integrals(kernel, ref_nodes, ref_nodes))
+
+    def compute() -> np.ndarray:
+        return element_integrals(kernel, ref_nodes, ref_nodes)
+
+    ref = compute() if cache is None else cache.get(key, compute)
     g = np.empty((3, n + 1, n))
     g[:, :m + 1, :m] = ref * (c ** degrees)[:, None, None]
     g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])

@@ -30,6 +30,7 @@ import numpy as np
 
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
+from .operators import StickBlocks
 from .elements import Mesh, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
@@ -115,10 +116,11 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
         size = int(sizes.max()) + 1  # the mesh's element count depends on c: NaN-padded
         nodes = np.full((len(meshes), size), np.nan)
         ops = np.full((len(meshes), 3, size, size), np.nan)
+        cache = StickBlocks()  # this call's: the stick blocks shared across its c/a
         for i, mesh in enumerate(meshes):
             m = mesh.n + 1
             nodes[i, :m] = mesh.nodes
-            ops[i, :, :m, :m] = nodal_operator_part(geometry, mesh, part)
+            ops[i, :, :m, :m] = nodal_operator_part(geometry, mesh, part, cache=cache)
         return {"stick_ratios": cs, "sizes": sizes, "nodes": nodes, "ops": ops}
     r = uniform_mesh(n, 0).nodes
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
@@ -142,11 +144,13 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
 
 # ----------------------------------------------------------------------------- solve
 def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
-              k_guess: float | None = None, ops: tuple | None = None):
+              k_guess: float | None = None, ops: tuple | None = None,
+              cache: StickBlocks | None = None):
     """One stick ratio with the chosen method, no post-processing (a discrete solution).
 
     ``normal``/``shear`` are influence sets from :func:`influence` (or None:
-    computed on the fly); ``ops`` the default method's operators on its mesh.
+    computed on the fly); ``ops`` the default method's operators on its mesh;
+    ``cache`` the caller's store of stick blocks.
     """
     if method == "default":
         if ops is None:
@@ -154,7 +158,7 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
             pw = _lookup(normal, method, c, mesh.nodes)
             qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
             ops = None if pw is None else (pw, qw)
-        return solve_default(geometry, c, n, ops=ops, k_guess=k_guess)
+        return solve_default(geometry, c, n, ops=ops, k_guess=k_guess, cache=cache)
     m = validate.paper_multiple(c, n)
     r = uniform_mesh(n, m).nodes
     pr = _lookup(normal, method, c, r)
@@ -275,6 +279,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
     ``max_error``.
     """
     known: list[tuple[float, float]] = []  # (c, k / k_uncoupled) of converged cases
+    cache = StickBlocks()  # this sweep's store of stick blocks (see nodal_operator_part)
     for c in stick_ratios:
         c = float(c)
         solved = _solved_ratio(geometry, c)
@@ -282,26 +287,27 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
         coarse: dict[int, DiscreteSolution] = {}
         ops = None
         if estimate and method == "default" and tolerance is None and 0.0 < solved < 1.0:
-            ops = _fine_operators(geometry, n, solved, normal, shear)
-            coarse = _coarse_solves(geometry, n, solved, guess, ops)
+            ops = _fine_operators(geometry, n, solved, normal, shear, cache)
+            coarse = _coarse_solves(geometry, n, solved, guess, ops, cache)
             half, quarter = coarse.get(n // 2), coarse.get(n // 4)
             if half is not None and half.converged and guess is None:
                 guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
                 if quarter is not None and quarter.converged:
                     guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
-        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops)
+        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops, cache=cache)
         if method == "default" and not d.converged and guess is not None and 0.0 < solved < 1.0:
             # the continuation guess extrapolates k/k_uncoupled in c/a and can land
             # outside Newton's basin (nu = 0, c/a = 0.01 after 1e-8, 1e-6, 1e-4): start
             # again from the nested n/2 solution, or from the solver's own warm start
             half = coarse.get(n // 2)
             retry = half.k if half is not None and half.converged else None
-            d = solve_one(geometry, method, n, solved, normal, shear, retry, ops=ops)
+            d = solve_one(geometry, method, n, solved, normal, shear, retry, ops=ops,
+                          cache=cache)
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
         extra = {}
         if tolerance is not None:
-            d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance)
+            d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance, cache)
         rec = case_record(geometry, d, samples)
         rec.update(extra)
         if extra.get("tolerance_message"):
@@ -312,7 +318,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
             rec["k"] = np.inf if c == 1.0 else 0.0
             rec["message"] = decoupled_message(geometry)
         if estimate:
-            _embedded_estimate(geometry, method, n, rec, d, coarse, samples, max_error)
+            _embedded_estimate(geometry, method, n, rec, d, coarse, samples, max_error, cache)
         yield rec
 
 
@@ -324,21 +330,23 @@ def estimate_case(geometry: Contact, method: str, n: int, rec: Record, *,
     at the record's stick ratio. Returns the same (updated) record.
     """
     c = _solved_ratio(geometry, float(rec["stick_ratio"]))
-    coarse = (_coarse_solves(geometry, n, c, float(rec["k"]))
+    cache = StickBlocks()
+    coarse = (_coarse_solves(geometry, n, c, float(rec["k"]), cache=cache)
               if method == "default" and 0.0 < c < 1.0 else {})
-    _embedded_estimate(geometry, method, n, rec, None, coarse, samples, max_error)
+    _embedded_estimate(geometry, method, n, rec, None, coarse, samples, max_error, cache)
     return rec
 
 
-def _fine_operators(geometry: Contact, n: int, c: float, normal, shear) -> tuple:
+def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
+                    cache: StickBlocks | None = None) -> tuple:
     """Collocation operators (normal, shear) of a partial-slip case on its mesh n."""
     mesh = graded_mesh(n, c)
     pw = _lookup(normal, "default", c, mesh.nodes)
     qw = _lookup(shear, "default", c, mesh.nodes)
     if pw is None:
-        pw = nodal_operator_part(geometry, mesh, "normal")
+        pw = nodal_operator_part(geometry, mesh, "normal", cache=cache)
     if qw is None:
-        qw = nodal_operator_part(geometry, mesh, "shear")
+        qw = nodal_operator_part(geometry, mesh, "shear", cache=cache)
     return pw, qw
 
 
@@ -362,7 +370,8 @@ def _restrict(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
-                   ops: tuple | None = None) -> dict[int, DiscreteSolution]:
+                   ops: tuple | None = None,
+                   cache: StickBlocks | None = None) -> dict[int, DiscreteSolution]:
     """The same case on the nested meshes n/2 and n/4 (those with at least 8 elements).
 
     With the fine operators ``ops`` given, the coarse ones are restricted
@@ -385,7 +394,7 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
             ops, mesh = (pw, qw), sub
         else:
             ops = None
-        d = solve_default(geometry, c, m, k_guess=guess, ops=ops)
+        d = solve_default(geometry, c, m, k_guess=guess, ops=ops, cache=cache)
         if odd is not None:  # u, du/dx inside each coarse element, from the fine operators
             x, pw_odd, qw_odd = odd
             d.interior_samples = (x, pw_odd[1] @ d.p + qw_odd[1] @ d.phi,
@@ -419,7 +428,7 @@ def _relative(values: Sequence[float]) -> float:
 
 def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
                        coarse: dict[int, DiscreteSolution], samples: bool,
-                       max_error: float) -> None:
+                       max_error: float, cache: StickBlocks | None = None) -> None:
     """Add ``error_estimate``, ``load_error_estimate``, ``work_error_estimate`` and ``resolved``.
 
     Default method: k, the load and (with samples) the work of the same case
@@ -440,7 +449,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
     if "error_estimate" in rec:  # a tolerance scene estimated k itself
         rec.setdefault("load_error_estimate", math.nan)
     elif method != "default":
-        ref = solve_default(geometry, solved, 64)
+        ref = solve_default(geometry, solved, 64, cache=cache)
         k_ref, load_ref = ref.k, geometry.load(ref.mesh.nodes, ref.p)
         if 0.0 < c < 1.0 and np.isfinite(rec["k"]) and k_ref > 0.0:
             rec["error_estimate"] = abs(rec["k"] - k_ref) / k_ref
@@ -459,10 +468,11 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
             # a coarse Newton that started from the continuation guess and failed
             # starts again from the fine k, within the discretization error of its root
             sols = [s if s.converged else solve_default(geometry, solved, m,
-                                                        k_guess=float(rec["k"]))
+                                                        k_guess=float(rec["k"]), cache=cache)
                     for m, s in zip(levels, sols)]
         if not 0.0 < solved < 1.0:  # k exact (0 or inf); the load still has an error
-            sols = [solve_default(geometry, solved, m) for m in (n // 4, n // 2) if m >= 8]
+            sols = [solve_default(geometry, solved, m, cache=cache)
+                    for m in (n // 4, n // 2) if m >= 8]
             rec["error_estimate"] = 0.0
         elif not sols:
             rec["error_estimate"] = math.nan
@@ -551,7 +561,8 @@ def _continuation_guess(geometry: Contact, c: float,
 
 
 def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteSolution,
-                  tolerance: float) -> tuple[DiscreteSolution, Record]:
+                  tolerance: float,
+                  cache: StickBlocks | None = None) -> tuple[DiscreteSolution, Record]:
     """Refine one case until its a-posteriori k error meets the tolerance."""
     from . import accuracy
 
@@ -563,7 +574,7 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
     sols = {n: d}
 
     def solve_k(m: int) -> float:
-        sols[m] = solve_default(geometry, c, m)
+        sols[m] = solve_default(geometry, c, m, cache=cache)
         return sols[m].k
 
     used, est, msg = accuracy.solve_to_tolerance(solve_k, n, tolerance, known={n: d.k})

@@ -12,6 +12,8 @@ import math
 import numpy as np
 import pytest
 
+import contactlib
+
 from contactlib import history_solver as hs
 from contactlib.body import ElasticBody
 from contactlib.elements import graded_mesh
@@ -156,3 +158,22 @@ def test_stick_blocks_are_a_caller_owned_store():
     # the half-plane's kernels are not homogeneous: nothing is stored
     nodal_operator_part(contact("cylinder", 0.3), mesh, "normal", cache=store)
     assert len(store) == 1
+
+
+def test_stick_blocks_do_not_make_results_depend_on_earlier_calls():
+    """Each call owns its store: no bits carry over from earlier calls in the process."""
+    m = contact("sphere", 0.3)
+    target = graded_mesh(64, 0.5)
+    alone = nodal_operator_part(m, target, "shear")
+    store = StickBlocks()
+    for c in (0.3, 0.7):  # other c/a fill the store first
+        nodal_operator_part(m, graded_mesh(64, c), "shear", cache=store)
+    warm = nodal_operator_part(m, target, "shear", cache=store)
+    b = operator_part(m, target.nodes, target.nodes, "shear")
+    for a in (alone, warm):  # the reuse is exact to round-off
+        np.testing.assert_allclose(a, b, rtol=0, atol=1e-12 * np.max(np.abs(b)))
+    # and a call gives the same bits before and after other calls in the process
+    first = contactlib.sweep("sphere", 0.3, [0.5], n=64, energy=False)[0].friction_coefficient
+    contactlib.sweep("sphere", 0.3, [0.2, 0.35, 0.7], n=64, energy=False)
+    again = contactlib.sweep("sphere", 0.3, [0.5], n=64, energy=False)[0].friction_coefficient
+    assert first == again

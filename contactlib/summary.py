@@ -10,7 +10,7 @@ Examples
 --------
 >>> from contactlib import sweep
 >>> from contactlib.io import to_dataset
->>> ds = to_dataset(sweep("sphere", 0.3, [0.0, 0.5], n=32))
+>>> ds = to_dataset(sweep("sphere", 0.3, [0.0, 0.5], n=64))
 >>> row = key_numbers([ds])[0]
 >>> row["k at c/a = 0.5"] > 0, row["consistent up to c/a"]
 (True, 0.5)

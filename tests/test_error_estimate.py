@@ -245,6 +245,9 @@ def _stability(geometry: str, slab: float, nu: float, n: int) -> dict[str, int]:
         elif closed:
             count[_check_against(sol, float(uncoupled_friction(geometry, nu, c)),
                              model_error(c))] += 1
+        elif not refs[i].consistent:  # the fine run found an inconsistent root: no truth
+            assert not sol.resolved or sol.error_estimate > 0.0
+            count["no truth"] += 1
         elif refs[i].resolved and (geometry, slab, nu, c) in KNOWN_MISSES and sol.resolved:
             err = abs(sol.friction_coefficient / refs[i].friction_coefficient - 1)
             assert err <= sol.max_error

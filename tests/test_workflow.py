@@ -141,7 +141,7 @@ def test_figure_needing_an_output_the_scene_lacks_is_refused(tmp_path):
 
 
 # ----------------------------------------------------------------------------- end to end
-MICRO = {"scenes": {"micro": {"geometry": "sphere", "nu": 0.3, "method": "default", "n": 16,
+MICRO = {"scenes": {"micro": {"geometry": "sphere", "nu": 0.3, "method": "default", "n": 32,
                               "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]}}}
 
 
@@ -150,7 +150,7 @@ def test_micro_run_dataset_matches_the_library(tmp_path):
     wd = make_workdir(tmp_path, MICRO)
     snakemake(wd)
     ds = read_dataset(wd / "results/datasets/micro.nc")
-    ref = contactlib.sweep("sphere", 0.3, [0.0, 0.5], n=16, energy=False)
+    ref = contactlib.sweep("sphere", 0.3, [0.0, 0.5], n=32, energy=False)
     np.testing.assert_array_equal(ds["friction_coefficient"].values,
                                   [s.friction_coefficient for s in ref])
     assert abs(float(ds["load_ratio"].values[0]) - 1.0) < 3e-3  # frictionless: Hertz

@@ -663,7 +663,7 @@ def fig4_displacement(datasets: xr.Dataset | Sequence[xr.Dataset],
     --------
     >>> import contactlib
     >>> from contactlib.io import to_dataset
-    >>> ds = to_dataset(contactlib.sweep("sphere", 0.3, [0, 0.5, 1], n=32))
+    >>> ds = to_dataset(contactlib.sweep("sphere", 0.3, [0, 0.5, 1], n=64))
     >>> fig = fig4_displacement(ds)
     >>> [line.get_label() for line in fig.axes[0].lines if line.get_label()[0] != "_"]
     ['c/a = 0.5, k = 0.152', 'k = 0 (c/a = 0, frictionless)', 'k = ∞ (c/a = 1, full adhesion)']

@@ -40,7 +40,7 @@ from .result import short_repr
 from .stages import OUTPUTS, parts_needed
 
 __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_scenes",
-           "config_hash"]
+           "config_hash", "material_pair_scenes", "scene_mapping"]
 
 KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
@@ -401,3 +401,55 @@ def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | 
     if problems:
         raise ConfigError(problems)
     return out
+
+
+def material_pair_scenes(section: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
+    """The scene mappings of a configuration's ``materials`` section, in its order.
+
+    Each pair ``[indenter, body]`` (material names of ``config/materials.yaml``)
+    gives a self-similar scene ``mat-<indenter>-on-<body>`` (``k_curve``) and a
+    history scene ``mat-<indenter>-on-<body>-cycle`` (underscores of the names
+    read as hyphens); the body's Poisson ratio is the material's.
+
+    Raises
+    ------
+    contactlib.validate.InputError
+        If a name is not in the table of materials.
+
+    Examples
+    --------
+    >>> raw = material_pair_scenes({"pairs": [["steel", "aluminium"]], "n": 32,
+    ...     "stick_ratios": [0.5], "friction": [0.1], "load_path": [0, 1, 0], "steps": 4})
+    >>> list(raw), raw["mat-steel-on-aluminium"]["nu"]
+    (['mat-steel-on-aluminium', 'mat-steel-on-aluminium-cycle'], 0.33)
+    """
+    out: dict[str, dict[str, Any]] = {}
+    for ind, body in section["pairs"]:
+        nu = materials.pair(ind, body)[2]
+        name = f"mat-{ind}-on-{body}".replace("_", "-")
+        common = {"geometry": section.get("geometry", "sphere"), "nu": nu, "indenter": ind,
+                  "body": body}
+        out[name] = dict(common, n=section.get("n", 256), stick_ratios=section["stick_ratios"],
+                         outputs=["k_curve"])
+        out[f"{name}-cycle"] = dict(common, kind="history", friction=section["friction"],
+                                    load_path=section["load_path"], steps=section["steps"])
+    return out
+
+
+def scene_mapping(config: Mapping[str, Any], name: str) -> Mapping[str, Any]:
+    """A scene's mapping by name: from ``scenes``, else from the ``materials`` section.
+
+    Raises
+    ------
+    KeyError
+        If no scene of that name is configured.
+    """
+    scenes = config.get("scenes") or {}
+    if name in scenes:
+        return scenes[name]
+    section = config.get("materials")
+    if isinstance(section, Mapping):
+        found = material_pair_scenes(section)
+        if name in found:
+            return found[name]
+    raise KeyError(name)

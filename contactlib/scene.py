@@ -40,13 +40,14 @@ from .result import short_repr
 from .stages import OUTPUTS, parts_needed
 
 __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_scenes",
-           "config_hash"]
+           "config_hash", "material_pair_scenes", "scene_mapping"]
 
 KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
          "slab_ratio", "outputs", "indenter", "body")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
-                 "slab_ratio", "max_error")
+                 "slab_ratio", "max_error", "indenter", "body")
+_INDENTER_KEYS = {"indenter_modulus": "indenter.modulus_ratio", "indenter_nu": "indenter.nu"}
 
 
 def config_hash(raw: Mapping[str, Any]) -> str:
@@ -201,6 +202,22 @@ class _Problems:
             raise ConfigError(self.lines)
 
 
+def _scene_indenter(raw: Mapping[str, Any], nu: float | None,
+                    bad: _Problems) -> tuple[float, float | None]:
+    """(E1/E2, nu1) of a scene's ``indenter``/``body`` keys ((inf, None): rigid).
+
+    A problem is recorded in ``bad`` under the key it concerns (named from the
+    rule that failed, not from its text), and the rigid indenter returned.
+    """
+    if "indenter" not in raw and "body" not in raw:
+        return math.inf, None
+    try:
+        return materials.scene_indenter(raw.get("indenter"), raw.get("body"), nu)
+    except validate.InputError as exc:
+        bad.add(_INDENTER_KEYS.get(exc.name, exc.name), str(exc))
+        return math.inf, None
+
+
 def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     """Validate one scene mapping with the library's rules.
 
@@ -250,14 +267,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
-    ind = (math.inf, None)
-    if "indenter" in raw or "body" in raw:
-        try:
-            ind = materials.scene_indenter(raw.get("indenter"), raw.get("body"), nu)
-        except validate.InputError as exc:  # the key from the rule's name, not its text
-            key = {"indenter_modulus": "indenter.modulus_ratio",
-                   "indenter_nu": "indenter.nu"}.get(exc.name, exc.name)
-            bad.add(key, str(exc))
+    ind = _scene_indenter(raw, nu, bad)
     n = None
     if None not in (geometry, method, nu, slab):  # ... then what depends on several keys
         slab = bad.check("slab_ratio", validate.slab_ratio, slab, geometry)
@@ -299,6 +309,11 @@ class HistoryScene:
         Elements over [0, 1.2 a_max].
     max_error : float
         Accuracy a step must reach to be flagged resolved (default 1e-3).
+    indenter_modulus : float
+        E1/E2 of an elastic indenter (``inf``: rigid, the default), from the
+        scene's ``indenter`` key (a mapping, or a material name with ``body``).
+    indenter_nu : float or None
+        Poisson's ratio of the indenter (None: rigid, or the body's).
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -314,12 +329,21 @@ class HistoryScene:
     hash: str
     max_error: float = validate.DEFAULT_MAX_ERROR
     kind: str = "history"
+    indenter_modulus: float = float("inf")
+    indenter_nu: float | None = None
 
     def run_spec(self, index: int) -> dict[str, Any]:
-        """Keyword arguments of :func:`contactlib.history` for friction ``index``."""
-        return {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
+        """Keyword arguments of :func:`contactlib.history` for friction ``index``.
+
+        The indenter's keywords appear only for an elastic indenter, so that a
+        rigid scene's arguments (and its jobs' parameters) stay as they were.
+        """
+        spec = {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
                 "slab_ratio": self.slab_ratio, "max_error": self.max_error}
+        if self.indenter_modulus != float("inf"):
+            spec.update(indenter_modulus=self.indenter_modulus, indenter_nu=self.indenter_nu)
+        return spec
 
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
@@ -349,10 +373,12 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry)
     max_error = bad.check("max_error", validate.max_error,
                           raw.get("max_error", validate.DEFAULT_MAX_ERROR))
+    ind = _scene_indenter(raw, nu, bad)
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
-                        hash=config_hash(raw), max_error=max_error)
+                        hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
+                        indenter_nu=ind[1])
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:
@@ -375,3 +401,55 @@ def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | 
     if problems:
         raise ConfigError(problems)
     return out
+
+
+def material_pair_scenes(section: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
+    """The scene mappings of a configuration's ``materials`` section, in its order.
+
+    Each pair ``[indenter, body]`` (material names of ``config/materials.yaml``)
+    gives a self-similar scene ``mat-<indenter>-on-<body>`` (``k_curve``) and a
+    history scene ``mat-<indenter>-on-<body>-cycle`` (underscores of the names
+    read as hyphens); the body's Poisson ratio is the material's.
+
+    Raises
+    ------
+    contactlib.validate.InputError
+        If a name is not in the table of materials.
+
+    Examples
+    --------
+    >>> raw = material_pair_scenes({"pairs": [["steel", "aluminium"]], "n": 32,
+    ...     "stick_ratios": [0.5], "friction": [0.1], "load_path": [0, 1, 0], "steps": 4})
+    >>> list(raw), raw["mat-steel-on-aluminium"]["nu"]
+    (['mat-steel-on-aluminium', 'mat-steel-on-aluminium-cycle'], 0.33)
+    """
+    out: dict[str, dict[str, Any]] = {}
+    for ind, body in section["pairs"]:
+        nu = materials.pair(ind, body)[2]
+        name = f"mat-{ind}-on-{body}".replace("_", "-")
+        common = {"geometry": section.get("geometry", "sphere"), "nu": nu, "indenter": ind,
+                  "body": body}
+        out[name] = dict(common, n=section.get("n", 256), stick_ratios=section["stick_ratios"],
+                         outputs=["k_curve"])
+        out[f"{name}-cycle"] = dict(common, kind="history", friction=section["friction"],
+                                    load_path=section["load_path"], steps=section["steps"])
+    return out
+
+
+def scene_mapping(config: Mapping[str, Any], name: str) -> Mapping[str, Any]:
+    """A scene's mapping by name: from ``scenes``, else from the ``materials`` section.
+
+    Raises
+    ------
+    KeyError
+        If no scene of that name is configured.
+    """
+    scenes = config.get("scenes") or {}
+    if name in scenes:
+        return scenes[name]
+    section = config.get("materials")
+    if isinstance(section, Mapping):
+        found = material_pair_scenes(section)
+        if name in found:
+            return found[name]
+    raise KeyError(name)

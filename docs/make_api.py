@@ -51,6 +51,8 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
      "layout (``style_path`` above).",
      ["style_context", "palette", "MARKERS", "NOT_CONVERGED_GID", "fmt", "k_text", "as_list",
       "describe", "label_of", "legend_height", "panel_grid", "finish"]),
+    ("contactlib.plot.materials", "Helpers of the material-pairs figure "
+     "(``fig_material_pairs`` above).", ["cycle_work", "pair_label"]),
     ("contactlib.kernels.disc", "Surface displacements of disc loads on a half-space.", None),
     ("contactlib.kernels.strip", "Surface displacements of strip loads on a half-plane or a "
      "slab.", None),

@@ -43,6 +43,40 @@ def test_bad_history_scene_is_refused_naming_the_key(key, value, text):
         parse_scene("h", dict(HIST, **{key: value}))
 
 
+def test_history_scene_takes_an_elastic_indenter():
+    given = parse_scene("h", dict(HIST, indenter={"modulus_ratio": 0.3, "nu": 0.0}))
+    assert (given.indenter_modulus, given.indenter_nu) == (0.3, 0.0)
+    spec = given.run_spec(0)
+    assert spec["indenter_modulus"] == 0.3 and spec["indenter_nu"] == 0.0
+    named = parse_scene("h", dict(HIST, nu=0.33, indenter="steel", body="aluminium"))
+    assert named.indenter_modulus == pytest.approx(207 / 69) and named.indenter_nu == 0.3
+    assert named.run_spec(1)["friction"] == 0.1
+    rigid = parse_scene("h", HIST)  # no indenter: the keywords stay out of the call
+    assert rigid.indenter_modulus == float("inf") and "indenter_modulus" not in rigid.run_spec(0)
+
+
+@pytest.mark.parametrize("extra, text", [
+    ({"indenter": {"modulus_ratio": -1.0}}, "scenes.h.indenter.modulus_ratio"),
+    ({"indenter": {"modulus_ratio": 2.0, "nu": 0.7}}, "scenes.h.indenter.nu"),
+    ({"indenter": "steel"}, "scenes.h.body"),
+    ({"indenter": "unobtainium", "body": "steel"}, "scenes.h.indenter"),
+    ({"indenter": "steel", "body": "aluminium"}, "scenes.h.nu"),  # nu 0.3, aluminium 0.33
+    ({"body": "steel"}, "scenes.h.body"),
+])
+def test_bad_history_indenter_is_refused_naming_the_key(extra, text):
+    with pytest.raises(ValueError, match=text):
+        parse_scene("h", dict(HIST, **extra))
+
+
+def test_history_scene_indenter_reaches_the_dataset():
+    s = parse_scene("h", dict(HIST, friction=0.2, indenter={"modulus_ratio": 1.0, "nu": 0.0},
+                              load_path=[0, 1], steps=3))
+    ds = history_to_dataset(history(**s.run_spec(0)))
+    assert ds.attrs["indenter_modulus_ratio"] == 1.0
+    assert ds.attrs["indenter_poisson_ratio"] == 0.0
+    assert ds.attrs["dundurs_beta"] < 0  # compressible indenter on a less compressible body
+
+
 def test_tolerance_scene_plans_the_default_method_and_refuses_n_with_it():
     s = parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 1e-3,
                           "stick_ratios": [0.1, 0.5]})

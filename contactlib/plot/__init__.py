@@ -7,7 +7,9 @@
 * :mod:`contactlib.plot.history`: loading-history figures (datasets of
   :func:`contactlib.io.history_to_dataset` and :func:`contactlib.io.stack_histories`);
 * :mod:`contactlib.plot.convergence`: error against time
-  (:func:`contactlib.io.study_to_dataset`).
+  (:func:`contactlib.io.study_to_dataset`);
+* :mod:`contactlib.plot.materials`: named material pairs (elastic indenters),
+  k against c/a and the frictional work per load cycle.
 
 Figures take datasets and return a :class:`matplotlib.figure.Figure`; nothing
 here touches the disk or imports the numerics' solvers. Save with
@@ -31,6 +33,7 @@ from contactlib.plot.history import (
     hist_stick_map,
     hist_stick_radius,
 )
+from contactlib.plot.materials import fig_material_pairs
 from contactlib.plot.paper import fig2_friction, fig3_tractions, fig4_displacement, fig5_work
 
 __all__ = [
@@ -44,4 +47,5 @@ __all__ = [
     "hist_stick_map",
     "hist_displacement_loop",
     "hist_energy_per_cycle",
+    "fig_material_pairs",
 ]

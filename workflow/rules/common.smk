@@ -10,7 +10,7 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
 import contactlib
-from contactlib.scene import parse_scene
+from contactlib.scene import material_pair_scenes, parse_scene
 
 SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 VERSION = contactlib.__version__
@@ -135,9 +135,41 @@ def _validate_config(cfg):
     return scenes
 
 
+def material_scenes(cfg, taken):
+    """The `materials` target's scenes (contactlib.scene.material_pair_scenes): per pair
+    [indenter, body] a self-similar scene mat-<indenter>-on-<body> and a history scene
+    mat-<indenter>-on-<body>-cycle.
+
+    Returns {name: scene} and {self-similar name: (history name, "indenter on body")}
+    in the configured order; every problem of the section is raised at once."""
+    section = cfg.get("materials")
+    if not isinstance(section, dict):
+        return {}, {}
+    try:
+        raws = material_pair_scenes(section)
+    except ValueError as exc:
+        raise WorkflowError(f"invalid configuration:\n  materials.pairs: {exc}") from None
+    scenes, lines = {}, []
+    for name, raw in raws.items():
+        if name in taken:
+            lines.append(f"materials.pairs: scene name {name!r} is taken")
+            continue
+        try:
+            scenes[name] = parse_scene(name, raw)
+        except ValueError as exc:
+            lines += [f"materials: {line}" for line in getattr(exc, "problems", [str(exc)])]
+    if lines:
+        raise WorkflowError("invalid configuration:\n" + "\n".join(f"  {l}" for l in lines))
+    pairs = {name: (f"{name}-cycle", f"{raw['indenter']} on {raw['body']}".replace("_", " "))
+             for name, raw in raws.items() if raw.get("kind") != "history"}
+    return scenes, pairs
+
+
 ALL_SCENES = _validate_config(config)
-SCENES = {n: s for n, s in ALL_SCENES.items() if s.kind == "self-similar"}
-HISTORIES = {n: s for n, s in ALL_SCENES.items() if s.kind == "history"}
+# the `materials` target's scenes: built by the same rules, not part of `all`
+MATERIAL_SCENES, MATERIAL_PAIRS = material_scenes(config, ALL_SCENES)
+SCENES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES}.items() if s.kind == "self-similar"}
+HISTORIES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES}.items() if s.kind == "history"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
 
 # influence sets, shared by every scene with the same key; the parts any of them needs

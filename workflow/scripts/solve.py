@@ -6,10 +6,10 @@ from pathlib import Path
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
 from contactlib import io, pipeline  # noqa: E402
-from contactlib.scene import parse_scene  # noqa: E402
+from contactlib.scene import parse_scene, scene_mapping  # noqa: E402
 
 name = snakemake.params.scene["name"]  # noqa: F821
-scene = parse_scene(name, snakemake.config["scenes"][name])  # noqa: F821
+scene = parse_scene(name, scene_mapping(snakemake.config, name))  # noqa: F821
 folder = Path(snakemake.input.influence)  # noqa: F821
 parts = {part: io.read_arrays(folder / f"{part}.npz") for part in scene.parts}
 

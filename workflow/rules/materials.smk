@@ -1,0 +1,41 @@
+# The `materials` target: named material pairs (config `materials:`), an elastic
+# indenter on a half-space. Each pair's self-similar scene (k against c/a) and
+# history scene (frictional work of the load cycle) are built by the usual rules
+# (influence, solve, check, assemble; history_run, history_assemble); this stage
+# draws them in one figure. Not part of `all`: run `snakemake --cores 2 materials`.
+
+
+rule materials_figure:
+    input:
+        self_similar=expand("results/datasets/{scene}.nc", scene=list(MATERIAL_PAIRS)),
+        cycles=expand(
+            "results/datasets/{scene}.nc", scene=[h for h, _ in MATERIAL_PAIRS.values()]
+        ),
+    output:
+        png=report(
+            "results/figures/materials.png",
+            caption="../report/materials.rst",
+            category="Figures",
+            labels={"figure": "Material pairs: k against c/a and work per cycle",
+                    "file": "materials.png"},
+        ),
+        pdf="results/figures/materials.pdf",
+    params:
+        labels=[label for _, label in MATERIAL_PAIRS.values()],
+        version=VERSION,
+    log:
+        "results/logs/figures/materials.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=5,
+    script:
+        "../scripts/materials_figure.py"
+
+
+rule materials:
+    input:
+        rules.materials_figure.output,
+    default_target: False

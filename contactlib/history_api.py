@@ -85,7 +85,7 @@ MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
-_MIN_SPLIT_STEPS = 8  # fewer steps a segment: one coarse run, mesh and step errors together
+_MIN_SPLIT_STEPS = 40  # fewer steps a segment: one coarse run (B would be too coarse)
 
 
 @dataclass(repr=False)
@@ -256,7 +256,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     Notes
     -----
     Error estimates: the same path is followed on a mesh of ``n // 2``
-    elements with ``steps // 2`` steps a segment (run A) and, from 8 steps a
+    elements with ``steps // 2`` steps a segment (run A) and, from 40 steps a
     segment, on the same coarse mesh with ``steps // 4`` (run B); their
     values are interpolated to the same point of the path (see
     :func:`contactlib.history_solver.error_estimates`). The work error is the

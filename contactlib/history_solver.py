@@ -618,7 +618,8 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     mesh error of F for first order in the element size and three times it
     for second order; ``|S| / 2`` is the step error of F for first order in
     the step and 1.3 times it for order 0.6 (``S / 2`` over ``2^p (2^p - 1)``
-    times the error). Without B (fewer than 8 steps a segment) the estimate
+    times the error). Without B (fewer than 40 steps a segment,
+    where B would be too coarse) the estimate
     is ``|F - A|``, where the two errors may cancel. The stick radius always
     takes ``|F - A|``: its step error is small (the advancing stick edge is
     resolved below the element size at every step), and the split estimate

@@ -85,6 +85,7 @@ MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
+_MIN_SPLIT_STEPS = 40  # fewer steps a segment: one coarse run (B would be too coarse)
 
 
 @dataclass(repr=False)
@@ -255,21 +256,25 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     Notes
     -----
     Error estimates: the same path is followed on a mesh of ``n // 2``
-    elements with ``steps // 2`` steps a segment (``steps`` itself below 4,
-    where halving would change the one- or two-step load being asked for),
-    and its stick radius and work, interpolated to the same point of the
-    path, are subtracted from this run's (see
-    :func:`contactlib.history_solver.error_estimates`). The stick radius
-    estimate is at least half an element wherever the stick edge is an
-    element edge. Measured against runs refined fourfold (4n elements, 4x
-    steps; sphere and half-plane, nu = 0.3, k = 0.1, 0.2, 0.3, a 0 -> 1 -> 0
-    cycle and a fretting path, ``benchmarks/report_history.py errors``): at
-    n = 60, 20 steps the estimates are at least 0.44 of the error at every
-    step and at most 9 times the largest error of a segment. At n = 120, 50
-    steps two of the twelve cases miss: the cycle work of the sphere at
-    k = 0.2 (estimate 0.08 of the error) and the fretting work of the
-    half-plane at k = 0.1 (0.16), where the mesh error and the step error
-    have opposite signs and cancel in the difference.
+    elements with ``steps // 2`` steps a segment (run A) and, from 40 steps a
+    segment, on the same coarse mesh with ``steps // 4`` (run B); their
+    values are interpolated to the same point of the path (see
+    :func:`contactlib.history_solver.error_estimates`). The work error is the
+    mesh error and the step error estimated separately and added as absolute
+    values, so that errors of opposite sign do not cancel; the stick radius
+    error is this run minus run A, at least half an element wherever the
+    stick edge is an element edge. Measured against runs refined fourfold (4n
+    elements, 4x steps; sphere and half-plane, nu = 0.3, k = 0.1, 0.2, 0.3, a
+    0 -> 1 -> 0 cycle and a fretting path, ``benchmarks/report_history.py
+    errors``) at n = 120, 50 steps: the work estimate is at least 0.55 of
+    the error at every step and at most 8.3 times the largest error of a
+    segment; the stick radius estimate at least 0.36 of the error, at most
+    12 times (cylinder, k = 0.1, fretting: an element-edge stick radius).
+    The estimate costs 24 ... 45 % of the run (CPU time; more than the 30 %
+    aimed at for up to 400 steps at n = 240). At the default n = 240 and 100
+    steps a segment the work of a cycle is truly in error by 0.5 ... 0.8 %
+    (truth n = 960, 400 steps; estimate 1.0 ... 1.7 %): no step is resolved
+    at the default ``max_error`` 1e-3, which needs more steps and elements.
 
     Measured against the self-similar solver (sphere, nu = 0.3, monotonic
     loading): c/a within 0.25 % for c/a = 0.2 ... 0.9 at n = 120 ... 480 and
@@ -318,8 +323,15 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
         levels_c, segment_c = load_levels(levels_in, steps_c)
-        raw_c = hs.run_history(hs.build_operators(model, n_c), k, levels_c)
-        err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c)
+        ops_c = hs.build_operators(model, n_c)
+        raw_c = hs.run_history(ops_c, k, levels_c)
+        coarser = (None, None, None)
+        if steps >= _MIN_SPLIT_STEPS:  # separate step error: the same mesh, half the steps again
+            steps_b = steps_c // 2
+            levels_b, segment_b = load_levels(levels_in, steps_b)
+            coarser = (hs.run_history(ops_c, k, levels_b), steps_b, segment_b)
+        err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c,
+                                          *coarser)
     annulus = hs.annulus_resolved(k, raw.state)
     with np.errstate(invalid="ignore"):
         accurate = ~((err_c > max_error) | (err_w > max_error))  # NaN: not estimated

@@ -599,45 +599,88 @@ def _window_max(values: np.ndarray, segment: np.ndarray) -> np.ndarray:
 
 
 def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.ndarray,
-                    coarse: RawHistory, steps_coarse: int,
-                    segment_coarse: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+                    coarse: RawHistory, steps_coarse: int, segment_coarse: np.ndarray,
+                    coarser: RawHistory | None = None, steps_coarser: int | None = None,
+                    segment_coarser: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Per-step error estimates of the stick radius and of the cumulative work.
 
-    ``coarse`` is the same path on a coarser mesh (about n/2 elements) with
-    fewer steps (about half); it is interpolated onto the fine steps by path
-    coordinate (:func:`path_interpolate`) and the difference ``D`` taken as
-    the error of the fine run: exact for first-order convergence in the
-    element size and the step (the trapezoid work and the unrefined stick
-    edge), three times the error for second order, so it covers the error
-    and overstates it at most threefold for orders 1 ... 2.
+    ``coarse`` (A) is the same path on a coarser mesh (about n/2 elements)
+    with about half the steps; ``coarser`` (B), if given, is the path on the
+    same coarse mesh with about a quarter of the steps. Both are interpolated
+    onto the fine steps by path coordinate (:func:`path_interpolate`).
 
-    The stick radius is an element edge wherever its refinement does not
-    apply (a receding or standing stick edge, see :func:`stick_radius`):
-    there its error is up to half an element whatever ``D`` says (the coarse
-    edges are fine edges too, so ``D`` vanishes by coincidence), and the
-    estimate is at least ``h / 2`` (h = element size).
+    With B the mesh error and the step error of the work are estimated
+    separately and added as absolute values, so that errors of opposite sign cannot cancel:
+    ``S = A - B`` is the step refinement difference on the coarse mesh, and
+    for a step error of first order the step part of ``F - A`` (F the fine
+    run) is ``S / 2``, which leaves the mesh refinement difference
+    ``M = F - A - S / 2``. The estimate is ``|M| + |S| / 2``: ``|M|`` is the
+    mesh error of F for first order in the element size and three times it
+    for second order; ``|S| / 2`` is the step error of F for first order in
+    the step and 1.3 times it for order 0.6 (``S / 2`` over ``2^p (2^p - 1)``
+    times the error). Without B (fewer than 40 steps a segment,
+    where B would be too coarse) the estimate
+    is ``|F - A|``, where the two errors may cancel. The stick radius always
+    takes ``|F - A|``: its step error is small (the advancing stick edge is
+    resolved below the element size at every step), and the split estimate
+    overstated its error up to 25-fold in the fretting paths of
+    ``benchmarks/report_history.py errors``.
+
+    Each estimate is the largest within two steps either side (same path
+    segment). The stick radius is an element edge wherever its refinement
+    does not apply (a receding or standing stick edge, see
+    :func:`stick_radius`): there its error is up to half an element whatever
+    the differences say (the coarse edges are fine edges too, so they vanish
+    by coincidence), and the estimate is at least ``h / 2`` (h = element
+    size).
+
+    Parameters
+    ----------
+    fine : RawHistory
+        The run whose errors are estimated.
+    ops : Operators
+        Its operators (for the element size).
+    steps : int
+        Its steps a segment.
+    segment : ndarray of int
+        Its path segment of every step.
+    coarse, steps_coarse, segment_coarse
+        Run A, its steps a segment and segments.
+    coarser, steps_coarser, segment_coarser
+        Run B, its steps a segment and segments (optional).
 
     Returns
     -------
     (stick_radius_error, work_error)
         Absolute error of the stick radius in units of a_max (0 without
         contact) and relative error of the cumulative frictional work (0
-        while both runs have done no work, ``inf`` where only the coarse run
+        while the runs have done no work, ``inf`` where only a coarse run
         has).
     """
     x = np.arange(segment.size) / steps
-    xc = np.arange(segment_coarse.size) / steps_coarse
-    c_fine = np.nan_to_num(fine.stick_radius)  # no contact: no stick zone
-    c_coarse = path_interpolate(x, segment, xc, segment_coarse,
-                                np.nan_to_num(coarse.stick_radius))
+
+    def coarse_values(run: RawHistory, n_steps: int, seg: np.ndarray,
+                      name: str) -> np.ndarray:
+        values = getattr(run, name)
+        return path_interpolate(x, segment, np.arange(seg.size) / n_steps, seg,
+                                np.nan_to_num(values))
+
+    def estimate(name: str, split: bool) -> np.ndarray:
+        f = np.nan_to_num(getattr(fine, name))  # no contact: no stick zone
+        a = coarse_values(coarse, steps_coarse, segment_coarse, name)
+        if coarser is None or not split:
+            return _window_max(np.abs(f - a), segment)
+        s = a - coarse_values(coarser, steps_coarser, segment_coarser, name)
+        return _window_max(np.abs(f - a - 0.5 * s) + 0.5 * np.abs(s), segment)
+
+    c_fine = np.nan_to_num(fine.stick_radius)
     h = float(ops.edges[1] - ops.edges[0])
     half = 0.5 * h * np.rint(c_fine / (0.5 * h))  # element edges and midpoints
     on_grid = (np.abs(c_fine - half) <= 1e-12) & (c_fine < fine.contact_radius)
-    err_c = _window_max(np.abs(c_fine - c_coarse), segment)
+    err_c = estimate("stick_radius", split=False)
     err_c = np.where(on_grid, np.maximum(err_c, 0.5 * h), err_c)
     err_c[np.isnan(fine.stick_radius)] = 0.0
-    w_coarse = path_interpolate(x, segment, xc, segment_coarse, coarse.work)
-    diff = _window_max(np.abs(fine.work - w_coarse), segment)
+    diff = estimate("work", split=True)
     with np.errstate(divide="ignore", invalid="ignore"):
         err_w = np.where(fine.work > 0.0, diff / fine.work, np.where(diff > 0.0, np.inf, 0.0))
     return err_c, err_w

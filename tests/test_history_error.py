@@ -120,12 +120,11 @@ def test_bad_error_estimate_is_refused_naming_it(value):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="known gap: the mesh error (order ~2, W falls with n) and "
-                   "the step error (order ~0.6, W rises with steps) of the cycle work cancel "
-                   "in the coarse-minus-fine difference (n/2 and steps/2 together)")
 def test_work_estimate_with_opposite_mesh_and_step_errors():
-    """Sphere k = 0.2, 0 -> 1 -> 0, n = 120, 50 steps: measured estimate / error 0.08 at the end."""
+    """Sphere k = 0.2, 0 -> 1 -> 0, n = 120, 50 steps: the mesh error and the step error of the
+    cycle work have opposite signs; estimated separately they no longer cancel (measured
+    estimate / error 2.0 at the end, 0.08 when both were halved in one coarse run)."""
     res = history("sphere", NU, 0.2, PATHS["cycle"], 50, n=120)
     ref = history("sphere", NU, 0.2, PATHS["cycle"], 200, n=480, error_estimate=False)
     true = abs(res.frictional_work[-1] / ref.frictional_work[-1] - 1)
-    assert res.work_error_estimate[-1] >= true / 3
+    assert true / 3 <= res.work_error_estimate[-1] <= 10 * true

@@ -304,7 +304,8 @@ def test_style_file_is_bundled_and_self_contained():
 
 
 # ----------------------------------------------------------------------------- write_figure
-@pytest.mark.parametrize("name", sorted(FIGURES))
+@pytest.mark.parametrize("name", [pytest.param(name, marks=() if name == "fig2" else
+                                               pytest.mark.slow) for name in sorted(FIGURES)])
 def test_write_figure_is_byte_reproducible(data, name, tmp_path):
     fig = FIGURES[name]([data["sphere"], data["cylinder-paper"]])
     for ext in ("png", "pdf", "PNG"):

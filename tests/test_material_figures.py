@@ -112,6 +112,7 @@ def test_material_pair_scenes_parse_and_are_found_by_name():
 
 # ----------------------------------------------------------------------------- workflow
 @needs_snakemake
+@pytest.mark.slow  # two dry runs; the scene and figure functions are tested fast above
 @pytest.mark.workflow
 def test_materials_target_is_separate_from_the_main_job(tmp_path):
     wd = make_workdir(tmp_path)

@@ -113,6 +113,8 @@ def test_cli_history_bytes_do_not_depend_on_blas_threads(tmp_path):
     assert one == two
 
 
+@pytest.mark.slow  # a workflow run; the CLI byte checks above stay in the fast tier
+@pytest.mark.workflow
 @pytest.mark.skipif(shutil.which("snakemake") is None, reason="snakemake is not installed")
 def test_workflow_dataset_bytes_do_not_depend_on_threads(tmp_path):
     """Snakemake sets the BLAS variables to a job's threads: run with 1 and with 2."""

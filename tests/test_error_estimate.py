@@ -166,6 +166,7 @@ def test_paper_scheme_is_measured_not_trusted():
     assert not sol.resolved
 
 
+@pytest.mark.slow  # the inverse is also checked fast (Spence's point, tests/test_sphere.py)
 def test_inverse_at_small_and_large_k():
     """--friction at tiny and large k: the stick ratio that reproduces k, with an estimate."""
     for k in (1.4e-4, 6e-3):  # c/a about 2e-6 and 0.9998

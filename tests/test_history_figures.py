@@ -115,7 +115,8 @@ RICH = {
 }
 
 
-@pytest.mark.parametrize("name", sorted(FUNCTIONS))
+@pytest.mark.parametrize("name", [pytest.param(name, marks=() if i == 0 else pytest.mark.slow)
+                                  for i, name in enumerate(sorted(FUNCTIONS))])
 def test_png_is_byte_reproducible(figure, name, tmp_path):
     fig = figure(name, *RICH[name])
     assert not lines(fig, NOT_CONVERGED)  # every step converged here

@@ -37,7 +37,7 @@ from . import validate
 from .model import Contact
 
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
-           "plan", "estimate", "solve_to_tolerance", "check_max_error",
+           "plan", "estimate", "solve_to_tolerance",
            "resolving_n", "DEFAULT_MAX_ERROR"]
 
 MAX_N = validate.MAX_N
@@ -124,11 +124,6 @@ def estimate(k_quarter: float, k_half: float, k_full: float) -> tuple[float, flo
         return max(abs(d1), abs(d2)) / abs(k_full), math.nan
     p = float(np.clip(np.log2(ratio), 1.0, 2.0))
     return abs(d2) / (2.0**p - 1.0) / abs(k_full), p
-
-
-def check_max_error(value: object) -> float:
-    """The accuracy a case must reach to be reported as resolved (:func:`validate.max_error`)."""
-    return validate.max_error(value)
 
 
 def resolving_n(n: int, error: float, max_error: float) -> int | None:

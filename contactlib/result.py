@@ -6,7 +6,7 @@ shape (never their contents), e.g.::
 
     Solution: sphere, nu = 0.3, method = default, n = 256
              stick_ratio: 0.5
-    friction_coefficient: 0.152481
+    friction_coefficient: 0.152483 (estimated relative error 1.6e-05)
     ...
                   arrays: xi, pressure, shear, tangential_displacement (201,)
 """
@@ -27,6 +27,13 @@ __all__ = ["Solution", "format_fields", "short_repr", "history_repr"]
 
 
 # ----------------------------------------------------------------------------- short repr
+def _with_error(value: float, relative_error: float) -> str:
+    """``value`` followed by its estimated relative error, when there is one."""
+    if isinstance(relative_error, float) and math.isfinite(relative_error):
+        return f"{_scalar(value)} (estimated relative error {relative_error:.1e})"
+    return _scalar(value)
+
+
 def _scalar(value: Any) -> str:
     """One value in a few characters: floats to 6 digits, arrays by shape."""
     if isinstance(value, (bool, np.bool_)):
@@ -234,9 +241,10 @@ class Solution:
                      f"{self.indenter_poisson_ratio:g}, beta = {self.dundurs_beta:.4g}")
         items: list[tuple[str, Any]] = [
             ("stick_ratio", self.stick_ratio),
-            ("friction_coefficient", self.friction_coefficient),
-            ("load_ratio", self.load_ratio),
-            ("frictional_work", self.frictional_work),
+            ("friction_coefficient", _with_error(self.friction_coefficient, self.error_estimate)),
+            ("load_ratio", _with_error(self.load_ratio, self.load_error_estimate)),
+            ("frictional_work", _with_error(self.frictional_work, self.work_error_estimate)),
+            ("resolved", f"{bool(self.resolved)} (max_error {_scalar(self.max_error)})"),
             ("converged", _status(self.converged, self.iterations, self.residual_norm)),
             ("consistent", f"{bool(self.consistent)} (slip_direction_ok "
                            f"{bool(self.slip_direction_ok)}, stick_admissible "

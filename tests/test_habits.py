@@ -251,6 +251,17 @@ def test_solution_repr_is_short_and_shows_the_key_numbers() -> None:
     assert "0.005" not in text  # no array contents (xi[1] = 0.005)
 
 
+def test_solution_repr_carries_the_error_estimates() -> None:
+    # every answer carries its error: printing a solve shows k with its estimate and
+    # whether it is resolved (the estimate itself is tested in test_error_estimate.py)
+    sol = contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=64)
+    text = repr(sol)
+    assert len(text.splitlines()) <= 12, text
+    assert f"friction_coefficient: {sol.friction_coefficient:.6g} (estimated relative error " \
+        f"{sol.error_estimate:.1e})" in text, text
+    assert f"resolved: {sol.resolved} (max_error 0.001)" in text, text
+
+
 def test_history_repr_is_short() -> None:
     res = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 3, n=16)
     text = repr(res)

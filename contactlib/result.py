@@ -97,6 +97,12 @@ def _status(converged: Any, iterations: Any, residual: Any) -> str:
             f"residual {float(residual):.3g})")
 
 
+def _last(res: Any, name: str) -> float:
+    """The last value of the per-step array ``name`` of ``res`` (NaN if it has none)."""
+    values = np.asarray(getattr(res, name, ()), dtype=float)
+    return float(values[-1]) if values.size else float("nan")
+
+
 def history_repr(res: Any) -> str:
     """Short ``repr`` of a :class:`contactlib.history_api.HistoryResult`."""
     path = " -> ".join(f"{v:g}" for v in res.load_path[:8])
@@ -118,7 +124,8 @@ def history_repr(res: Any) -> str:
         ("load_path", f"{path} ({res.steps} steps a segment, {steps} in all)"),
         ("top load", state(int(np.argmax(res.load_ratio)))),
         ("end", state(steps)),
-        ("frictional_work", f"{_scalar(res.frictional_work[-1])} (cumulative, at the end)"),
+        ("frictional_work", "at the end (cumulative): " + _with_error(
+            res.frictional_work[-1], _last(res, "work_error_estimate"))),
         ("converged", f"{done}/{steps} steps (at most {int(iters.max()) if iters.size else 0} "
                       f"iterations a step)"),
         ("message", res.message or "(none)"),

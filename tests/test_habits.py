@@ -270,6 +270,12 @@ def test_history_repr_is_short() -> None:
     assert f"{float(res.frictional_work[-1]):.6g}" in text
 
 
+def test_history_repr_carries_the_work_error_estimate() -> None:
+    res = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=32)
+    assert (f"frictional_work: at the end (cumulative): {res.frictional_work[-1]:.6g} "
+            f"(estimated relative error {res.work_error_estimate[-1]:.1e})") in repr(res)
+
+
 def test_internal_results_and_scenes_have_a_short_repr() -> None:
     scene = parse_scene("s", {"geometry": "sphere", "nu": 0.3, "n": 4096,
                               "stick_ratios": "all", "outputs": ["k_curve"]})

@@ -17,8 +17,8 @@ import numpy as np
 
 from . import stages, validate
 from .default_method import DiscreteSolution, solve_default
+from .discrete import SelfSimilarSolution
 from .geometry import Geometry
-from .paper_method import PaperSolution
 from .operators import StickBlocks
 from .result import CaseRecord, Solution
 from .threads import blas_single_threaded
@@ -52,7 +52,7 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
 
 
 # ----------------------------------------------------------------------------- post-processing
-def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
+def _finish(geom: Geometry, d: SelfSimilarSolution, method: str, n: int,
             want_energy: bool, message: str = "",
             max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""

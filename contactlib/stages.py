@@ -32,6 +32,7 @@ import numpy as np
 
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
+from .discrete import SelfSimilarSolution
 from .operators import StickBlocks
 from .elements import Mesh, graded_mesh, uniform_mesh
 from .model import Contact
@@ -168,14 +169,12 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
     return solve_paper(geometry, m, n, coulomb=coulomb, ops=ops)
 
 
-def case_record(geometry: Contact, d: DiscreteSolution | PaperSolution,
-                samples: bool) -> CaseRecord:
+def case_record(geometry: Contact, d: SelfSimilarSolution, samples: bool) -> CaseRecord:
     """The case record of a discrete solution (and, with ``samples``, what checks and work need)."""
     nodes, m = d.mesh.nodes, d.mesh.stick_index
-    paper = isinstance(d, PaperSolution)
     converged, message = bool(d.converged), str(d.message or "")
     extra: dict[str, Any] = {}
-    if not paper:
+    if d.nodal_u is not None:
         extra.update(nodal_u=np.asarray(d.nodal_u, dtype=float),
                      nodal_du=np.asarray(d.nodal_du, dtype=float))
     if samples:
@@ -183,9 +182,7 @@ def case_record(geometry: Contact, d: DiscreteSolution | PaperSolution,
             xs, ws, q_slip, s_slip = d.slip_samples()
         else:
             xs = ws = q_slip = s_slip = np.empty(0)
-        # stick-zone points: element midpoints (and nodes for continuous tractions)
-        mids = 0.5 * (nodes[:m] + nodes[1:m + 1])
-        pts = mids if paper else np.concatenate([nodes[1:m], mids])
+        pts = d.stick_points()
         extra.update(slip_x=xs, slip_w=ws, slip_q=q_slip, slip_s=s_slip,
                      stick_q=d.shear(pts), stick_p=d.pressure(pts))
         if not np.all(np.isfinite(s_slip)):  # never a silent NaN in a converged case
@@ -194,26 +191,27 @@ def case_record(geometry: Contact, d: DiscreteSolution | PaperSolution,
                 "the slip-rate samples hit a kernel singularity (a slip zone narrower than "
                 "the quadrature resolves); flags and work are not reliable")) if x)
     return CaseRecord(
-        kind="paper" if paper else "default",
-        stick_ratio=float(nodes[m]), nodes=np.asarray(nodes, dtype=float),
+        kind=d.kind, stick_ratio=float(nodes[m]), nodes=np.asarray(nodes, dtype=float),
         stick_index=int(m), p=np.asarray(d.p, dtype=float),
-        traction=np.asarray(d.qc if paper else d.phi, dtype=float),
-        k=float(d.k), delta=float(getattr(d, "delta", np.nan)),
+        traction=np.asarray(d.traction, dtype=float), k=float(d.k), delta=float(d.delta),
         converged=converged, residual_norm=float(d.residual_norm),
-        iterations=int(d.iterations), message=message,
-        load=float(d.load() if paper else geometry.load(nodes, d.p)),
-        round_off=float(getattr(d, "round_off", 0.0)), **extra)
+        iterations=int(d.iterations), message=message, load=float(d.load()),
+        round_off=float(d.round_off), **extra)
 
 
-def _rebuild(geometry: Contact, rec: CaseRecord) -> DiscreteSolution | PaperSolution:
+# the discrete solution of each record kind (the interpolation between its nodes)
+_KINDS: dict[str, type[SelfSimilarSolution]] = {
+    cls.kind: cls for cls in (DiscreteSolution, PaperSolution)}
+
+
+def _rebuild(geometry: Contact, rec: CaseRecord) -> SelfSimilarSolution:
+    """The discrete solution a case record holds (no solve: its fields as they are)."""
     mesh = Mesh(np.asarray(rec.nodes, dtype=float), int(rec.stick_index))
-    common = dict(k=float(rec.k), converged=bool(rec.converged),
-                  residual_norm=float(rec.residual_norm),
-                  iterations=int(rec.iterations), message=str(rec.message))
-    if rec.kind == "paper":
-        return PaperSolution(geometry, mesh, rec.p, rec.traction, **common)
-    return DiscreteSolution(geometry, mesh, rec.p, rec.traction, float(rec.delta),
-                            nodal_u=rec.nodal_u, nodal_du=rec.nodal_du, **common)
+    return _KINDS[rec.kind](geometry, mesh, rec.p, rec.traction, float(rec.delta),
+                            k=float(rec.k), converged=bool(rec.converged),
+                            residual_norm=float(rec.residual_norm),
+                            iterations=int(rec.iterations), message=str(rec.message),
+                            nodal_u=rec.nodal_u, nodal_du=rec.nodal_du)
 
 
 def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[float], *,
@@ -454,7 +452,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         pass
     elif method != "default":
         ref = solve_default(geometry, solved, 64, cache=cache)
-        k_ref, load_ref = ref.k, geometry.load(ref.mesh.nodes, ref.p)
+        k_ref, load_ref = ref.k, ref.load()
         if 0.0 < c < 1.0 and np.isfinite(rec.k) and k_ref > 0.0:
             out["error_estimate"] = abs(rec.k - k_ref) / k_ref
         else:
@@ -487,7 +485,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
                          "did not converge")
         else:
             out["error_estimate"] = _relative([s.k for s in sols] + [float(rec.k)])
-        loads = [geometry.load(s.mesh.nodes, s.p) for s in sols] + [float(rec.load)]
+        loads = [s.load() for s in sols] + [float(rec.load)]
         out["load_error_estimate"] = _relative(loads) if len(loads) > 1 else math.nan
         if samples and sols and rec.slip_x.size and 0.0 < solved < 1.0:
             out["work_error_estimate"] = _relative([_work(geometry, s) for s in sols]

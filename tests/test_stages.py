@@ -16,6 +16,7 @@ import pytest
 import contactlib
 from contactlib import io, pipeline, stages
 from contactlib.geometry import Geometry
+from contactlib.discrete import SelfSimilarSolution
 from contactlib.result import CaseRecord
 from contactlib.scene import config_hash, parse_scene, parse_scenes
 
@@ -192,3 +193,18 @@ def test_scene_defaults_and_keys():
     assert d.hash != e.hash
     with pytest.raises(ValueError, match="non-empty mapping"):
         parse_scenes({})
+
+
+def test_both_self_similar_solvers_give_one_shape():
+    """Default and paper solutions share one base: the record never asks which made it."""
+    geom = Geometry("sphere", 0.3)
+    for method, n, kind in (("default", 32, "default"), ("paper", 8, "paper")):
+        d = stages.solve_one(geom, method, n, 0.5, None, None)
+        assert isinstance(d, SelfSimilarSolution) and d.kind == kind
+        assert [f.name for f in dataclasses.fields(d)] == [
+            f.name for f in dataclasses.fields(SelfSimilarSolution)]
+        rec = stages.case_record(geom, d, samples=True)
+        assert rec.kind == kind and rec.load == d.load()
+        np.testing.assert_array_equal(rec.traction, d.phi if kind == "default" else d.qc)
+        assert (rec.nodal_u is None) == (kind == "paper") and np.isnan(rec.delta) == (
+            kind == "paper")

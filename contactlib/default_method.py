@@ -486,14 +486,16 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         when stick_ratio = 0); computed here when not given.
     cache : StickBlocks, optional
         The caller's store of stick blocks (see
-        :func:`~contactlib.operators.nodal_operator_part`), shared by the
-        cases of a sweep; the numbers do not depend on it.
+        :func:`~contactlib.operators.nodal_operator_part`) and of graded
+        meshes (its ``meshes``), shared by the cases of a sweep; the numbers
+        do not depend on it.
 
     Returns
     -------
     DiscreteSolution
     """
-    mesh = graded_mesh(n, stick_ratio, power=power)
+    mesh = graded_mesh(n, stick_ratio, power=power,
+                       store=None if cache is None else cache.meshes)
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
     pw, qw = _nodal_operators(geometry, mesh, ops, cache)

@@ -34,7 +34,7 @@ from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
 from .operators import StickBlocks
-from .elements import Mesh, graded_mesh, uniform_mesh
+from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import CaseRecord, Solution
@@ -127,6 +127,11 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
 
 
+def _meshes(cache: StickBlocks | None) -> MeshStore | None:
+    """The caller's store of graded meshes, carried by its store of stick blocks."""
+    return None if cache is None else cache.meshes
+
+
 def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
             nodes: np.ndarray) -> np.ndarray | None:
     """The operator of one case from an influence set (None when not given)."""
@@ -155,7 +160,7 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
     """
     if method == "default":
         if ops is None:
-            mesh = graded_mesh(n, c)
+            mesh = graded_mesh(n, c, store=_meshes(cache))
             pw = _lookup(normal, method, c, mesh.nodes)
             qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
             ops = None if pw is None else (pw, qw)
@@ -341,7 +346,7 @@ def estimate_case(geometry: Contact, method: str, n: int, rec: CaseRecord, *,
 def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
                     cache: StickBlocks | None = None) -> tuple:
     """Collocation operators (normal, shear) of a partial-slip case on its mesh n."""
-    mesh = graded_mesh(n, c)
+    mesh = graded_mesh(n, c, store=_meshes(cache))
     pw = _lookup(normal, "default", c, mesh.nodes)
     qw = _lookup(shear, "default", c, mesh.nodes)
     if pw is None:
@@ -380,11 +385,11 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
     no kernel evaluations.
     """
     out: dict[int, DiscreteSolution] = {}
-    mesh = graded_mesh(n, c)
+    mesh = graded_mesh(n, c, store=_meshes(cache))
     for m in (n // 2, n // 4):
         if m < 8:
             continue
-        sub = graded_mesh(m, c)
+        sub = graded_mesh(m, c, store=_meshes(cache))
         nested = (ops is not None and 2 * sub.n == mesh.n
                   and 2 * sub.stick_index == mesh.stick_index
                   and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))

@@ -17,10 +17,10 @@ import numpy as np
 
 from . import stages, validate
 from .default_method import DiscreteSolution, solve_default
+from .discrete import SelfSimilarSolution
 from .geometry import Geometry
-from .paper_method import PaperSolution
 from .operators import StickBlocks
-from .result import Solution
+from .result import CaseRecord, Solution
 from .threads import blas_single_threaded
 
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
@@ -52,16 +52,16 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
 
 
 # ----------------------------------------------------------------------------- post-processing
-def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
+def _finish(geom: Geometry, d: SelfSimilarSolution, method: str, n: int,
             want_energy: bool, message: str = "",
             max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
     rec = stages.case_record(geom, d, samples=True)
-    stages.estimate_case(geom, method, n, rec, max_error=max_error)
+    rec = stages.estimate_case(geom, method, n, rec, max_error=max_error)
     return _from_record(geom, rec, method, n, want_energy, message)
 
 
-def _from_record(geom: Geometry, rec: dict, method: str, n: int, want_energy: bool,
+def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_energy: bool,
                  message: str = "") -> Solution:
     xi = output_grid()
     work = stages.work_case(geom, rec) if want_energy else float("nan")

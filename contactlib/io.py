@@ -12,8 +12,9 @@ and scalings of docs/conventions.md):
   histories (:class:`~contactlib.history_api.HistoryResult`);
 * :func:`study_to_dataset` and :func:`study_from_dataset` for convergence
   studies (:class:`~contactlib.convergence.Study`);
-* :func:`write_records` and :func:`read_records` for the case records the
-  workflow passes between its stages (npz).
+* :func:`write_records` and :func:`read_records` for the case records
+  (:class:`~contactlib.result.CaseRecord`) the workflow passes between its
+  stages (npz).
 
 Every writer (:func:`write_dataset`, :func:`write_arrays`,
 :func:`write_records`, :func:`write_table`, :func:`write_figure`) goes
@@ -36,6 +37,7 @@ Examples
 
 from __future__ import annotations
 
+import dataclasses
 import errno
 import math
 import os
@@ -52,7 +54,7 @@ if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-u
     import xarray as xr
 
 from contactlib.indenter import indenter
-from contactlib.result import Solution
+from contactlib.result import CaseRecord, Solution
 
 if TYPE_CHECKING:  # types only: the conversions import the numerics when they run
     from contactlib.convergence import Study
@@ -891,17 +893,22 @@ def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
         raise _damaged(path, "npz", exc) from exc
 
 
-def write_records(records: Sequence[Mapping[str, Any]], path: str | os.PathLike[str]) -> Path:
+# fields of case records written by earlier versions and no longer kept (ignored on reading)
+_RETIRED_RECORD_FIELDS = ("tolerance_message",)  # (merged into the message)
+
+
+def write_records(records: Sequence[CaseRecord], path: str | os.PathLike[str]) -> Path:
     """Write the case records of a scene (:func:`contactlib.stages.solve_cases`) to ``.npz``.
 
-    The workflow's transport between its stages: each record (a dict of
-    scalars and arrays, one a stick ratio) is flattened into arrays named
-    ``"<i>/<field>"``, next to ``count``, and written with
-    :func:`write_arrays` (atomically, no pickles).
+    The workflow's transport between its stages: every field of each
+    :class:`~contactlib.result.CaseRecord` that is not None becomes an array
+    named ``"<i>/<field>"`` (i the case's position), next to ``count``, the
+    number of records; written with :func:`write_arrays` (atomically, no
+    pickles).
 
     Parameters
     ----------
-    records : sequence of mapping
+    records : sequence of CaseRecord
     path : str or os.PathLike
         Destination; must end in ``.npz``.
 
@@ -911,43 +918,53 @@ def write_records(records: Sequence[Mapping[str, Any]], path: str | os.PathLike[
     """
     arrays: dict[str, np.ndarray] = {"count": np.array(len(records))}
     for i, rec in enumerate(records):
-        for key, value in rec.items():
-            arrays[f"{i}/{key}"] = np.asarray(value)
+        for f in dataclasses.fields(CaseRecord):
+            value = getattr(rec, f.name)
+            if value is not None:
+                arrays[f"{i}/{f.name}"] = np.asarray(value)
     return write_arrays(arrays, path)
 
 
-def read_records(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+def read_records(path: str | os.PathLike[str]) -> list[CaseRecord]:
     """Read case records written by :func:`write_records`.
 
-    0-d arrays come back as Python scalars, so a record read back equals the
-    one written.
+    0-d arrays come back as Python scalars and fields not in the file take
+    their defaults (None, or NaN for the estimates), so a record read back
+    equals the one written field by field. Files of earlier versions read
+    too (a retired field, ``tolerance_message``, is skipped).
 
     Raises
     ------
     DamagedFileError
-        If the file exists but cannot be read back whole.
+        If the file exists but cannot be read back whole, or does not hold
+        case records.
     FileNotFoundError
         If there is no such file.
 
     Examples
     --------
     >>> import tempfile, os
+    >>> from contactlib import stages
+    >>> from contactlib.model import contact
+    >>> recs = stages.solve_cases(contact("sphere", 0.3), "default", 16, [0.0])
     >>> with tempfile.TemporaryDirectory() as folder:
-    ...     path = write_records([{"stick_ratio": 0.5, "k": [0.1, 0.2]}],
-    ...                          os.path.join(folder, "r.npz"))
-    ...     read_records(path)[0]["stick_ratio"]
-    0.5
+    ...     path = write_records(recs, os.path.join(folder, "r.npz"))
+    ...     back = read_records(path)
+    >>> back[0].stick_ratio, back[0].k, back[0].p.shape
+    (0.0, 0.0, (17,))
     """
     arrays = read_arrays(path)
     try:
         count = int(arrays["count"])
-        records: list[dict[str, Any]] = [{} for _ in range(count)]
+        fields: list[dict[str, Any]] = [{} for _ in range(count)]
         for name, value in arrays.items():
             if name == "count":
                 continue
             i, key = name.split("/", 1)
-            records[int(i)][key] = value.item() if value.ndim == 0 else value
-    except (KeyError, ValueError, IndexError) as exc:
+            if key not in _RETIRED_RECORD_FIELDS:
+                fields[int(i)][key] = value.item() if value.ndim == 0 else value
+        records = [CaseRecord(**f) for f in fields]
+    except (KeyError, ValueError, IndexError, TypeError) as exc:
         raise _damaged(path, "case-record npz", exc) from exc
     return records
 

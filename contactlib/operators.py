@@ -38,13 +38,12 @@ Examples
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .elements import Mesh
+from .elements import Mesh, MeshStore, Store
 from .influence import apply_difference, element_integrals
 
 if TYPE_CHECKING:
@@ -132,35 +131,25 @@ def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
             operator_part(model, nodes, x, "shear"))
 
 
-class StickBlocks:
+class StickBlocks(Store):
     """Element integrals of reference stick meshes, kept for reuse across c/a.
 
     A bounded store (oldest entry dropped first) of the blocks
     :func:`nodal_operator_part` computes once per distinct (kernels, part,
     reference stick mesh). Memory: at most ``size`` blocks of 3 (M + 1) M
-    doubles (64 blocks at n = 256: 19 MB).
+    doubles (64 blocks at n = 256: 19 MB). It carries the computation's
+    graded meshes too (``meshes``, a :class:`~contactlib.elements.MeshStore`),
+    so that the one store a caller threads through its solves serves both.
     """
 
     def __init__(self, size: int = 64) -> None:
-        self.size = int(size)
-        self._blocks: OrderedDict[tuple, np.ndarray] = OrderedDict()
-
-    def get(self, key: tuple, compute: Callable[[], np.ndarray]) -> np.ndarray:
-        """The block of ``key``, computed by ``compute()`` and stored when missing."""
-        block = self._blocks.get(key)
-        if block is None:
-            block = compute()
-            if len(self._blocks) >= self.size:
-                self._blocks.popitem(last=False)
-            self._blocks[key] = block
-        return block
+        super().__init__(size)
+        self.meshes = MeshStore()
 
     def clear(self) -> None:
-        """Forget every block."""
-        self._blocks.clear()
-
-    def __len__(self) -> int:
-        return len(self._blocks)
+        """Forget every block and every mesh."""
+        super().clear()
+        self.meshes.clear()
 
 
 def nodal_operator_part(model: Contact, mesh: Mesh, part: str,

@@ -29,6 +29,7 @@ from . import stages
 from .api import output_grid
 from .io import scene_to_dataset
 from .model import contact
+from .result import CaseRecord
 from .scene import Scene
 from .threads import blas_single_threaded
 
@@ -52,7 +53,7 @@ def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
 @blas_single_threaded
 def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
           shear: dict[str, np.ndarray] | None = None,
-          progress: Callable[[int, int], None] | None = None) -> list[dict]:
+          progress: Callable[[int, int], None] | None = None) -> list[CaseRecord]:
     """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
     return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
                               normal=normal, shear=shear, samples=scene.needs_samples,
@@ -61,7 +62,7 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
 
 
 @blas_single_threaded
-def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
+def check(records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Consistency flags and violation measures, one value a case."""
     flags = [stages.check_case(r) for r in records]
     out = {name: np.array([f[name] for f in flags], dtype=bool) for name in _FLAG_FIELDS}
@@ -70,14 +71,14 @@ def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
 
 
 @blas_single_threaded
-def energy(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
+def energy(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Frictional work of the loading half-cycle, one value a case (docs/conventions.md)."""
     geom = scene.geometry_object
     return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
 
 
 @blas_single_threaded
-def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
+def displacements(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Tangential displacement u R/a^2 on the output grid, shape (cases, xi)."""
     geom, xi = scene.geometry_object, output_grid()
     rows = [stages.profiles(geom, r, xi, stresses=False)["tangential_displacement"]
@@ -86,7 +87,7 @@ def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray
 
 
 @blas_single_threaded
-def assemble(scene: Scene, records: Sequence[dict], *,
+def assemble(scene: Scene, records: Sequence[CaseRecord], *,
              checks: Mapping[str, np.ndarray] | None = None,
              work: Mapping[str, np.ndarray] | None = None,
              profiles: Mapping[str, np.ndarray] | None = None) -> xr.Dataset:
@@ -124,8 +125,8 @@ def assemble(scene: Scene, records: Sequence[dict], *,
     tolerance = elements = estimate = None
     if scene.tolerance is not None:
         tolerance = scene.tolerance
-        elements = np.array([int(r["elements"]) for r in records], dtype=np.int32)
-        estimate = np.array([float(r["error_estimate"]) for r in records])
+        elements = np.array([int(r.elements) for r in records], dtype=np.int32)
+        estimate = np.array([float(r.error_estimate) for r in records])
     return scene_to_dataset(sols, outputs=scene.outputs, scene=scene.name,
                             config_hash=scene.hash, violations=violations, elements=elements,
                             error_estimate=estimate, tolerance=tolerance)

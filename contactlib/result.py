@@ -23,7 +23,7 @@ import numpy as np
 
 from .indenter import indenter
 
-__all__ = ["Solution", "format_fields", "short_repr", "history_repr"]
+__all__ = ["Solution", "CaseRecord", "format_fields", "short_repr", "history_repr"]
 
 
 # ----------------------------------------------------------------------------- short repr
@@ -134,6 +134,107 @@ def history_repr(res: Any) -> str:
              "indentation", "frictional_work", "converged", "iterations", "residual_norm",
              "state", "pressure", "shear", "tangential_displacement"]
     return format_fields(head, items + _arrays_by_shape(res, names))
+
+
+@dataclass(frozen=True, repr=False, eq=False)
+class CaseRecord:
+    """One solved self-similar case as the stages hand it on (units E* = a = R = 1).
+
+    Made by :func:`contactlib.stages.case_record` from a discrete solution
+    (default or paper method), completed by the error estimates of
+    :func:`contactlib.stages.solve_cases`, turned into a :class:`Solution` by
+    :func:`contactlib.stages.to_solution`. The workflow carries it between
+    its rules as ``.npz`` (:func:`contactlib.io.write_records`,
+    :func:`contactlib.io.read_records`; one array ``"<i>/<field>"`` a field,
+    fields that are None left out). Frozen: a stage that adds to a record
+    returns a new one (:func:`dataclasses.replace`). Compared by identity
+    (its arrays have no single truth value).
+
+    Attributes
+    ----------
+    kind : str
+        The solver family that made it: ``"default"`` (nodal, piecewise-linear
+        tractions) or ``"paper"`` (the paper's rings or strips, step tractions).
+    stick_ratio : float
+        c/a of the case (for nu = 0.5 the one asked for; the mesh then has c = 0).
+    nodes : ndarray, shape (N + 1,)
+        Element nodes r/a (x/a), 0 ... 1.
+    stick_index : int
+        M with ``nodes[M]`` = c of the mesh.
+    p : ndarray
+        Pressure in units of E* a/R: nodal values (default, N + 1) or one a
+        ring (paper, N).
+    traction : ndarray
+        The shear coefficient, same layout as ``p``: q = shape(xi) traction,
+        shape = r/a for rings, 1 for strips (units of E* a/R).
+    k : float
+        Friction coefficient (>= 0; ``inf`` at full adhesion).
+    delta : float
+        Indentation in units of a^2/R (NaN for the paper's scheme, which has
+        no delta).
+    converged : bool
+    residual_norm : float
+        Relative residual of the last Newton step.
+    iterations : int
+    message : str
+        Notes joined by "; " (empty when there is nothing to say).
+    load : float
+        Total load in units of E* a^3/R (sphere) or E* a^2/R per unit length
+        (cylinder).
+    round_off : float
+        Last relative Newton step when Newton stopped on the round-off floor
+        (0 otherwise).
+    nodal_u, nodal_du : ndarray or None
+        u (units a^2/R) and du/dx (units a/R) at the nodes, from the solve's
+        own operators (default method only).
+    slip_x, slip_w, slip_q, slip_s : ndarray or None
+        The slip-zone samples of the checks and the work: points xi, their
+        quadrature weights, the shear q (units E* a/R) and the slip rate
+        s = 2u - xi du/dxi (units a^2/R); None when samples were not asked for.
+    stick_q, stick_p : ndarray or None
+        Shear and pressure at stick-zone points (element midpoints, and the
+        nodes for continuous tractions), units E* a/R.
+    elements : int or None
+        The n a tolerance reached (None without a tolerance).
+    error_estimate, load_error_estimate, work_error_estimate : float
+        Estimated relative errors of k, the load and the work (NaN when not
+        estimated).
+    resolved : bool
+        Converged, and ``error_estimate`` at most ``max_error``.
+    max_error : float
+        The accuracy asked for (NaN when not estimated).
+    """
+
+    __repr__ = short_repr
+
+    kind: str
+    stick_ratio: float
+    nodes: np.ndarray
+    stick_index: int
+    p: np.ndarray
+    traction: np.ndarray
+    k: float
+    delta: float
+    converged: bool
+    residual_norm: float
+    iterations: int
+    message: str
+    load: float
+    round_off: float = 0.0
+    nodal_u: np.ndarray | None = None
+    nodal_du: np.ndarray | None = None
+    slip_x: np.ndarray | None = None
+    slip_w: np.ndarray | None = None
+    slip_q: np.ndarray | None = None
+    slip_s: np.ndarray | None = None
+    stick_q: np.ndarray | None = None
+    stick_p: np.ndarray | None = None
+    elements: int | None = None
+    error_estimate: float = float("nan")
+    load_error_estimate: float = float("nan")
+    work_error_estimate: float = float("nan")
+    resolved: bool = False
+    max_error: float = float("nan")
 
 
 @dataclass(repr=False)

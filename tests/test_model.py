@@ -16,7 +16,7 @@ import contactlib
 
 from contactlib import history_solver as hs
 from contactlib.body import ElasticBody
-from contactlib.elements import graded_mesh
+from contactlib.elements import MeshStore, graded_mesh
 from contactlib.geometry import Geometry
 from contactlib.indenter import GEOMETRIES, Cylinder, Sphere, indenter
 from contactlib.kernels import disc, strip
@@ -158,6 +158,20 @@ def test_stick_blocks_are_a_caller_owned_store():
     # the half-plane's kernels are not homogeneous: nothing is stored
     nodal_operator_part(contact("cylinder", 0.3), mesh, "normal", cache=store)
     assert len(store) == 1
+
+
+def test_graded_meshes_are_kept_by_a_caller_owned_store_only():
+    """A store builds each mesh once and hands out copies; without one nothing is kept."""
+    store = MeshStore(size=2)
+    a = graded_mesh(64, 0.3, store=store)
+    a.nodes[:] = -1.0  # a caller's copy: the store's nodes are untouched
+    b = graded_mesh(64, 0.3, store=store)
+    np.testing.assert_array_equal(b.nodes, graded_mesh(64, 0.3).nodes)
+    assert (store.misses, store.hits, len(store)) == (1, 1, 1)
+    graded_mesh(64, 0.4, store=store)
+    graded_mesh(64, 0.5, store=store)
+    assert len(store) == 2  # bounded: the oldest mesh went
+    assert isinstance(StickBlocks().meshes, MeshStore)  # a sweep's store brings its meshes
 
 
 def test_stick_blocks_do_not_make_results_depend_on_earlier_calls():

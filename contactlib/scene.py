@@ -46,7 +46,7 @@ KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
          "slab_ratio", "outputs", "indenter", "body")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
-                 "slab_ratio", "max_error", "indenter", "body")
+                 "slab_ratio", "max_error", "indenter", "body", "relaxation", "duration")
 _INDENTER_KEYS = {"indenter_modulus": "indenter.modulus_ratio", "indenter_nu": "indenter.nu"}
 
 
@@ -314,6 +314,12 @@ class HistoryScene:
         scene's ``indenter`` key (a mapping, or a material name with ``body``).
     indenter_nu : float or None
         Poisson's ratio of the indenter (None: rigid, or the body's).
+    relaxation : tuple of (g, tau)
+        A viscoelastic body's Prony terms (key ``relaxation: [[g, tau], ...]``);
+        empty: elastic.
+    durations : tuple of float
+        Durations of the path segments (key ``duration``: the path's, split
+        equally, or one a segment); required with a relaxation.
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -331,6 +337,8 @@ class HistoryScene:
     kind: str = "history"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
+    relaxation: tuple[tuple[float, float], ...] = ()
+    durations: tuple[float, ...] = ()
 
     def run_spec(self, index: int) -> dict[str, Any]:
         """Keyword arguments of :func:`contactlib.history` for friction ``index``.
@@ -343,6 +351,9 @@ class HistoryScene:
                 "slab_ratio": self.slab_ratio, "max_error": self.max_error}
         if self.indenter_modulus != float("inf"):
             spec.update(indenter_modulus=self.indenter_modulus, indenter_nu=self.indenter_nu)
+        if self.relaxation:  # a viscoelastic body (an elastic scene's keywords unchanged)
+            spec.update(relaxation=[list(p) for p in self.relaxation],
+                        duration=list(self.durations))
         return spec
 
 
@@ -374,11 +385,16 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     max_error = bad.check("max_error", validate.max_error,
                           raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     ind = _scene_indenter(raw, nu, bad)
+    prony = bad.check("relaxation", validate.relaxation, raw.get("relaxation"))
+    durations = bad.check("duration", validate.duration, raw.get("duration"),
+                          len(path) - 1 if path else 1, bool(prony)) if prony is not None else ()
+    if prony and ind[0] != float("inf"):
+        bad.add("relaxation", "needs a rigid indenter")
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
                         hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
-                        indenter_nu=ind[1])
+                        indenter_nu=ind[1], relaxation=prony, durations=durations)
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:

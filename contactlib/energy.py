@@ -200,7 +200,7 @@ def decay_integrals(x: np.ndarray) -> np.ndarray:
 
 def viscous_step_work(weights: np.ndarray, g: np.ndarray, tau: np.ndarray, dt: float,
                       h_old: np.ndarray, kh_old: np.ndarray, de: np.ndarray,
-                      dd: np.ndarray) -> float:
+                      dd: np.ndarray, integrals: np.ndarray | None = None) -> float:
     """Dissipation of the dashpots in one step, int D dt, for e linear in time.
 
     Parameters
@@ -215,6 +215,9 @@ def viscous_step_work(weights: np.ndarray, g: np.ndarray, tau: np.ndarray, dt: f
     de, dd : ndarray, shape (2, n)
         Increment of the elastic-equivalent traction and of the displacement
         (dd = K de).
+    integrals : ndarray, shape (3, N), optional
+        ``decay_integrals(dt / tau)`` (computed when not given; a caller with
+        many steps of one duration passes it once computed).
 
     Returns
     -------
@@ -224,7 +227,9 @@ def viscous_step_work(weights: np.ndarray, g: np.ndarray, tau: np.ndarray, dt: f
     """
     if g.size == 0:
         return 0.0
-    ints = decay_integrals(dt / tau) * tau  # (3, N): int a^2, a(1-a), (1-a)^2 dt
+    if integrals is None:
+        integrals = decay_integrals(dt / tau)
+    ints = integrals * tau  # (3, N): int a^2, a(1-a), (1-a)^2 dt
     y = tau / dt  # Y_i = y_i de, K Y_i = y_i dd
     xx = np.sum(weights * h_old * kh_old, axis=(1, 2))
     xy = 0.5 * y * (np.sum(weights * h_old * dd, axis=(1, 2))

@@ -86,8 +86,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy import linalg
 
-from .energy import (dot, mean_traction, step_external_work, step_work, stored_energy,
-                     viscous_step_work)
+from .energy import (decay_integrals, dot, mean_traction, step_external_work, step_work,
+                     stored_energy, viscous_step_work)
 from .model import Contact
 from .operators import step_operator
 
@@ -593,8 +593,8 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
                 a, b, beta = prony_step(g, tau, dt)
                 scaled = replace(ops, pw=ops.pw / beta, pu=ops.pu / beta, qw=ops.qw / beta,
                                  qu=ops.qu / beta)
-                per_dt[dt] = (a, b, beta, scaled, {})
-            a, b, beta, step_ops, step_cache = per_dt[dt]
+                per_dt[dt] = (a, b, beta, scaled, {}, decay_integrals(dt / tau))
+            a, b, beta, step_ops, step_cache, integrals = per_dt[dt]
             sigma_hist = np.tensordot(g * a, h, axes=1) - np.sum(g * b) * e_old
             shift = -(np.tensordot(g * a, kh, axes=1) - np.sum(g * b) * d_old) / beta
         if level == 0.0:
@@ -623,7 +623,7 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
             de, dd = e - e_old, d - d_old
             p_mean = mean_traction(relaxed, g, tau, dt, e_old, e, h)[0]
             external += step_external_work(ops.area, p_mean, w_old, d[0])
-            viscous += viscous_step_work(weights, g, tau, dt, h, kh, de, dd)
+            viscous += viscous_step_work(weights, g, tau, dt, h, kh, de, dd, integrals)
             h = a[:, None, None] * h + b[:, None, None] * de
             kh = a[:, None, None] * kh + b[:, None, None] * dd
             e_old, d_old = e, d

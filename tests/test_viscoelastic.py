@@ -204,6 +204,27 @@ def test_energy_balance_default_fretting(duration):
     assert np.all(np.abs(balance(res))[1:] <= 1e-3 * res.external_work[1:])
 
 
+def test_energy_balance_with_the_shear_work_at_the_end_of_cycles():
+    """Nearly elastic cycles (T/tau = 1e-3 .. 5e-3): with the shear's work on the surface.
+
+    At the end of full unloading the external work is only what was
+    dissipated, and ``frictional_work`` (which leaves out elements that
+    separate within a step) misses the 1e-3 balance there (7.9e-3 measured,
+    as for an elastic body); the shear's work on the body's surface,
+    1/2 sum As_j (q_j + q_j') (u_j' - u_j), closes it to 3e-4.
+    """
+    res = history("sphere", 0.3, 0.2, [0, 1, 0, 1, 0], 100, relaxation=TWO, duration=1e-3,
+                  error_estimate=False, n=160)
+    lo, hi = res.xi_bounds[:, 0], res.xi_bounds[:, 1]
+    shear_area = 2.0 * np.pi * (hi**3 - lo**3) / (3.0 * res.xi)
+    q, u = res.shear * 2.0 / np.pi, res.tangential_displacement
+    shear_work = np.concatenate([[0.0], np.cumsum(
+        0.5 * np.sum(shear_area * (q[1:] + q[:-1]) * np.diff(u, axis=0), axis=1))])
+    rest = res.external_work - res.stored_energy - res.viscous_work + shear_work
+    assert np.all(np.abs(rest[1:]) <= 1e-3 * res.external_work[1:])
+    assert -shear_work[-1] == pytest.approx(res.frictional_work[-1], rel=0.02)
+
+
 def test_energy_of_an_elastic_history_is_hertz():
     """Elastic, frictionless: stored = external = (8/15) E* a^5/R at P_max (Hertz)."""
     res = history("sphere", 0.3, 0.0, [0, 1], 50, error_estimate=False)

@@ -531,6 +531,12 @@ def format_history(res: Any) -> str:
     rows.append(f"  work in {work_scale}; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
+    if getattr(res, "relaxation", ()):  # a viscoelastic body: its time and energies
+        rows.append(f"  viscoelastic: relaxation {list(map(list, res.relaxation))}, duration "
+                    f"{res.time[-1]:g}; at the end, in {work_scale}: external "
+                    f"{res.external_work[-1]:.5g} = stored {res.stored_energy[-1]:.5g} + "
+                    f"viscous {res.viscous_work[-1]:.5g} + frictional "
+                    f"{res.frictional_work[-1]:.5g}")
     if res.resolved is not None:
         rows.append(f"  resolved steps (max error {res.max_error:g}): "
                     f"{int(res.resolved[1:].sum())}/{total}")

@@ -8,6 +8,11 @@ or slip by Coulomb's law with full complementarity, carrying the tangential
 state from step to step. It covers monotonic loading, unloading, repeated
 cycles and the one-step ("one-shot") load, for the sphere on a half-space and
 the cylinder on a half-plane or on a slab (where a/h changes along the path).
+With ``relaxation`` and ``duration`` the body is viscoelastic (a Prony
+series, constant Poisson's ratio; docs/theory.md, "Viscoelastic bodies"):
+the path then has a time axis, E* is the instantaneous E*(0) in every
+scaling below, and the result splits the indenter's work into stored,
+viscous and frictional parts.
 
 Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
 -----------------------------------------------------------------------

@@ -102,6 +102,7 @@ MESH_EXTENT = 1.2  # mesh length over a_max
 
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
 MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
+_MAX_DURATIONS = 4  # step durations whose scaled operators a viscoelastic run keeps
 
 
 @dataclass(frozen=True)
@@ -588,8 +589,13 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
         level = float(levels[i])
         step_ops, step_cache, shift = ops, cache, (None, None)
         if visco:
-            dt = float(out.time[i] - out.time[i - 1])
+            # the step's duration to 10 digits: the steps of a segment share it (and one
+            # scaled copy of the operators and one factorization cache), although the
+            # differences of the times differ in their last bits
+            dt = float(f"{out.time[i] - out.time[i - 1]:.10g}")
             if dt not in per_dt:
+                if len(per_dt) >= _MAX_DURATIONS:  # bounded memory: drop the oldest
+                    per_dt.pop(next(iter(per_dt)))
                 a, b, beta = prony_step(g, tau, dt)
                 scaled = replace(ops, pw=ops.pw / beta, pu=ops.pu / beta, qw=ops.qw / beta,
                                  qu=ops.qu / beta)

@@ -469,3 +469,34 @@ def scene_mapping(config: Mapping[str, Any], name: str) -> Mapping[str, Any]:
         if name in found:
             return found[name]
     raise KeyError(name)
+
+
+__all__ += ["viscoelastic_scenes"]
+
+
+def viscoelastic_scenes(section: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
+    """The history scenes of a configuration's ``viscoelastic`` section, one a cycle duration.
+
+    The section gives ``geometry`` (default sphere), ``nu``, ``friction`` (a
+    list), ``relaxation`` ([[g, tau], ...]), ``durations`` (of the cycle, in
+    the unit of tau), ``load_path`` (default [0, 1, 0]), ``steps`` and ``n``
+    (optional). Scene ``visco-T<duration>`` is the cycle of that duration.
+
+    Examples
+    --------
+    >>> raw = viscoelastic_scenes({"nu": 0.3, "friction": [0.1], "relaxation": [[0.5, 1.0]],
+    ...                            "durations": [0.01, 1], "steps": 50})
+    >>> list(raw), raw["visco-T1"]["duration"]
+    (['visco-T0.01', 'visco-T1'], 1.0)
+    """
+    out: dict[str, dict[str, Any]] = {}
+    for duration in section["durations"]:
+        raw = {"kind": "history", "geometry": section.get("geometry", "sphere"),
+               "nu": section["nu"], "friction": section["friction"],
+               "load_path": section.get("load_path", [0, 1, 0]), "steps": section["steps"],
+               "relaxation": section["relaxation"], "duration": float(duration)}
+        if "n" in section:
+            raw["n"] = section["n"]
+        out[f"visco-T{float(duration):g}"] = raw
+    return out
+

@@ -304,3 +304,34 @@ def test_cli_writes_a_viscoelastic_history(tmp_path):
     ds = io.read_dataset(out)
     np.testing.assert_allclose(ds["time"].values[[0, 4, 8]], [0.0, 1.0, 2.0])
     np.testing.assert_allclose(ds.attrs["relaxation_times"], [0.5, 5.0])
+
+
+# ----------------------------------------------------------------------------- workflow section
+def test_default_viscoelastic_section_gives_valid_history_scenes():
+    """config.yaml's `viscoelastic:` section: schema-valid, one valid history scene a duration."""
+    from pathlib import Path
+
+    import jsonschema
+    import yaml
+
+    from contactlib.scene import parse_scene, viscoelastic_scenes
+
+    repo = Path(__file__).resolve().parents[1]
+    cfg = yaml.safe_load((repo / "config/config.yaml").read_text())
+    schema = yaml.safe_load((repo / "workflow/schemas/config.schema.yaml").read_text())
+    jsonschema.validate(cfg, schema)
+    raws = viscoelastic_scenes(cfg["viscoelastic"])
+    assert len(raws) == len(cfg["viscoelastic"]["durations"]) >= 3
+    for name, raw in raws.items():
+        scene = parse_scene(name, raw)
+        spec = scene.run_spec(0)
+        assert spec["relaxation"] == cfg["viscoelastic"]["relaxation"]
+        assert sum(spec["duration"]) == pytest.approx(float(name.removeprefix("visco-T")))
+
+
+def test_viscoelastic_figure_refuses_an_elastic_history():
+    from contactlib.plot.viscoelastic import cycle_dissipation
+
+    elastic = io.history_to_dataset(history("sphere", 0.3, 0.1, [0, 1, 0], 4, n=40))
+    with pytest.raises(ValueError, match="viscoelastic"):
+        cycle_dissipation(elastic)

@@ -175,8 +175,23 @@ def test_fast_and_slow_limits_are_elastic(geometry):
     assert slow.viscous_work[-1] < 1e-3 * slow.external_work[-1]
     # both land on the self-similar c/a(k) at the end of the first loading
     ca = solve(geometry, 0.3, friction=k, slab_ratio=0.0).stick_ratio
-    for res in (fast, slow):
-        assert res.stick_ratio[top] == pytest.approx(ca, abs=0.01)
+    for res in (fast, slow):  # measured: within 1e-3 (sphere 0.6974, 0.6984 vs 0.6983)
+        assert res.stick_ratio[top] == pytest.approx(ca, abs=3e-3)
+
+
+def test_slow_limit_on_a_slab():
+    """Cylinder on a slab (a_max/h = 0.1): T/tau = 1e5 at P = P_max/2 is the elastic slab at P_max.
+
+    E(inf) = E(0)/2 with the thickness fixed: the same problem as the elastic
+    body at twice the load. Measured: a within 0.1 %, c/a within 4e-4.
+    """
+    kw = dict(error_estimate=False)
+    elastic = history("cylinder", 0.3, 0.2, [0, 1], 40, slab_ratio=0.1, n=120, **kw)
+    slow = history("cylinder", 0.3, 0.2, [0, 0.5], 40, slab_ratio=0.1, n=170, relaxation=SLS,
+                   duration=1e5, **kw)
+    h = slow.xi_bounds[0, 1]
+    assert slow.contact_radius[-1] == pytest.approx(elastic.contact_radius[-1], abs=0.5 * h)
+    assert slow.stick_ratio[-1] == pytest.approx(elastic.stick_ratio[-1], abs=h)
 
 
 # ----------------------------------------------------------------------------- energy

@@ -629,8 +629,8 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     first = items[0].attrs
     for ds in items[1:]:
         for key in same:
-            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
-                                                   np.asarray(first[key])):
+            if key in first and not np.array_equal(np.atleast_1d(ds.attrs.get(key)),
+                                                   np.atleast_1d(first[key])):
                 raise ValueError(f"histories to stack must share {key}: "
                                  f"{first[key]!r} vs {ds.attrs.get(key)!r}")
         if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):

@@ -94,7 +94,8 @@ from .operators import step_operator
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
            "stick_radius", "MESH_EXTENT", "RawHistory", "run_history",
-           "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates", "annulus_resolved"]
+           "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates",
+           "annulus_resolved"]
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"

@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 from scipy import integrate, optimize
 
+from conftest import job_counts, make_workdir, needs_snakemake
 from contactlib import history, io, solve, validate
 from contactlib.body import ViscoelasticBody
 from contactlib.energy import decay_integrals
@@ -358,3 +359,17 @@ def test_viscoelastic_figure_refuses_an_elastic_history():
     elastic = io.history_to_dataset(history("sphere", 0.3, 0.1, [0, 1, 0], 4, n=40))
     with pytest.raises(ValueError, match="viscoelastic"):
         cycle_dissipation(elastic)
+
+
+@needs_snakemake
+@pytest.mark.slow  # two dry runs; the scene and figure functions are tested fast above
+@pytest.mark.workflow
+def test_viscoelastic_target_is_separate_from_the_main_job(tmp_path):
+    wd = make_workdir(tmp_path)
+    main = job_counts(wd)
+    assert "viscoelastic_figure" not in main and "viscoelastic" not in main
+    counts = job_counts(wd, "viscoelastic")
+    durations = 13  # config/config.yaml
+    assert counts["viscoelastic_figure"] == counts["viscoelastic"] == 1
+    assert counts["history_run"] == counts["history_assemble"] == durations
+    assert "solve" not in counts and "key_numbers" not in counts

@@ -280,7 +280,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     steps : int
         Equal load steps per path segment (>= 1; 1 gives the one-step load).
     n : int, optional
-        Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200).
+        Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200);
+        with a relaxation over ``[0, 1.2 a_inf]``, a_inf the fully crept
+        contact radius (:func:`creep_extent`), so the elements are larger.
     slab_ratio : float
         Cylinder only: a_max / h of the slab (0: half-plane).
     progress : callable, optional

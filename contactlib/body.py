@@ -126,3 +126,57 @@ class ElasticBody:
         :attr:`thickness`.
         """
         return strip.shear_strip(x, s, self.nu, self.thickness)
+
+
+# ----------------------------------------------------------------------------- viscoelastic body
+__all__ += ["ViscoelasticBody"]
+
+
+@dataclass(frozen=True)
+class ViscoelasticBody(ElasticBody):
+    r"""A linear viscoelastic body with a constant Poisson's ratio (Prony relaxation).
+
+    E(t)/E(0) = 1 - sum_i g_i (1 - exp(-t/tau_i)) = g_inf + sum_i g_i exp(-t/tau_i),
+    ``g_inf = 1 - sum g_i`` (E(inf)/E(0)). Shear and bulk moduli relax in
+    proportion (nu constant), so every kernel of the body scales with the
+    same E(t)/E(0): its answer to a traction history is the elastic kernel at
+    E(0) (the inherited ring/strip methods, in units of E*(0)) convolved in
+    time with E(t)/E(0), and Dundurs' beta does not change in time.
+
+    Parameters
+    ----------
+    nu, slab_ratio
+        As for :class:`ElasticBody` (the kernels are those at E(0)).
+    relaxation : tuple of (g, tau)
+        The Prony terms: g_i > 0, sum g_i < 1, tau_i > 0 (the time unit is
+        the caller's; the path's duration uses the same one).
+
+    Examples
+    --------
+    >>> body = ViscoelasticBody(0.3, relaxation=((0.5, 1.0),))
+    >>> body.relaxed_ratio, round(float(body.relaxation_ratio(1.0)), 6)
+    (0.5, 0.68394)
+    """
+
+    relaxation: tuple[tuple[float, float], ...] = ()
+
+    @property
+    def weights(self) -> np.ndarray:
+        """g_i of the Prony terms."""
+        return np.array([g for g, _ in self.relaxation], dtype=float)
+
+    @property
+    def times(self) -> np.ndarray:
+        """tau_i of the Prony terms (the caller's time unit)."""
+        return np.array([t for _, t in self.relaxation], dtype=float)
+
+    @property
+    def relaxed_ratio(self) -> float:
+        """E(inf)/E(0) = 1 - sum g_i."""
+        return float(1.0 - sum(g for g, _ in self.relaxation))
+
+    def relaxation_ratio(self, t: np.ndarray | float) -> np.ndarray:
+        """E(t)/E(0) at times ``t`` >= 0."""
+        t = np.asarray(t, dtype=float)
+        return self.relaxed_ratio + np.sum(
+            self.weights * np.exp(-t[..., None] / self.times), axis=-1)

@@ -305,6 +305,13 @@ def build_parser() -> argparse.ArgumentParser:
                       help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
                            "default: 0")
     _indenter_options(hist)
+    hist.add_argument("--relaxation", metavar="G1:TAU1[,G2:TAU2...]", default=None,
+                      help="a viscoelastic body: Prony terms of E(t)/E(0) = 1 - sum g_i "
+                           "(1 - exp(-t/tau_i)), g_i > 0, sum g_i < 1, tau_i > 0 (constant "
+                           "Poisson's ratio; scalings use E(0)); needs --duration")
+    hist.add_argument("--duration", metavar="T[,T2...]", default=None,
+                      help="with --relaxation: duration of the load path (segments equally "
+                           "long), or one a segment, in the unit of tau")
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--max-error", metavar="E", default="1e-3",
                       help="accuracy a step must reach, in (0, 1): a step whose estimated "
@@ -375,7 +382,33 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # as for solve/sweep: keywords only when elastic
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
+    if args.relaxation is not None or args.duration is not None:  # a viscoelastic body
+        kwargs.update(parse_viscoelastic(args.relaxation, args.duration,
+                                         len(kwargs["load_path"]) - 1))
+        if ratio != float("inf"):
+            raise UsageError("--relaxation needs a rigid indenter (no --indenter-modulus)")
     return kwargs
+
+
+def parse_relaxation(text: str) -> tuple[tuple[float, float], ...]:
+    """``g1:tau1,g2:tau2`` as Prony pairs (:func:`contactlib.validate.relaxation`)."""
+    pairs: list[Any] = []
+    for item in text.split(","):
+        parts = item.split(":")
+        pairs.append([_float(v) for v in parts] if len(parts) == 2 else item)
+    return _check(validate.relaxation, text, pairs)
+
+
+def parse_viscoelastic(relaxation: str | None, duration: str | None,
+                       segments: int) -> dict[str, Any]:
+    """``relaxation`` and ``duration`` keywords from ``--relaxation`` and ``--duration``."""
+    prony = () if relaxation is None else parse_relaxation(relaxation)
+    value: Any = None
+    if duration is not None:
+        items = _list(duration)
+        value = items[0] if len(items) == 1 else items
+    durations = _check(validate.duration, duration, value, segments, bool(prony))
+    return {"relaxation": [list(p) for p in prony], "duration": list(durations)}
 
 
 def _shorten(text: str, limit: int = 80) -> str:
@@ -498,6 +531,12 @@ def format_history(res: Any) -> str:
     rows.append(f"  work in {work_scale}; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
+    if getattr(res, "relaxation", ()):  # a viscoelastic body: its time and energies
+        rows.append(f"  viscoelastic: relaxation {list(map(list, res.relaxation))}, duration "
+                    f"{res.time[-1]:g}; at the end, in {work_scale}: external "
+                    f"{res.external_work[-1]:.5g} = stored {res.stored_energy[-1]:.5g} + "
+                    f"viscous {res.viscous_work[-1]:.5g} + frictional "
+                    f"{res.frictional_work[-1]:.5g}")
     if res.resolved is not None:
         rows.append(f"  resolved steps (max error {res.max_error:g}): "
                     f"{int(res.resolved[1:].sum())}/{total}")

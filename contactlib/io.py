@@ -561,6 +561,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(hs.MESH_EXTENT)
+    if getattr(r, "relaxation", ()):  # a viscoelastic body: time, energies, relaxation
+        _add_viscoelastic(r, data, attrs, sd, work_scale)
     if r.resolved is not None:
         attrs["max_error"] = float(r.max_error)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
@@ -569,6 +571,33 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     attrs["contactlib_version"] = version()
     attrs["Conventions"] = CONVENTIONS
     return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def _add_viscoelastic(r: HistoryResult, data: dict[str, Any], attrs: dict[str, Any],
+                      sd: tuple[str, ...], work_scale: str) -> None:
+    """The variables and attributes of a viscoelastic history (elastic ones have none)."""
+    data["time"] = (sd, r.time, cf_attrs(
+        "time at the end of the step", units="1",
+        comment="in the unit of the relaxation times (relaxation_times); 0: initial state"))
+    energy = ("; external = stored + viscous + frictional (contactlib.energy); " + work_scale)
+    data["external_work"] = (sd, r.external_work, cf_attrs(
+        "cumulative work of the indenter (int P d delta)",
+        comment="pressure averaged over each step on the body's surface" + energy))
+    data["stored_energy"] = (sd, r.stored_energy, cf_attrs(
+        "free energy stored in the body",
+        comment="g_inf/2 <e, K e> + sum g_i/2 <h_i, K h_i> at E*(0)" + energy))
+    data["viscous_work"] = (sd, r.viscous_work, cf_attrs(
+        "cumulative dissipation of the viscous body",
+        comment="sum (g_i/tau_i) int <h_i, K h_i> dt, exact for e linear in each step"
+                + energy))
+    attrs["relaxation_weights"] = np.array([g for g, _ in r.relaxation], dtype=float)
+    attrs["relaxation_times"] = np.array([t for _, t in r.relaxation], dtype=float)
+    attrs["relaxed_modulus_ratio"] = float(1.0 - sum(g for g, _ in r.relaxation))
+    attrs["segment_durations"] = np.asarray(r.durations, dtype=float)
+    attrs["mesh_extent"] = float(r.mesh_extent)
+    attrs["relaxation"] = ("Prony series E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)), "
+                           "g_i = relaxation_weights, tau_i = relaxation_times, constant "
+                           "Poisson's ratio; a_max, P_max and p0 use E*(0)")
 
 
 def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
@@ -597,12 +626,13 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     items = list(datasets)
     if not items:
         raise ValueError("stack_histories needs at least one history dataset")
-    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
+    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio",
+            "relaxation_weights", "relaxation_times", "segment_durations")
     first = items[0].attrs
     for ds in items[1:]:
         for key in same:
-            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
-                                                   np.asarray(first[key])):
+            if key in first and not np.array_equal(np.atleast_1d(ds.attrs.get(key)),
+                                                   np.atleast_1d(first[key])):
                 raise ValueError(f"histories to stack must share {key}: "
                                  f"{first[key]!r} vs {ds.attrs.get(key)!r}")
         if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):
@@ -617,7 +647,7 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
         ds.attrs = {k: v for k, v in ds.attrs.items()
                     if k not in ("friction_coefficient", "message")}
         members.append(ds)
-    shared = ("xi_bounds", "segment", "load_ratio")  # the path and the mesh: no k in them
+    shared = ("xi_bounds", "segment", "load_ratio", "time")  # the path and the mesh: no k
     varying = [v for v in members[0].data_vars if v not in shared]
     out = xr.concat(members, dim="friction_coefficient", data_vars=varying, coords="minimal",
                     compat="equals", combine_attrs="override")

@@ -53,7 +53,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .body import ElasticBody
+from .body import ElasticBody, ViscoelasticBody
 from .indenter import Displacements, Indenter, indenter
 
 __all__ = ["Contact", "contact"]
@@ -209,7 +209,8 @@ class Contact:
 
 
 def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
-            indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> Contact:
+            indenter_modulus: float = math.inf, indenter_nu: float | None = None,
+            relaxation: tuple[tuple[float, float], ...] = ()) -> Contact:
     """The model of the public interface's names: an indenter on an elastic body.
 
     Parameters
@@ -223,5 +224,10 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
         E1/E2 of the indenter over the body (``inf``: rigid, the default).
     indenter_nu : float, optional
         Poisson's ratio of the indenter (None: the body's).
+    relaxation : tuple of (g, tau), optional
+        Prony terms of a viscoelastic body (:class:`~contactlib.body.ViscoelasticBody`;
+        its kernels are the elastic ones at E(0)); empty: elastic.
     """
-    return Contact(indenter(geometry, indenter_modulus, indenter_nu), ElasticBody(nu, slab_ratio))
+    body = ViscoelasticBody(nu, slab_ratio, tuple(relaxation)) if relaxation else \
+        ElasticBody(nu, slab_ratio)
+    return Contact(indenter(geometry, indenter_modulus, indenter_nu), body)

@@ -133,6 +133,13 @@ def history_repr(res: Any) -> str:
     names = ["xi", "xi_bounds", "segment", "load_ratio", "contact_radius", "stick_ratio",
              "indentation", "frictional_work", "converged", "iterations", "residual_norm",
              "state", "pressure", "shear", "tangential_displacement"]
+    if getattr(res, "relaxation", ()):  # a viscoelastic body: its relaxation and energies
+        items.insert(4, ("relaxation", f"{[list(p) for p in res.relaxation]} (g, tau); "
+                                       f"duration {_scalar(res.time[-1])}"))
+        items.insert(5, ("energy", f"external {_scalar(res.external_work[-1])} = stored "
+                                   f"{_scalar(res.stored_energy[-1])} + viscous "
+                                   f"{_scalar(res.viscous_work[-1])} + frictional (at the end)"))
+        names += ["time", "external_work", "stored_energy", "viscous_work"]
     return format_fields(head, items + _arrays_by_shape(res, names))
 
 

@@ -46,7 +46,7 @@ KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
          "slab_ratio", "outputs", "indenter", "body")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
-                 "slab_ratio", "max_error", "indenter", "body")
+                 "slab_ratio", "max_error", "indenter", "body", "relaxation", "duration")
 _INDENTER_KEYS = {"indenter_modulus": "indenter.modulus_ratio", "indenter_nu": "indenter.nu"}
 
 
@@ -314,6 +314,12 @@ class HistoryScene:
         scene's ``indenter`` key (a mapping, or a material name with ``body``).
     indenter_nu : float or None
         Poisson's ratio of the indenter (None: rigid, or the body's).
+    relaxation : tuple of (g, tau)
+        A viscoelastic body's Prony terms (key ``relaxation: [[g, tau], ...]``);
+        empty: elastic.
+    durations : tuple of float
+        Durations of the path segments (key ``duration``: the path's, split
+        equally, or one a segment); required with a relaxation.
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -331,6 +337,8 @@ class HistoryScene:
     kind: str = "history"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
+    relaxation: tuple[tuple[float, float], ...] = ()
+    durations: tuple[float, ...] = ()
 
     def run_spec(self, index: int) -> dict[str, Any]:
         """Keyword arguments of :func:`contactlib.history` for friction ``index``.
@@ -343,6 +351,9 @@ class HistoryScene:
                 "slab_ratio": self.slab_ratio, "max_error": self.max_error}
         if self.indenter_modulus != float("inf"):
             spec.update(indenter_modulus=self.indenter_modulus, indenter_nu=self.indenter_nu)
+        if self.relaxation:  # a viscoelastic body (an elastic scene's keywords unchanged)
+            spec.update(relaxation=[list(p) for p in self.relaxation],
+                        duration=list(self.durations))
         return spec
 
 
@@ -374,11 +385,16 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     max_error = bad.check("max_error", validate.max_error,
                           raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     ind = _scene_indenter(raw, nu, bad)
+    prony = bad.check("relaxation", validate.relaxation, raw.get("relaxation"))
+    durations = bad.check("duration", validate.duration, raw.get("duration"),
+                          len(path) - 1 if path else 1, bool(prony)) if prony is not None else ()
+    if prony and ind[0] != float("inf"):
+        bad.add("relaxation", "needs a rigid indenter")
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
                         hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
-                        indenter_nu=ind[1])
+                        indenter_nu=ind[1], relaxation=prony, durations=durations)
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:
@@ -453,3 +469,34 @@ def scene_mapping(config: Mapping[str, Any], name: str) -> Mapping[str, Any]:
         if name in found:
             return found[name]
     raise KeyError(name)
+
+
+__all__ += ["viscoelastic_scenes"]
+
+
+def viscoelastic_scenes(section: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
+    """The history scenes of a configuration's ``viscoelastic`` section, one a cycle duration.
+
+    The section gives ``geometry`` (default sphere), ``nu``, ``friction`` (a
+    list), ``relaxation`` ([[g, tau], ...]), ``durations`` (of the cycle, in
+    the unit of tau), ``load_path`` (default [0, 1, 0]), ``steps`` and ``n``
+    (optional). Scene ``visco-T<duration>`` is the cycle of that duration.
+
+    Examples
+    --------
+    >>> raw = viscoelastic_scenes({"nu": 0.3, "friction": [0.1], "relaxation": [[0.5, 1.0]],
+    ...                            "durations": [0.01, 1], "steps": 50})
+    >>> list(raw), raw["visco-T1"]["duration"]
+    (['visco-T0.01', 'visco-T1'], 1.0)
+    """
+    out: dict[str, dict[str, Any]] = {}
+    for duration in section["durations"]:
+        raw = {"kind": "history", "geometry": section.get("geometry", "sphere"),
+               "nu": section["nu"], "friction": section["friction"],
+               "load_path": section.get("load_path", [0, 1, 0]), "steps": section["steps"],
+               "relaxation": section["relaxation"], "duration": float(duration)}
+        if "n" in section:
+            raw["n"] = section["n"]
+        out[f"visco-T{float(duration):g}"] = raw
+    return out
+

@@ -335,3 +335,65 @@ def max_error(value: Any) -> float:
 def tolerance(value: Any) -> float:
     """A relative tolerance on k, in [MIN_TOLERANCE, MAX_TOLERANCE]."""
     return number("tolerance", value, MIN_TOLERANCE, MAX_TOLERANCE)
+
+
+# ----------------------------------------------------------------------------- viscoelastic body
+__all__ += ["relaxation", "duration"]
+
+
+def relaxation(values: Any) -> tuple[tuple[float, float], ...]:
+    """A Prony series ``[[g_1, tau_1], ...]`` of the body's relaxation (empty: elastic).
+
+    E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)) with every g_i > 0,
+    sum g_i < 1 (a solid: E(inf) > 0) and every tau_i > 0 and finite.
+    None or an empty sequence is the elastic body.
+    """
+    req = "a list of pairs [g, tau] with g > 0, tau > 0 and sum of g < 1"
+    if values is None:
+        return ()
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise InputError("relaxation", req, values)
+    pairs = []
+    for item in values:
+        if isinstance(item, (str, bytes)) or not hasattr(item, "__iter__") or \
+                len(list(item)) != 2:
+            raise InputError("relaxation", req, values,
+                             f"relaxation must be {req}, got the malformed pair {item!r}")
+        g, tau = list(item)
+        g = number("relaxation", g, 0.0, 1.0, lo_open=True, hi_open=True)
+        tau = number("relaxation", tau, 0.0, None, lo_open=True)
+        pairs.append((g, tau))
+    if sum(g for g, _ in pairs) >= 1.0:
+        raise InputError("relaxation", req, values,
+                         f"relaxation must have a sum of g below 1 (E(inf) > 0), got "
+                         f"{sum(g for g, _ in pairs):g} from {values!r}")
+    return tuple(pairs)
+
+
+def duration(value: Any, segments: int, relaxed: bool) -> tuple[float, ...]:
+    """Durations of the ``segments`` path segments (same unit as the relaxation times).
+
+    ``value`` is the duration of the whole path (split equally) or a
+    sequence of one positive duration a segment. It is required, finite and
+    positive with a relaxation (``relaxed``), and refused without one.
+    Returns () for an elastic body.
+    """
+    if not relaxed:
+        if value is not None:
+            raise InputError("duration", "given with a relaxation", value,
+                             f"duration = {value!r} needs a relaxation (an elastic body "
+                             "has no time scale)")
+        return ()
+    if value is None:
+        raise InputError("duration", "given (> 0) with a relaxation", value,
+                         "duration is required with a relaxation (the path's duration, "
+                         "in the unit of tau)")
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+        total = number("duration", value, 0.0, None, lo_open=True)
+        return tuple(total / segments for _ in range(segments))
+    items = list(value)
+    if len(items) != segments:
+        raise InputError("duration", f"one number or {segments} (one a segment)", value,
+                         f"duration must give one number or one a path segment "
+                         f"({segments}), got {len(items)}: {value!r}")
+    return tuple(number("duration", v, 0.0, None, lo_open=True) for v in items)

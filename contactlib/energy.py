@@ -19,9 +19,18 @@ Incremental steps (:mod:`contactlib.history_solver`)
 ----------------------------------------------------
 A load step moves element j by ``du_j`` against a traction that changes
 from ``q_j^old`` to ``q_j^new``; its work is taken by the trapezoid rule in
-time, ``|(q_old + q_new)/2| |du| A_j``, over the elements slipping at the end
-of the step (stuck elements have ``du = 0``, and an element that separates
-releases its traction without slip under load). ``A_j`` is the element's
+time, ``-(q_old + q_new)/2 du A_j`` (the shear opposes the slip), over the
+elements slipping at the end of the step and those that slipped before it
+and separate in it, releasing their shear while they slide (stuck elements
+have ``du = 0``; a stuck element that separates does no frictional work).
+Leaving the separating elements out, as earlier versions did, lost 0.9 % of
+a load-unload cycle's work at 100 steps a segment and 0.1 % at 400 (sphere,
+nu = 0.3, k = 0.2, n = 120); with them the errors are 0.16 % and 1e-5. As
+a trapezoid rule in time a step's work can come out slightly negative where
+the slip reverses or the contact shrinks within a coarse step (at most a
+few per cent of the total at 15 steps a segment); such a drop is a time
+discretisation error and is covered by ``work_error_estimate``.
+``A_j`` is the element's
 shear resultant per unit shear at its midpoint; in units E* = R = a_max = 1
 the sum is V R^2/(E* a_max^5) (sphere) or V R^2/(E* a_max^4) per unit length
 (cylinder).
@@ -56,9 +65,8 @@ over the step; the external work is the work of the mean pressure of the
 step on the body's surface under the same assumption (:func:`mean_traction`,
 :func:`step_external_work`). With these, external = stored + viscous +
 (work of the shear on the body's surface) holds step by step up to the
-asymmetry of the collocated K (1e-4 of its largest term at n = 240); the
-balance with :func:`step_work` in place of the shear's work also measures
-that rule's error (it leaves out elements that separate within a step).
+asymmetry of the collocated K (1e-4 of its largest term at n = 240), and
+:func:`step_work` is that shear work with its sign changed.
 Units as for :func:`step_work`.
 """
 
@@ -88,7 +96,7 @@ def frictional_work(x: np.ndarray, weights: np.ndarray, q: np.ndarray, s: np.nda
 
 
 def step_work(q_old: np.ndarray, q_new: np.ndarray, du: np.ndarray, shear_area: np.ndarray,
-              slipping: np.ndarray) -> float:
+              moving: np.ndarray) -> float:
     """Frictional work of one incremental load step (trapezoid rule in time).
 
     Parameters
@@ -100,15 +108,21 @@ def step_work(q_old: np.ndarray, q_new: np.ndarray, du: np.ndarray, shear_area: 
     shear_area : ndarray, shape (n,)
         Shear resultant of each element per unit midpoint shear (units
         a_max^2, or a_max per unit length).
-    slipping : ndarray of bool, shape (n,)
-        Elements slipping at the end of the step.
+    moving : ndarray of bool, shape (n,)
+        Elements that slip in the step: those slipping at its end, and those
+        that were slipping at its start and separate in it (a stuck element
+        that separates does no frictional work).
 
     Returns
     -------
     float
-        sum over the slipping elements of ``|(q_old + q_new)/2| |du| A_j`` (>= 0).
+        ``-sum A_j (q_old + q_new)_j/2 du_j`` over the moving elements: the
+        negative of the shear's work on the body's surface (the shear
+        opposes the slip, so each term is >= 0 up to the time
+        discretisation; stuck and separated elements do no work).
     """
-    return float(np.sum((np.abs(0.5 * (q_old + q_new)) * np.abs(du) * shear_area)[slipping]))
+    terms = -0.5 * (q_old + q_new) * du * shear_area
+    return float(np.sum(terms[moving]))
 
 
 # ----------------------------------------------------------------------------- energy balance

@@ -537,7 +537,8 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
     """Follow the load levels ``levels`` (P/P_max; ``levels[0]`` must be 0).
 
     The frictional work of a step is :func:`contactlib.energy.step_work`
-    (trapezoid in time over the elements slipping at the end of the step).
+    (trapezoid in time over the elements slipping at the end of the step and
+    those that slipped before it and separate in it).
     A step from no contact starts from the Hertz contact radius of its load
     (:meth:`contactlib.indenter.Indenter.hertz_radius`).
 
@@ -622,7 +623,8 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
             res = solve_step(step_ops, k, level * ops.p_max, u_old, guess, max_iter,
                              step_cache, *shift)
         work += step_work(q_old, res.q, res.u - u_old, ops.shear_area,
-                          res.state >= SLIP_INWARD)
+                          (res.state >= SLIP_INWARD)
+                          | ((res.state == SEPARATED) & (state >= SLIP_INWARD)))
         sigma = np.stack([res.p, res.q])
         d = np.stack([res.gap + res.delta - half_r2, res.u])
         if visco:

@@ -172,6 +172,7 @@ class HistoryResult:
     indenter_modulus_ratio: float = math.inf  # E1/E2 (inf: rigid)
     indenter_poisson_ratio: float = math.nan  # nu1 (the body's when rigid)
     dundurs_beta: float = math.nan  # beta of the pair (< 0: slip outward while loading)
+    base: str = "smooth"  # the layer's rigid base (irrelevant at slab_ratio 0)
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -208,14 +209,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             progress: Callable[[int, int], None] | None = None,
             max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
             indenter_modulus: float = math.inf,
-            indenter_nu: float | None = None) -> HistoryResult:
+            indenter_nu: float | None = None, base: str = "smooth") -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
     ----------
     geometry : {"sphere", "cylinder"}
-        Rigid sphere on a half-space, or rigid cylinder on a half-plane
-        (``slab_ratio = 0``) or slab on a smooth rigid base (plane strain).
+        Rigid sphere or cylinder (plane strain) on a half-space/half-plane
+        (``slab_ratio = 0``) or on a layer on a rigid base.
     nu : float
         Poisson's ratio, in (-1, 0.5].
     friction : float
@@ -228,7 +229,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     n : int, optional
         Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200).
     slab_ratio : float
-        Cylinder only: a_max / h of the slab (0: half-plane).
+        a_max / h of the layer (0: half-space or half-plane); h is fixed
+        while a grows. The sphere's mesh reaches 1.2 a_max, so its bound is
+        ``LAYER_RATIO_MAX / 1.2`` (16.7).
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
     max_error : float
@@ -243,6 +246,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         An elastic indenter, as for :func:`contactlib.solve` (E1/E2, default
         ``inf``: rigid; nu1, default the body's). Scalings use the composite
         E*; slip and shear take either sign.
+    base : {"smooth", "bonded"}
+        The layer's rigid base (default smooth).
 
     Returns
     -------
@@ -307,13 +312,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     levels_in = validate.load_path(load_path)
     steps = validate.steps(steps)
     n = validate.history_n(n)
-    slab = validate.slab_ratio(slab_ratio, geometry)
+    base = validate.base(base)
+    slab = validate.slab_ratio(slab_ratio, geometry, base, extent=validate.HISTORY_MESH_EXTENT)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
 
-    model = contact(geometry, nu, slab, ratio, nu1)
+    model = contact(geometry, nu, slab, ratio, nu1, base)
     ops = hs.build_operators(model, n)
     levels, segment = load_levels(levels_in, steps)
     raw = hs.run_history(ops, k, levels, progress=progress)
@@ -381,4 +387,4 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         stick_radius_error_estimate=err_c, work_error_estimate=err_w, resolved=resolved,
         max_error=max_error, indenter_modulus_ratio=float(ratio),
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
-        dundurs_beta=float(model.beta))
+        dundurs_beta=float(model.beta), base=base)

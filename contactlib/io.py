@@ -141,8 +141,27 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
     ),
 }
 
-_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "indenter_modulus_ratio",
-                  "indenter_poisson_ratio")
+_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "base",
+                  "indenter_modulus_ratio", "indenter_poisson_ratio")
+
+
+def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
+    """The layer's global attributes: ``slab_ratio`` (a/h, or a_max/h in a history) and ``base``.
+
+    ``slab_ratio`` where the indenter reports it (always for the cylinder, on
+    a layer for the sphere: a sphere on the half-space keeps its attributes);
+    ``base`` = "bonded" on a layer bonded to its base. Without ``base`` a
+    layer is on a smooth base: the default, and the paper's slab, whose
+    files keep the attributes they had before bases existed.
+    """
+    slab = float(result.slab_ratio)
+    base = str(getattr(result, "base", "smooth"))
+    attrs: dict[str, Any] = {}
+    if ind.reports_layer(slab):
+        attrs["slab_ratio"] = slab
+    if slab > 0 and base != "smooth":
+        attrs["base"] = base
+    return attrs
 
 
 def version() -> str:
@@ -338,8 +357,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     max_errors = {float(s.max_error) for s in sols if math.isfinite(s.max_error)}
     if max_errors:
         attrs["max_error"] = max(max_errors)
-    if ind.accepts_layer:
-        attrs["slab_ratio"] = float(first.slab_ratio)
+    attrs.update(_layer_attrs(ind, first))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = version()
@@ -554,8 +572,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "load_path": np.asarray(r.load_path, dtype=float),
         "steps": int(r.steps),
     }
-    if ind.accepts_layer:
-        attrs["slab_ratio"] = float(r.slab_ratio)
+    attrs.update(_layer_attrs(ind, r))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(hs.MESH_EXTENT)
@@ -595,7 +612,7 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     items = list(datasets)
     if not items:
         raise ValueError("stack_histories needs at least one history dataset")
-    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
+    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio", "base")
     first = items[0].attrs
     for ds in items[1:]:
         for key in same:

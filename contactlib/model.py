@@ -209,7 +209,8 @@ class Contact:
 
 
 def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
-            indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> Contact:
+            indenter_modulus: float = math.inf, indenter_nu: float | None = None,
+            base: str = "smooth") -> Contact:
     """The model of the public interface's names: an indenter on an elastic body.
 
     Parameters
@@ -218,10 +219,13 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
     nu : float
         Poisson's ratio of the body.
     slab_ratio : float
-        a/h of a layer on a smooth rigid base (0: half-space or half-plane).
+        a/h of a layer on a rigid base (0: half-space or half-plane).
     indenter_modulus : float
         E1/E2 of the indenter over the body (``inf``: rigid, the default).
     indenter_nu : float, optional
         Poisson's ratio of the indenter (None: the body's).
+    base : {"smooth", "bonded"}
+        The layer's rigid base (default smooth).
     """
-    return Contact(indenter(geometry, indenter_modulus, indenter_nu), ElasticBody(nu, slab_ratio))
+    return Contact(indenter(geometry, indenter_modulus, indenter_nu),
+                   ElasticBody(nu, slab_ratio, base))

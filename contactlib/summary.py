@@ -80,7 +80,8 @@ def _frictionless(ds: xr.Dataset) -> tuple[float, str]:
 
     sol = solve(str(ds.attrs["geometry"]), float(ds.attrs["poisson_ratio"]), stick_ratio=0.0,
                 n=int(ds.attrs["elements"]), method=str(ds.attrs.get("method", "default")),
-                slab_ratio=float(ds.attrs.get("slab_ratio", 0.0)), energy=False)
+                slab_ratio=float(ds.attrs.get("slab_ratio", 0.0)), energy=False,
+                base=str(ds.attrs.get("base", "smooth")))
     return float(sol.load_ratio), "solve"
 
 
@@ -259,7 +260,7 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
     for row in rows:
         body = f"{row['geometry']}, ν = {_g(row['nu'])}"
         slab = float(row["slab ratio a/h"])
-        if indenter(row["geometry"]).accepts_layer:
+        if indenter(row["geometry"]).reports_layer(slab):
             body += f", a/h = {_g(slab)}" if slab > 0 else ", half-plane"
         history = row["method"] == "history"
         p0 = _g(row["frictionless P/P_Hertz"], 5)

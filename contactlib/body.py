@@ -105,6 +105,26 @@ class ElasticBody:
             return disc.shear_disc(x, s, self.nu, with_du=with_du)
         return layer.shear_disc(x, s, self.nu, self.thickness, self.base, with_du=with_du)
 
+    def ring_remainder(self, kind: str, x: np.ndarray, s: np.ndarray,
+                       weights: np.ndarray | None = None,
+                       owner: np.ndarray | None = None) -> np.ndarray | None:
+        """What the layer adds to the half-space ring kernels, on the grid x by s.
+
+        ``kind`` "pressure" or "shear"; shape (3, x.size, s.size), rows (w, u,
+        du/dr), or with quadrature ``weights`` and ``owner`` their weighted
+        sums (:func:`contactlib.kernels.layer.remainder_grid`); analytic in
+        (x, s). None on the half-space.
+        """
+        if self.is_half_space:
+            return None
+        return layer.remainder_grid(kind, x, s, self.nu, self.thickness, self.base,
+                                    weights, owner)
+
+    @property
+    def half_space(self) -> ElasticBody:
+        """The same material unbounded: the singular part of a layer's kernels."""
+        return ElasticBody(self.nu)
+
     @property
     def ring_kernel_degrees(self) -> np.ndarray | None:
         """Degrees of homogeneity in length of the disc kernels (w, u, du/dr) at unit load.

@@ -174,6 +174,19 @@ class Indenter(ABC):
         (NaN) where that is cheaper. Units as :meth:`pressure_kernel`.
         """
 
+    def smooth_remainder(self, body: ElasticBody, part: str, x: np.ndarray, s: np.ndarray,
+                         weights: np.ndarray | None = None,
+                         owner: np.ndarray | None = None) -> np.ndarray | None:
+        """The body's smooth remainder over the half-space kernels on the grid x by s.
+
+        (3, x.size, s.size) for the basic loads of ``part`` ("normal" or
+        "shear"), or its weighted sums over s (quadrature ``weights``, sums
+        indexed by ``owner``), or None where the body's kernels are not split
+        that way (the half-space; strips, whose slab kernels are evaluated
+        whole).
+        """
+        return None
+
     @abstractmethod
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         """Degrees of homogeneity in length of the element integrals (w, u, du/dx).
@@ -276,6 +289,12 @@ class Sphere(Indenter):
     def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
                      with_du: bool = True) -> Displacements:
         return body.ring_shear(x, s, with_du=with_du)
+
+    def smooth_remainder(self, body: ElasticBody, part: str, x: np.ndarray, s: np.ndarray,
+                         weights: np.ndarray | None = None,
+                         owner: np.ndarray | None = None) -> np.ndarray | None:
+        return body.ring_remainder("pressure" if part == "normal" else "shear", x, s,
+                                   weights, owner)
 
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         d = body.ring_kernel_degrees

@@ -142,6 +142,29 @@ class Contact:
         """
         return self._summed(self.indenter.shear_kernel, x, s, 1.0, with_du=with_du)
 
+    def smooth_remainder(self, part: str, x: np.ndarray, s: np.ndarray,
+                         weights: np.ndarray | None = None,
+                         owner: np.ndarray | None = None) -> np.ndarray | None:
+        """The body's smooth remainder (layer minus half-space) on the grid x by s, or None.
+
+        (3, x.size, s.size), or its weighted sums over s (see
+        :meth:`Indenter.smooth_remainder`), in units of the composite E*
+        (weight c2): the
+        kernels of :meth:`pressure_kernel` / :meth:`shear_kernel` are those of
+        :attr:`half_space_twin` plus this (:mod:`contactlib.operators`
+        integrates the two parts with different rules).
+        """
+        rem = self.indenter.smooth_remainder(self.body, part, x, s, weights, owner)
+        if rem is None:
+            return None
+        c1, c2 = self.compliance_weights
+        return rem if c1 == 0.0 else c2 * rem
+
+    @property
+    def half_space_twin(self) -> Contact:
+        """The same indenter on the body's material unbounded (the singular part)."""
+        return Contact(self.indenter, self.body.half_space)
+
     def length_degrees(self, part: str) -> np.ndarray | None:
         """Homogeneity degrees of the element integrals (see :meth:`Indenter.length_degrees`)."""
         return self.indenter.length_degrees(self.body, part)

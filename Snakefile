@@ -40,6 +40,7 @@ include: "workflow/rules/history.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/convergence.smk"
 include: "workflow/rules/materials.smk"
+include: "workflow/rules/layers.smk"
 
 
 rule all:

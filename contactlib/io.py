@@ -57,9 +57,11 @@ from contactlib.result import Solution
 if TYPE_CHECKING:  # types only: the conversions import the numerics when they run
     from contactlib.convergence import Study
     from contactlib.history_api import HistoryResult
+    from contactlib.layer_study import LayerStudy
 
 __all__ = ["to_dataset", "scene_to_dataset", "set_provenance", "history_to_dataset",
-           "stack_histories", "study_to_dataset", "study_from_dataset", "write_dataset",
+           "stack_histories", "study_to_dataset", "study_from_dataset", "layer_study_to_dataset",
+           "write_dataset",
            "read_dataset", "write_arrays", "read_arrays", "write_records", "read_records",
            "write_table", "write_figure", "check_writable", "check_yaml", "version",
            "cf_attrs", "DamagedFileError", "CONVENTIONS"]
@@ -729,6 +731,47 @@ def study_from_dataset(ds: xr.Dataset) -> Study:
         observed_order=ds["observed_order"].values, error=ds["error"].values,
         wall_time=ds["wall_time"].values, peak_memory=ds["peak_memory"].values,
         reference_source=str(ds.attrs["reference"]))
+
+
+def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
+    """A :class:`~contactlib.layer_study.LayerStudy` as a dataset.
+
+    Dimensions ``geometry``, ``base``, ``poisson_ratio``, ``slab_ratio``
+    (a/h) and ``stick_ratio``; variables ``load_ratio`` (frictionless
+    P/P_Hertz) and ``load_error_estimate`` on the first four,
+    ``friction_coefficient``, ``error_estimate`` and ``resolved`` on all five.
+    Global attributes ``elements``, ``method`` (default), ``Conventions`` and
+    ``contactlib_version``.
+    """
+    import xarray as xr
+
+    dims4 = ("geometry", "base", "poisson_ratio", "slab_ratio")
+    dims5 = dims4 + ("stick_ratio",)
+    return xr.Dataset(
+        data_vars={
+            "load_ratio": (dims4, st.load_ratio, cf_attrs(
+                "frictionless load over the Hertz load at the same contact radius")),
+            "load_error_estimate": (dims4, st.load_error_estimate,
+                                    cf_attrs("estimated relative error of load_ratio")),
+            "friction_coefficient": (dims5, st.friction, cf_attrs(
+                "friction coefficient k", comment="self-similar loading, a/h held fixed")),
+            "error_estimate": (dims5, st.error_estimate,
+                               cf_attrs("estimated relative error of k")),
+            "resolved": (dims5, st.resolved.astype(bool), cf_attrs(
+                "converged, consistent and error_estimate at most 1e-3",
+                comment="thin bonded layers whose slip reverses are not", **_BOOL_FLAGS)),
+        },
+        coords={"geometry": ("geometry", list(st.geometries), {"long_name": "indenter"}),
+                "base": ("base", list(st.bases), {"long_name": "rigid base under the layer"}),
+                "poisson_ratio": ("poisson_ratio", np.asarray(st.nus, dtype=float),
+                                  cf_attrs("Poisson's ratio of the body")),
+                "slab_ratio": ("slab_ratio", np.asarray(st.ratios, dtype=float),
+                               cf_attrs("a/h", comment="0: half-space or half-plane")),
+                "stick_ratio": ("stick_ratio", np.asarray(st.stick_ratios, dtype=float),
+                                cf_attrs("c/a"))},
+        attrs={"title": "contactlib: layers, k and frictionless load against a/h",
+               "elements": int(st.n), "method": "default", "Conventions": CONVENTIONS,
+               "contactlib_version": version()})
 
 
 # ----------------------------------------------------------------------------- files

@@ -275,3 +275,22 @@ def test_step_operator_grid_is_the_pointwise_kernel():
             flat = f(rb.ravel(), sb.ravel(), NU, 0.5, base)
             for a, b in zip(grid, flat):
                 np.testing.assert_allclose(a.ravel(), b, rtol=1e-13, atol=1e-14)
+
+
+# ----------------------------------------------------------------------------- layers target
+def test_layer_study_dataset_table_and_figure(tmp_path):
+    """The `layers` target's pieces on a small study: the dataset round-trips, the
+    table blanks what is not resolved, the figure draws (two panels a geometry)."""
+    from contactlib import plot, summary
+    from contactlib.layer_study import layer_study
+
+    st = layer_study(geometries=("sphere", "cylinder"), bases=("bonded",), nus=(0.3,),
+                     ratios=(0.0, 5.0), stick_ratios=(0.5,), n=64)
+    # a/h = 5 on a bonded base at nu = 0.3: the slip reverses (docs/validation.md)
+    assert st.resolved[:, 0, 0, 0, 0].all() and not st.resolved[:, 0, 0, 1, 0].any()
+    np.testing.assert_allclose(st.load_ratio[:, 0, 0, 0], 1.0, atol=1e-3)  # Hertz
+    back = io.read_dataset(io.write_dataset(io.layer_study_to_dataset(st), tmp_path / "l.nc"))
+    np.testing.assert_array_equal(back["friction_coefficient"].values, st.friction)
+    rows = summary.layer_rows(back)
+    assert len(rows) == 4 and rows[1]["k at c/a = 0.5"] == "" and rows[0]["k at c/a = 0.5"]
+    assert len(plot.fig_layers(back).axes) == 6

@@ -122,8 +122,9 @@ def smooth_integrals(model: Contact, x: np.ndarray, nodes: np.ndarray,
     x = np.asarray(x, dtype=float).reshape(-1)
     nodes = np.asarray(nodes, dtype=float)
     h = model.body.thickness
-    if not np.isfinite(h):
-        return None
+    empty = np.empty(0)
+    if not np.isfinite(h) or model.smooth_remainder(part, empty, empty) is None:
+        return None  # (the empty probe: a slab under strips has no split kernels)
     lo, length = nodes[:-1], np.diff(nodes)
     panels = np.maximum(1, np.ceil(length / (_SMOOTH_PANEL * h))).astype(np.intp)
     owner = np.repeat(np.arange(lo.size), panels)  # element of each panel

@@ -42,6 +42,7 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/convergence.smk"
 include: "workflow/rules/materials.smk"
 include: "workflow/rules/viscoelastic.smk"
+include: "workflow/rules/layers.smk"
 
 
 rule all:

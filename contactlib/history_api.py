@@ -198,6 +198,7 @@ class HistoryResult:
     external_work: np.ndarray | None = None
     stored_energy: np.ndarray | None = None
     viscous_work: np.ndarray | None = None
+    base: str = "smooth"  # the layer's rigid base (irrelevant at slab_ratio 0)
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -262,14 +263,15 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             indenter_modulus: float = math.inf,
             indenter_nu: float | None = None,
             relaxation: Sequence[Sequence[float]] | None = None,
-            duration: float | Sequence[float] | None = None) -> HistoryResult:
+            duration: float | Sequence[float] | None = None,
+            base: str = "smooth") -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
     ----------
     geometry : {"sphere", "cylinder"}
-        Rigid sphere on a half-space, or rigid cylinder on a half-plane
-        (``slab_ratio = 0``) or slab on a smooth rigid base (plane strain).
+        Rigid sphere or cylinder (plane strain) on a half-space/half-plane
+        (``slab_ratio = 0``) or on a layer on a rigid base.
     nu : float
         Poisson's ratio, in (-1, 0.5].
     friction : float
@@ -284,7 +286,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         with a relaxation over ``[0, 1.2 a_inf]``, a_inf the fully crept
         contact radius (:func:`creep_extent`), so the elements are larger.
     slab_ratio : float
-        Cylinder only: a_max / h of the slab (0: half-plane).
+        a_max / h of the layer (0: half-space or half-plane); h is fixed
+        while a grows. The sphere's mesh reaches 1.2 a_max, so its bound is
+        ``LAYER_RATIO_MAX / 1.2`` (16.7).
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
     max_error : float
@@ -308,6 +312,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         With a relaxation (required then, refused otherwise): the duration of
         the path (its segments equally long) or of each segment, in the
         unit of tau.
+    base : {"smooth", "bonded"}
+        The layer's rigid base (default smooth).
 
     Returns
     -------
@@ -372,7 +378,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     levels_in = validate.load_path(load_path)
     steps = validate.steps(steps)
     n = validate.history_n(n)
-    slab = validate.slab_ratio(slab_ratio, geometry)
+    base = validate.base(base)
+    slab = validate.slab_ratio(slab_ratio, geometry, base, extent=validate.HISTORY_MESH_EXTENT)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
@@ -384,7 +391,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
                                   "relaxation needs a rigid indenter (an elastic indenter's "
                                   "compliance would not relax with the body's)")
 
-    model = contact(geometry, nu, slab, ratio, nu1, relaxation=prony)
+    model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony)
     extent = creep_extent(model)
     ops = hs.build_operators(model, n, extent)
     levels, segment = load_levels(levels_in, steps)
@@ -460,4 +467,4 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
         dundurs_beta=float(model.beta), relaxation=prony, durations=durations,
         mesh_extent=float(extent), time=raw.time, external_work=raw.external_work,
-        stored_energy=raw.stored_energy, viscous_work=raw.viscous_work)
+        stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base)

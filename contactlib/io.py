@@ -59,9 +59,11 @@ from contactlib.result import CaseRecord, Solution
 if TYPE_CHECKING:  # types only: the conversions import the numerics when they run
     from contactlib.convergence import Study
     from contactlib.history_api import HistoryResult
+    from contactlib.layer_study import LayerStudy
 
 __all__ = ["to_dataset", "scene_to_dataset", "set_provenance", "history_to_dataset",
-           "stack_histories", "study_to_dataset", "study_from_dataset", "write_dataset",
+           "stack_histories", "study_to_dataset", "study_from_dataset", "layer_study_to_dataset",
+           "write_dataset",
            "read_dataset", "write_arrays", "read_arrays", "write_records", "read_records",
            "write_table", "write_figure", "check_writable", "check_yaml", "version",
            "cf_attrs", "DamagedFileError", "CONVENTIONS"]
@@ -143,8 +145,27 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
     ),
 }
 
-_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "indenter_modulus_ratio",
-                  "indenter_poisson_ratio")
+_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "base",
+                  "indenter_modulus_ratio", "indenter_poisson_ratio")
+
+
+def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
+    """The layer's global attributes: ``slab_ratio`` (a/h, or a_max/h in a history) and ``base``.
+
+    ``slab_ratio`` where the indenter reports it (always for the cylinder, on
+    a layer for the sphere: a sphere on the half-space keeps its attributes);
+    ``base`` = "bonded" on a layer bonded to its base. Without ``base`` a
+    layer is on a smooth base: the default, and the paper's slab, whose
+    files keep the attributes they had before bases existed.
+    """
+    slab = float(result.slab_ratio)
+    base = str(getattr(result, "base", "smooth"))
+    attrs: dict[str, Any] = {}
+    if ind.reports_layer(slab):
+        attrs["slab_ratio"] = slab
+    if slab > 0 and base != "smooth":
+        attrs["base"] = base
+    return attrs
 
 
 def version() -> str:
@@ -340,8 +361,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     max_errors = {float(s.max_error) for s in sols if math.isfinite(s.max_error)}
     if max_errors:
         attrs["max_error"] = max(max_errors)
-    if ind.accepts_layer:
-        attrs["slab_ratio"] = float(first.slab_ratio)
+    attrs.update(_layer_attrs(ind, first))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = version()
@@ -556,8 +576,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "load_path": np.asarray(r.load_path, dtype=float),
         "steps": int(r.steps),
     }
-    if ind.accepts_layer:
-        attrs["slab_ratio"] = float(r.slab_ratio)
+    attrs.update(_layer_attrs(ind, r))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(hs.MESH_EXTENT)
@@ -626,7 +645,7 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     items = list(datasets)
     if not items:
         raise ValueError("stack_histories needs at least one history dataset")
-    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio",
+    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio", "base",
             "relaxation_weights", "relaxation_times", "segment_durations")
     first = items[0].attrs
     for ds in items[1:]:
@@ -744,6 +763,47 @@ def study_from_dataset(ds: xr.Dataset) -> Study:
         observed_order=ds["observed_order"].values, error=ds["error"].values,
         wall_time=ds["wall_time"].values, peak_memory=ds["peak_memory"].values,
         reference_source=str(ds.attrs["reference"]))
+
+
+def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
+    """A :class:`~contactlib.layer_study.LayerStudy` as a dataset.
+
+    Dimensions ``geometry``, ``base``, ``poisson_ratio``, ``slab_ratio``
+    (a/h) and ``stick_ratio``; variables ``load_ratio`` (frictionless
+    P/P_Hertz) and ``load_error_estimate`` on the first four,
+    ``friction_coefficient``, ``error_estimate`` and ``resolved`` on all five.
+    Global attributes ``elements``, ``method`` (default), ``Conventions`` and
+    ``contactlib_version``.
+    """
+    import xarray as xr
+
+    dims4 = ("geometry", "base", "poisson_ratio", "slab_ratio")
+    dims5 = dims4 + ("stick_ratio",)
+    return xr.Dataset(
+        data_vars={
+            "load_ratio": (dims4, st.load_ratio, cf_attrs(
+                "frictionless load over the Hertz load at the same contact radius")),
+            "load_error_estimate": (dims4, st.load_error_estimate,
+                                    cf_attrs("estimated relative error of load_ratio")),
+            "friction_coefficient": (dims5, st.friction, cf_attrs(
+                "friction coefficient k", comment="self-similar loading, a/h held fixed")),
+            "error_estimate": (dims5, st.error_estimate,
+                               cf_attrs("estimated relative error of k")),
+            "resolved": (dims5, st.resolved.astype(bool), cf_attrs(
+                "converged, consistent and error_estimate at most 1e-3",
+                comment="thin bonded layers whose slip reverses are not", **_BOOL_FLAGS)),
+        },
+        coords={"geometry": ("geometry", list(st.geometries), {"long_name": "indenter"}),
+                "base": ("base", list(st.bases), {"long_name": "rigid base under the layer"}),
+                "poisson_ratio": ("poisson_ratio", np.asarray(st.nus, dtype=float),
+                                  cf_attrs("Poisson's ratio of the body")),
+                "slab_ratio": ("slab_ratio", np.asarray(st.ratios, dtype=float),
+                               cf_attrs("a/h", comment="0: half-space or half-plane")),
+                "stick_ratio": ("stick_ratio", np.asarray(st.stick_ratios, dtype=float),
+                                cf_attrs("c/a"))},
+        attrs={"title": "contactlib: layers, k and frictionless load against a/h",
+               "elements": int(st.n), "method": "default", "Conventions": CONVENTIONS,
+               "contactlib_version": version()})
 
 
 # ----------------------------------------------------------------------------- files

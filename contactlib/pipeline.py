@@ -46,7 +46,8 @@ _VIOLATIONS = ("stick_violation", "slip_violation")
 def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
     geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]),
-                   float(spec.get("indenter_modulus", "inf")), spec.get("indenter_nu"))
+                   float(spec.get("indenter_modulus", "inf")), spec.get("indenter_nu"),
+                   spec.get("base", "smooth"))
     return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
 
 

@@ -110,8 +110,10 @@ def history_repr(res: Any) -> str:
         path += f" -> ... ({len(res.load_path)} levels)"
     head = (f"HistoryResult: {res.geometry}, nu = {res.nu:g}, k = {_scalar(res.friction)}, "
             f"n = {res.n}")
-    if indenter(res.geometry).accepts_layer:
+    if indenter(res.geometry).reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
+    if res.slab_ratio > 0:
+        head += f" ({getattr(res, 'base', 'smooth')} base)"
     steps = int(np.size(res.load_ratio)) - 1
     done = int(np.count_nonzero(np.asarray(res.converged)[1:]))
     iters = np.asarray(res.iterations)
@@ -261,7 +263,7 @@ class Solution:
     n : int
         Number of elements (rings or strips) across the half-contact.
     slab_ratio : float
-        a/h for the cylinder on a slab (0 = half-plane); 0 for the sphere.
+        a/h of the layer (0 = half-space or half-plane).
     stick_ratio : float
         c/a, 0 (frictionless) ... 1 (full adhesion).
     friction_coefficient : float
@@ -293,6 +295,8 @@ class Solution:
         nu1 of the indenter (the body's nu for a rigid one, where it plays no role).
     dundurs_beta : float
         Dundurs' beta of the pair (> 0: slip inward, q = k p; < 0: outward, q = -k p).
+    base : str
+        The layer's rigid base, "smooth" or "bonded" (irrelevant at a/h = 0).
     error_estimate : float
         Estimated relative error of ``friction_coefficient`` (embedded
         solves on the nested meshes n/4 and n/2; 0 where k is exact).
@@ -346,11 +350,14 @@ class Solution:
     indenter_modulus_ratio: float = float("inf")
     indenter_poisson_ratio: float = float("nan")
     dundurs_beta: float = float("nan")
+    base: str = "smooth"
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:g}, method = {self.method}, n = {self.n}"
-        if indenter(self.geometry).accepts_layer:
+        if indenter(self.geometry).reports_layer(self.slab_ratio):
             head += f", a/h = {self.slab_ratio:g}"
+        if self.slab_ratio > 0:
+            head += f" ({self.base} base)"
         if self.indenter_modulus_ratio != float("inf"):
             head += (f", E1/E2 = {self.indenter_modulus_ratio:g}, nu1 = "
                      f"{self.indenter_poisson_ratio:g}, beta = {self.dundurs_beta:.4g}")

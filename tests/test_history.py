@@ -254,7 +254,7 @@ BAD = [
     ("load_path", []), ("load_path", [0]), ("load_path", [0, 1.5]), ("load_path", [0, -0.1]),
     ("load_path", [0.5, 1]), ("load_path", "0,1"), ("load_path", [0, "a"]),
     ("load_path", 1.0), ("geometry", "cone"), ("nu", 0.6), ("nu", -1.0), ("n", 4),
-    ("n", 10.5), ("slab_ratio", 0.1), ("slab_ratio", -1.0),
+    ("n", 10.5), ("slab_ratio", 17.0), ("slab_ratio", -1.0), ("base", "glued"),
 ]
 
 
@@ -286,7 +286,8 @@ CLI_BAD = [
     (["--load-path", ""], "--load-path"), (["--load-path", "0,1.5"], "--load-path"),
     (["--load-path", "0.2,1"], "--load-path"), (["--load-path", "0,x"], "--load-path"),
     (["--nu", "0.7"], "--nu"), (["--geometry", "cone"], "--geometry"),
-    (["--slab-ratio", "0.1"], "--slab-ratio"), (["--n", "4"], "n must"),
+    (["--slab-ratio", "17"], "--slab-ratio"), (["--base", "glued"], "--base"),
+    (["--n", "4"], "n must"),
 ]
 
 

@@ -493,10 +493,11 @@ def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list
     handles: list[Line2D] = []
     # gamma dense near 1, where k grows without bound
     gamma = 1.0 - (1.0 - np.linspace(0.0, 1.0, 401)[:-1]) ** 2
+    ind = indenter(geometry)
+    layered = ind.reports_half_space_ratio or any(c.slab_ratio > 0 for c in members)
     for i, nu in enumerate(nus):
         k = uncoupled_friction(geometry, nu, gamma)
-        where = f", {indenter(geometry).half_space_name}" if indenter(geometry).accepts_layer \
-            else ""
+        where = f", {ind.half_space_name}" if layered else ""
         (line,) = ax.plot(gamma, k, color=_REF_COLOR, lw=1.0, dashes=_DASHES[i % len(_DASHES)],
                           zorder=1, label=f"uncoupled closed form, ν = {fmt(nu)}{where}")
         handles.append(line)

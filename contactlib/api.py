@@ -23,6 +23,8 @@ from .operators import StickBlocks
 from .result import Solution
 from .threads import blas_single_threaded
 
+PAPER_METHODS = ("paper", "paper-literal")  # c/a restricted to multiples of 1/n
+
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
            "output_grid"]
 
@@ -143,8 +145,12 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         Friction coefficient k >= 0 (``inf`` for full adhesion).
     n : int, optional
         Number of elements (default 256 for ``"default"``, 16 for the paper).
-    method : {"default", "paper", "paper-literal"}
+    method : {"default", "paper", "paper-literal", "extrapolated"}
         ``"paper"``: the printed scheme (c/a restricted to m/n).
+        ``"extrapolated"``: the default discretization at n/4, n/2 and n on
+        nested meshes, k and the load extrapolated in n (orders 2 and 3; k
+        to about 1e-6 at its default n = 384; n a multiple of 64; a given
+        stick ratio only). See docs/accuracy.md.
     slab_ratio : float
         a/h of the slab under a cylinder; 0 is the half-plane.
     energy : bool
@@ -199,12 +205,16 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                                   "give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
         c = validate.stick_ratio(stick_ratio)
-        if method != "default":
+        if method in PAPER_METHODS:
             validate.paper_multiple(c, n)  # before solving
         rec = stages.solve_cases(geom, method, n, [c], max_error=max_error)[0]
         return _from_record(geom, rec, method, n, energy)
 
     k = validate.friction(friction)
+    if method == "extrapolated":
+        raise validate.InputError("method", "default, paper or paper-literal with friction "
+                                  "(the extrapolated method solves for a given stick_ratio)",
+                                  method)
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
@@ -283,7 +293,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     ratios = validate.stick_ratios(stick_ratios, n)
-    if method != "default":
+    if method in PAPER_METHODS:
         for c in ratios:
             validate.paper_multiple(c, n, "stick_ratios")  # all before solving any
     out = []

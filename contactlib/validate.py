@@ -31,6 +31,7 @@ from typing import Any, Callable, Iterable
 
 __all__ = [
     "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
+    "EXTRAPOLATED_N_MULTIPLE",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
@@ -43,14 +44,19 @@ __all__ = [
 GEOMETRIES: tuple[str, ...] = ("sphere", "cylinder")
 """Indenter shapes: a rigid sphere (rings) or a rigid cylinder (strips)."""
 
-METHODS: tuple[str, ...] = ("default", "paper", "paper-literal")
-"""Self-similar methods: ours, the paper's scheme, and the paper's scheme as printed."""
+METHODS: tuple[str, ...] = ("default", "paper", "paper-literal", "extrapolated")
+"""Self-similar methods: ours, the paper's scheme, the paper's scheme as printed, and ours
+on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
 
-DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16}
+DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16,
+                             "extrapolated": 256}
 """Default number of elements across the half-contact, per method."""
 
 MIN_N_DEFAULT_METHOD = 16
 """Fewest elements the default method accepts (its mesh is in sixteenths)."""
+
+EXTRAPOLATED_N_MULTIPLE = 128
+"""The extrapolated method's n: a multiple of this (its n/8 level is nested in n)."""
 
 MAX_N = 4096
 """Most elements of a self-similar solve (about 3.3 GiB at n = 4096)."""
@@ -174,7 +180,7 @@ def geometry(value: Any) -> str:
 
 
 def method(value: Any) -> str:
-    """``"default"``, ``"paper"`` or ``"paper-literal"``."""
+    """``"default"``, ``"paper"``, ``"paper-literal"`` or ``"extrapolated"``."""
     return choice("method", value, METHODS)
 
 
@@ -289,6 +295,11 @@ def n(value: Any, method_name: str) -> int:
         return DEFAULT_N[method_name]
     lo = MIN_N_DEFAULT_METHOD if method_name == "default" else 2
     v = integer("n", value, 2, MAX_N)
+    if method_name == "extrapolated" and (v < EXTRAPOLATED_N_MULTIPLE
+                                          or v % EXTRAPOLATED_N_MULTIPLE):
+        raise InputError("n", f"a multiple of {EXTRAPOLATED_N_MULTIPLE} in "
+                         f"[{EXTRAPOLATED_N_MULTIPLE}, {MAX_N}] for the extrapolated method "
+                         "(n/8, n/4, n/2 nested in n)", value)
     if v < lo:
         raise InputError("n", f"an integer in [{lo}, {MAX_N}]", value,
                          f"n must be at least {lo} for the default method, got {value!r}")

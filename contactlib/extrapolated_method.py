@@ -184,21 +184,32 @@ def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None):
 
 def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
            k0: float, one_step: bool) -> DiscreteSolution:
-    """One level: Newton on k from k0 with extended-precision refinement throughout.
+    """One level: Newton on k from k0, the last step with extended-precision refinement.
 
-    The ordinary case (a root with the slip against the shear, converged) is
-    finished here; anything else is handed to :func:`solve_default` on the
-    same operators, which says what went wrong.
+    ``one_step``: k0 is within a few 1e-6 of the root (the finest level), and
+    one refined step is final when it moves k by at most :data:`ONE_STEP`.
+    Otherwise Newton runs plainly (refining only where it stagnates) and one
+    refined step follows. The ordinary case (a root with the slip against the
+    shear, converged) is finished here; anything else is handed to
+    :func:`solve_default` on the same operators, which says what went wrong.
     """
     system = assemble(geometry, mesh, pw, qw)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0
     k_start = sigma * k0
-    newton = newton_on_k(system, k_start, max_iter=1 if one_step else 30, refine=True)
-    if one_step and not newton.converged:
-        if abs(newton.k - k_start) <= ONE_STEP * abs(newton.k):
-            newton.converged = True
-        else:
-            newton = newton_on_k(system, newton.k, refine=True)
+    iterations = 0
+    if not one_step:
+        newton = newton_on_k(system, k_start, refine=False)
+        iterations = newton.iterations
+        if newton.converged:
+            k_start = newton.k
+    if one_step or newton.converged:
+        newton = newton_on_k(system, k_start, max_iter=1, refine=True)
+        if not newton.converged:
+            if abs(newton.k - k_start) <= ONE_STEP * abs(newton.k):
+                newton.converged = True
+            else:
+                newton = newton_on_k(system, newton.k, refine=True)
+        newton.iterations += iterations
     k = newton.k
     if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
         return solve_default(geometry, c, n, ops=(pw, qw), k_guess=abs(k0))

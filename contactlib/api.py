@@ -123,13 +123,45 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     return c, d
 
 
+def _check_planned(tolerance, n, method) -> float | None:
+    """The checked tolerance (None when not given); it excludes n and method."""
+    if tolerance is None:
+        return None
+    tol = validate.planned_tolerance(tolerance)
+    if n is not None or method != "default":
+        raise validate.InputError("tolerance", "given without n and method (the plan picks "
+                                  "them)", tolerance)
+    return tol
+
+
+def _planned_sweep(geom: Geometry, ratios: Sequence[float], tolerance: float, energy: bool,
+                   progress: Callable[[int, int], None] | None = None) -> list[Solution]:
+    """Cases solved with the planned method and n, refined to the tolerance."""
+    from . import accuracy
+
+    try:
+        method, n = accuracy.plan(geom, ratios, tolerance, methods=accuracy.PLANNED_METHODS)
+    except ValueError as exc:
+        raise validate.InputError("tolerance", "met by a supported method and n", tolerance,
+                                  str(exc)) from None
+    out = []
+    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True,
+                                              tolerance=tolerance, max_error=tolerance)):
+        used = int(rec.get("elements", n))
+        out.append(_from_record(geom, rec, method, used, energy))
+        if progress is not None:
+            progress(i + 1, len(ratios))
+    return out
+
+
 # ----------------------------------------------------------------------------- public API
 @blas_single_threaded
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
-          max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
+          max_error: float = validate.DEFAULT_MAX_ERROR,
+          tolerance: float | None = None) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -169,6 +201,16 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         n/4 and n/2) exceeds it is reported with ``resolved = False`` and a
         message that names the n that would resolve it, or says why none
         will. Default 1e-3.
+    tolerance : float, optional
+        A relative error of k to reach instead of a resolution, in
+        [1e-7, 0.1] (:func:`contactlib.validate.planned_tolerance`): the
+        method and n are planned (:func:`contactlib.accuracy.plan` over the
+        default and the extrapolated method, the cheapest whose measured
+        error model meets it; give neither ``n`` nor ``method``), n is
+        doubled where the case's own estimate falls short, and ``max_error``
+        becomes the tolerance. Refused, naming ``tolerance``, where no method
+        is predicted to meet it (e.g. 1e-6 at c/a = 0.9999); a given
+        stick_ratio only.
 
     Returns
     -------
@@ -196,6 +238,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     >>> round(sol.stick_ratio, 3), bool(sol.consistent)
     (0.5, True)
     """
+    planned = _check_planned(tolerance, n, method)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu)
     energy = validate.flag("energy", energy)
@@ -205,12 +248,17 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                                   "give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
         c = validate.stick_ratio(stick_ratio)
+        if planned is not None:
+            return _planned_sweep(geom, [c], planned, energy)[0]
         if method in PAPER_METHODS:
             validate.paper_multiple(c, n)  # before solving
         rec = stages.solve_cases(geom, method, n, [c], max_error=max_error)[0]
         return _from_record(geom, rec, method, n, energy)
 
     k = validate.friction(friction)
+    if planned is not None:
+        raise validate.InputError("tolerance", "given with stick_ratio (not friction)",
+                                  tolerance)
     if method == "extrapolated":
         raise validate.InputError("method", "default, paper or paper-literal with friction "
                                   "(the extrapolated method solves for a given stick_ratio)",
@@ -250,7 +298,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           progress: Callable[[int, int], None] | None = None,
           indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
-          max_error: float = validate.DEFAULT_MAX_ERROR) -> list[Solution]:
+          max_error: float = validate.DEFAULT_MAX_ERROR,
+          tolerance: float | None = None) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -265,6 +314,9 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ----------
     geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error
         As for :func:`solve`.
+    tolerance : float, optional
+        As for :func:`solve`: planned over all the stick ratios (a list, not
+        ``"all"``).
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
         ``"all"`` is m/n for m = 1 ... n-1.
@@ -287,12 +339,18 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ...  for s in sols]
     ['1.000', '1.000']
     """
+    planned = _check_planned(tolerance, n, method)
+    if planned is not None and isinstance(stick_ratios, str):
+        raise validate.InputError("stick_ratios", "a list of stick ratios with a tolerance "
+                                  "('all' means m/n and needs a given n)", stick_ratios)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     ratios = validate.stick_ratios(stick_ratios, n)
+    if planned is not None:
+        return _planned_sweep(geom, ratios, planned, energy, progress)
     if method in PAPER_METHODS:
         for c in ratios:
             validate.paper_multiple(c, n, "stick_ratios")  # all before solving any

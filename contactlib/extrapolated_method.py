@@ -56,7 +56,7 @@ from .model import Contact
 from .operators import StickBlocks, nodal_operator_part, restrict_nested
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
-           "ONE_STEP", "N_MULTIPLE", "resolving_n", "predicted_error", "work_error",
+           "ONE_STEP", "N_MULTIPLE", "resolving_n", "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER"]
 
 ORDERS = (2.0, 3.0, 4.0)
@@ -81,10 +81,6 @@ ONE_STEP = 3e-6
 # 2.3e-7, 3.5e-5 at 9.3e-9, 6.8e-4 at 2.3e-9); each constant is the largest of its points.
 NOISE = {"stick": 4.6e-20, "annulus": 7.5e-17}
 NOISE_POWER = 1.5
-
-# Measured relative k error of this method at n = 384 (largest over nu = 0, 0.3, 0.45;
-# tests/data/frontier_reference.json), falling like n^-3 (see predicted_error)
-_ERROR_AT_384 = 6e-7
 
 
 @dataclass(repr=False)
@@ -160,11 +156,6 @@ def quadrature_noise(mesh: Mesh) -> float:
     c = float(mesh.nodes[mesh.stick_index])
     h_min = float(np.min(np.diff(mesh.nodes)))
     return NOISE["stick" if c < 0.5 else "annulus"] * h_min ** -NOISE_POWER
-
-
-def predicted_error(n: int) -> float:
-    """Measured-model relative k error of this method at n (c/a = 0.1 ... 0.9; n^-3)."""
-    return _ERROR_AT_384 * (384.0 / n) ** 3
 
 
 def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | None:

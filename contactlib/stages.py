@@ -581,11 +581,23 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
     """Refine one case until its a-posteriori k error meets the tolerance."""
     from . import accuracy
 
-    if method != "default":
-        raise ValueError("a tolerance needs the default method (the paper's scheme does not "
-                         "converge to the physical k)")
+    if method not in NODAL_METHODS:
+        raise ValueError("a tolerance needs the default or the extrapolated method (the "
+                         "paper's scheme does not converge to the physical k)")
     if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact
         return d, {"elements": n, "error_estimate": 0.0, "tolerance_message": ""}
+    if method == "extrapolated":  # its own estimate; n doubled while it falls short
+        while d.error_estimate > tolerance and 2 * n <= MAX_N and d.converged:
+            finer = extrapolated_method.solve_extrapolated(geometry, c, 2 * n, k_guess=d.k,
+                                                           cache=cache, work=False)
+            if finer.error_estimate >= d.error_estimate:  # the quadrature noise grows
+                break
+            d, n = finer, 2 * n
+        msg = ("" if d.error_estimate <= tolerance else
+               f"tolerance {tolerance:g} not met: estimated k error {d.error_estimate:.2g} "
+               f"at n = {n}")
+        return d, {"elements": n, "error_estimate": float(d.error_estimate),
+                   "tolerance_message": msg}
     sols = {n: d}
 
     def solve_k(m: int) -> float:

@@ -155,3 +155,65 @@ def test_levels_are_the_default_discretization():
         d = solve_default(model, 0.3, n)
         assert abs(d.k / k - 1.0) < 1e-7, (n, d.k, k)
     assert np.isclose(s.k_fine, s.level_k[-1])
+
+
+# ----------------------------------------------------------------------------- tolerance
+def test_plan_picks_the_cheapest_method_that_meets_the_tolerance():
+    from contactlib import accuracy
+
+    for geometry in ("sphere", "cylinder"):
+        model = contact(geometry, 0.3)
+        ratios = [0.02, 0.1, 0.5, 0.9, 0.98]
+        assert accuracy.plan(model, ratios, 1e-6, methods=accuracy.PLANNED_METHODS) == (
+            "extrapolated", 256)
+        assert accuracy.plan(model, [0.5], 1e-2, methods=accuracy.PLANNED_METHODS)[0] == \
+            "default"
+        # the default method alone (scenes) still plans by its n^-2 model
+        method, n = accuracy.plan(model, ratios, 1e-5)
+        assert method == "default" and n > 256
+        with pytest.raises(ValueError, match="beyond every method"):
+            accuracy.plan(model, [0.9999], 1e-6, methods=accuracy.PLANNED_METHODS)
+
+
+def test_sweep_with_a_tolerance_meets_it_against_the_reference():
+    ratios = [0.1, 0.5, 0.9]
+    sols = api.sweep("sphere", 0.3, ratios, tolerance=1e-6)
+    refs = {c["stick_ratio"]: c["k"] for c in REFERENCE["cases"]
+            if c["geometry"] == "sphere" and c["nu"] == 0.3}
+    for s in sols:
+        assert s.method == "extrapolated" and s.resolved and s.max_error == 1e-6
+        assert abs(s.friction_coefficient / refs[s.stick_ratio] - 1.0) <= 1e-6
+        assert s.error_estimate <= 1e-6
+
+
+@pytest.mark.parametrize("extra, word", [
+    (["--tolerance", "1e-9"], "--tolerance"),  # below the supported range [1e-7, 0.1]
+    (["--tolerance", "0.5"], "--tolerance"),
+    (["--tolerance", "nan"], "--tolerance"),
+    (["--tolerance", "1e-6", "--n", "256"], "--tolerance"),
+    (["--tolerance", "1e-6", "--method", "extrapolated"], "--tolerance"),
+])
+def test_cli_tolerance_refusals(tmp_path, extra, word):
+    out = tmp_path / "x.nc"
+    cmd = [sys.executable, "-m", "contactlib", "sweep", "--geometry", "sphere", "--nu", "0.3",
+           "--stick-ratios", "0.5", "--output", str(out)] + extra
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    assert r.returncode == 2 and not out.exists()
+    assert len(r.stderr.strip().splitlines()) == 1 and word in r.stderr
+
+
+def test_cli_tolerance_unreachable_is_refused_by_name(tmp_path):
+    out = tmp_path / "x.nc"
+    cmd = [sys.executable, "-m", "contactlib", "solve", "--geometry", "sphere", "--nu", "0.3",
+           "--stick-ratio", "0.9999", "--tolerance", "1e-6", "--output", str(out)]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    assert r.returncode == 2 and not out.exists()
+    assert r.stderr.count("\n") == 1 and "--tolerance" in r.stderr
+
+
+def test_cli_tolerance_solves(tmp_path):
+    cmd = [sys.executable, "-m", "contactlib", "solve", "--geometry", "cylinder", "--nu",
+           "0.3", "--stick-ratio", "0.5", "--tolerance", "1e-6"]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert "method = extrapolated" in r.stdout and "max error 1e-06" in r.stdout

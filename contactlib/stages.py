@@ -147,12 +147,13 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
 # ----------------------------------------------------------------------------- solve
 def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
               k_guess: float | None = None, ops: tuple | None = None,
-              cache: StickBlocks | None = None):
+              cache: StickBlocks | None = None, level_offsets: tuple | None = None):
     """One stick ratio with the chosen method, no post-processing (a discrete solution).
 
     ``normal``/``shear`` are influence sets from :func:`influence` (or None:
     computed on the fly); ``ops`` the default method's operators on its mesh;
-    ``cache`` the caller's store of stick blocks.
+    ``cache`` the caller's store of stick blocks; ``level_offsets`` the
+    extrapolated method's coarse-level starts from a neighbouring case.
     """
     if method in NODAL_METHODS:
         if ops is None:
@@ -163,7 +164,8 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
         if method == "extrapolated":  # the caller's samples give the finest level's work
             return extrapolated_method.solve_extrapolated(geometry, c, n, ops=ops,
                                                           k_guess=k_guess, cache=cache,
-                                                          work=False)
+                                                          work=False,
+                                                          level_offsets=level_offsets)
         return solve_default(geometry, c, n, ops=ops, k_guess=k_guess, cache=cache)
     m = validate.paper_multiple(c, n)
     r = uniform_mesh(n, m).nodes
@@ -285,6 +287,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
     ``max_error``.
     """
     known: list[tuple[float, float]] = []  # (c, k / k_uncoupled) of converged cases
+    offsets = None  # the extrapolated method's coarse levels, from the last case
     cache = StickBlocks()  # this sweep's store of stick blocks (see nodal_operator_part)
     for c in stick_ratios:
         c = float(c)
@@ -301,7 +304,8 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                 guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
                 if quarter is not None and quarter.converged:
                     guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
-        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops, cache=cache)
+        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops, cache=cache,
+                      level_offsets=offsets)
         if (method in NODAL_METHODS and not d.converged and guess is not None
                 and 0.0 < solved < 1.0):
             # the continuation guess extrapolates k/k_uncoupled in c/a and can land
@@ -313,6 +317,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                           cache=cache)
         if method in NODAL_METHODS and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
+            offsets = getattr(d, "level_offsets", None) or None
         extra = {}
         if tolerance is not None:
             d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance, cache)

@@ -70,7 +70,7 @@ class Scene:
     name : str
     geometry : {"sphere", "cylinder"}
     nu : float
-    method : {"default", "paper", "paper-literal"}
+    method : {"default", "paper", "paper-literal", "extrapolated"}
     n : int
         Elements across the half-contact.
     stick_ratios : tuple of float
@@ -132,7 +132,7 @@ class Scene:
             key += f"-h{self.slab_ratio!r}"
         if self._indenter_spec():
             key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
-        if self.method == "default":
+        if self.method in ("default", "extrapolated"):  # a mesh per stick ratio
             key += "-c" + _ratio_digest(self.solved_ratios)
         return key
 
@@ -275,7 +275,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     ratios = None
     if n is not None and "stick_ratios" in raw:
         ratios = bad.check("stick_ratios", validate.stick_ratios, raw["stick_ratios"], n)
-        if ratios is not None and method != "default":
+        if ratios is not None and method in ("paper", "paper-literal"):
             for c in ratios:
                 if bad.check("stick_ratios", validate.paper_multiple, c, n,
                              "stick_ratios") is None:

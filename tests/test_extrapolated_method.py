@@ -217,3 +217,21 @@ def test_cli_tolerance_solves(tmp_path):
     r = subprocess.run(cmd, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert "method = extrapolated" in r.stdout and "max error 1e-06" in r.stdout
+
+
+def test_a_scene_with_the_extrapolated_method_runs_through_the_workflow_stages():
+    from contactlib import pipeline
+    from contactlib.scene import parse_scene
+
+    scene = parse_scene("x", {"geometry": "cylinder", "nu": 0.3, "method": "extrapolated",
+                              "n": 256, "stick_ratios": [0.1, 0.55], "outputs": ["k_curve"]})
+    spec = scene.influence_spec()
+    normal, shear = pipeline.influence(spec, "normal"), pipeline.influence(spec, "shear")
+    records = pipeline.solve(scene, normal, shear)
+    ds = pipeline.assemble(scene, records, checks=pipeline.check(records))
+    assert ds.attrs["method"] == "extrapolated" and bool(ds["resolved"].all())
+    direct = pipeline.solve(scene, None, None)  # the same numbers without the stage's tables
+    assert [r["k"] for r in records] == pytest.approx([r["k"] for r in direct], rel=1e-10)
+    ref = {c["stick_ratio"]: c["k"] for c in REFERENCE["cases"]
+           if c["geometry"] == "cylinder" and c["nu"] == 0.3}
+    assert abs(records[0]["k"] / ref[0.1] - 1.0) < 1e-6

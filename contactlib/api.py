@@ -59,7 +59,7 @@ def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n:
             max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
     rec = stages.case_record(geom, d, samples=True)
-    stages.estimate_case(geom, method, n, rec, max_error=max_error)
+    stages.estimate_case(geom, method, n, rec, max_error=max_error, solution=d)
     return _from_record(geom, rec, method, n, want_energy, message)
 
 
@@ -154,6 +154,32 @@ def _planned_sweep(geom: Geometry, ratios: Sequence[float], tolerance: float, en
     return out
 
 
+def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
+                               rtol: float = 1e-11) -> tuple[float, DiscreteSolution]:
+    """Stick ratio whose extrapolated k is ``friction``: the default method's c at n, then
+    secant steps on the extrapolated k(c) (smooth and increasing; two or three steps)."""
+    from .extrapolated_method import solve_extrapolated
+
+    c0, d0 = stick_ratio_for_friction(geometry, friction, n)
+    blocks = StickBlocks()
+
+    def at(c: float):
+        return solve_extrapolated(geometry, c, n, k_guess=d0.k, cache=blocks, work=False)
+
+    c1 = c0 + 1e-4 * min(c0, 1.0 - c0)
+    s0, s1 = at(c0), at(c1)
+    for _ in range(8):
+        if not (s0.converged and s1.converged) or s1.k == s0.k:
+            break
+        c2 = c1 - (s1.k - friction) * (c1 - c0) / (s1.k - s0.k)
+        c2 = min(max(c2, 0.5 * c1), c1 + 0.5 * (1.0 - c1))  # stay inside (0, 1)
+        c0, s0, c1 = c1, s1, c2
+        s1 = at(c1)
+        if abs(s1.k / friction - 1.0) <= rtol:
+            break
+    return c1, s1
+
+
 # ----------------------------------------------------------------------------- public API
 @blas_single_threaded
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
@@ -179,10 +205,11 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         Number of elements (default 256 for ``"default"``, 16 for the paper).
     method : {"default", "paper", "paper-literal", "extrapolated"}
         ``"paper"``: the printed scheme (c/a restricted to m/n).
-        ``"extrapolated"``: the default discretization at n/4, n/2 and n on
-        nested meshes, k and the load extrapolated in n (orders 2 and 3; k
-        to about 1e-6 at its default n = 384; n a multiple of 64; a given
-        stick ratio only). See docs/accuracy.md.
+        ``"extrapolated"``: the default discretization at n/8, n/4, n/2 and
+        n on nested meshes, k and the load extrapolated in n (orders 2, 3,
+        4; k to about 1e-6 at its default n = 256; n a multiple of 128;
+        with ``friction``, the c/a whose extrapolated k it is). See
+        docs/accuracy.md.
     slab_ratio : float
         a/h of the slab under a cylinder; 0 is the half-plane.
     energy : bool
@@ -209,8 +236,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         error model meets it; give neither ``n`` nor ``method``), n is
         doubled where the case's own estimate falls short, and ``max_error``
         becomes the tolerance. Refused, naming ``tolerance``, where no method
-        is predicted to meet it (e.g. 1e-6 at c/a = 0.9999); a given
-        stick_ratio only.
+        is predicted to meet it (e.g. 1e-6 at c/a = 0.9999); with
+        stick_ratio, not friction.
 
     Returns
     -------
@@ -259,10 +286,6 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     if planned is not None:
         raise validate.InputError("tolerance", "given with stick_ratio (not friction)",
                                   tolerance)
-    if method == "extrapolated":
-        raise validate.InputError("method", "default, paper or paper-literal with friction "
-                                  "(the extrapolated method solves for a given stick_ratio)",
-                                  method)
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
@@ -279,6 +302,9 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         return sol
     if method == "default":
         c, d = stick_ratio_for_friction(geom, k, n)
+        return _finish(geom, d, method, n, energy, max_error=max_error)
+    if method == "extrapolated":
+        c, d = _extrapolated_for_friction(geom, k, n)
         return _finish(geom, d, method, n, energy, max_error=max_error)
     # paper method: c/a only at m/n; pick the m/n whose k is nearest
     table = [_discrete(geom, m / n, n, method) for m in range(0, n)]

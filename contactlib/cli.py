@@ -189,7 +189,7 @@ _OUTPUT_HELP = ("write the netCDF dataset here (checked before any computing; mi
                 "parent folders are created; an existing file is replaced)")
 _METHOD_HELP = ("discretization: 'default' (ours), 'extrapolated' (ours on the nested "
                 "meshes n/8 ... n, k extrapolated in n: about 1e-6 at n = 256; n a multiple "
-                "of 128; --stick-ratio only), 'paper' (the paper's scheme as printed, "
+                "of 128), 'paper' (the paper's scheme as printed, "
                 "Coulomb's law on each ring's resultant) or 'paper-literal' (the printed "
                 "q_i = k p_i); default: %(default)s")
 

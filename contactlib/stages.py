@@ -338,12 +338,16 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
 
 
 def estimate_case(geometry: Contact, method: str, n: int, rec: Record, *,
-                  samples: bool = True, max_error: float = validate.DEFAULT_MAX_ERROR) -> Record:
+                  samples: bool = True, max_error: float = validate.DEFAULT_MAX_ERROR,
+                  solution=None) -> Record:
     """Add the error estimates and ``resolved`` to a case record solved outside :func:`iter_cases`.
 
     Used for the inverse problem (k given): the nested coarse solves are made
-    at the record's stick ratio. Returns the same (updated) record.
+    at the record's stick ratio; an extrapolated ``solution`` brings its own
+    estimates (and load). Returns the same (updated) record.
     """
+    if isinstance(solution, extrapolated_method.ExtrapolatedSolution):
+        rec.update(_extrapolated_estimates(geometry, solution, rec, samples))
     c = _solved_ratio(geometry, float(rec["stick_ratio"]))
     cache = StickBlocks()
     coarse = (_coarse_solves(geometry, n, c, float(rec["k"]), cache=cache)

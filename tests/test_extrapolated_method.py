@@ -126,10 +126,17 @@ def test_n_must_be_a_multiple_of_128(bad):
     assert err.value.name == "n"
 
 
-def test_friction_is_refused_by_name():
-    with pytest.raises(validate.InputError) as err:
-        api.solve("sphere", 0.3, friction=0.2, method="extrapolated")
-    assert err.value.name == "method"
+def test_friction_gives_the_stick_ratio_of_the_extrapolated_k():
+    model = contact("sphere", 0.3)
+    ref = {c["stick_ratio"]: c["k"] for c in REFERENCE["cases"]
+           if c["geometry"] == "sphere" and c["nu"] == 0.3}
+    sol = api.solve("sphere", 0.3, friction=ref[0.5], method="extrapolated")
+    assert sol.method == "extrapolated" and sol.resolved
+    assert abs(sol.friction_coefficient / ref[0.5] - 1.0) < 1e-10  # the k asked for ...
+    assert abs(sol.stick_ratio - 0.5) < 2e-6  # ... at the c/a of the converged reference
+    assert 0.0 < sol.error_estimate < 1e-6
+    direct = solve_extrapolated(model, sol.stick_ratio, 256)
+    assert abs(direct.k / sol.friction_coefficient - 1.0) < 1e-10
 
 
 def test_cli_method_extrapolated(tmp_path):

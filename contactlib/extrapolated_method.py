@@ -191,9 +191,9 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
 
     ``one_step``: k0 is within a few 1e-6 of the root (the finest level), and
     one refined step is final when it moves k by at most :data:`ONE_STEP`.
-    Otherwise Newton runs plainly (refining only where it stagnates) and,
-    with ``refine``, one refined step follows (the two coarsest levels go
-    without: below ~200 elements the round-off in k is under 1e-9). The ordinary case (a root with the slip against the
+    Otherwise Newton runs plainly (refining only where it stagnates) and one
+    refined step follows (``refine``; without it the round-off of a coarse
+    level reached 2.7e-6 in k at nu = -0.5, c/a = 0.98, n = 256, k = 13.6). The ordinary case (a root with the slip against the
     shear, converged) is finished here; anything else is handed to
     :func:`solve_default` on the same operators, which says what went wrong.
     """
@@ -303,16 +303,20 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         odds.append(odd)
     meshes, opss, odds = meshes[::-1], opss[::-1], odds[::-1]  # coarsest first
     ns = [n // 2 ** i for i in range(LEVELS - 1, -1, -1)]
-    k0 = k_guess if k_guess is not None else start_k(geometry, c, ns[0], 2.0,
-                                                     edge=meshes[0].nodes[meshes[0].stick_index])
+    # without a guess, the default method's warm start for the coarsest level (the
+    # Richardson value of n = 64 and 128 from n = 256 on, else the uncoupled closed form):
+    # the closed form alone is far off where the coupling is strong (nu = -0.5, c/a = 0.98:
+    # k = 13.6) and Newton can land on another root there
+    k0 = k_guess if k_guess is not None else start_k(
+        geometry, c, n, 2.0,
+        edge=meshes[0].nodes[meshes[0].stick_index], cache=cache)
     sols: list[DiscreteSolution] = []
     for i, (m, mesh, (p_op, q_op), odd) in enumerate(zip(ns, meshes, opss, odds)):
         if i == LEVELS - 1 and len(sols) >= 2:  # the finest root predicted from the
             k0 = _predict([s.k for s in sols])  # coarse levels' expansion
         if i < LEVELS - 1 and k_guess is not None and level_offsets is not None:
             k0 = k_guess * (1.0 + level_offsets[i])
-        d = _level(geometry, c, m, mesh, p_op, q_op, k0, one_step=i == LEVELS - 1,
-                   refine=i >= LEVELS - 2)
+        d = _level(geometry, c, m, mesh, p_op, q_op, k0, one_step=i == LEVELS - 1)
         if odd is not None:
             x, po, qo = odd
             d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)

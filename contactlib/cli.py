@@ -439,6 +439,13 @@ def _g(value: float, digits: int = 6) -> str:
     return "inf" if math.isinf(value) else f"{value:.{digits}g}"
 
 
+def _k_digits(error: float) -> int:
+    """Significant digits of k worth printing: 6, more where its error estimate is smaller."""
+    if not (math.isfinite(error) and error > 0.0):
+        return 6
+    return int(min(12, max(6, math.ceil(-math.log10(error)) + 1)))
+
+
 def _indenter(geometry: str) -> Any:
     from contactlib.indenter import indenter
 
@@ -459,7 +466,8 @@ def format_summary(sol: Solution) -> str:
     lines = [
         _head(sol),
         f"  c/a    = {_g(sol.stick_ratio)}",
-        f"  k      = {_g(sol.friction_coefficient)}   (estimated relative error "
+        f"  k      = {_g(sol.friction_coefficient, _k_digits(sol.error_estimate))}   "
+        "(estimated relative error "
         f"{sol.error_estimate:.1e}; resolved: {_yes(sol.resolved)}, max error "
         f"{sol.max_error:g})",
         f"  P/P_H  = {_g(sol.load_ratio)}",

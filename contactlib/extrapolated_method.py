@@ -1,43 +1,49 @@
-"""The extrapolated method: the default discretization on three nested meshes, extrapolated.
+"""The extrapolated method: the default discretization on four nested meshes, extrapolated.
 
 Why
 ---
 The default method's k error has a smooth expansion in the resolution n on
-its graded, nested meshes (measured: ``tests/data/make_frontier_reference.py``,
-docs/accuracy.md). With k(n) the default method's root,
+its graded, nested meshes (measured before this method was designed; see
+docs/accuracy.md, "The extrapolated method"). With k(n) the default
+method's root,
 
-    k(n) = k + A n^-2 + B n^-3 + ...,
+    k(n) = k + A n^-2 + B n^-3 + C n^-4 + ...,
 
-the n^-2 and n^-3 terms of comparable size up to n ~ 500 (which is why the
-observed order of plain differences drifts from 1.2 to 2 there). Solving at
-n/4, n/2 and n on nested meshes and eliminating both terms (Richardson with
-the known orders 2 and 3) gives k with an error about ten times below the
-plain fine solve's at n = 384 (about 3e-7 relative instead of 5e-6, at
-c/a = 0.1 ... 0.9).
+the n^-2 and n^-3 terms of comparable size and opposite sign up to n ~ 500
+(which is why the observed order of plain differences drifts from 0.7 to
+1.9 for n = 384 ... 2048). Solving at n/8, n/4, n/2 and n on nested meshes
+and eliminating the three terms (Richardson with the orders 2, 3, 4) gives
+k to at most 6.0e-7 at n = 256 and 7.7e-8 at n = 512 (30 cases, c/a = 0.1
+... 0.9, nu = 0 ... 0.45, both geometries, against
+``tests/data/frontier_reference.json``), where the default method's own
+n = 256 is 1e-5 ... 1.5e-4 off.
 
 Cost
 ----
 Only the finest mesh's operators are computed from the kernels; those of
-n/2 and n/4 are restricted from them exactly
+n/2, n/4, n/8 are restricted from them exactly
 (:func:`~contactlib.operators.restrict_nested`), so the coarse solves cost
-two small factorizations each. The finest level starts Newton's method from
-the expansion fitted to the coarse roots (within 2e-6 ... 5e-6 of its own root),
+small factorizations. The finest level starts Newton's method from the
+expansion fitted to the coarse roots (within 2e-6 ... 5e-6 of its own root),
 and one factorization with one step of extended-precision refinement
 suffices (the error after a refined Newton step is ~0.4 step^2; a second
-is taken only when the first exceeds :data:`ONE_STEP`).
+is taken only when the first exceeds :data:`ONE_STEP`). In a sweep the
+coarse levels start from the previous case's level offsets.
 
 Error estimate
 --------------
-``error_estimate`` is the size of the last correction, |k_23 - k_2| / k,
-with k_2 the n^-2 extrapolation of (n/2, n) and k_23 the reported value:
-in the asymptotic range the error left in k_23 is a fraction of it
-(measured 0.1 ... 0.9 of it at c/a = 0.1 ... 0.9, nu = 0 ... 0.45; see
-``tests/test_extrapolated_method.py``). Where the n^-3 term is not smaller
-than the n^-2 term at the finest level, the levels are not in the range of
-the expansion: the estimate is then the largest difference between levels,
-and k is the finest level's own root. The load is extrapolated and
-estimated the same way; the frictional work is the finest level's, with the
-default method's three-level estimate.
+``error_estimate`` is the last correction, |k_234 - k_23| / k, with k_23
+the three-level extrapolation of (n/4, n/2, n) and k_234 the reported
+value, plus a measured bound of the kernels' quadrature noise on the mesh
+(:func:`quadrature_noise`): the true error was 0.1 ... 1.6 times it at c/a
+= 1e-4 ... 0.99 (against the reference and the closed forms at
+nu = 0.49999), and 3.5 times it in one strongly coupled case (nu = -0.5,
+c/a = 0.98, k = 13.6). Where the highest-order term is not smaller than the
+n^-2 term at the finest level, the levels are outside the expansion's
+range: k is then the finest level's own root and the estimate the largest
+difference between levels. The load is extrapolated and estimated the same
+way; the frictional work is the finest level's, with the default method's
+three-level estimate.
 
 Units: E* = a = R = 1 (see :mod:`contactlib.default_method`).
 """
@@ -45,7 +51,7 @@ Units: E* = a = R = 1 (see :mod:`contactlib.default_method`).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -96,10 +102,15 @@ class ExtrapolatedSolution(DiscreteSolution):
     Attributes
     ----------
     levels : tuple of int
-        n/4, n/2, n.
+        n/8, n/4, n/2, n.
     level_k, level_load, level_work : tuple of float
-        k, the load (E* R a^... units of :meth:`Contact.load`) and the
-        frictional work on each level.
+        k, the load (units of :meth:`Contact.load`) and the frictional work
+        on each level (``level_work`` without the finest when the caller
+        completes it, see :func:`solve_extrapolated`).
+    level_offsets : tuple of float
+        k of each coarse level over the extrapolated k, minus 1.
+    k_fine : float
+        The finest level's own root.
     load : float
         The extrapolated load.
     error_estimate, load_error_estimate, work_error_estimate : float
@@ -116,7 +127,6 @@ class ExtrapolatedSolution(DiscreteSolution):
     error_estimate: float = math.nan
     load_error_estimate: float = math.nan
     work_error_estimate: float = math.nan
-    notes: list = field(default_factory=list)
 
     def estimates(self) -> dict:
         """The record entries this method sets (load, estimates)."""

@@ -93,12 +93,15 @@ def test_closed_form_nearly_incompressible(geometry):
 @pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
 def test_closed_form_at_0499(geometry):
     """nu = 0.499: agreement to the coupling correction (<= 1.3e-5 measured) plus the estimate."""
-    sols = api.sweep(geometry, 0.499, RATIOS_EXTREME[1:-1], method="extrapolated",
-                     energy=False)
+    sols = api.sweep(geometry, 0.499, RATIOS_EXTREME, method="extrapolated", energy=False)
     for s in sols:
         exact = float(uncoupled_friction(geometry, 0.499, s.stick_ratio))
         err = abs(s.friction_coefficient / exact - 1.0)
-        assert err <= 3.0 * s.error_estimate + 1.5e-5, (s.stick_ratio, err, s.error_estimate)
+        if s.converged:
+            assert err <= 3.0 * s.error_estimate + 1.5e-5, (s.stick_ratio, err,
+                                                             s.error_estimate)
+        else:  # c/a = 1 - 1e-5: the slip samples hit a kernel singularity; flagged
+            assert not s.resolved and s.stick_ratio > 0.9999
 
 
 def test_sweep_records_carry_the_method_and_estimates():

@@ -5,7 +5,9 @@ k instead of a resolution. Two steps:
 
 1. **Plan** (:func:`plan`, before anything is solved): the cheapest method
    and n that the *measured* convergence says will meet the tolerance at
-   every requested stick ratio. The measurements are the convergence study
+   every requested stick ratio (the default method, or the extrapolated one
+   of :mod:`contactlib.extrapolated_method` with its own error model,
+   :func:`predicted_method_error`). The measurements are the convergence study
    (``snakemake convergence``, :mod:`contactlib.convergence`): the default
    method's k error at n = 256 against Richardson extrapolation, over c/a
    from 0.02 to 0.98 (:data:`ERROR_AT_256`), falling like n^-2 (observed
@@ -137,8 +139,8 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
          methods: Sequence[str] = ("default",)) -> tuple[str, int]:
     """The cheapest (method, n) predicted to meet ``tolerance`` at every stick ratio.
 
-    With ``methods = ("default",)`` (scenes): ``("default", n)`` with n a
-    multiple of 64 in [64, MAX_N]. With :data:`PLANNED_METHODS` (the command
+    With ``methods = ("default",)``: ``("default", n)`` with n a multiple of
+    64 in [64, MAX_N]. With :data:`PLANNED_METHODS` (scenes, the command
     line's and the library's ``tolerance``): of the methods whose measured
     error model (:func:`predicted_method_error`) meets tolerance / safety at
     some n, the one of least :func:`relative_cost` (the extrapolated method
@@ -159,12 +161,15 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
                 options.append((relative_cost(method, n), method, n))
         if options:
             return min(options)[1:]
-        worst = max(stick_ratios, key=lambda c: predicted_method_error(
-            "extrapolated", geometry.indenter.name, c, 256))
-        raise ValueError(f"tolerance {tol:g} is beyond every method at c/a = {worst:g}: the "
-                         "default method's n^-2 error needs more than n = "
-                         f"{MAX_N} and the extrapolated method's quadrature noise (from the "
-                         "smallest elements) stays above it")
+        name = geometry.indenter.name
+        worst = max(stick_ratios, key=lambda c: predicted_error(name, c, 256))
+        need = 64 * math.ceil(256.0 * math.sqrt(SAFETY * predicted_error(name, worst, 256)
+                                                / tol) / 64)
+        raise ValueError(f"tolerance {tol:g} is beyond every method: the default method "
+                         f"would need about n = {need} at c/a = {worst:g}, beyond the "
+                         f"largest supported n = {MAX_N}, and the extrapolated method's "
+                         "quadrature noise (from the smallest elements) stays above it at "
+                         "some requested c/a")
     worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
     e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:

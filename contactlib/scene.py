@@ -282,7 +282,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                     break
     bad.raise_any()
     if tolerance is not None:
-        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind), ratios, tolerance)
+        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind), ratios, tolerance,
+                                  methods=accuracy.PLANNED_METHODS)
     return Scene(name=name, geometry=geometry, nu=nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),

@@ -178,7 +178,7 @@ def test_plan_picks_the_cheapest_method_that_meets_the_tolerance():
             "extrapolated", 256)
         assert accuracy.plan(model, [0.5], 1e-2, methods=accuracy.PLANNED_METHODS)[0] == \
             "default"
-        # the default method alone (scenes) still plans by its n^-2 model
+        # the default method alone still plans by its n^-2 model
         method, n = accuracy.plan(model, ratios, 1e-5)
         assert method == "default" and n > 256
         with pytest.raises(ValueError, match="beyond every method"):

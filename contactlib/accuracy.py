@@ -5,7 +5,9 @@ k instead of a resolution. Two steps:
 
 1. **Plan** (:func:`plan`, before anything is solved): the cheapest method
    and n that the *measured* convergence says will meet the tolerance at
-   every requested stick ratio. The measurements are the convergence study
+   every requested stick ratio (the default method, or the extrapolated one
+   of :mod:`contactlib.extrapolated_method` with its own error model,
+   :func:`predicted_method_error`). The measurements are the convergence study
    (``snakemake convergence``, :mod:`contactlib.convergence`): the default
    method's k error at n = 256 against Richardson extrapolation, over c/a
    from 0.02 to 0.98 (:data:`ERROR_AT_256`), falling like n^-2 (observed
@@ -38,7 +40,8 @@ from .model import Contact
 
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
            "plan", "estimate", "solve_to_tolerance",
-           "resolving_n", "DEFAULT_MAX_ERROR"]
+           "resolving_n", "DEFAULT_MAX_ERROR", "EXTRAPOLATED_ERROR_AT_256", "RELATIVE_COST",
+           "PLANNED_METHODS", "predicted_method_error", "relative_cost"]
 
 MAX_N = validate.MAX_N
 MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
@@ -60,6 +63,59 @@ ERROR_AT_256 = {
 }
 
 
+# Relative k error of the extrapolated method at n = 256, the largest over nu = 0, 0.3, 0.45
+# and both geometries at each c/a: against tests/data/frontier_reference.json at 0.1 ... 0.9
+# (6.0e-7 at most), against n = 512 at 0.02, 0.05, 0.95, 0.98; falling like n^-3 (6.0e-7 ->
+# 7.7e-8 from n = 256 to 512), plus the quadrature noise of the mesh's smallest elements
+# (extrapolated_method.quadrature_noise), which grows with n. Columns: _X_TABLE.
+_X_TABLE = np.array([0.02, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95, 0.98])
+EXTRAPOLATED_ERROR_AT_256 = np.array([1.5e-7, 1.6e-7, 2.1e-7, 4.0e-7, 6.1e-7, 6.0e-7, 3.3e-7,
+                                      2.6e-7, 2.4e-7])
+PLANNED_METHODS = ("default", "extrapolated")
+# Time a case costs relative to the default method's at the same n, in a sweep
+# (benchmarks/bench_frontier.py: 1.2 ... 1.6 at n = 256, solver stage)
+RELATIVE_COST = {"default": 1.0, "extrapolated": 1.5}
+# The plan aims at tolerance / safety: the default method's table is interpolated from the
+# study's medians (SAFETY), the extrapolated method's constant is the largest error measured
+# over 30 cases (1.5 is enough: 6.5e-7 x 1.5 < 1e-6)
+PLAN_SAFETY = {"default": SAFETY, "extrapolated": 1.5}
+
+
+def predicted_method_error(method: str, geometry: str, stick_ratio: float, n: int) -> float:
+    """Measured-model relative k error of ``method`` (``"default"`` or ``"extrapolated"``)."""
+    if method == "default":
+        return predicted_error(geometry, stick_ratio, n)
+    c = float(stick_ratio)
+    if c <= 0.0 or c >= 1.0:
+        return 0.0
+    from .elements import graded_mesh
+    from .extrapolated_method import quadrature_noise
+
+    at256 = float(np.interp(c, _X_TABLE, EXTRAPOLATED_ERROR_AT_256))
+    return float(at256 * (256.0 / n) ** 3 + quadrature_noise(graded_mesh(n, c)))
+
+
+def relative_cost(method: str, n: int) -> float:
+    """Time of one case, in units of the default method's at n = 256: ~n^2 (kernels) up to
+    n = 1024, the dense LU's n^3 beyond."""
+    scale = (n / 256.0) ** 2 * max(1.0, n / 1024.0)
+    return RELATIVE_COST[method] * scale
+
+
+def _cheapest_n(method: str, geometry: str, stick_ratios: Sequence[float],
+                tolerance: float) -> int | None:
+    """The smallest admissible n whose predicted error is within tolerance / safety."""
+    step = validate.EXTRAPOLATED_N_MULTIPLE if method == "extrapolated" else 64
+    inside = [float(c) for c in stick_ratios if 0.0 < float(c) < 1.0]
+    if method == "extrapolated" and inside:  # the noise is largest at the extreme c/a, the
+        stick_ratios = {min(inside), max(inside)}  # rest of the model is the same for all
+    for n in range(max(step, MIN_N), MAX_N + 1, step):
+        if all(predicted_method_error(method, geometry, c, n) <= tolerance / PLAN_SAFETY[method]
+               for c in stick_ratios):
+            return n
+    return None
+
+
 def check_tolerance(value: object) -> float:
     """A relative tolerance on k, in [MIN_TOLERANCE, MAX_TOLERANCE] (:func:`validate.tolerance`)."""
     return validate.tolerance(value)
@@ -79,10 +135,16 @@ def predicted_error(geometry: str, stick_ratio: float, n: int) -> float:
     return float(at256 * (256.0 / n) ** 2)
 
 
-def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float) -> tuple[str, int]:
+def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
+         methods: Sequence[str] = ("default",)) -> tuple[str, int]:
     """The cheapest (method, n) predicted to meet ``tolerance`` at every stick ratio.
 
-    Returns ``("default", n)`` with n a multiple of 64 in [64, MAX_N].
+    With ``methods = ("default",)``: ``("default", n)`` with n a multiple of
+    64 in [64, MAX_N]. With :data:`PLANNED_METHODS` (scenes, the command
+    line's and the library's ``tolerance``): of the methods whose measured
+    error model (:func:`predicted_method_error`) meets tolerance / safety at
+    some n, the one of least :func:`relative_cost` (the extrapolated method
+    from about 1e-5 down: 1e-6 costs it n = 256, the default n = 2048).
 
     Raises
     ------
@@ -91,6 +153,23 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float) -> 
         worst stick ratio and the n it would need).
     """
     tol = check_tolerance(tolerance)
+    if tuple(methods) != ("default",):
+        options = []
+        for method in methods:
+            n = _cheapest_n(method, geometry.indenter.name, stick_ratios, tol)
+            if n is not None:
+                options.append((relative_cost(method, n), method, n))
+        if options:
+            return min(options)[1:]
+        name = geometry.indenter.name
+        worst = max(stick_ratios, key=lambda c: predicted_error(name, c, 256))
+        need = 64 * math.ceil(256.0 * math.sqrt(SAFETY * predicted_error(name, worst, 256)
+                                                / tol) / 64)
+        raise ValueError(f"tolerance {tol:g} is beyond every method: the default method "
+                         f"would need about n = {need} at c/a = {worst:g}, beyond the "
+                         f"largest supported n = {MAX_N}, and the extrapolated method's "
+                         "quadrature noise (from the smallest elements) stays above it at "
+                         "some requested c/a")
     worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
     e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:

@@ -23,6 +23,8 @@ from .operators import StickBlocks
 from .result import CaseRecord, Solution
 from .threads import blas_single_threaded
 
+PAPER_METHODS = ("paper", "paper-literal")  # c/a restricted to multiples of 1/n
+
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
            "output_grid"]
 
@@ -58,7 +60,7 @@ def _finish(geom: Geometry, d: SelfSimilarSolution, method: str, n: int,
             max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
     rec = stages.case_record(geom, d, samples=True)
-    rec = stages.estimate_case(geom, method, n, rec, max_error=max_error)
+    rec = stages.estimate_case(geom, method, n, rec, max_error=max_error, solution=d)
     return _from_record(geom, rec, method, n, want_energy, message)
 
 
@@ -122,13 +124,71 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     return c, d
 
 
+def _check_planned(tolerance, n, method) -> float | None:
+    """The checked tolerance (None when not given); it excludes n and method."""
+    if tolerance is None:
+        return None
+    tol = validate.planned_tolerance(tolerance)
+    if n is not None or method != "default":
+        raise validate.InputError("tolerance", "given without n and method (the plan picks "
+                                  "them)", tolerance)
+    return tol
+
+
+def _planned_sweep(geom: Geometry, ratios: Sequence[float], tolerance: float, energy: bool,
+                   progress: Callable[[int, int], None] | None = None) -> list[Solution]:
+    """Cases solved with the planned method and n, refined to the tolerance."""
+    from . import accuracy
+
+    try:
+        method, n = accuracy.plan(geom, ratios, tolerance, methods=accuracy.PLANNED_METHODS)
+    except ValueError as exc:
+        raise validate.InputError("tolerance", "met by a supported method and n", tolerance,
+                                  str(exc)) from None
+    out = []
+    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True,
+                                              tolerance=tolerance, max_error=tolerance)):
+        used = int(rec.elements) if rec.elements is not None else n
+        out.append(_from_record(geom, rec, method, used, energy))
+        if progress is not None:
+            progress(i + 1, len(ratios))
+    return out
+
+
+def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
+                               rtol: float = 1e-11) -> tuple[float, DiscreteSolution]:
+    """Stick ratio whose extrapolated k is ``friction``: the default method's c at n, then
+    secant steps on the extrapolated k(c) (smooth and increasing; two or three steps)."""
+    from .extrapolated_method import solve_extrapolated
+
+    c0, d0 = stick_ratio_for_friction(geometry, friction, n)
+    blocks = StickBlocks()
+
+    def at(c: float):
+        return solve_extrapolated(geometry, c, n, k_guess=d0.k, cache=blocks, work=False)
+
+    c1 = c0 + 1e-4 * min(c0, 1.0 - c0)
+    s0, s1 = at(c0), at(c1)
+    for _ in range(8):
+        if not (s0.converged and s1.converged) or s1.k == s0.k:
+            break
+        c2 = c1 - (s1.k - friction) * (c1 - c0) / (s1.k - s0.k)
+        c2 = min(max(c2, 0.5 * c1), c1 + 0.5 * (1.0 - c1))  # stay inside (0, 1)
+        c0, s0, c1 = c1, s1, c2
+        s1 = at(c1)
+        if abs(s1.k / friction - 1.0) <= rtol:
+            break
+    return c1, s1
+
+
 # ----------------------------------------------------------------------------- public API
 @blas_single_threaded
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
-          max_error: float = validate.DEFAULT_MAX_ERROR, base: str = "smooth") -> Solution:
+          max_error: float = validate.DEFAULT_MAX_ERROR, base: str = "smooth",
+          tolerance: float | None = None) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -144,8 +204,13 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         Friction coefficient k >= 0 (``inf`` for full adhesion).
     n : int, optional
         Number of elements (default 256 for ``"default"``, 16 for the paper).
-    method : {"default", "paper", "paper-literal"}
+    method : {"default", "paper", "paper-literal", "extrapolated"}
         ``"paper"``: the printed scheme (c/a restricted to m/n).
+        ``"extrapolated"``: the default discretization at n/8, n/4, n/2 and
+        n on nested meshes, k and the load extrapolated in n (orders 2, 3,
+        4; k to about 1e-6 at its default n = 256; n a multiple of 128;
+        with ``friction``, the c/a whose extrapolated k it is). See
+        docs/accuracy.md.
     slab_ratio : float
         a/h of an elastic layer of thickness h on a rigid base; 0 (default)
         is the half-space or half-plane. At most
@@ -169,6 +234,16 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     base : {"smooth", "bonded"}
         The layer's rigid base: frictionless (default, the paper's slab) or
         bonded; irrelevant at ``slab_ratio = 0``.
+    tolerance : float, optional
+        A relative error of k to reach instead of a resolution, in
+        [1e-7, 0.1] (:func:`contactlib.validate.planned_tolerance`): the
+        method and n are planned (:func:`contactlib.accuracy.plan` over the
+        default and the extrapolated method, the cheapest whose measured
+        error model meets it; give neither ``n`` nor ``method``), n is
+        doubled where the case's own estimate falls short, and ``max_error``
+        becomes the tolerance. Refused, naming ``tolerance``, where no method
+        is predicted to meet it (e.g. 1e-6 at c/a = 0.9999); with
+        stick_ratio, not friction.
 
     Returns
     -------
@@ -196,6 +271,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     >>> round(sol.stick_ratio, 3), bool(sol.consistent)
     (0.5, True)
     """
+    planned = _check_planned(tolerance, n, method)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu, base)
     energy = validate.flag("energy", energy)
@@ -205,12 +281,17 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                                   "give exactly one of stick_ratio and friction")
     if stick_ratio is not None:
         c = validate.stick_ratio(stick_ratio)
-        if method != "default":
+        if planned is not None:
+            return _planned_sweep(geom, [c], planned, energy)[0]
+        if method in PAPER_METHODS:
             validate.paper_multiple(c, n)  # before solving
         rec = stages.solve_cases(geom, method, n, [c], max_error=max_error)[0]
         return _from_record(geom, rec, method, n, energy)
 
     k = validate.friction(friction)
+    if planned is not None:
+        raise validate.InputError("tolerance", "given with stick_ratio (not friction)",
+                                  tolerance)
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
@@ -227,6 +308,9 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         return sol
     if method == "default":
         c, d = stick_ratio_for_friction(geom, k, n)
+        return _finish(geom, d, method, n, energy, max_error=max_error)
+    if method == "extrapolated":
+        c, d = _extrapolated_for_friction(geom, k, n)
         return _finish(geom, d, method, n, energy, max_error=max_error)
     # paper method: c/a only at m/n; pick the m/n whose k is nearest
     table = [_discrete(geom, m / n, n, method) for m in range(0, n)]
@@ -247,7 +331,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
           max_error: float = validate.DEFAULT_MAX_ERROR,
-          base: str = "smooth") -> list[Solution]:
+          base: str = "smooth", tolerance: float | None = None) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -262,6 +346,9 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ----------
     geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error, base
         As for :func:`solve`.
+    tolerance : float, optional
+        As for :func:`solve`: planned over all the stick ratios (a list, not
+        ``"all"``).
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
         ``"all"`` is m/n for m = 1 ... n-1.
@@ -284,13 +371,19 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ...  for s in sols]
     ['1.000', '1.000']
     """
+    planned = _check_planned(tolerance, n, method)
+    if planned is not None and isinstance(stick_ratios, str):
+        raise validate.InputError("stick_ratios", "a list of stick ratios with a tolerance "
+                                  "('all' means m/n and needs a given n)", stick_ratios)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu, base)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     ratios = validate.stick_ratios(stick_ratios, n)
-    if method != "default":
+    if planned is not None:
+        return _planned_sweep(geom, ratios, planned, energy, progress)
+    if method in PAPER_METHODS:
         for c in ratios:
             validate.paper_multiple(c, n, "stick_ratios")  # all before solving any
     out = []

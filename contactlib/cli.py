@@ -115,6 +115,11 @@ def parse_max_error(text: str) -> float:
     return _check(validate.max_error, text, _float(text))
 
 
+def parse_tolerance(text: str) -> float:
+    """A relative error of k to reach, in [1e-7, 0.1] (:func:`validate.planned_tolerance`)."""
+    return _check(validate.planned_tolerance, text, _float(text))
+
+
 def parse_fraction(option: str, text: str) -> float:
     """A stick ratio c/a in [0, 1] (``option``: ``--stick-ratio``)."""
     return _check(validate.stick_ratio, text, _float(text), option.lstrip("-").replace("-", "_"))
@@ -200,7 +205,9 @@ class _Parser(argparse.ArgumentParser):
 
 _OUTPUT_HELP = ("write the netCDF dataset here (checked before any computing; missing "
                 "parent folders are created; an existing file is replaced)")
-_METHOD_HELP = ("discretization: 'default' (ours), 'paper' (the paper's scheme as printed, "
+_METHOD_HELP = ("discretization: 'default' (ours), 'extrapolated' (ours on the nested "
+                "meshes n/8 ... n, k extrapolated in n: about 1e-6 at n = 256; n a multiple "
+                "of 128), 'paper' (the paper's scheme as printed, "
                 "Coulomb's law on each ring's resultant) or 'paper-literal' (the printed "
                 "q_i = k p_i); default: %(default)s")
 
@@ -251,6 +258,13 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                      help="accuracy a case must reach, as relative error of k in (0, 1): a "
                           "case whose error estimate exceeds it is reported as not resolved; "
                           "default: %(default)s")
+    sub.add_argument("--tolerance", metavar="T", default=None,
+                     help="relative error of k to reach instead of --n/--method, in "
+                          "[1e-7, 0.1]: the cheapest method and n predicted to meet it are "
+                          "planned (the extrapolated method from about 1e-5 down), n is "
+                          "doubled where a case's estimate falls short, and --max-error "
+                          "becomes T; refused where no method is predicted to meet it "
+                          "(e.g. 1e-6 at c/a = 0.9999); with --stick-ratio(s) only")
     sub.add_argument("--no-energy", action="store_true",
                      help="skip the frictional-work integration "
                           "(frictional_work is NaN)")
@@ -367,6 +381,11 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         "energy": not args.no_energy,
         "max_error": parse_max_error(args.max_error),
     }
+    if args.tolerance is not None:
+        kwargs["tolerance"] = parse_tolerance(args.tolerance)
+        if args.n is not None or args.method != "default":
+            raise UsageError("--tolerance must be given without --n and --method (the plan "
+                             f"picks them), got --tolerance {args.tolerance!r} with them")
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # the rigid default is the library's: keywords only when elastic
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
@@ -474,6 +493,13 @@ def _g(value: float, digits: int = 6) -> str:
     return "inf" if math.isinf(value) else f"{value:.{digits}g}"
 
 
+def _k_digits(error: float) -> int:
+    """Significant digits of k worth printing: 6, more where its error estimate is smaller."""
+    if not (math.isfinite(error) and error > 0.0):
+        return 6
+    return int(min(12, max(6, math.ceil(-math.log10(error)) + 1)))
+
+
 def _indenter(geometry: str) -> Any:
     from contactlib.indenter import indenter
 
@@ -496,7 +522,8 @@ def format_summary(sol: Solution) -> str:
     lines = [
         _head(sol),
         f"  c/a    = {_g(sol.stick_ratio)}",
-        f"  k      = {_g(sol.friction_coefficient)}   (estimated relative error "
+        f"  k      = {_g(sol.friction_coefficient, _k_digits(sol.error_estimate))}   "
+        "(estimated relative error "
         f"{sol.error_estimate:.1e}; resolved: {_yes(sol.resolved)}, max error "
         f"{sol.max_error:g})",
         f"  P/P_H  = {_g(sol.load_ratio)}",

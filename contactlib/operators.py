@@ -55,7 +55,7 @@ if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "StickBlocks", "smooth_integrals"]
+           "StickBlocks", "smooth_integrals", "restrict_nested"]
 
 PARTS = ("normal", "shear")
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
@@ -241,3 +241,23 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
     g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])
     g[:, m + 1:, :] = element_integrals(kernel, nodes[m + 1:], nodes)
     return apply_difference(g, nodes)
+
+
+def restrict_nested(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
+    """A nodal operator of the nested mesh with every other node, from the fine one.
+
+    The coarse hat functions are piecewise linear on the fine mesh (1 at their
+    node, linear interpolation at the fine nodes between), so their columns
+    are exact combinations of the fine columns; the coarse nodes are the even
+    fine nodes and the coarse element midpoints... are not the odd ones on a
+    graded mesh, so the odd rows (``at_odd``) are the operator at the odd
+    fine nodes. Returns ``(at_nodes, at_odd)``; no kernel is evaluated.
+    """
+    x = fine.nodes
+    out = op[:, :, ::2].copy()
+    left = (x[2::2] - x[1::2]) / (x[2::2] - x[:-1:2])  # weight of node 2j at 2j+1
+    odd = op[:, :, 1::2]
+    with np.errstate(invalid="ignore"):  # du/dx on a strip axis is NaN (see operators)
+        out[:, :, :-1] += odd * left
+        out[:, :, 1:] += odd * (1.0 - left)
+    return out[:, ::2, :], out[:, 1::2, :]

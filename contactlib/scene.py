@@ -76,7 +76,7 @@ class Scene:
     name : str
     geometry : {"sphere", "cylinder"}
     nu : float
-    method : {"default", "paper", "paper-literal"}
+    method : {"default", "paper", "paper-literal", "extrapolated"}
     n : int
         Elements across the half-contact.
     stick_ratios : tuple of float
@@ -143,7 +143,7 @@ class Scene:
             key += f"-{self.base}"
         if self._indenter_spec():
             key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
-        if self.method == "default":
+        if self.method in ("default", "extrapolated"):  # a mesh per stick ratio
             key += "-c" + _ratio_digest(self.solved_ratios)
         return key
 
@@ -287,14 +287,15 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     ratios = None
     if n is not None and "stick_ratios" in raw:
         ratios = bad.check("stick_ratios", validate.stick_ratios, raw["stick_ratios"], n)
-        if ratios is not None and method != "default":
+        if ratios is not None and method in ("paper", "paper-literal"):
             for c in ratios:
                 if bad.check("stick_ratios", validate.paper_multiple, c, n,
                              "stick_ratios") is None:
                     break
     bad.raise_any()
     if tolerance is not None:
-        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind, base), ratios, tolerance)
+        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind, base), ratios, tolerance,
+                                  methods=accuracy.PLANNED_METHODS)
     return Scene(name=name, geometry=geometry, nu=nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),

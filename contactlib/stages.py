@@ -33,12 +33,13 @@ import numpy as np
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
-from .operators import StickBlocks
+from .operators import StickBlocks, restrict_nested
 from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import CaseRecord, Solution
 from .accuracy import MAX_N, estimate, resolving_n
+from . import extrapolated_method
 
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases",
            "check_case", "work_case", "profiles", "to_solution", "decoupled_message", "solve_one",
@@ -54,6 +55,7 @@ PARTS = ("normal", "shear")
 # nu = 0.3: k jumps by 2.3e-4 from n = 256 (9e-9 a) to 512 (2.3e-9 a)) have different floors.
 QUADRATURE_FLOOR_H = {"stick": 5e-11, "annulus": 5e-9}
 OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
+NODAL_METHODS = ("default", "extrapolated")  # nodal tractions on the graded mesh at c
 
 
 def decoupled_message(geometry: Contact | None = None) -> str:
@@ -110,7 +112,7 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     """
     if part not in PARTS:
         raise ValueError(f"part must be one of {', '.join(PARTS)}, got {part!r}")
-    if method == "default":
+    if method in NODAL_METHODS:
         cs = np.unique([_solved_ratio(geometry, c) for c in stick_ratios])
         meshes = [graded_mesh(n, c) for c in cs]
         sizes = np.array([mesh.n for mesh in meshes])
@@ -137,7 +139,7 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
     """The operator of one case from an influence set (None when not given)."""
     if table is None:
         return None
-    if method != "default":
+    if method not in NODAL_METHODS:
         if not np.array_equal(table["nodes"], nodes):
             raise ValueError("influence matrices were built for another mesh")
         return table["ops"]
@@ -151,19 +153,25 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
 # ----------------------------------------------------------------------------- solve
 def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
               k_guess: float | None = None, ops: tuple | None = None,
-              cache: StickBlocks | None = None):
+              cache: StickBlocks | None = None, level_offsets: tuple | None = None):
     """One stick ratio with the chosen method, no post-processing (a discrete solution).
 
     ``normal``/``shear`` are influence sets from :func:`influence` (or None:
     computed on the fly); ``ops`` the default method's operators on its mesh;
-    ``cache`` the caller's store of stick blocks.
+    ``cache`` the caller's store of stick blocks; ``level_offsets`` the
+    extrapolated method's coarse-level starts from a neighbouring case.
     """
-    if method == "default":
+    if method in NODAL_METHODS:
         if ops is None:
             mesh = graded_mesh(n, c, store=_meshes(cache))
             pw = _lookup(normal, method, c, mesh.nodes)
             qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
             ops = None if pw is None else (pw, qw)
+        if method == "extrapolated":  # the caller's samples give the finest level's work
+            return extrapolated_method.solve_extrapolated(geometry, c, n, ops=ops,
+                                                          k_guess=k_guess, cache=cache,
+                                                          work=False,
+                                                          level_offsets=level_offsets)
         return solve_default(geometry, c, n, ops=ops, k_guess=k_guess, cache=cache)
     m = validate.paper_multiple(c, n)
     r = uniform_mesh(n, m).nodes
@@ -286,11 +294,13 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
     ``max_error``.
     """
     known: list[tuple[float, float]] = []  # (c, k / k_uncoupled) of converged cases
+    offsets = None  # the extrapolated method's coarse levels, from the last case
     cache = StickBlocks()  # this sweep's store of stick blocks (see nodal_operator_part)
     for c in stick_ratios:
         c = float(c)
         solved = _solved_ratio(geometry, c)
-        guess = _continuation_guess(geometry, solved, known) if method == "default" else None
+        guess = (_continuation_guess(geometry, solved, known) if method in NODAL_METHODS
+                 else None)
         coarse: dict[int, DiscreteSolution] = {}
         ops = None
         if estimate and method == "default" and tolerance is None and 0.0 < solved < 1.0:
@@ -301,8 +311,10 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                 guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
                 if quarter is not None and quarter.converged:
                     guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
-        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops, cache=cache)
-        if method == "default" and not d.converged and guess is not None and 0.0 < solved < 1.0:
+        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops, cache=cache,
+                      level_offsets=offsets)
+        if (method in NODAL_METHODS and not d.converged and guess is not None
+                and 0.0 < solved < 1.0):
             # the continuation guess extrapolates k/k_uncoupled in c/a and can land
             # outside Newton's basin (nu = 0, c/a = 0.01 after 1e-8, 1e-6, 1e-4): start
             # again from the nested n/2 solution, or from the solver's own warm start
@@ -310,12 +322,15 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
             retry = half.k if half is not None and half.converged else None
             d = solve_one(geometry, method, n, solved, normal, shear, retry, ops=ops,
                           cache=cache)
-        if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
+        if method in NODAL_METHODS and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
+            offsets = getattr(d, "level_offsets", None) or None
         extra, note = {}, ""
         if tolerance is not None:
             d, extra, note = _to_tolerance(geometry, method, n, solved, d, tolerance, cache)
         rec = case_record(geometry, d, samples)
+        if isinstance(d, extrapolated_method.ExtrapolatedSolution):
+            extra = {**_extrapolated_estimates(geometry, d, rec, samples), **extra}
         if note:
             extra["message"] = "; ".join(x for x in (rec.message, note) if x)
         if solved != c:  # nu = 0.5: Hertz for every stick ratio, k undetermined
@@ -329,13 +344,17 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
 
 
 def estimate_case(geometry: Contact, method: str, n: int, rec: CaseRecord, *,
-                  samples: bool = True,
-                  max_error: float = validate.DEFAULT_MAX_ERROR) -> CaseRecord:
+                  samples: bool = True, max_error: float = validate.DEFAULT_MAX_ERROR,
+                  solution: SelfSimilarSolution | None = None) -> CaseRecord:
     """The error estimates and ``resolved`` of a case record solved outside :func:`iter_cases`.
 
     Used for the inverse problem (k given): the nested coarse solves are made
-    at the record's stick ratio. Returns a new record (records are frozen).
+    at the record's stick ratio; an extrapolated ``solution`` brings its own
+    estimates (and load). Returns a new record (records are frozen).
     """
+    if isinstance(solution, extrapolated_method.ExtrapolatedSolution):
+        rec = dataclasses.replace(rec, **_extrapolated_estimates(geometry, solution, rec,
+                                                                 samples))
     c = _solved_ratio(geometry, float(rec.stick_ratio))
     cache = StickBlocks()
     coarse = (_coarse_solves(geometry, n, c, float(rec.k), cache=cache)
@@ -357,22 +376,8 @@ def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
 
 
 def _restrict(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
-    """A nodal operator of the nested mesh with every other node, from the fine one.
-
-    The coarse hat functions are piecewise linear on the fine mesh (1 at their
-    node, linear interpolation at the fine nodes between), so their columns
-    are exact combinations of the fine columns; the coarse nodes are the even
-    fine nodes and the coarse element midpoints... are not the odd ones on a
-    graded mesh, so the odd rows (``at_odd``) are the operator at the odd
-    fine nodes. Returns ``(at_nodes, at_odd)``; no kernel is evaluated.
-    """
-    x = fine.nodes
-    out = op[:, :, ::2].copy()
-    left = (x[2::2] - x[1::2]) / (x[2::2] - x[:-1:2])  # weight of node 2j at 2j+1
-    odd = op[:, :, 1::2]
-    out[:, :, :-1] += odd * left
-    out[:, :, 1:] += odd * (1.0 - left)
-    return out[:, ::2, :], out[:, 1::2, :]
+    """:func:`contactlib.operators.restrict_nested` (kept under its old name)."""
+    return restrict_nested(op, fine)
 
 
 def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
@@ -408,6 +413,16 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
         out[m] = d
         if d.converged and d.k > 0.0:
             guess = d.k
+    return out
+
+
+def _extrapolated_estimates(geometry: Contact, d, rec: CaseRecord,
+                            samples: bool) -> dict[str, float]:
+    """The extrapolated method's load and estimates; its work estimate from the levels."""
+    out = d.estimates()
+    if samples and rec.slip_x is not None and rec.slip_x.size and len(d.level_work) == len(d.levels) - 1:
+        out["work_error_estimate"] = extrapolated_method.work_error(
+            tuple(d.level_work) + (_record_work(geometry, rec),))
     return out
 
 
@@ -453,9 +468,11 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     out: dict[str, Any] = {}  # the fields this adds (the record is frozen)
     notes = []
     limit = False  # below the quadrature floor: refining does not help
-    if rec.elements is not None:  # a tolerance scene estimated k itself
-        pass
-    elif method != "default":
+    if rec.elements is not None or method == "extrapolated":
+        # a tolerance scene estimated k itself, or the extrapolated method did
+        if method == "extrapolated":
+            limit = _below_floor(rec, solved, notes)
+    elif method not in NODAL_METHODS:
         ref = solve_default(geometry, solved, 64, cache=cache)
         k_ref, load_ref = ref.k, ref.load()
         if 0.0 < c < 1.0 and np.isfinite(rec.k) and k_ref > 0.0:
@@ -497,15 +514,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
                                                    + [_record_work(geometry, rec)])
         elif samples:  # no slip (full adhesion) or no shear (frictionless): no work
             out["work_error_estimate"] = 0.0
-        h_min = float(np.min(np.diff(np.asarray(rec.nodes, dtype=float))))
-        floor = QUADRATURE_FLOOR_H["stick" if solved < 0.5 else "annulus"]
-        limit = 0.0 < solved < 1.0 and h_min < floor
-        if limit:
-            notes.append(f"not resolved: the mesh needs elements of {h_min:.0e} a next to "
-                         f"c; below about {floor:g} a the kernels' quadrature "
-                         "error (about 1e-11) is amplified in the stick-edge condition, k is "
-                         "uncertain at the 1e-4 ... 1e-3 level and refining makes it worse, "
-                         "so no n resolves it (a limit of the method)")
+        limit = _below_floor(rec, solved, notes)
         # Newton stopped on the round-off floor: its iterates scatter by about the
         # last step, twice which is added to the discretization estimate
         out["error_estimate"] = float(out["error_estimate"]) + 2.0 * float(
@@ -515,15 +524,31 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     out["resolved"] = good
     out["max_error"] = float(max_error)
     if not good and bool(rec.converged) and np.isfinite(est) and est > max_error:
-        need = resolving_n(n, est, max_error) if method == "default" and not limit else None
+        need = (resolving_n(n, est, max_error) if method == "default" and not limit else
+                extrapolated_method.resolving_n(n, est, max_error, MAX_N)
+                if method == "extrapolated" and not limit else None)
         hint = (f"n = {need} should resolve it" if need is not None else
                 "no n resolves it" if limit else
-                f"no supported n (up to {MAX_N}) resolves it" if method == "default" else
+                f"no supported n (up to {MAX_N}) resolves it" if method in NODAL_METHODS else
                 "use the default method")
         notes.append(f"estimated k error {est:.1e} exceeds max_error {max_error:g}: {hint}")
     if notes:
         out["message"] = "; ".join(x for x in [rec.message] + notes if x)
     return dataclasses.replace(rec, **out)
+
+
+def _below_floor(rec: CaseRecord, solved: float, notes: list[str]) -> bool:
+    """Whether the mesh has elements below :data:`QUADRATURE_FLOOR_H` (then a note)."""
+    h_min = float(np.min(np.diff(np.asarray(rec.nodes, dtype=float))))
+    floor = QUADRATURE_FLOOR_H["stick" if solved < 0.5 else "annulus"]
+    limit = 0.0 < solved < 1.0 and h_min < floor
+    if limit:
+        notes.append(f"not resolved: the mesh needs elements of {h_min:.0e} a next to "
+                     f"c; below about {floor:g} a the kernels' quadrature "
+                     "error (about 1e-11) is amplified in the stick-edge condition, k is "
+                     "uncertain at the 1e-4 ... 1e-3 level and refining makes it worse, "
+                     "so no n resolves it (a limit of the method)")
+    return limit
 
 
 def _work(geometry: Contact, d: DiscreteSolution) -> float:
@@ -579,11 +604,22 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
     """
     from . import accuracy
 
-    if method != "default":
-        raise ValueError("a tolerance needs the default method (the paper's scheme does not "
-                         "converge to the physical k)")
+    if method not in NODAL_METHODS:
+        raise ValueError("a tolerance needs the default or the extrapolated method (the "
+                         "paper's scheme does not converge to the physical k)")
     if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact
         return d, {"elements": n, "error_estimate": 0.0}, ""
+    if method == "extrapolated":  # its own estimate; n doubled while it falls short
+        while d.error_estimate > tolerance and 2 * n <= MAX_N and d.converged:
+            finer = extrapolated_method.solve_extrapolated(geometry, c, 2 * n, k_guess=d.k,
+                                                           cache=cache, work=False)
+            if finer.error_estimate >= d.error_estimate:  # the quadrature noise grows
+                break
+            d, n = finer, 2 * n
+        msg = ("" if d.error_estimate <= tolerance else
+               f"tolerance {tolerance:g} not met: estimated k error {d.error_estimate:.2g} "
+               f"at n = {n}")
+        return d, {"elements": n, "error_estimate": float(d.error_estimate)}, msg
     sols = {n: d}
 
     def solve_k(m: int) -> float:
@@ -633,7 +669,7 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
     profile = profile or {}
     fl = flags or {}
     reversal = ""
-    if method == "default" and rec.converged and not fl.get("slip_direction_ok", True):
+    if method in NODAL_METHODS and rec.converged and not fl.get("slip_direction_ok", True):
         # (the paper's scheme is inconsistent on its own: no physical reading there)
         reversal = ("the slip runs along the shear somewhere in the slip zone: its direction "
                     "changes there, which one self-similar stick zone cannot hold; solve it "

@@ -99,7 +99,8 @@ def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
     c = np.atleast_1d(ds["stick_ratio"].values)
     k = np.atleast_1d(ds["friction_coefficient"].values)
     conv = np.atleast_1d(ds["converged"].values).astype(bool)
-    if "resolved" in ds and ds.attrs.get("method") == "default":  # not resolved: a failure
+    if "resolved" in ds and ds.attrs.get("method") in ("default", "extrapolated"):  # not
+        # resolved: a failure
         conv &= np.atleast_1d(ds["resolved"].values).astype(bool)
     order = np.argsort(c)
     if "consistent" in ds:

@@ -31,11 +31,13 @@ from typing import Any, Callable, Iterable
 
 __all__ = [
     "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
+    "EXTRAPOLATED_N_MULTIPLE",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
-    "MIN_TOLERANCE", "MAX_TOLERANCE", "indenter_modulus", "indenter_nu", "indenter_material",
+    "MIN_TOLERANCE", "MAX_TOLERANCE", "MIN_PLANNED_TOLERANCE", "planned_tolerance",
+    "indenter_modulus", "indenter_nu", "indenter_material",
     "indenter_mapping", "BASES", "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base",
 ]
 
@@ -43,8 +45,9 @@ __all__ = [
 GEOMETRIES: tuple[str, ...] = ("sphere", "cylinder")
 """Indenter shapes: a rigid sphere (rings) or a rigid cylinder (strips)."""
 
-METHODS: tuple[str, ...] = ("default", "paper", "paper-literal")
-"""Self-similar methods: ours, the paper's scheme, and the paper's scheme as printed."""
+METHODS: tuple[str, ...] = ("default", "paper", "paper-literal", "extrapolated")
+"""Self-similar methods: ours, the paper's scheme, the paper's scheme as printed, and ours
+on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
 
 BASES: tuple[str, ...] = ("smooth", "bonded")
 """Rigid bases under a layer: frictionless (the paper's slab) or bonded."""
@@ -64,11 +67,15 @@ so there a_max/h <= 20/1.2). Cylinder: where k at n = 256 is resolved to
 HISTORY_MESH_EXTENT = 1.2
 """The history solver's mesh length over a_max (``history_solver.MESH_EXTENT``)."""
 
-DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16}
+DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16,
+                             "extrapolated": 256}
 """Default number of elements across the half-contact, per method."""
 
 MIN_N_DEFAULT_METHOD = 16
 """Fewest elements the default method accepts (its mesh is in sixteenths)."""
+
+EXTRAPOLATED_N_MULTIPLE = 128
+"""The extrapolated method's n: a multiple of this (its n/8 level is nested in n)."""
 
 MAX_N = 4096
 """Most elements of a self-similar solve (about 3.3 GiB at n = 4096)."""
@@ -87,6 +94,11 @@ DEFAULT_MAX_ERROR = 1e-3
 MIN_TOLERANCE = 1e-8
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""
+
+MIN_PLANNED_TOLERANCE = 1e-7
+"""Smallest ``tolerance`` of solve/sweep (library and command line): the extrapolated
+method's measured floor (k to 7.7e-8 at n = 512, c/a = 0.1 ... 0.9; the kernels'
+quadrature noise grows beyond)."""
 
 
 class InputError(ValueError):
@@ -192,7 +204,7 @@ def geometry(value: Any) -> str:
 
 
 def method(value: Any) -> str:
-    """``"default"``, ``"paper"`` or ``"paper-literal"``."""
+    """``"default"``, ``"paper"``, ``"paper-literal"`` or ``"extrapolated"``."""
     return choice("method", value, METHODS)
 
 
@@ -321,6 +333,11 @@ def n(value: Any, method_name: str) -> int:
         return DEFAULT_N[method_name]
     lo = MIN_N_DEFAULT_METHOD if method_name == "default" else 2
     v = integer("n", value, 2, MAX_N)
+    if method_name == "extrapolated" and (v < EXTRAPOLATED_N_MULTIPLE
+                                          or v % EXTRAPOLATED_N_MULTIPLE):
+        raise InputError("n", f"a multiple of {EXTRAPOLATED_N_MULTIPLE} in "
+                         f"[{EXTRAPOLATED_N_MULTIPLE}, {MAX_N}] for the extrapolated method "
+                         "(n/8, n/4, n/2 nested in n)", value)
     if v < lo:
         raise InputError("n", f"an integer in [{lo}, {MAX_N}]", value,
                          f"n must be at least {lo} for the default method, got {value!r}")
@@ -367,6 +384,11 @@ def max_error(value: Any) -> float:
 def tolerance(value: Any) -> float:
     """A relative tolerance on k, in [MIN_TOLERANCE, MAX_TOLERANCE]."""
     return number("tolerance", value, MIN_TOLERANCE, MAX_TOLERANCE)
+
+
+def planned_tolerance(value: Any) -> float:
+    """The ``tolerance`` of solve/sweep: a relative error of k in [1e-7, 0.1]."""
+    return number("tolerance", value, MIN_PLANNED_TOLERANCE, MAX_TOLERANCE)
 
 
 # ----------------------------------------------------------------------------- viscoelastic body

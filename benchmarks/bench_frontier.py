@@ -1,0 +1,164 @@
+"""The accuracy frontier (issue 18): cost ratios of k to 1e-6, measured in one run.
+
+    python benchmarks/bench_frontier.py           # about 3-5 minutes
+    python benchmarks/bench_frontier.py --quick   # (a) only
+
+This machine is shared and noisy: every printed cost is a ratio of two times
+measured moments apart in the same process (the reference LU is timed again
+next to each measurement, the best of 3), with one BLAS thread.
+
+a. **k to 1e-6 in a sweep.** ``contactlib.sweep`` (the public API: solve,
+   flags, error estimates, profiles, work) over 12 stick ratios 0.02 ... 0.98
+   with ``method="extrapolated"`` at its default n = 256 (k error at most
+   6.0e-7 at c/a = 0.1 ... 0.9, nu = 0 ... 0.45, against
+   tests/data/frontier_reference.json), per case, in units of one dense LU of
+   1024 x 1024 (target: at most 2.5). Also the solver stage alone
+   (``stages.solve_cases``: case records with flags' samples and estimates,
+   no profiles); for comparison the default method at its n = 256 (k to
+   1e-5 ... 1.5e-4) and at the n its n^-2
+   error model needs for 1e-6 (one case, c/a = 0.5; the sweep costs that per
+   case at least).
+b. **Solve cost at n = 2048.** ``solve_default`` and ``solve_extrapolated`` at
+   c/a = 0.5 with their operators built inside, in units of one LU of the
+   partial-slip system's own size (target: at most 3), and with the
+   operators given (Newton alone).
+c. **The 1e-9 floor.** The peak memory of an extrapolated solve at n = 2048
+   (a child process, its maximum resident set) and what its own estimate
+   says: the kernels' quadrature noise (:func:`quadrature_noise`) bounds the
+   reachable accuracy.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")  # before numpy is imported
+
+import subprocess
+import sys
+import time
+
+import numpy as np
+from scipy import linalg
+
+import contactlib
+from contactlib import stages
+from contactlib.accuracy import predicted_error
+from contactlib.default_method import solve_default
+from contactlib.elements import graded_mesh
+from contactlib.extrapolated_method import quadrature_noise, solve_extrapolated
+from contactlib.model import contact
+from contactlib.operators import nodal_operator_part
+
+REPEAT = 3
+RATIOS = list(np.round(np.linspace(0.02, 0.98, 12), 4))
+
+
+def best(f, repeat: int = REPEAT) -> float:
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        f()
+        times.append(time.perf_counter() - t)
+    return min(times)
+
+
+def lu_time(size: int) -> float:
+    a = np.random.default_rng(0).random((size, size)) + size * np.eye(size)
+    return best(lambda: linalg.lu_factor(a, check_finite=False))
+
+
+def ratio(f, size: int, repeat: int = 1) -> tuple[float, float]:
+    """(time of f, that over one LU of ``size``), the LU timed before and after."""
+    lu0 = lu_time(size)
+    t = best(f, repeat)
+    lu = min(lu0, lu_time(size))
+    return t, t / lu
+
+
+def system_size(n: int, c: float) -> int:
+    mesh = graded_mesh(n, c)
+    return mesh.n + 1 + (mesh.stick_index - 1) + 1
+
+
+def part_a() -> None:
+    print("a. k to 1e-6 in a sweep: time per case / one dense LU of 1024 (target <= 2.5)")
+    for geometry in ("sphere", "cylinder"):
+        t, r = ratio(lambda: contactlib.sweep(geometry, 0.3, RATIOS, method="extrapolated"),
+                     1024)
+        print(f"   {geometry:8s} extrapolated n=256, contactlib.sweep: "
+              f"{t / len(RATIOS) * 1e3:6.1f} ms a case = {r / len(RATIOS):.2f} LU(1024)")
+        model = contact(geometry, 0.3)
+        for method in ("extrapolated", "default"):
+            t, r = ratio(lambda: stages.solve_cases(model, method, 256, RATIOS), 1024)
+            print(f"   {geometry:8s} {method} n=256, solver stage:{' ' * (16 - len(method))}"
+                  f"{t / len(RATIOS) * 1e3:6.1f} ms a case = {r / len(RATIOS):.2f} LU(1024)")
+        t, r = ratio(lambda: contactlib.sweep(geometry, 0.3, RATIOS), 1024)
+        print(f"   {geometry:8s} default n=256, contactlib.sweep:      "
+              f"{t / len(RATIOS) * 1e3:6.1f} ms a case = {r / len(RATIOS):.2f} LU(1024) "
+              "(its k error: 1e-5 ... 1.5e-4)")
+        # the default method at the n its error model needs for 1e-6 (worst of 0.1 ... 0.9)
+        e256 = max(predicted_error(geometry, c, 256) for c in (0.1, 0.3, 0.5, 0.7, 0.9))
+        n = int(64 * np.ceil(256 * np.sqrt(2 * e256 / 1e-6) / 64))
+        n = min(n, 2048)
+        t, r = ratio(lambda: stages.solve_cases(model, "default", n, [0.5]), 1024)
+        print(f"   {geometry:8s} default n={n} (its n^-2 model for 1e-6), one case: "
+              f"{t * 1e3:6.0f} ms = {r:.1f} LU(1024)")
+
+
+def part_b() -> None:
+    print("b. solve at n = 2048, c/a = 0.5, sphere nu = 0.3: time / one LU of its own size "
+          "(target <= 3)")
+    model = contact("sphere", 0.3)
+    n, c = 2048, 0.5
+    size = system_size(n, c)
+    mesh = graded_mesh(n, c)
+    t_ops, _ = ratio(lambda: (nodal_operator_part(model, mesh, "normal"),
+                              nodal_operator_part(model, mesh, "shear")), size)
+    ops = (nodal_operator_part(model, mesh, "normal"), nodal_operator_part(model, mesh, "shear"))
+    k = solve_default(model, c, n, ops=ops).k
+    for name, f in (("default, all", lambda: solve_default(model, c, n)),
+                    ("default, ops given", lambda: solve_default(model, c, n, ops=ops)),
+                    ("default, ops and k given", lambda: solve_default(model, c, n, ops=ops,
+                                                                       k_guess=k)),
+                    ("extrapolated, all", lambda: solve_extrapolated(model, c, n)),
+                    ("extrapolated, ops given", lambda: solve_extrapolated(model, c, n,
+                                                                           ops=ops))):
+        t, r = ratio(f, size)
+        print(f"   {name:26s} {t:6.2f} s = {r:5.2f} LU({size})")
+    print(f"   (building the operators alone: {t_ops:.2f} s)")
+
+
+CHILD = """
+import resource, sys
+from contactlib.extrapolated_method import solve_extrapolated
+from contactlib.model import contact
+s = solve_extrapolated(contact("sphere", 0.3), 0.5, int(sys.argv[1]))
+print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss, s.error_estimate)
+"""
+
+
+def part_c() -> None:
+    print("c. the 1e-9 floor: extrapolated solve, sphere nu = 0.3, c/a = 0.5")
+    for n in (1024, 2048):
+        out = subprocess.run([sys.executable, "-c", CHILD, str(n)], capture_output=True,
+                             text=True, check=True, env=dict(os.environ)).stdout.split()
+        rss_gib = int(out[0]) * 1024 / 2**30
+        noise = quadrature_noise(graded_mesh(n, 0.5))
+        print(f"   n={n}: peak memory {rss_gib:.2f} GiB, own estimate {float(out[1]):.1e} "
+              f"(of which quadrature noise {noise:.1e})")
+    print("   k to 1e-9 is not reachable: the kernels' quadrature noise (~1e-11 absolute, "
+          "amplified by the smallest elements) stays above it; see docs/accuracy.md")
+
+
+def main() -> None:
+    part_a()
+    if "--quick" in sys.argv:
+        return
+    part_b()
+    part_c()
+
+
+if __name__ == "__main__":
+    main()

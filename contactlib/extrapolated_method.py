@@ -1,0 +1,384 @@
+"""The extrapolated method: the default discretization on four nested meshes, extrapolated.
+
+Why
+---
+The default method's k error has a smooth expansion in the resolution n on
+its graded, nested meshes (measured before this method was designed; see
+docs/accuracy.md, "The extrapolated method"). With k(n) the default
+method's root,
+
+    k(n) = k + A n^-2 + B n^-3 + C n^-4 + ...,
+
+the n^-2 and n^-3 terms of comparable size and opposite sign up to n ~ 500
+(which is why the observed order of plain differences drifts from 0.7 to
+1.9 for n = 384 ... 2048). Solving at n/8, n/4, n/2 and n on nested meshes
+and eliminating the three terms (Richardson with the orders 2, 3, 4) gives
+k to at most 6.0e-7 at n = 256 and 7.7e-8 at n = 512 (30 cases, c/a = 0.1
+... 0.9, nu = 0 ... 0.45, both geometries, against
+``tests/data/frontier_reference.json``), where the default method's own
+n = 256 is 1e-5 ... 1.5e-4 off.
+
+Cost
+----
+Only the finest mesh's operators are computed from the kernels; those of
+n/2, n/4, n/8 are restricted from them exactly
+(:func:`~contactlib.operators.restrict_nested`), so the coarse solves cost
+small factorizations. The finest level starts Newton's method from the
+expansion fitted to the coarse roots (within 2e-6 ... 5e-6 of its own root),
+and one factorization with one step of extended-precision refinement
+suffices (the error after a refined Newton step is ~0.4 step^2; a second
+is taken only when the first exceeds :data:`ONE_STEP`). In a sweep the
+coarse levels start from the previous case's level offsets.
+
+Error estimate
+--------------
+``error_estimate`` is the last correction, |k_234 - k_23| / k, with k_23
+the three-level extrapolation of (n/4, n/2, n) and k_234 the reported
+value, plus a measured bound of the kernels' quadrature noise on the mesh
+(:func:`quadrature_noise`): the true error was 0.1 ... 1.6 times it at c/a
+= 1e-4 ... 0.99 (against the reference and the closed forms at
+nu = 0.49999), and 3.5 times it in one strongly coupled case (nu = -0.5,
+c/a = 0.98, k = 13.6). Where the highest-order term is not smaller than the
+n^-2 term at the finest level, the levels are outside the expansion's
+range: k is then the finest level's own root and the estimate the largest
+difference between levels. The load is extrapolated and estimated the same
+way; the frictional work is the finest level's, with the default method's
+three-level estimate.
+
+Units: E* = a = R = 1 (see :mod:`contactlib.default_method`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import energy, validate
+from .default_method import DiscreteSolution, assemble, newton_on_k, solve_default, start_k
+from .elements import Mesh, graded_mesh
+from .model import Contact
+from .operators import StickBlocks, nodal_operator_part, restrict_nested
+
+__all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
+           "ONE_STEP", "N_MULTIPLE", "resolving_n", "work_error",
+           "quadrature_noise", "NOISE", "NOISE_POWER"]
+
+ORDERS = (2.0, 3.0, 4.0)
+"""The orders of the default method's error expansion that are eliminated."""
+
+LEVELS = 4
+"""Nested meshes used: n/8, n/4, n/2, n."""
+
+N_MULTIPLE = validate.EXTRAPOLATED_N_MULTIPLE
+"""n must be a multiple of this (both zones' element counts divisible by 8: every level nested)."""
+
+ONE_STEP = 3e-5
+"""A first Newton step on the finest mesh below this (relative) is final: the error after a
+refined step is about 0.4 step^2 (measured: 1e-5 -> 2e-11 ... 2e-9, 1e-4 -> 1.2e-9 ...
+6.2e-9 at c/a = 0.1 ... 0.98, n = 256 and 512), under 4e-10 here."""
+
+# The kernels' quadrature error (about 1e-11), amplified by the smallest elements next to c,
+# puts noise into each level's k that no expansion in n describes. Measured against the
+# closed form at nu = 0.49999 (sharp there: the coupling correction is O(beta^2) ~ 4e-10)
+# and against the converged reference at c/a = 0.9: relative k noise up to
+# NOISE[side] * h_min^-1.5, h_min the smallest element (units of a) on the side that
+# holds it, "stick" for c/a < 1/2 (c/a = 1e-4 ... 1e-6: 4.5e-7 at h = 2.2e-9, 2.4e-5 at
+# 9e-11, 5.5e-5 at 2.2e-11) and "annulus" above (c/a = 0.99 ... 0.9999: 3e-7 at h =
+# 2.3e-7, 3.5e-5 at 9.3e-9, 6.8e-4 at 2.3e-9); each constant is the largest of its points.
+NOISE = {"stick": 4.6e-20, "annulus": 7.5e-17}
+NOISE_POWER = 1.5
+
+
+@dataclass(repr=False)
+class ExtrapolatedSolution(DiscreteSolution):
+    """The finest level's nodal solution, with k (and the load) extrapolated.
+
+    ``p`` and ``phi`` are those of the finest mesh (the profiles); ``k`` is
+    the extrapolated friction coefficient, ``k_fine`` the finest mesh's own
+    root. Units E* = a = R = 1.
+
+    Attributes
+    ----------
+    levels : tuple of int
+        n/8, n/4, n/2, n.
+    level_k, level_load, level_work : tuple of float
+        k, the load (units of :meth:`Contact.load`) and the frictional work
+        on each level (``level_work`` without the finest when the caller
+        completes it, see :func:`solve_extrapolated`).
+    level_offsets : tuple of float
+        k of each coarse level over the extrapolated k, minus 1.
+    k_fine : float
+        The finest level's own root.
+    extrapolated_load : float
+        The extrapolated load (what :meth:`load` returns).
+    error_estimate, load_error_estimate, work_error_estimate : float
+        Estimated relative errors of k, of the load and of the work.
+    """
+
+    levels: tuple = ()
+    level_k: tuple = ()
+    level_load: tuple = ()
+    level_work: tuple = ()
+    k_fine: float = math.nan
+    level_offsets: tuple = ()
+    extrapolated_load: float = math.nan
+    error_estimate: float = math.nan
+    load_error_estimate: float = math.nan
+    work_error_estimate: float = math.nan
+
+    def load(self) -> float:
+        """The extrapolated load (units of :meth:`Contact.load`)."""
+        return float(self.extrapolated_load)
+
+    def estimates(self) -> dict:
+        """The record entries this method sets (load, estimates)."""
+        return {"load": float(self.extrapolated_load), "error_estimate": float(self.error_estimate),
+                "load_error_estimate": float(self.load_error_estimate),
+                "work_error_estimate": float(self.work_error_estimate)}
+
+
+def extrapolate(values, orders=ORDERS) -> tuple[float, float]:
+    """(value, relative error estimate) from values on nested meshes ..., n/4, n/2, n.
+
+    Eliminates ``A n^-p`` for the first len(values) - 1 orders (Richardson).
+    The estimate is the last correction: the extrapolation of all levels
+    minus that of the finer len(values) - 1 levels without the highest
+    order, relative; where the highest-order term is not
+    smaller than the lowest at the finest level, the finest value and the
+    largest difference between levels instead (outside the expansion's range).
+    """
+    v = np.asarray(values, dtype=float)
+    if not np.all(np.isfinite(v)):
+        return math.nan, math.inf
+    h = 2.0 ** np.arange(v.size - 1, -1, -1)  # ..., n/4, n/2, n -> ..., 4, 2, 1 (units of 1/n)
+    orders = tuple(orders)[:v.size - 1]
+    full = np.linalg.solve(np.column_stack([np.ones(v.size)] + [h**p for p in orders]), v)
+    part = np.linalg.solve(np.column_stack([np.ones(v.size - 1)] + [h[1:] ** p for p in
+                                                                   orders[:-1]]), v[1:])
+    value = float(full[0])
+    scale = abs(value) if value != 0.0 else 1.0
+    if v.size > 2 and abs(full[-1]) >= abs(full[1]):  # h = 1: B vs A at the finest level
+        return float(v[-1]), float(np.max(np.abs(np.diff(v)))) / abs(v[-1] or 1.0)
+    return value, abs(value - float(part[0])) / scale
+
+
+def _predict(coarse_k, orders=ORDERS) -> float:
+    """k on the next finer level from the expansion fitted to the coarse levels."""
+    v = np.asarray(coarse_k, dtype=float)
+    h = 2.0 ** np.arange(v.size, 0, -1)  # ..., 4, 2 (units of the finest level's 1/n)
+    a = np.column_stack([np.ones(v.size)] + [h**p for p in orders[:v.size - 1]])
+    coef = np.linalg.solve(a, v)
+    return float(coef[0] + sum(coef[1:]))  # at h = 1
+
+
+def quadrature_noise(mesh: Mesh) -> float:
+    """Measured bound of the relative k noise from the kernels' quadrature on ``mesh``.
+
+    ``NOISE[side] * h_min^-1.5`` (see :data:`NOISE`): negligible (< 1e-9) at c/a =
+    0.02 ... 0.98 up to n = 512, the dominant error at c/a <= 1e-5 and >= 0.999.
+    """
+    c = float(mesh.nodes[mesh.stick_index])
+    h_min = float(np.min(np.diff(mesh.nodes)))
+    return NOISE["stick" if c < 0.5 else "annulus"] * h_min ** -NOISE_POWER
+
+
+def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | None:
+    """The n (a multiple of 64) that the n^-3 convergence says brings ``error`` to max_error/2."""
+    if not math.isfinite(error) or error <= 0.0:
+        return None
+    need = N_MULTIPLE * math.ceil(n * (2.0 * error / max_error) ** (1.0 / 3.0) / N_MULTIPLE)
+    return need if need <= max_n else None
+
+
+def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None):
+    if ops is not None:
+        return ops
+    return (nodal_operator_part(geometry, mesh, "normal", cache=cache),
+            nodal_operator_part(geometry, mesh, "shear", cache=cache))
+
+
+def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
+           k0: float, one_step: bool, refine: bool = True) -> DiscreteSolution:
+    """One level: Newton on k from k0, the last step with extended-precision refinement.
+
+    ``one_step``: k0 is within a few 1e-6 of the root (the finest level), and
+    one refined step is final when it moves k by at most :data:`ONE_STEP`.
+    Otherwise Newton runs plainly (refining only where it stagnates) and one
+    refined step follows (``refine``; without it the round-off of a coarse
+    level reached 2.7e-6 in k at nu = -0.5, c/a = 0.98, n = 256, k = 13.6). The ordinary case (a root with the slip against the
+    shear, converged) is finished here; anything else is handed to
+    :func:`solve_default` on the same operators, which says what went wrong.
+    """
+    system = assemble(geometry, mesh, pw, qw)
+    sigma = -1.0 if geometry.slip_sign < 0 else 1.0
+    k_start = sigma * k0
+    iterations = 0
+    if not one_step:
+        newton = newton_on_k(system, k_start, refine=False)
+        iterations = newton.iterations
+        if newton.converged:
+            k_start = newton.k
+    if one_step or (newton.converged and refine):
+        newton = newton_on_k(system, k_start, max_iter=1, refine=True)
+        if not newton.converged:
+            if abs(newton.k - k_start) <= ONE_STEP * abs(newton.k):
+                newton.converged = True
+            else:
+                newton = newton_on_k(system, newton.k, refine=True)
+        newton.iterations += iterations
+    k = newton.k
+    if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
+        return solve_default(geometry, c, n, ops=(pw, qw), k_guess=abs(k0))
+    nn, m = mesh.n, mesh.stick_index
+    x = newton.x
+    p = np.append(x[:nn], 0.0)
+    phi = np.zeros(nn + 1)
+    phi[1:m] = x[nn + 1:nn + m]
+    if not geometry.indenter.odd_shear:
+        phi[0] = phi[1]
+    phi[m:nn] = k * p[m:nn] / system.shape[m:nn]
+    with np.errstate(invalid="ignore"):  # see operators(): du/dx on a strip axis
+        nodal_u, nodal_du = pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi
+    if geometry.indenter.odd_shear:  # du/dx on the strip axis: unused (see operators)
+        nodal_du[0] = 0.0
+    return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(sigma * k), True,
+                            system.residual(x, k), newton.iterations, "", nodal_u, nodal_du,
+                            float(newton.stagnated))
+
+
+def _work(geometry: Contact, d: DiscreteSolution) -> float:
+    xs, ws, q, s = d.slip_samples()
+    return float(energy.frictional_work(xs, ws, q, s, geometry.work_factor,
+                                        geometry.work_weight_power))
+
+
+def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
+                       k_guess: float | None = None,
+                       ops: tuple[np.ndarray, np.ndarray] | None = None,
+                       cache: StickBlocks | None = None,
+                       work: bool = True,
+                       level_offsets: tuple[float, ...] | None = None,
+                       ) -> ExtrapolatedSolution | DiscreteSolution:
+    """Solve one stick ratio on the nested meshes n/4, n/2, n and extrapolate k and the load.
+
+    Parameters
+    ----------
+    geometry : Contact
+    stick_ratio : float
+        c/a; 0 and 1 (k exact) are the default method's single solve.
+    n : int
+        Finest resolution, a multiple of :data:`N_MULTIPLE`.
+    k_guess : float, optional
+        Newton's start on the coarsest mesh (default: the solver's warm start).
+    ops : (P, Q), optional
+        The finest mesh's nodal operators (``nodal_operator_part``).
+    cache : StickBlocks, optional
+        The caller's store of stick blocks.
+    level_offsets : tuple of float, optional
+        k of each coarse level relative to the extrapolated k, minus 1, from a
+        neighbouring case (``ExtrapolatedSolution.level_offsets``): with
+        ``k_guess`` each coarse Newton starts at ``k_guess (1 + offset)``
+        (a sweep's continuation: fewer iterations, the same roots).
+    work : bool
+        Also the frictional work on the finest level and its error estimate;
+        without, ``level_work`` holds the coarse levels' only (whose slip
+        samples come free from the restricted operators) and the caller
+        completes it (:func:`work_error`) from its own samples of the finest.
+
+    Returns
+    -------
+    ExtrapolatedSolution
+        Or, for c/a = 0 or 1, the default method's :class:`DiscreteSolution`.
+    """
+    c = float(stick_ratio)
+    if not 0.0 < c < 1.0:
+        return solve_default(geometry, c, n, ops=ops, cache=cache)
+    if n % N_MULTIPLE:
+        raise ValueError(f"n must be a multiple of {N_MULTIPLE}, got {n}")
+    fine = graded_mesh(n, c)
+    pw, qw = _fine_ops(geometry, fine, ops, cache)
+    meshes, opss, odds = [fine], [(pw, qw)], [None]
+    nested = True
+    for _ in range(LEVELS - 1):  # restrict level by level: n/2 from n, n/4 from n/2
+        mesh = meshes[-1]
+        if mesh.n % 2 == 0 and mesh.stick_index % 2 == 0:  # every other node: nested
+            sub = Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
+            (pc, po), (qc, qo) = (restrict_nested(o, mesh) for o in opss[-1])
+            odd = (mesh.nodes[1::2], po, qo)
+        else:  # a mesh scaled back to MAX_ELEMENTS: its own operators, not nested
+            nested = False
+            sub = graded_mesh(n // 2 ** len(meshes), c)
+            pc, qc = _fine_ops(geometry, sub, None, cache)
+            odd = None
+        meshes.append(sub)
+        opss.append((pc, qc))
+        odds.append(odd)
+    meshes, opss, odds = meshes[::-1], opss[::-1], odds[::-1]  # coarsest first
+    ns = [n // 2 ** i for i in range(LEVELS - 1, -1, -1)]
+    # without a guess, the default method's warm start for the coarsest level (the
+    # Richardson value of n = 64 and 128 from n = 256 on, else the uncoupled closed form):
+    # the closed form alone is far off where the coupling is strong (nu = -0.5, c/a = 0.98:
+    # k = 13.6) and Newton can land on another root there
+    k0 = k_guess if k_guess is not None else start_k(
+        geometry, c, n, 2.0,
+        edge=meshes[0].nodes[meshes[0].stick_index], cache=cache)
+    sols: list[DiscreteSolution] = []
+    for i, (m, mesh, (p_op, q_op), odd) in enumerate(zip(ns, meshes, opss, odds)):
+        if i == LEVELS - 1 and len(sols) >= 2:  # the finest root predicted from the
+            k0 = _predict([s.k for s in sols])  # coarse levels' expansion
+        if i < LEVELS - 1 and k_guess is not None and level_offsets is not None:
+            k0 = k_guess * (1.0 + level_offsets[i])
+        d = _level(geometry, c, m, mesh, p_op, q_op, k0, one_step=i == LEVELS - 1)
+        if odd is not None:
+            x, po, qo = odd
+            d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)
+        sols.append(d)
+        if d.converged and d.k > 0.0:
+            k0 = d.k
+    top = sols[-1]
+    out = ExtrapolatedSolution(**{f: getattr(top, f) for f in (
+        "geometry", "mesh", "p", "traction", "delta", "k", "converged", "residual_norm",
+        "iterations", "message", "nodal_u", "nodal_du", "round_off")})
+    out.iterations = sum(s.iterations for s in sols)
+    out.levels = tuple(ns)
+    out.level_k = tuple(float(s.k) for s in sols)
+    out.level_load = tuple(float(geometry.load(s.mesh.nodes, s.p)) for s in sols)
+    out.k_fine = float(top.k)
+    if not all(s.converged for s in sols):
+        bad = ", ".join(str(m) for m, s in zip(ns, sols) if not s.converged)
+        out.converged = False
+        out.error_estimate = out.load_error_estimate = out.work_error_estimate = math.inf
+        out.extrapolated_load = out.level_load[-1]
+        out.message = "; ".join(x for x in [top.message, f"the nested level n = {bad} did not "
+                                            "converge: k not extrapolated"] if x)
+        return out
+    if nested:
+        out.k, out.error_estimate = extrapolate(out.level_k)
+        out.extrapolated_load, out.load_error_estimate = extrapolate(out.level_load)
+    else:  # the expansion in n needs nested levels: the finest level, its differences
+        out.error_estimate = float(np.max(np.abs(np.diff(out.level_k)))) / abs(top.k)
+        out.extrapolated_load = out.level_load[-1]
+        out.load_error_estimate = float(np.max(np.abs(np.diff(out.level_load)))) / out.extrapolated_load
+        out.message = "; ".join(x for x in [top.message, "the meshes are not nested (scaled "
+                                            "back to the largest element count): k not "
+                                            "extrapolated"] if x)
+    # the levels' Newton round-off floors (refined: ~1e-10) and the quadrature noise of
+    # the smallest elements add to the estimate
+    out.error_estimate += 2.0 * max(s.round_off for s in sols) + quadrature_noise(top.mesh)
+    out.level_offsets = tuple(float(s.k) / out.k - 1.0 for s in sols[:-1])
+    if work:
+        out.level_work = tuple(_work(geometry, s) for s in sols)
+        out.work_error_estimate = work_error(out.level_work)
+    else:  # the coarse levels' work (their slip samples are free); the caller adds the finest
+        out.level_work = tuple(_work(geometry, s) for s in sols[:-1])
+    return out
+
+
+def work_error(level_work) -> float:
+    """Relative error estimate of the finest level's work from its n/4, n/2, n levels: the
+    default method's (:func:`contactlib.accuracy.estimate`)."""
+    from .accuracy import estimate  # (accuracy plans with this module: imported late)
+
+    return float(estimate(*tuple(level_work)[-3:])[0])

@@ -25,6 +25,7 @@ from __future__ import annotations
 import argparse
 import math
 from contextlib import contextmanager
+import os
 import re
 import sys
 import traceback
@@ -631,14 +632,24 @@ def _write(obj: Solution | Sequence[Solution], output: str) -> None:
     io.write_dataset(io.to_dataset(obj), output)
 
 
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so that the interpreter's last flush cannot fail again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # no real file descriptor (e.g. captured in a test)
+        pass
+
+
 def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType) -> int:
     try:
         sol = api.solve(**kwargs)
     except ValueError as exc:  # the library's own input validation
         raise _usage(exc) from exc
+    if output is not None:  # the file first: a closed pipe on stdout must not lose it
+        _write(sol, output)
     print(format_summary(sol))
     if output is not None:
-        _write(sol, output)
         print(f"  wrote {output}")
     return 0
 
@@ -665,8 +676,8 @@ def _run_sweep(kwargs: dict[str, Any], output: str, api: ModuleType) -> int:
     with _progress("sweep") as progress:
         sols = api.sweep(kwargs.pop("geometry"), kwargs.pop("nu"), ratios,
                          progress=progress, **kwargs)
-    print(format_table(sols))
     _write(sols, output)
+    print(format_table(sols))
     print(f"wrote {output}")
     return 0
 
@@ -681,10 +692,10 @@ def _history_api() -> ModuleType:
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
     with _progress("history") as progress:
         res = module.history(progress=progress, **kwargs)
-    print(format_history(res))
     from contactlib import io
 
     io.write_dataset(io.history_to_dataset(res), output)
+    print(format_history(res))
     print(f"wrote {output}")
     return 0
 
@@ -801,6 +812,9 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         _fail("interrupted")
         return 130
+    except BrokenPipeError:  # the reader of stdout went away (`| head`): stop quietly
+        _silence_stdout()
+        return 141  # 128 + SIGPIPE, what a shell reports for a writer killed by it
     except Exception as exc:  # noqa: BLE001 - last-resort, one line
         _fail(f"{type(exc).__name__}: {exc}")
         if debug:

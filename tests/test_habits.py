@@ -485,3 +485,17 @@ def test_check_config_merges_like_snakemake_and_reports_every_scene_problem(tmp_
     for where in ("scenes.a.nu: nu must be in (-1, 0.5], got 0.7", "scenes.b.load_path: is required",
                   "scenes.b.steps: is required"):
         assert where in err, (where, err)
+
+
+def test_a_closed_pipe_on_stdout_stops_quietly_and_keeps_the_file(tmp_path) -> None:
+    # `contactlib solve ... | head -1`: the file is written before the summary, and the
+    # broken pipe ends the command without a message (status 141, as for SIGPIPE)
+    import subprocess
+    import sys
+
+    out = tmp_path / "x.nc"
+    cmd = (f"{sys.executable} -m contactlib solve --geometry sphere --nu 0.3 --stick-ratio 0.5"
+           f" --n 32 --output {out} | head -c 1 > /dev/null; echo ${{PIPESTATUS[0]}} >&2")
+    run = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, timeout=120)
+    assert run.stderr.strip() in ("0", "141"), run.stderr  # 0 if it all fitted the pipe
+    assert out.exists() and out.stat().st_size > 0

@@ -22,6 +22,8 @@ __all__ = ["stick_violation", "slip_violation", "flags"]
 
 def stick_violation(q: np.ndarray, p: np.ndarray, k: float) -> float:
     """max(|q| - k p) over stick points, relative to max|k p| (<= 0 when admissible)."""
+    if np.isnan(k):  # no k (a failed solve): nothing is admissible
+        return float("nan") if q.size else 0.0
     if q.size == 0 or not np.isfinite(k):
         return 0.0 if q.size == 0 else -np.inf
     scale = max(float(np.max(np.abs(k * p))), 1e-300)  # |.|: a scheme may give k < 0

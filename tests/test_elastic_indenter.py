@@ -340,3 +340,53 @@ def test_history_solves_the_flagged_thin_slabs(nu, slab):
     out = top == SLIP_OUTWARD
     assert out.any() and np.all(res.shear[-1][out] < 0)
     assert np.all(np.diff(res.frictional_work) >= 0) and res.frictional_work[-1] > 0
+
+
+# ----------------------------------------------------------------------------- reversed slip in sweeps
+REVERSED = dict(geometry="cylinder", nu=0.499, slab_ratio=1.0)  # slab's coupling reverses slip
+
+
+def test_sweep_continuation_keeps_the_lone_root():
+    """c/a = 0.01 after 1e-8, 1e-6, 1e-4 (n = 256): the continuation guess extrapolated
+    quadratically to k = 422 and Newton landed on an inconsistent root k = 42.1; alone, the
+    case gives 0.0832 (consistent, outward slip)."""
+    ratios = [1e-8, 1e-6, 1e-4, 1e-2]
+    sols = sweep(REVERSED["geometry"], REVERSED["nu"], ratios, n=256,
+                 slab_ratio=REVERSED["slab_ratio"], energy=False)
+    lone = solve(REVERSED["geometry"], REVERSED["nu"], stick_ratio=1e-2, n=256,
+                 slab_ratio=REVERSED["slab_ratio"], energy=False)
+    assert lone.converged and lone.consistent and 0.08 < lone.friction_coefficient < 0.09
+    s = sols[-1]
+    assert s.converged and s.consistent and "outward" in s.message
+    assert s.friction_coefficient == pytest.approx(lone.friction_coefficient, rel=1e-6)
+
+
+def test_sweep_falls_back_to_the_lone_start_after_a_bad_guess(monkeypatch):
+    """A continuation guess that leads Newton to another root (k = 42.2 from 422 at n = 64)
+    is not kept: the case is solved again as alone."""
+    from contactlib import stages
+
+    monkeypatch.setattr(stages, "_continuation_guess",
+                        lambda geometry, c, known: 421.8 if c == 1e-2 else None)
+    s = sweep(REVERSED["geometry"], REVERSED["nu"], [1e-2], n=64,
+              slab_ratio=REVERSED["slab_ratio"], energy=False)[0]
+    lone = solve_default(Geometry("cylinder", 0.499, 1.0), 1e-2, 64)
+    assert s.converged and s.consistent
+    assert s.friction_coefficient == pytest.approx(lone.k, rel=1e-6)
+
+
+def test_failed_reversed_case_reports_no_negative_k():
+    """Near full stick on the a/h = 1 slab at nu = 0.499 Newton ends at a root whose slip
+    does not oppose the shear (signed k = -0.406): reported as NaN, not converged, not
+    resolved, and the message says so; never a negative friction coefficient."""
+    for n in (32, 64):
+        d = solve_default(Geometry("cylinder", 0.499, 1.0), 0.999, n)
+        assert not d.converged and math.isnan(d.k) and "NaN" in d.message
+    s = solve(REVERSED["geometry"], REVERSED["nu"], stick_ratio=0.999, n=64,
+              slab_ratio=REVERSED["slab_ratio"])
+    assert math.isnan(s.friction_coefficient)
+    assert not (s.converged or s.resolved or s.consistent or s.stick_admissible)
+    assert "reported as NaN" in s.message
+    for t in sweep(REVERSED["geometry"], REVERSED["nu"], [0.99, 0.999], n=32,
+                   slab_ratio=REVERSED["slab_ratio"], energy=False):
+        assert not t.friction_coefficient < 0.0

@@ -390,3 +390,51 @@ def test_failed_reversed_case_reports_no_negative_k():
     for t in sweep(REVERSED["geometry"], REVERSED["nu"], [0.99, 0.999], n=32,
                    slab_ratio=REVERSED["slab_ratio"], energy=False):
         assert not t.friction_coefficient < 0.0
+
+
+# ----------------------------------------------------------------------------- cost
+PAIRS_ANY = [(0.5, 0.2, 0.3), (2.0, 0.0, 0.5), (0.3, 0.45, -0.5), (5.0, 0.25, 0.35),
+             (0.05, 0.45, -0.5), (1.0, 0.3, 0.3)]  # beta of either sign, and 0
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_merged_half_space_kernels_equal_the_explicit_sum(geometry):
+    """Over an unbounded body the summed kernels are evaluated once (one body of the pair's
+    |beta|, coupling terms flipped for beta < 0): equal to c2 K_body +- c1 K_indenter."""
+    x = np.concatenate([np.linspace(0.0, 1.5, 31), [0.3, 0.7]])[:, None]
+    s = np.array([0.1, 0.3, 0.7, 1.0])[None, :]
+    for ratio, nu1, nu2 in PAIRS_ANY:
+        m = contact(geometry, nu2, 0.0, ratio, nu1)
+        assert m.merged_half_space is not None
+        for kernel in (m.pressure_kernel, m.shear_kernel):
+            merged, summed = kernel(x, s), kernel(x, s, merge=False)
+            for a, b in zip(merged, summed):
+                ok = np.isfinite(b)
+                assert np.array_equal(ok, np.isfinite(a))
+                np.testing.assert_allclose(a[ok], b[ok], rtol=0,
+                                           atol=4e-15 * max(np.max(np.abs(b[ok])), 1e-300))
+    assert contact(geometry, 0.3).merged_half_space is None  # rigid: the body alone
+    if geometry == "cylinder":
+        assert contact(geometry, 0.3, 0.2, 0.5, 0.2).merged_half_space is None  # a slab
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_elastic_indenter_costs_no_more_kernel_calls_on_a_half_space(geometry, monkeypatch):
+    """The cost of an elastic indenter on a half-space is that of a rigid one (measured in
+    benchmarks/bench_elastic.py; here counted: the same number of kernel evaluations)."""
+    from contactlib.body import ElasticBody
+
+    calls = {"n": 0}
+    for name in ("ring_pressure", "ring_shear", "strip_pressure", "strip_shear"):
+        original = getattr(ElasticBody, name)
+
+        def counted(self, *args, _f=original, **kw):
+            calls["n"] += args[0].size if hasattr(args[0], "size") else 1
+            return _f(self, *args, **kw)
+        monkeypatch.setattr(ElasticBody, name, counted)
+    counts = []
+    for kw in ({}, {"indenter_modulus": 0.5, "indenter_nu": 0.2}):
+        calls["n"] = 0
+        solve(geometry, 0.3, stick_ratio=0.5, n=32, energy=False, **kw)
+        counts.append(calls["n"])
+    assert counts[1] <= 1.05 * counts[0], counts

@@ -17,7 +17,12 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["stick_violation", "slip_violation", "flags"]
+__all__ = ["stick_violation", "slip_violation", "flags", "FLAG_NAMES", "VIOLATION_NAMES"]
+
+# the names of the flags and of the measures behind them, written once: the workflow's
+# check stage, the datasets and the summary take them from here
+FLAG_NAMES = ("stick_admissible", "slip_direction_ok", "consistent")
+VIOLATION_NAMES = ("stick_violation", "slip_violation")
 
 
 def stick_violation(q: np.ndarray, p: np.ndarray, k: float) -> float:

@@ -180,8 +180,8 @@ def _node_flags(mesh: Mesh, q: np.ndarray, p: np.ndarray, k: float, nodal_u, nod
     """Consistency flags at the nodes: stick nodes 1..M-1, slip nodes M..N-1 (k's sign ignored)."""
     r, m, nn = mesh.nodes, mesh.stick_index, mesh.n
     if nodal_u is None or nodal_du is None or not np.isfinite(k):
-        return {"consistent": False, "stick_admissible": False, "slip_direction_ok": False,
-                "stick_violation": np.nan, "slip_violation": np.nan}
+        return {**dict.fromkeys(checks.FLAG_NAMES, False),
+                **dict.fromkeys(checks.VIOLATION_NAMES, np.nan)}
     return checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
                         2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
 

@@ -19,9 +19,9 @@ k instead of a resolution. Two steps:
    with d1 = k(n/4) - k(n/2), d2 = k(n/2) - k(n) and the observed order
    p = log2(d1/d2) in [1, 2], the error of k(n) is estimated as
    |d2| / (2^p - 1); outside that range the levels are not asymptotic and
-   the estimate is the larger difference (0 < p < 1), |d1|/12 (p > 2) or
-   the larger of |d2| and |d1|/12 (differences of opposite sign; see
-   :func:`estimate`). Where that
+   the estimate is the larger difference (0 < p < 1), or the size of the
+   two leading terms a h^2, b h^3 fitted to the three levels (p > 2, or
+   differences of opposite sign; see :func:`estimate`). Where that
    exceeds the tolerance the case is solved again at 2n (up to
    :data:`MAX_N`); the n used and the estimate are recorded. A target that
    cannot be met at MAX_N is reported as such, never silently.
@@ -118,19 +118,17 @@ def estimate(k_quarter: float, k_half: float, k_full: float) -> tuple[float, flo
     * 0 <= r < 2 (the differences do not shrink at first order): the larger
       difference, max(|d1|, |d2|), which bounds an error that is not yet
       converging;
-    * r > 4 (d2 smaller than the method's n^-2 predicts from d1): the
-      coarse error crossed zero, or two levels agree by chance (sphere,
-      c/a = 0.5 at 32/64/128: r = 91; cylinder, c/a = 0.9999 at 16/32/64:
-      r = 1075), and |d2| says nothing about the error of k(n). The
-      estimate is then what n^-2 makes of d1, |d1| / 12 (the error of k(n)
-      had d2 been d1/4); it equals |d2|/3 at r = 4 (continuous). Clipping
-      p at 2 instead gave |d2|/3, under the measured error by 11x and 280x
-      in those two cases;
-    * r < 0 (the differences change sign: the error crossed zero between
-      n/4 and n): the larger of |d2| and that n^-2 reading of d1,
-      max(|d2|, |d1| / 12) (continuous at r = 0; the larger difference
-      taken before, |d1|, was 13x the error for the sphere at c/a = 0.3,
-      n = 128, r = -64).
+    * r > 4 or r < 0 (d2 smaller than the method's n^-2 predicts from d1,
+      or of the other sign: the coarse error crossed zero, or two levels
+      agree by chance; sphere, c/a = 0.5 at 32/64/128: r = 91; cylinder,
+      c/a = 0.9999 at 16/32/64: r = 1075): the three levels are fitted with
+      the two leading terms of the expansion, k(h) = k + a h^2 + b h^3
+      (h = 4, 2, 1), b = (d1 - 4 d2)/28, a = (d2 - 7 b)/3, and the error of
+      k(n) is bounded by |a| + |b|, the size of each term, so that their
+      cancellation at level n hides nothing. It is |d2|/3 at r = 4 and
+      |d2|/7 at r = 8 (a pure h^2 or h^3 error, exactly), continuous with
+      Richardson at r = 4. Taking |d2|/3 there (p clipped at 2, as before)
+      under-covered the error 11x and 280x in those two cases.
 
     Measured coverage: docs/accuracy.md; tests/test_error_estimate.py.
     """
@@ -140,12 +138,12 @@ def estimate(k_quarter: float, k_half: float, k_full: float) -> tuple[float, flo
     if d2 == 0.0:
         return abs(d1) / 3.0 / abs(k_full), math.nan
     ratio = d1 / d2
-    if ratio < 0.0:  # the error crossed zero between n/4 and n
-        return max(abs(d2), abs(d1) / 12.0) / abs(k_full), math.nan
+    if ratio < 0.0 or ratio > 4.0:  # not asymptotic: the two leading terms h^2, h^3
+        b = (d1 - 4.0 * d2) / 28.0  # h^3 term at level n
+        a = (d2 - 7.0 * b) / 3.0  # h^2 term at level n
+        return (abs(a) + abs(b)) / abs(k_full), math.nan
     if ratio < 2.0:
         return max(abs(d1), abs(d2)) / abs(k_full), math.nan
-    if ratio > 4.0:  # faster than n^-2: not asymptotic, d1 carried down at n^-2
-        return abs(d1) / 12.0 / abs(k_full), 2.0
     p = float(np.log2(ratio))
     return abs(d2) / (2.0**p - 1.0) / abs(k_full), p
 

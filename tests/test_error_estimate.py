@@ -338,21 +338,33 @@ def test_solve_and_sweep_cli_pass_max_error(tmp_path, capsys):
 
 
 def test_estimate_rules():
-    """accuracy.estimate on made-up levels: the four regimes of r = d1/d2."""
+    """accuracy.estimate on made-up levels k(h) = k* + a h^2 + b h^3 (h = 4, 2, 1 for n/4,
+    n/2, n): outside the asymptotic range (r = d1/d2 > 4 or < 0) the estimate is |a| + |b|
+    of the two-term fit (solved here as a 3x3 system), so a pure h^2 or h^3 error is
+    estimated exactly and a cancellation of the two terms at level n hides nothing."""
     from contactlib.accuracy import estimate
 
+    def levels(k, a, b):
+        return [k + a * h**2 + b * h**3 for h in (4.0, 2.0, 1.0)]
+
+    def fit(ks):
+        m = np.array([[1.0, h**2, h**3] for h in (4.0, 2.0, 1.0)])
+        _, a, b = np.linalg.solve(m, ks)
+        return abs(a) + abs(b)
+
     k = 1.0
-    # asymptotic, order 2: d1 = 4 d2, error d2/3
+    for a, b in ((1e-5, 0.0), (0.0, 1e-5)):  # r = 4, r = 8: the error of k(n) itself
+        ks = levels(k, a, b)
+        assert estimate(*ks)[0] == pytest.approx(abs(ks[2] - k) / ks[2], rel=1e-6)
+    for a, b in ((1e-5, -1e-5), (-3e-6, 1e-5), (2e-5, -1.5e-5), (1e-6, -4e-6)):
+        ks = levels(k, a, b)
+        d1, d2 = ks[0] - ks[1], ks[1] - ks[2]
+        assert d1 / d2 > 4.0 or d1 / d2 < 0.0
+        assert estimate(*ks)[0] == pytest.approx(fit(ks) / ks[2], rel=1e-6)
+        assert estimate(*ks)[0] >= 0.9 * max(abs(a), abs(b))  # (1e-5, -1e-5): k(n) = k*
+    # 2 <= r <= 4: Richardson with the observed order; 0 <= r < 2: the larger difference
     assert estimate(k + 5e-4, k + 1e-4, k)[0] == pytest.approx(1e-4 / 3, rel=1e-9)
-    # not shrinking (0 <= r < 2): the larger difference
+    assert estimate(k + 3e-4, k + 1e-4, k)[0] == pytest.approx(1e-4, rel=1e-9)
     assert estimate(k + 2.5e-4, k + 1e-4, k)[0] == pytest.approx(1.5e-4, rel=1e-9)
-    # opposite signs (r < 0): the larger of |d2| and |d1| / 12
-    assert estimate(k - 2e-4, k + 1e-4, k)[0] == pytest.approx(1e-4, rel=1e-9)
-    assert estimate(k - 2.4e-3, k + 1e-4, k)[0] == pytest.approx(2.5e-3 / 12, rel=1e-9)
-    # r > 4: |d1| / 12, whatever d2 (the n^-2 prediction from the coarser pair)
-    for d2 in (1e-6, -1e-6, 1e-5):
-        assert estimate(k + 1e-3 + d2, k + d2, k)[0] == pytest.approx(1e-3 / 12, rel=1e-9)
-    for r in (0.0, 4.0):  # continuous across these regimes (a jump of 2 at r = 2)
-        below = estimate(k + (r - 1e-9) * 1e-4 + 1e-4, k + 1e-4, k)[0]
-        above = estimate(k + (r + 1e-9) * 1e-4 + 1e-4, k + 1e-4, k)[0]
-        assert below == pytest.approx(above, rel=1e-6)
+    r4 = [estimate(k + (4.0 + e) * 1e-4 + 1e-4, k + 1e-4, k)[0] for e in (-1e-9, 1e-9)]
+    assert r4[0] == pytest.approx(r4[1], rel=1e-6)  # continuous at r = 4

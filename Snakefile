@@ -5,6 +5,7 @@
 #   snakemake --cores 2                       everything the config asks for
 #   snakemake --cores 2 --configfile my.yaml  with your own scenes (merged)
 #   snakemake --cores 2 materials             material pairs (not part of the above)
+#   snakemake --cores 2 viscoelastic          viscoelastic cycles against the rate (neither)
 #   snakemake -n                              what would run
 #
 # Layout, interface and habits: docs/workflow.md and docs/conventions.md.
@@ -40,6 +41,8 @@ include: "workflow/rules/history.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/convergence.smk"
 include: "workflow/rules/materials.smk"
+include: "workflow/rules/viscoelastic.smk"
+include: "workflow/rules/layers.smk"
 
 
 rule all:

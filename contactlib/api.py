@@ -17,10 +17,10 @@ import numpy as np
 
 from . import stages, validate
 from .default_method import DiscreteSolution, solve_default
+from .discrete import SelfSimilarSolution
 from .geometry import Geometry
-from .paper_method import PaperSolution
 from .operators import StickBlocks
-from .result import Solution
+from .result import CaseRecord, Solution
 from .threads import blas_single_threaded
 
 __all__ = ["solve", "sweep", "stick_ratio_for_friction", "DEFAULT_N", "METHODS", "GEOMETRIES",
@@ -40,28 +40,29 @@ def output_grid() -> np.ndarray:
 
 # ----------------------------------------------------------------------------- validation
 def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.inf,
-                     indenter_nu=None) -> tuple[Geometry, int, str]:
+                     indenter_nu=None, base="smooth") -> tuple[Geometry, int, str]:
     """The problem's arguments, checked one by one with :mod:`contactlib.validate`."""
     geometry = validate.geometry(geometry)
     method = validate.method(method)
     nu = validate.nu(nu)
-    slab = validate.slab_ratio(slab_ratio, geometry)
+    base = validate.base(base)
+    slab = validate.slab_ratio(slab_ratio, geometry, base)
     n = validate.n(n, method)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
-    return Geometry(geometry, nu, slab, ratio, nu1), n, method
+    return Geometry(geometry, nu, slab, ratio, nu1, base), n, method
 
 
 # ----------------------------------------------------------------------------- post-processing
-def _finish(geom: Geometry, d: DiscreteSolution | PaperSolution, method: str, n: int,
+def _finish(geom: Geometry, d: SelfSimilarSolution, method: str, n: int,
             want_energy: bool, message: str = "",
             max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
     """Profiles on the output grid, load, flags, work and error estimates of a discrete solution."""
     rec = stages.case_record(geom, d, samples=True)
-    stages.estimate_case(geom, method, n, rec, max_error=max_error)
+    rec = stages.estimate_case(geom, method, n, rec, max_error=max_error)
     return _from_record(geom, rec, method, n, want_energy, message)
 
 
-def _from_record(geom: Geometry, rec: dict, method: str, n: int, want_energy: bool,
+def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_energy: bool,
                  message: str = "") -> Solution:
     xi = output_grid()
     work = stages.work_case(geom, rec) if want_energy else float("nan")
@@ -129,13 +130,13 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
-          max_error: float = validate.DEFAULT_MAX_ERROR) -> Solution:
+          max_error: float = validate.DEFAULT_MAX_ERROR, base: str = "smooth") -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
     ----------
     geometry : {"sphere", "cylinder"}
-        Rigid sphere on a half-space, or rigid cylinder on a slab/half-plane.
+        Rigid sphere or cylinder on a half-space/half-plane or a layer.
     nu : float
         Poisson's ratio of the elastic body, in (-1, 0.5].
     stick_ratio : float, optional
@@ -148,7 +149,9 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     method : {"default", "paper", "paper-literal"}
         ``"paper"``: the printed scheme (c/a restricted to m/n).
     slab_ratio : float
-        a/h of the slab under a cylinder; 0 is the half-plane.
+        a/h of an elastic layer of thickness h on a rigid base; 0 (default)
+        is the half-space or half-plane. At most
+        ``validate.LAYER_RATIO_MAX[(geometry, base)]`` (sphere 20).
     energy : bool
         Integrate the frictional work of the loading half-cycle (``True`` or
         ``False``; anything else is refused).
@@ -165,6 +168,9 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         n/4 and n/2) exceeds it is reported with ``resolved = False`` and a
         message that names the n that would resolve it, or says why none
         will. Default 1e-3.
+    base : {"smooth", "bonded"}
+        The layer's rigid base: frictionless (default, the paper's slab) or
+        bonded; irrelevant at ``slab_ratio = 0``.
 
     Returns
     -------
@@ -193,7 +199,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     (0.5, True)
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
-                                       indenter_nu)
+                                       indenter_nu, base)
     energy = validate.flag("energy", energy)
     max_error = validate.max_error(max_error)
     if (stick_ratio is None) == (friction is None):
@@ -210,7 +216,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
-                     max_error=max_error)
+                     max_error=max_error, base=base)
     if k == 0.0:
         return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
                        max_error=max_error)
@@ -242,7 +248,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           progress: Callable[[int, int], None] | None = None,
           indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
-          max_error: float = validate.DEFAULT_MAX_ERROR) -> list[Solution]:
+          max_error: float = validate.DEFAULT_MAX_ERROR,
+          base: str = "smooth") -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -255,7 +262,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
 
     Parameters
     ----------
-    geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error
+    geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error, base
         As for :func:`solve`.
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
@@ -280,7 +287,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ['1.000', '1.000']
     """
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
-                                       indenter_nu)
+                                       indenter_nu, base)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)

@@ -2,8 +2,8 @@ r"""The body the indenter is pressed into: its material and its kernels.
 
 An :class:`ElasticBody` is a homogeneous, isotropic, linear elastic body: a
 half-space (under rings) or half-plane (under strips, plane strain), or a
-layer of thickness h on a smooth rigid base (today under strips only, the
-paper's slab). It answers the basic loads the indenter puts on it (see
+layer of thickness h on a rigid base, smooth (frictionless, the paper's
+slab) or bonded. It answers the basic loads the indenter puts on it (see
 :mod:`contactlib.indenter`): a uniform pressure, or a shear element, on a disc
 or a symmetric strip of radius ``s``, with the closed-form kernels of
 :mod:`contactlib.kernels`.
@@ -14,7 +14,8 @@ E* = E/(1 - nu^2) of the body = 1 and lengths in units of the length scale
 of the problem (the contact radius ``a``, or ``a_max`` in the incremental
 solver). The layer is given by ``slab_ratio`` = (length scale)/h, 0 for the
 half-space or half-plane, so the thickness in these units is
-``1/slab_ratio``. Displacements are w (into the body) and u (away from the
+``1/slab_ratio``; ``base`` is "smooth" (u_z = 0, no shear on the base) or
+"bonded" (u_z = u_r = 0), and is ignored on the half-space. Displacements are w (into the body) and u (away from the
 axis) in (length scale)^2/R per unit traction in E* (length scale)/R.
 
 beta = (1 - 2 nu)/(2 (1 - nu)) is Dundurs' coupling parameter of a rigid
@@ -29,6 +30,8 @@ Examples
 (0.285714285714, True)
 >>> ElasticBody(0.3, slab_ratio=0.05).thickness
 20.0
+>>> ElasticBody(0.3, slab_ratio=1.0, base="bonded").ring_kernel_degrees is None
+True
 """
 
 from __future__ import annotations
@@ -38,7 +41,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .indenter import Displacements
-from .kernels import disc, strip
+from .kernels import disc, layer, strip
 from .theory import beta_of_nu
 
 __all__ = ["ElasticBody"]
@@ -47,19 +50,23 @@ _HALF_SPACE_DEGREES = np.array([1.0, 1.0, 0.0])  # w, u ~ s; du/dx ~ s^0
 
 @dataclass(frozen=True)
 class ElasticBody:
-    """A linear elastic body: half-space / half-plane, or a layer on a smooth rigid base.
+    """A linear elastic body: half-space / half-plane, or a layer on a rigid base.
 
     Parameters
     ----------
     nu : float
         Poisson's ratio, in (-1, 0.5].
     slab_ratio : float
-        (length scale)/h of a layer of thickness h on a smooth rigid base;
-        0 (default) is the half-space or half-plane.
+        (length scale)/h of a layer of thickness h on a rigid base; 0
+        (default) is the half-space or half-plane.
+    base : {"smooth", "bonded"}
+        The layer's rigid base: frictionless (default, the paper's slab) or
+        bonded. Irrelevant on the half-space.
     """
 
     nu: float
     slab_ratio: float = 0.0
+    base: str = "smooth"
 
     @property
     def thickness(self) -> float:
@@ -77,29 +84,46 @@ class ElasticBody:
         return beta_of_nu(self.nu)
 
     # ------------------------------------------------------------------ rings (axisymmetric)
-    def _ring_layer(self) -> None:
-        if not self.is_half_space:
-            raise NotImplementedError(
-                f"ring loads on a layer (slab_ratio = {self.slab_ratio!r}) have no kernels "
-                "yet: only the half-space is available under a sphere")
-
     def ring_pressure(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Displacements:
         """(w, u, du/dr) under a unit pressure on the disc r < s.
 
-        :func:`contactlib.kernels.disc.pressure_disc`; a layer raises
-        NotImplementedError.
+        :func:`contactlib.kernels.disc.pressure_disc` on the half-space,
+        :func:`contactlib.kernels.layer.pressure_disc` on a layer (which
+        raises ValueError beyond ``max(r, s)/h = 20``).
         """
-        self._ring_layer()
-        return disc.pressure_disc(x, s, self.nu, with_w=with_w)
+        if self.is_half_space:
+            return disc.pressure_disc(x, s, self.nu, with_w=with_w)
+        return layer.pressure_disc(x, s, self.nu, self.thickness, self.base, with_w=with_w)
 
     def ring_shear(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Displacements:
         """(w, u, du/dr) under the shear q = r on the disc r < s.
 
-        :func:`contactlib.kernels.disc.shear_disc`; a layer raises
-        NotImplementedError.
+        :func:`contactlib.kernels.disc.shear_disc` on the half-space,
+        :func:`contactlib.kernels.layer.shear_disc` on a layer.
         """
-        self._ring_layer()
-        return disc.shear_disc(x, s, self.nu, with_du=with_du)
+        if self.is_half_space:
+            return disc.shear_disc(x, s, self.nu, with_du=with_du)
+        return layer.shear_disc(x, s, self.nu, self.thickness, self.base, with_du=with_du)
+
+    def ring_remainder(self, kind: str, x: np.ndarray, s: np.ndarray,
+                       weights: np.ndarray | None = None,
+                       owner: np.ndarray | None = None) -> np.ndarray | None:
+        """What the layer adds to the half-space ring kernels, on the grid x by s.
+
+        ``kind`` "pressure" or "shear"; shape (3, x.size, s.size), rows (w, u,
+        du/dr), or with quadrature ``weights`` and ``owner`` their weighted
+        sums (:func:`contactlib.kernels.layer.remainder_grid`); analytic in
+        (x, s). None on the half-space.
+        """
+        if self.is_half_space:
+            return None
+        return layer.remainder_grid(kind, x, s, self.nu, self.thickness, self.base,
+                                    weights, owner)
+
+    @property
+    def half_space(self) -> ElasticBody:
+        """The same material unbounded: the singular part of a layer's kernels."""
+        return ElasticBody(self.nu)
 
     @property
     def ring_kernel_degrees(self) -> np.ndarray | None:
@@ -115,14 +139,68 @@ class ElasticBody:
         """(w, u, du/dx) under a unit pressure on |x| < s (half-plane or slab).
 
         :func:`contactlib.kernels.strip.pressure_strip` with the thickness
-        :attr:`thickness`.
+        :attr:`thickness` and the :attr:`base`.
         """
-        return strip.pressure_strip(x, s, self.nu, self.thickness)
+        return strip.pressure_strip(x, s, self.nu, self.thickness, self.base)
 
     def strip_shear(self, x: np.ndarray, s: np.ndarray) -> Displacements:
         """(w, u, du/dx) under the odd shear sgn(x) on |x| < s (half-plane or slab).
 
         :func:`contactlib.kernels.strip.shear_strip` with the thickness
-        :attr:`thickness`.
+        :attr:`thickness` and the :attr:`base`.
         """
-        return strip.shear_strip(x, s, self.nu, self.thickness)
+        return strip.shear_strip(x, s, self.nu, self.thickness, self.base)
+
+
+# ----------------------------------------------------------------------------- viscoelastic body
+__all__ += ["ViscoelasticBody"]
+
+
+@dataclass(frozen=True)
+class ViscoelasticBody(ElasticBody):
+    r"""A linear viscoelastic body with a constant Poisson's ratio (Prony relaxation).
+
+    E(t)/E(0) = 1 - sum_i g_i (1 - exp(-t/tau_i)) = g_inf + sum_i g_i exp(-t/tau_i),
+    ``g_inf = 1 - sum g_i`` (E(inf)/E(0)). Shear and bulk moduli relax in
+    proportion (nu constant), so every kernel of the body scales with the
+    same E(t)/E(0): its answer to a traction history is the elastic kernel at
+    E(0) (the inherited ring/strip methods, in units of E*(0)) convolved in
+    time with E(t)/E(0), and Dundurs' beta does not change in time.
+
+    Parameters
+    ----------
+    nu, slab_ratio, base
+        As for :class:`ElasticBody` (the kernels are those at E(0)).
+    relaxation : tuple of (g, tau)
+        The Prony terms: g_i > 0, sum g_i < 1, tau_i > 0 (the time unit is
+        the caller's; the path's duration uses the same one).
+
+    Examples
+    --------
+    >>> body = ViscoelasticBody(0.3, relaxation=((0.5, 1.0),))
+    >>> body.relaxed_ratio, round(float(body.relaxation_ratio(1.0)), 6)
+    (0.5, 0.68394)
+    """
+
+    relaxation: tuple[tuple[float, float], ...] = ()
+
+    @property
+    def weights(self) -> np.ndarray:
+        """g_i of the Prony terms."""
+        return np.array([g for g, _ in self.relaxation], dtype=float)
+
+    @property
+    def times(self) -> np.ndarray:
+        """tau_i of the Prony terms (the caller's time unit)."""
+        return np.array([t for _, t in self.relaxation], dtype=float)
+
+    @property
+    def relaxed_ratio(self) -> float:
+        """E(inf)/E(0) = 1 - sum g_i."""
+        return float(1.0 - sum(g for g, _ in self.relaxation))
+
+    def relaxation_ratio(self, t: np.ndarray | float) -> np.ndarray:
+        """E(t)/E(0) at times ``t`` >= 0."""
+        t = np.asarray(t, dtype=float)
+        return self.relaxed_ratio + np.sum(
+            self.weights * np.exp(-t[..., None] / self.times), axis=-1)

@@ -125,9 +125,27 @@ def parse_friction(text: str) -> float:
     return _check(validate.friction, text, _float(text))
 
 
-def parse_slab_ratio(text: str, geometry: str | None = None) -> float:
-    """Slab ratio a/h, finite and >= 0 (0 = half-plane), cylinder only."""
-    return _check(validate.slab_ratio, text, _float(text), geometry)
+def parse_slab_ratio(text: str, geometry: str | None = None, base: str = "smooth",
+                     extent: float = 1.0) -> float:
+    """Layer ratio a/h, finite, >= 0 (0 = half-space/half-plane), within the supported range."""
+    return _check(validate.slab_ratio, text, _float(text), geometry, base, extent)
+
+
+def parse_base(text: str) -> str:
+    """The layer's rigid base: smooth or bonded."""
+    return _check(validate.base, text, text)
+
+
+def _layer_options(sub: argparse.ArgumentParser, length: str) -> None:
+    """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max")."""
+    sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
+                     help=f"{length}/h of an elastic layer of thickness h on a rigid base, "
+                          f">= 0 (0 = half-space / half-plane); at most 20 for the sphere "
+                          f"(20/1.2 in history), 80 for the cylinder on a smooth base, "
+                          f"1000 on a bonded one; default: 0")
+    sub.add_argument("--base", metavar="{smooth,bonded}", default="smooth",
+                     help="the layer's rigid base: smooth (frictionless) or bonded; "
+                          "default: smooth")
 
 
 def parse_n(text: str, method: str = "default") -> int:
@@ -225,9 +243,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                      help="number of elements across the half-contact "
                           "(integer >= 2; library default if omitted)")
     sub.add_argument("--method", metavar="NAME", default="default", help=_METHOD_HELP)
-    sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
-                     help="cylinder only: contact half-width over layer "
-                          "thickness, a/h >= 0 (0 = half-plane); default: 0")
+    _layer_options(sub, "a")
     _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
                      default=None, help=_OUTPUT_HELP)
@@ -301,10 +317,15 @@ def build_parser() -> argparse.ArgumentParser:
                       help="equal load steps per path segment (positive integer)")
     hist.add_argument("--n", metavar="N", default=None,
                       help="elements over 1.2 a_max (integer; library default if omitted)")
-    hist.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
-                      help="cylinder only: a_max/h of the slab, >= 0 (0 = half-plane); "
-                           "default: 0")
+    _layer_options(hist, "a_max")
     _indenter_options(hist)
+    hist.add_argument("--relaxation", metavar="G1:TAU1[,G2:TAU2...]", default=None,
+                      help="a viscoelastic body: Prony terms of E(t)/E(0) = 1 - sum g_i "
+                           "(1 - exp(-t/tau_i)), g_i > 0, sum g_i < 1, tau_i > 0 (constant "
+                           "Poisson's ratio; scalings use E(0)); needs --duration")
+    hist.add_argument("--duration", metavar="T[,T2...]", default=None,
+                      help="with --relaxation: duration of the load path (segments equally "
+                           "long), or one a segment, in the unit of tau")
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--max-error", metavar="E", default="1e-3",
                       help="accuracy a step must reach, in (0, 1): a step whose estimated "
@@ -336,18 +357,21 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
     geometry = _check(validate.geometry, args.geometry, args.geometry)
     method = _check(validate.method, args.method, args.method)
     n = None if args.n is None else parse_n(args.n, method)
+    base = parse_base(args.base)
     kwargs: dict[str, Any] = {
         "geometry": geometry,
         "nu": parse_nu(args.nu),
         "n": n,
         "method": method,
-        "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
+        "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base),
         "energy": not args.no_energy,
         "max_error": parse_max_error(args.max_error),
     }
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # the rigid default is the library's: keywords only when elastic
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
+    if base != "smooth":  # likewise: the keyword only when not the default
+        kwargs["base"] = base
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
@@ -362,6 +386,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
 def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     """Checked keyword arguments of :func:`contactlib.history`."""
     geometry = _check(validate.geometry, args.geometry, args.geometry)
+    base = parse_base(args.base)
     kwargs = {
         "geometry": geometry,
         "nu": parse_nu(args.nu),
@@ -369,13 +394,42 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "load_path": parse_load_path(args.load_path),
         "steps": parse_steps(args.steps),
         "n": None if args.n is None else parse_history_n(args.n),
-        "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry),
+        "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base,
+                                       validate.HISTORY_MESH_EXTENT),
         "max_error": parse_max_error(args.max_error),
     }
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # as for solve/sweep: keywords only when elastic
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
+    if args.relaxation is not None or args.duration is not None:  # a viscoelastic body
+        kwargs.update(parse_viscoelastic(args.relaxation, args.duration,
+                                         len(kwargs["load_path"]) - 1))
+        if ratio != float("inf"):
+            raise UsageError("--relaxation needs a rigid indenter (no --indenter-modulus)")
+    if base != "smooth":
+        kwargs["base"] = base
     return kwargs
+
+
+def parse_relaxation(text: str) -> tuple[tuple[float, float], ...]:
+    """``g1:tau1,g2:tau2`` as Prony pairs (:func:`contactlib.validate.relaxation`)."""
+    pairs: list[Any] = []
+    for item in text.split(","):
+        parts = item.split(":")
+        pairs.append([_float(v) for v in parts] if len(parts) == 2 else item)
+    return _check(validate.relaxation, text, pairs)
+
+
+def parse_viscoelastic(relaxation: str | None, duration: str | None,
+                       segments: int) -> dict[str, Any]:
+    """``relaxation`` and ``duration`` keywords from ``--relaxation`` and ``--duration``."""
+    prony = () if relaxation is None else parse_relaxation(relaxation)
+    value: Any = None
+    if duration is not None:
+        items = _list(duration)
+        value = items[0] if len(items) == 1 else items
+    durations = _check(validate.duration, duration, value, segments, bool(prony))
+    return {"relaxation": [list(p) for p in prony], "duration": list(durations)}
 
 
 def _shorten(text: str, limit: int = 80) -> str:
@@ -429,8 +483,10 @@ def _indenter(geometry: str) -> Any:
 def _head(sol: Solution) -> str:
     """``sphere, nu = 0.3, method = default, n = 256`` (and a/h where a layer is possible)."""
     head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
-    if _indenter(sol.geometry).accepts_layer:
+    if _indenter(sol.geometry).reports_layer(sol.slab_ratio):
         head += f", a/h = {sol.slab_ratio:g}"
+    if sol.slab_ratio > 0:
+        head += f" ({getattr(sol, 'base', 'smooth')} base)"
     return head + _indenter_text(sol)
 
 
@@ -483,8 +539,10 @@ def format_history(res: Any) -> str:
     work_scale = f"V R^2/(E* a_max^{ind.work_exponent})"
     head = (f"{res.geometry}, nu = {res.nu:g}, k = {_g(res.friction)}, n = {res.n}, "
             f"{res.steps} steps per segment")
-    if ind.accepts_layer:
+    if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
+    if res.slab_ratio > 0:
+        head += f" ({getattr(res, 'base', 'smooth')} base)"
     head += _indenter_text(res)
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
                   f"{'V segment':>11} {'V total':>11}"]
@@ -498,6 +556,12 @@ def format_history(res: Any) -> str:
     rows.append(f"  work in {work_scale}; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
+    if getattr(res, "relaxation", ()):  # a viscoelastic body: its time and energies
+        rows.append(f"  viscoelastic: relaxation {list(map(list, res.relaxation))}, duration "
+                    f"{res.time[-1]:g}; at the end, in {work_scale}: external "
+                    f"{res.external_work[-1]:.5g} = stored {res.stored_energy[-1]:.5g} + "
+                    f"viscous {res.viscous_work[-1]:.5g} + frictional "
+                    f"{res.frictional_work[-1]:.5g}")
     if res.resolved is not None:
         rows.append(f"  resolved steps (max error {res.max_error:g}): "
                     f"{int(res.resolved[1:].sum())}/{total}")

@@ -208,7 +208,7 @@ def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coeffi
     for ds in datasets:
         geometry, method = ds.attrs["geometry"], ds.attrs["method"]
         label = f"{geometry} {method}"
-        if indenter(geometry).accepts_layer:
+        if indenter(geometry).reports_layer(float(ds.attrs.get("slab_ratio", 0.0))):
             label += f" a/h={float(ds.attrs['slab_ratio']):g}"
         err = ds["error"].sel(quantity=quantity).values  # (n, stick_ratio)
         times = ds["wall_time"].values

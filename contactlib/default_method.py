@@ -54,11 +54,11 @@ import numpy as np
 from scipy import linalg
 
 from . import checks
+from .discrete import SelfSimilarSolution
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
 from .operators import StickBlocks, nodal_operator_part, operator_part, operators
-from .result import short_repr
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
            "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
@@ -75,32 +75,31 @@ _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n 
 # at n = 128 stagnated without it and converge with it)
 
 
-@dataclass(repr=False)
-class DiscreteSolution:
-    """Nodal solution on a mesh (units E* = a = R = 1)."""
+class DiscreteSolution(SelfSimilarSolution):
+    """Nodal solution on a mesh (units E* = a = R = 1), the default method's kind.
 
-    __repr__ = short_repr  # a few lines: scalars, arrays by shape
+    The fields are those of :class:`~contactlib.discrete.SelfSimilarSolution`:
+    ``p`` the nodal pressure (p[-1] = 0), ``traction`` the nodal shear
+    coefficient phi (q = shape phi, phi[-1] = 0), ``nodal_u``/``nodal_du``
+    from the solve's own operators; ``interior_samples`` (a nested coarse
+    mesh: its elements' fine nodes) replace the midpoints of the slip samples.
+    """
 
-    geometry: Contact
-    mesh: Mesh
-    p: np.ndarray  # nodal pressure, p[-1] = 0
-    phi: np.ndarray  # nodal shear coefficient, q = shape * phi, phi[-1] = 0
-    delta: float
-    k: float
-    converged: bool
-    residual_norm: float
-    iterations: int
-    message: str = ""
-    nodal_u: np.ndarray | None = None  # u at the nodes (from the solve's own operators)
-    nodal_du: np.ndarray | None = None  # du/dx at the nodes
-    round_off: float = 0.0  # last relative Newton step when it stopped on the round-off floor
-    interior_samples: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None  # (x, u,
-    # du/dx) at one interior point of every element, when known without the kernels (a
-    # nested coarse mesh: its elements' fine nodes); used instead of the midpoints
+    kind = "default"
 
     @property
-    def stick_ratio(self) -> float:
-        return float(self.mesh.nodes[self.mesh.stick_index])
+    def phi(self) -> np.ndarray:
+        """The nodal shear coefficient (``traction``)."""
+        return self.traction
+
+    def load(self) -> float:
+        """Total load of the piecewise-linear pressure (:meth:`Contact.load`)."""
+        return self.geometry.load(self.mesh.nodes, self.p)
+
+    def stick_points(self) -> np.ndarray:
+        """Stick-zone nodes inside (0, c) and element midpoints (continuous tractions)."""
+        nodes, m = self.mesh.nodes, self.mesh.stick_index
+        return np.concatenate([nodes[1:m], 0.5 * (nodes[:m] + nodes[1:m + 1])])
 
     def pressure(self, x: np.ndarray) -> np.ndarray:
         return np.interp(x, self.mesh.nodes, self.p)
@@ -510,14 +509,16 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         when stick_ratio = 0); computed here when not given.
     cache : StickBlocks, optional
         The caller's store of stick blocks (see
-        :func:`~contactlib.operators.nodal_operator_part`), shared by the
-        cases of a sweep; the numbers do not depend on it.
+        :func:`~contactlib.operators.nodal_operator_part`) and of graded
+        meshes (its ``meshes``), shared by the cases of a sweep; the numbers
+        do not depend on it.
 
     Returns
     -------
     DiscreteSolution
     """
-    mesh = graded_mesh(n, stick_ratio, power=power)
+    mesh = graded_mesh(n, stick_ratio, power=power,
+                       store=None if cache is None else cache.meshes)
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
     pw, qw = _nodal_operators(geometry, mesh, ops, cache)

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
-from functools import lru_cache
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["Mesh", "graded_mesh", "uniform_mesh", "MAX_ELEMENTS"]
+__all__ = ["Mesh", "Store", "MeshStore", "graded_mesh", "uniform_mesh", "MAX_ELEMENTS"]
 
 
 @dataclass(frozen=True)
@@ -87,8 +87,65 @@ def _invert(count: Callable, targets: np.ndarray, span: float) -> np.ndarray:
     return (0.5 * (lo + hi)) ** 2
 
 
+class Store:
+    """A bounded store of values by key, owned by the caller that fills it.
+
+    Oldest entry dropped first; ``hits`` and ``misses`` count the requests
+    answered from the store and the values computed. There is no
+    process-wide store in contactlib: whoever owns a computation owns its
+    stores (:class:`MeshStore`, :class:`contactlib.operators.StickBlocks`).
+    """
+
+    def __init__(self, size: int) -> None:
+        self.size = int(size)
+        self._values: OrderedDict[tuple, Any] = OrderedDict()
+        self.hits = 0
+        self.misses = 0
+
+    def get(self, key: tuple, compute: Callable[[], Any]) -> Any:
+        """The value of ``key``, computed by ``compute()`` and stored when missing."""
+        found = self._values.get(key)
+        if found is None:
+            self.misses += 1
+            found = compute()
+            if len(self._values) >= self.size:
+                self._values.popitem(last=False)
+            self._values[key] = found
+        else:
+            self.hits += 1
+        return found
+
+    def clear(self) -> None:
+        """Forget every value."""
+        self._values.clear()
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+
+class MeshStore(Store):
+    """The graded meshes a computation has built, kept by its caller for reuse.
+
+    A sweep with error estimates asks for each mesh several times (the fine
+    mesh of a case for its operators and its solve, the nested n/2 and n/4
+    meshes for the estimate), and the node placement inverts the element
+    count by bisection (about 8 ms a mesh at n = 256): a sweep of ten cases
+    at n = 256 asks for 70 meshes, of which 30 differ, and takes 1.25 times
+    as long when every request builds its mesh again
+    (``benchmarks/bench_meshes.py``).
+    It holds (nodes, stick index) by the arguments of :func:`graded_mesh`,
+    at most ``size`` of them (33 kB each at 4096 elements), and
+    :func:`graded_mesh` hands out copies. The caller owns it
+    (:class:`contactlib.operators.StickBlocks` carries one, so a sweep's
+    store of stick blocks brings its meshes along).
+    """
+
+    def __init__(self, size: int = 128) -> None:
+        super().__init__(size)
+
+
 def graded_mesh(n: int, stick_ratio: float, power: float = 2.0,
-                min_stick: int = 4) -> Mesh:
+                min_stick: int = 4, store: MeshStore | None = None) -> Mesh:
     """Mesh with a node at c that resolves both lengths, c and a - c.
 
     Near c the tractions and displacements have an edge behaviour on the
@@ -114,16 +171,19 @@ def graded_mesh(n: int, stick_ratio: float, power: float = 2.0,
         1), graded toward the contact edge.
     min_stick : int
         Minimum number of elements in each zone when 0 < c < 1.
+    store : MeshStore, optional
+        The caller's store of meshes already built (none: built here).
     """
-    nodes, m = _graded_nodes(int(n), float(stick_ratio), float(power), int(min_stick))
+    key = (int(n), float(stick_ratio), float(power), int(min_stick))
+    if store is None:
+        nodes, m = _graded_nodes(*key)
+    else:
+        nodes, m = store.get(key, lambda: _graded_nodes(*key))
     return Mesh(nodes.copy(), m)
 
 
-@lru_cache(maxsize=512)
 def _graded_nodes(n: int, c: float, power: float, min_stick: int) -> tuple[np.ndarray, int]:
-    """The nodes of :func:`graded_mesh` and its stick index (cached: a sweep with error
-    estimates asks for each mesh several times, and the node placement inverts the
-    element count by bisection)."""
+    """The nodes of :func:`graded_mesh` and its stick index."""
     if c <= 0.0 or c >= 1.0:
         t = np.linspace(0.0, 1.0, n + 1)
         nodes = _toward_end(t, power)

@@ -34,6 +34,8 @@ class Geometry(Contact):
         E1/E2 of the indenter over the body (``inf``: rigid, the default).
     indenter_nu : float, optional
         Poisson's ratio of the indenter (None: the body's).
+    base : {"smooth", "bonded"}
+        The layer's rigid base (default smooth; irrelevant at slab_ratio 0).
     """
 
     indenter: Indenter = field(init=False, repr=False, compare=False)
@@ -43,13 +45,14 @@ class Geometry(Contact):
     slab_ratio: float = 0.0
     indenter_modulus: float = math.inf
     indenter_nu: float | None = None
+    base: str = "smooth"
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "indenter",
                            indenter(self.name, self.indenter_modulus, self.indenter_nu))
-        object.__setattr__(self, "body", ElasticBody(self.nu, self.slab_ratio))
+        object.__setattr__(self, "body", ElasticBody(self.nu, self.slab_ratio, self.base))
 
     @property
     def thickness(self) -> float:
-        """Slab thickness h/a (``inf``: half-plane)."""
+        """Layer thickness h/a (``inf``: half-space or half-plane)."""
         return self.body.thickness

@@ -8,6 +8,11 @@ or slip by Coulomb's law with full complementarity, carrying the tangential
 state from step to step. It covers monotonic loading, unloading, repeated
 cycles and the one-step ("one-shot") load, for the sphere on a half-space and
 the cylinder on a half-plane or on a slab (where a/h changes along the path).
+With ``relaxation`` and ``duration`` the body is viscoelastic (a Prony
+series, constant Poisson's ratio; docs/theory.md, "Viscoelastic bodies"):
+the path then has a time axis, E* is the instantaneous E*(0) in every
+scaling below, and the result splits the indenter's work into stored,
+viscous and frictional parts.
 
 Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
 -----------------------------------------------------------------------
@@ -72,12 +77,12 @@ import numpy as np
 
 from . import history_solver as hs
 from . import validate
-from .model import contact
+from .model import Contact, contact
 from .result import history_repr
 from .threads import blas_single_threaded
 
 __all__ = ["history", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
-           "load_levels"]
+           "load_levels", "step_times", "creep_extent"]
 
 DEFAULT_N = validate.HISTORY_DEFAULT_N  # elements over [0, 1.2 a_max]: size a_max / 200
 MIN_N = validate.HISTORY_MIN_N
@@ -131,6 +136,20 @@ class HistoryResult:
         elements, and neither estimate exceeds ``max_error``.
     max_error : float
         The accuracy a step must reach to be resolved.
+    relaxation, durations : tuple
+        The body's Prony terms (g_i, tau_i) and the durations of the path
+        segments (unit of tau); both empty for an elastic body.
+    mesh_extent : float
+        Mesh length over a_max (1.2; a viscoelastic body's mesh covers the
+        creep of the contact, see :func:`history`).
+    time : ndarray or None
+        Time at the end of every step (unit of tau; 0 for step 0); None for
+        an elastic body.
+    external_work, stored_energy, viscous_work : ndarray
+        Cumulative work of the indenter, the body's stored (free) energy and
+        the cumulative dissipation of its dashpots, scaled as
+        ``frictional_work``; external = stored + viscous + frictional (see
+        :mod:`contactlib.energy`). ``viscous_work`` is 0 for an elastic body.
 
     Examples
     --------
@@ -172,6 +191,14 @@ class HistoryResult:
     indenter_modulus_ratio: float = math.inf  # E1/E2 (inf: rigid)
     indenter_poisson_ratio: float = math.nan  # nu1 (the body's when rigid)
     dundurs_beta: float = math.nan  # beta of the pair (< 0: slip outward while loading)
+    relaxation: tuple[tuple[float, float], ...] = ()  # Prony (g, tau); () elastic
+    durations: tuple[float, ...] = ()  # of the path segments (viscoelastic only)
+    mesh_extent: float = hs.MESH_EXTENT  # mesh length over a_max
+    time: np.ndarray | None = None  # (S + 1,) viscoelastic only, unit of tau
+    external_work: np.ndarray | None = None
+    stored_energy: np.ndarray | None = None
+    viscous_work: np.ndarray | None = None
+    base: str = "smooth"  # the layer's rigid base (irrelevant at slab_ratio 0)
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -201,6 +228,32 @@ def load_levels(load_path: Sequence[float], steps: int) -> tuple[np.ndarray, np.
     return levels, segment
 
 
+def step_times(durations: Sequence[float], steps: int) -> np.ndarray:
+    """Time at the end of every step: ``steps`` equal steps in each segment's duration.
+
+    Returns an array of length ``steps * len(durations) + 1`` starting at 0,
+    matching :func:`load_levels`.
+    """
+    ends = np.concatenate([[0.0], np.cumsum(np.asarray(durations, dtype=float))])
+    t = np.arange(1, steps + 1) / steps
+    parts = [ends[:1]] + [a + (b - a) * t for a, b in zip(ends[:-1], ends[1:])]
+    times = np.concatenate(parts)
+    times[steps::steps] = ends[1:]
+    return times
+
+
+def creep_extent(model: Contact) -> float:
+    """Mesh length over a_max that covers the creep of the contact (``MESH_EXTENT`` if elastic).
+
+    Under a load held long enough the frictionless contact radius at P_max
+    grows to the Hertz radius at E(inf): ``hertz_radius(1/g_inf)`` a_max,
+    ``g_inf^(-1/3)`` (sphere) or ``g_inf^(-1/2)`` (cylinder on a half-plane;
+    a slab on a rigid base grows less). The mesh keeps 1.2 times that.
+    """
+    relaxed = getattr(model.body, "relaxed_ratio", 1.0)
+    return hs.MESH_EXTENT * model.indenter.hertz_radius(1.0 / relaxed)
+
+
 # ----------------------------------------------------------------------------- public API
 @blas_single_threaded
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
@@ -208,14 +261,17 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             progress: Callable[[int, int], None] | None = None,
             max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
             indenter_modulus: float = math.inf,
-            indenter_nu: float | None = None) -> HistoryResult:
+            indenter_nu: float | None = None,
+            relaxation: Sequence[Sequence[float]] | None = None,
+            duration: float | Sequence[float] | None = None,
+            base: str = "smooth") -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
     ----------
     geometry : {"sphere", "cylinder"}
-        Rigid sphere on a half-space, or rigid cylinder on a half-plane
-        (``slab_ratio = 0``) or slab on a smooth rigid base (plane strain).
+        Rigid sphere or cylinder (plane strain) on a half-space/half-plane
+        (``slab_ratio = 0``) or on a layer on a rigid base.
     nu : float
         Poisson's ratio, in (-1, 0.5].
     friction : float
@@ -226,9 +282,13 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     steps : int
         Equal load steps per path segment (>= 1; 1 gives the one-step load).
     n : int, optional
-        Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200).
+        Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200);
+        with a relaxation over ``[0, 1.2 a_inf]``, a_inf the fully crept
+        contact radius (:func:`creep_extent`), so the elements are larger.
     slab_ratio : float
-        Cylinder only: a_max / h of the slab (0: half-plane).
+        a_max / h of the layer (0: half-space or half-plane); h is fixed
+        while a grows. The sphere's mesh reaches 1.2 a_max, so its bound is
+        ``LAYER_RATIO_MAX / 1.2`` (16.7).
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
     max_error : float
@@ -243,6 +303,17 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         An elastic indenter, as for :func:`contactlib.solve` (E1/E2, default
         ``inf``: rigid; nu1, default the body's). Scalings use the composite
         E*; slip and shear take either sign.
+    relaxation : sequence of (g, tau), optional
+        A viscoelastic body (:class:`contactlib.body.ViscoelasticBody`):
+        E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)), g_i > 0, sum g_i < 1,
+        tau_i > 0, with a constant Poisson's ratio. E* (so a_max, P_max and
+        p0) is the instantaneous one, E*(0). Needs a rigid indenter.
+    duration : float or sequence of float
+        With a relaxation (required then, refused otherwise): the duration of
+        the path (its segments equally long) or of each segment, in the
+        unit of tau.
+    base : {"smooth", "bonded"}
+        The layer's rigid base (default smooth).
 
     Returns
     -------
@@ -307,29 +378,42 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     levels_in = validate.load_path(load_path)
     steps = validate.steps(steps)
     n = validate.history_n(n)
-    slab = validate.slab_ratio(slab_ratio, geometry)
+    base = validate.base(base)
+    slab = validate.slab_ratio(slab_ratio, geometry, base, extent=validate.HISTORY_MESH_EXTENT)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
+    prony = validate.relaxation(relaxation)
+    durations = validate.duration(duration, len(levels_in) - 1, bool(prony))
+    if prony and ratio != math.inf:
+        raise validate.InputError("relaxation", "given with a rigid indenter", relaxation,
+                                  "relaxation needs a rigid indenter (an elastic indenter's "
+                                  "compliance would not relax with the body's)")
 
-    model = contact(geometry, nu, slab, ratio, nu1)
-    ops = hs.build_operators(model, n)
+    model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony)
+    extent = creep_extent(model)
+    ops = hs.build_operators(model, n, extent)
     levels, segment = load_levels(levels_in, steps)
-    raw = hs.run_history(ops, k, levels, progress=progress)
+
+    def times_of(n_steps: int) -> np.ndarray | None:
+        return step_times(durations, n_steps) if prony else None
+
+    raw = hs.run_history(ops, k, levels, progress=progress, times=times_of(steps))
     err_c = np.full(levels.size, np.nan)
     err_w = np.full(levels.size, np.nan)
     if error_estimate:
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
         levels_c, segment_c = load_levels(levels_in, steps_c)
-        ops_c = hs.build_operators(model, n_c)
-        raw_c = hs.run_history(ops_c, k, levels_c)
+        ops_c = hs.build_operators(model, n_c, extent)
+        raw_c = hs.run_history(ops_c, k, levels_c, times=times_of(steps_c))
         coarser = (None, None, None)
         if steps >= _MIN_SPLIT_STEPS:  # separate step error: the same mesh, half the steps again
             steps_b = steps_c // 2
             levels_b, segment_b = load_levels(levels_in, steps_b)
-            coarser = (hs.run_history(ops_c, k, levels_b), steps_b, segment_b)
+            coarser = (hs.run_history(ops_c, k, levels_b, times=times_of(steps_b)), steps_b,
+                       segment_b)
         err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c,
                                           *coarser)
     annulus = hs.annulus_resolved(k, raw.state)
@@ -381,4 +465,6 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         stick_radius_error_estimate=err_c, work_error_estimate=err_w, resolved=resolved,
         max_error=max_error, indenter_modulus_ratio=float(ratio),
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
-        dundurs_beta=float(model.beta))
+        dundurs_beta=float(model.beta), relaxation=prony, durations=durations,
+        mesh_extent=float(extent), time=raw.time, external_work=raw.external_work,
+        stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base)

@@ -81,19 +81,21 @@ from __future__ import annotations
 
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import linalg
 
-from .energy import step_work
+from .energy import (decay_integrals, dot, mean_traction, step_external_work, step_work,
+                     stored_energy, viscous_step_work)
 from .model import Contact
 from .operators import step_operator
 
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
            "stick_radius", "MESH_EXTENT", "RawHistory", "run_history",
-           "MIN_SLIP_ELEMENTS", "path_interpolate", "error_estimates", "annulus_resolved"]
+           "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates",
+           "annulus_resolved"]
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"
@@ -101,6 +103,7 @@ MESH_EXTENT = 1.2  # mesh length over a_max
 
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
 MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
+_MAX_DURATIONS = 4  # step durations whose scaled operators a viscoelastic run keeps
 
 
 @dataclass(frozen=True)
@@ -314,7 +317,8 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
 
 def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
                guess: np.ndarray, max_iter: int = 200,
-               cache: dict | None = None) -> StepResult:
+               cache: dict | None = None, w_shift: np.ndarray | None = None,
+               u_shift: np.ndarray | None = None) -> StepResult:
     """Solve one load step by the active-set iteration (see the module notes).
 
     Parameters
@@ -334,6 +338,10 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
         Keeps the last LU factorization between calls (same ``ops`` and ``k``):
         the matrix depends only on the sets, so a step that starts from the
         previous step's final sets reuses its factorization.
+    w_shift, u_shift : ndarray, optional
+        Displacements the step adds whatever its tractions (a viscoelastic
+        body's memory, :func:`run_history`): w = pw p + qw q + w_shift,
+        u = pu p + qu q + u_shift. None: zero (an elastic body).
     """
     state = guess.astype(np.int8, copy=True)
     if not np.any(state):
@@ -356,6 +364,9 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             cache.update(key=key, lu=lu, c=c, factor=factor, stick=stick)
         lu, c, factor, stick = cache["lu"], cache["c"], cache["factor"], cache["stick"]
         b = _rhs(ops, load, u_old, c, stick)
+        if w_shift is not None:
+            b[:c.size] -= w_shift[c]
+            b[c.size:c.size + stick.size] -= u_shift[c[stick]]
         x = linalg.lu_solve(lu, b, check_finite=False)
         if not np.all(np.isfinite(x)):  # singular system for these sets
             cache.clear()
@@ -370,6 +381,9 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
         delta = float(x[-1])
         w = ops.pw @ p + ops.qw @ q
         u = ops.pu @ p + ops.qu @ q
+        if w_shift is not None:
+            w += w_shift
+            u += u_shift
         gap = w - delta + 0.5 * ops.mid**2
         du = u - u_old
         new, viol, res = _violations(ops, k, state, p, q, du, gap)
@@ -473,7 +487,11 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
 
 @dataclass
 class RawHistory:
-    """Every step of a history (row 0: the unloaded initial state), units a_max = 1."""
+    """Every step of a history (row 0: the unloaded initial state), units a_max = 1.
+
+    The energies are cumulative, in the units of ``work`` (see
+    :mod:`contactlib.energy`); ``time`` is None for an elastic body.
+    """
 
     load: np.ndarray  # (S+1,) P / P_max
     p: np.ndarray  # (S+1, n)
@@ -487,17 +505,54 @@ class RawHistory:
     converged: np.ndarray  # (S+1,) bool
     iterations: np.ndarray  # (S+1,) int
     residual: np.ndarray  # (S+1,)
+    time: np.ndarray | None = None  # (S+1,) viscoelastic body only
+    external_work: np.ndarray | None = None  # (S+1,) cumulative P d(delta)
+    stored_energy: np.ndarray | None = None  # (S+1,) free energy of the body
+    viscous_work: np.ndarray | None = None  # (S+1,) cumulative dashpot dissipation
+
+
+def prony_step(g: np.ndarray, tau: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, float]:
+    """Coefficients of the recursive hereditary integral over a step of duration ``dt``.
+
+    For each Prony term the branch variable h_i = int exp(-(t - s)/tau_i) de(s)
+    (e the elastic-equivalent traction, linear in time within the step)
+    updates exactly as ``h_i^new = a_i h_i^old + b_i (e^new - e^old)`` with
+    ``a_i = exp(-dt/tau_i)`` and ``b_i = (tau_i/dt)(1 - a_i)``; the traction
+    ``sigma = g_inf e + sum g_i h_i`` is then ``beta e^new + sigma_hist`` with
+    ``beta = g_inf + sum g_i b_i`` in (g_inf, 1].
+
+    Returns
+    -------
+    (a, b, beta)
+    """
+    x = dt / tau
+    a = np.exp(-x)
+    b = -np.expm1(-x) / x
+    return a, b, float(1.0 - np.sum(g) + np.sum(g * b))
 
 
 def run_history(ops: Operators, k: float, levels: np.ndarray,
                 progress: Callable[[int, int], None] | None = None,
-                max_iter: int = 200) -> RawHistory:
+                max_iter: int = 200, times: np.ndarray | None = None) -> RawHistory:
     """Follow the load levels ``levels`` (P/P_max; ``levels[0]`` must be 0).
 
     The frictional work of a step is :func:`contactlib.energy.step_work`
-    (trapezoid in time over the elements slipping at the end of the step).
+    (trapezoid in time over the elements slipping at the end of the step and
+    those that slipped before it and separate in it).
     A step from no contact starts from the Hertz contact radius of its load
     (:meth:`contactlib.indenter.Indenter.hertz_radius`).
+
+    A viscoelastic body (``ops.model.body`` a
+    :class:`~contactlib.body.ViscoelasticBody`) needs the ``times`` of the
+    steps (``times[0] = 0``, unit of its tau). Its displacements are
+    d = K e, K the elastic operator at E(0) (``ops``) and e the
+    elastic-equivalent traction, and sigma = g_inf e + sum g_i h_i
+    (:func:`prony_step`). A step is therefore the elastic step with the
+    operator K/beta and the shift -K sigma_hist/beta; K h_i is carried
+    along with h_i (``K h_i^new = a_i K h_i^old + b_i (d^new - d^old)``), so
+    a step needs no product with K beyond the elastic step's: memory
+    ``(2 N + 2) 2 n`` numbers and time per step independent of the number
+    of steps. The energies are those of :mod:`contactlib.energy`.
     """
     levels = np.asarray(levels, dtype=float)
     steps = levels.size
@@ -506,37 +561,99 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
     out = RawHistory(levels.copy(), z.copy(), z.copy(), z.copy(), np.zeros(steps),
                      np.zeros((steps, n), dtype=np.int8), np.zeros(steps),
                      np.zeros(steps), np.full(steps, np.nan), np.ones(steps, dtype=bool),
-                     np.zeros(steps, dtype=np.int64), np.zeros(steps))
+                     np.zeros(steps, dtype=np.int64), np.zeros(steps),
+                     external_work=np.zeros(steps), stored_energy=np.zeros(steps),
+                     viscous_work=np.zeros(steps))
+    body = ops.model.body
+    g = np.asarray(getattr(body, "weights", np.zeros(0)), dtype=float)
+    tau = np.asarray(getattr(body, "times", np.zeros(0)), dtype=float)
+    visco = g.size > 0
+    if visco:
+        if times is None:
+            raise ValueError("a viscoelastic body needs the times of the steps")
+        out.time = np.asarray(times, dtype=float).copy()
+    weights = np.stack([ops.area, ops.shear_area])
+    relaxed = float(1.0 - np.sum(g))
+    half_r2 = 0.5 * ops.mid**2
+    e_old = np.zeros((2, n))  # elastic-equivalent traction (p, q rows)
+    d_old = np.zeros((2, n))  # displacement (w, u rows) = K e_old
+    h = np.zeros((g.size, 2, n))
+    kh = np.zeros((g.size, 2, n))
+    per_dt: dict[float, tuple] = {}
     state = np.zeros(n, dtype=np.int8)
     u_old = np.zeros(n)
     q_old = np.zeros(n)
     cache: dict = {}
-    work = 0.0
+    work = external = viscous = 0.0
+    p_old = w_old = np.zeros(n)
     hertz_radius = ops.model.indenter.hertz_radius
     for i in range(1, steps):
         level = float(levels[i])
+        step_ops, step_cache, shift = ops, cache, (None, None)
+        if visco:
+            # the step's duration to 10 digits: the steps of a segment share it (and one
+            # scaled copy of the operators and one factorization cache), although the
+            # differences of the times differ in their last bits
+            dt = float(f"{out.time[i] - out.time[i - 1]:.10g}")
+            if dt not in per_dt:
+                if len(per_dt) >= _MAX_DURATIONS:  # bounded memory: drop the oldest
+                    per_dt.pop(next(iter(per_dt)))
+                a, b, beta = prony_step(g, tau, dt)
+                scaled = replace(ops, pw=ops.pw / beta, pu=ops.pu / beta, qw=ops.qw / beta,
+                                 qu=ops.qu / beta)
+                per_dt[dt] = (a, b, beta, scaled, {}, decay_integrals(dt / tau))
+            a, b, beta, step_ops, step_cache, integrals = per_dt[dt]
+            sigma_hist = np.tensordot(g * a, h, axes=1) - np.sum(g * b) * e_old
+            shift = -(np.tensordot(g * a, kh, axes=1) - np.sum(g * b) * d_old) / beta
         if level == 0.0:
-            res = StepResult(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), 0.0,
-                             np.zeros(n, dtype=np.int8), True, 0, 0.0)
+            zero = np.zeros(n)
+            if visco:  # no traction: the surface recovers; the indenter just touches it
+                delta = float(np.min(shift[0] + half_r2))
+                res = StepResult(zero, zero.copy(), shift[1].copy(),
+                                 shift[0] - delta + half_r2, delta,
+                                 np.zeros(n, dtype=np.int8), True, 0, 0.0)
+            else:  # no traction, no displacement (gap r^2/2)
+                res = StepResult(zero, zero.copy(), zero.copy(), half_r2.copy(), 0.0,
+                                 np.zeros(n, dtype=np.int8), True, 0, 0.0)
         else:
             guess = state
             if not np.any(guess):
                 guess = np.where(ops.mid < hertz_radius(level), STICK,
                                  SEPARATED).astype(np.int8)
-            res = solve_step(ops, k, level * ops.p_max, u_old, guess, max_iter, cache)
+            res = solve_step(step_ops, k, level * ops.p_max, u_old, guess, max_iter,
+                             step_cache, *shift)
         work += step_work(q_old, res.q, res.u - u_old, ops.shear_area,
-                          res.state >= SLIP_INWARD)
+                          (res.state >= SLIP_INWARD)
+                          | ((res.state == SEPARATED) & (state >= SLIP_INWARD)))
+        sigma = np.stack([res.p, res.q])
+        d = np.stack([res.gap + res.delta - half_r2, res.u])
+        if visco:
+            e = (sigma - sigma_hist) / beta
+            de, dd = e - e_old, d - d_old
+            p_mean = mean_traction(relaxed, g, tau, dt, e_old, e, h)[0]
+            external += step_external_work(ops.area, p_mean, w_old, d[0])
+            viscous += viscous_step_work(weights, g, tau, dt, h, kh, de, dd, integrals)
+            h = a[:, None, None] * h + b[:, None, None] * de
+            kh = a[:, None, None] * kh + b[:, None, None] * dd
+            e_old, d_old = e, d
+            out.stored_energy[i] = stored_energy(weights, relaxed, g, e, d, h, kh)
+        else:
+            external += step_external_work(ops.area, 0.5 * (p_old + res.p), w_old, d[0])
+            out.stored_energy[i] = 0.5 * dot(weights, sigma, d)
+        out.external_work[i] = external
+        out.viscous_work[i] = viscous
         out.p[i], out.q[i], out.u[i] = res.p, res.q, res.u
         out.delta[i] = res.delta
         out.state[i] = res.state
         out.work[i] = work
-        a = contact_radius(ops, res.state, res.gap)
-        out.contact_radius[i] = a
-        out.stick_radius[i] = stick_radius(ops, k, res.state, res.p, res.q, a) if a > 0 \
-            else np.nan
+        a_c = contact_radius(ops, res.state, res.gap)
+        out.contact_radius[i] = a_c
+        out.stick_radius[i] = stick_radius(ops, k, res.state, res.p, res.q, a_c) \
+            if a_c > 0 else np.nan
         out.converged[i], out.iterations[i] = res.converged, res.iterations
         out.residual[i] = res.residual
         state, u_old, q_old = res.state, res.u, res.q
+        p_old, w_old = res.p, d[0]
         if progress is not None:
             progress(i, steps - 1)
     return out

@@ -90,7 +90,12 @@ class Indenter(ABC):
         or "half-plane".
     accepts_layer : bool
         The body may be a layer of finite thickness (``slab_ratio > 0``):
-        the body has layer kernels for this indenter's basic loads.
+        the body has layer kernels for this indenter's basic loads (rings:
+        :mod:`contactlib.kernels.layer`; strips: :mod:`contactlib.kernels.strip`).
+    reports_half_space_ratio : bool
+        Results and datasets name the slab ratio even when it is 0 (the
+        cylinder's, which had its slab first); the sphere names it, and the
+        base, only on a layer (see :meth:`reports_layer`).
     work_factor : float
         V = work_factor * int xi^work_weight_power q (-s) dxi over the slip
         zone (q traction, s self-similar slip rate, units E* = a = R = 1).
@@ -114,6 +119,7 @@ class Indenter(ABC):
     plane_strain: ClassVar[bool]
     half_space_name: ClassVar[str]
     accepts_layer: ClassVar[bool]
+    reports_half_space_ratio: ClassVar[bool]
     work_factor: ClassVar[float]
     work_weight_power: ClassVar[int]
     odd_shear: ClassVar[bool]
@@ -121,6 +127,14 @@ class Indenter(ABC):
 
     modulus_ratio: float = math.inf
     nu: float | None = None
+
+    def reports_layer(self, slab_ratio: float) -> bool:
+        """Whether results and datasets carry ``slab_ratio`` (a/h) for this indenter.
+
+        On a layer always; on the half-space only where the indenter's
+        reports always did (:attr:`reports_half_space_ratio`, the cylinder).
+        """
+        return bool(slab_ratio > 0 or self.reports_half_space_ratio)
 
     @property
     def rigid(self) -> bool:
@@ -159,6 +173,19 @@ class Indenter(ABC):
         :meth:`shear_shape`); ``with_du=False`` lets the kernel skip du/dx
         (NaN) where that is cheaper. Units as :meth:`pressure_kernel`.
         """
+
+    def smooth_remainder(self, body: ElasticBody, part: str, x: np.ndarray, s: np.ndarray,
+                         weights: np.ndarray | None = None,
+                         owner: np.ndarray | None = None) -> np.ndarray | None:
+        """The body's smooth remainder over the half-space kernels on the grid x by s.
+
+        (3, x.size, s.size) for the basic loads of ``part`` ("normal" or
+        "shear"), or its weighted sums over s (quadrature ``weights``, sums
+        indexed by ``owner``), or None where the body's kernels are not split
+        that way (the half-space; strips, whose slab kernels are evaluated
+        whole).
+        """
+        return None
 
     @abstractmethod
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
@@ -248,7 +275,8 @@ class Sphere(Indenter):
     work_exponent: ClassVar[int] = 5
     plane_strain: ClassVar[bool] = False
     half_space_name: ClassVar[str] = "half-space"
-    accepts_layer: ClassVar[bool] = False
+    accepts_layer: ClassVar[bool] = True
+    reports_half_space_ratio: ClassVar[bool] = False
     work_factor: ClassVar[float] = 2.0 * np.pi / 5.0
     work_weight_power: ClassVar[int] = 1
     odd_shear: ClassVar[bool] = False
@@ -261,6 +289,12 @@ class Sphere(Indenter):
     def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
                      with_du: bool = True) -> Displacements:
         return body.ring_shear(x, s, with_du=with_du)
+
+    def smooth_remainder(self, body: ElasticBody, part: str, x: np.ndarray, s: np.ndarray,
+                         weights: np.ndarray | None = None,
+                         owner: np.ndarray | None = None) -> np.ndarray | None:
+        return body.ring_remainder("pressure" if part == "normal" else "shear", x, s,
+                                   weights, owner)
 
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         d = body.ring_kernel_degrees
@@ -320,6 +354,7 @@ class Cylinder(Indenter):
     plane_strain: ClassVar[bool] = True
     half_space_name: ClassVar[str] = "half-plane"
     accepts_layer: ClassVar[bool] = True
+    reports_half_space_ratio: ClassVar[bool] = True
     work_factor: ClassVar[float] = 0.5
     work_weight_power: ClassVar[int] = 0
     odd_shear: ClassVar[bool] = True

@@ -12,8 +12,9 @@ and scalings of docs/conventions.md):
   histories (:class:`~contactlib.history_api.HistoryResult`);
 * :func:`study_to_dataset` and :func:`study_from_dataset` for convergence
   studies (:class:`~contactlib.convergence.Study`);
-* :func:`write_records` and :func:`read_records` for the case records the
-  workflow passes between its stages (npz).
+* :func:`write_records` and :func:`read_records` for the case records
+  (:class:`~contactlib.result.CaseRecord`) the workflow passes between its
+  stages (npz).
 
 Every writer (:func:`write_dataset`, :func:`write_arrays`,
 :func:`write_records`, :func:`write_table`, :func:`write_figure`) goes
@@ -36,6 +37,7 @@ Examples
 
 from __future__ import annotations
 
+import dataclasses
 import errno
 import math
 import os
@@ -53,14 +55,16 @@ if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-u
 
 from contactlib.checks import FLAG_NAMES, VIOLATION_NAMES
 from contactlib.indenter import indenter
-from contactlib.result import Solution
+from contactlib.result import CaseRecord, Solution
 
 if TYPE_CHECKING:  # types only: the conversions import the numerics when they run
     from contactlib.convergence import Study
     from contactlib.history_api import HistoryResult
+    from contactlib.layer_study import LayerStudy
 
 __all__ = ["to_dataset", "scene_to_dataset", "set_provenance", "history_to_dataset",
-           "stack_histories", "study_to_dataset", "study_from_dataset", "write_dataset",
+           "stack_histories", "study_to_dataset", "study_from_dataset", "layer_study_to_dataset",
+           "write_dataset",
            "read_dataset", "write_arrays", "read_arrays", "write_records", "read_records",
            "write_table", "write_figure", "check_writable", "check_yaml", "version",
            "cf_attrs", "DamagedFileError", "CONVENTIONS"]
@@ -142,8 +146,27 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
     ),
 }
 
-_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "indenter_modulus_ratio",
-                  "indenter_poisson_ratio")
+_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "base",
+                  "indenter_modulus_ratio", "indenter_poisson_ratio")
+
+
+def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
+    """The layer's global attributes: ``slab_ratio`` (a/h, or a_max/h in a history) and ``base``.
+
+    ``slab_ratio`` where the indenter reports it (always for the cylinder, on
+    a layer for the sphere: a sphere on the half-space keeps its attributes);
+    ``base`` = "bonded" on a layer bonded to its base. Without ``base`` a
+    layer is on a smooth base: the default, and the paper's slab, whose
+    files keep the attributes they had before bases existed.
+    """
+    slab = float(result.slab_ratio)
+    base = str(getattr(result, "base", "smooth"))
+    attrs: dict[str, Any] = {}
+    if ind.reports_layer(slab):
+        attrs["slab_ratio"] = slab
+    if slab > 0 and base != "smooth":
+        attrs["base"] = base
+    return attrs
 
 
 def version() -> str:
@@ -339,8 +362,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     max_errors = {float(s.max_error) for s in sols if math.isfinite(s.max_error)}
     if max_errors:
         attrs["max_error"] = max(max_errors)
-    if ind.accepts_layer:
-        attrs["slab_ratio"] = float(first.slab_ratio)
+    attrs.update(_layer_attrs(ind, first))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = version()
@@ -554,11 +576,12 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "load_path": np.asarray(r.load_path, dtype=float),
         "steps": int(r.steps),
     }
-    if ind.accepts_layer:
-        attrs["slab_ratio"] = float(r.slab_ratio)
+    attrs.update(_layer_attrs(ind, r))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(hs.MESH_EXTENT)
+    if getattr(r, "relaxation", ()):  # a viscoelastic body: time, energies, relaxation
+        _add_viscoelastic(r, data, attrs, sd, work_scale)
     if r.resolved is not None:
         attrs["max_error"] = float(r.max_error)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
@@ -567,6 +590,33 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     attrs["contactlib_version"] = version()
     attrs["Conventions"] = CONVENTIONS
     return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def _add_viscoelastic(r: HistoryResult, data: dict[str, Any], attrs: dict[str, Any],
+                      sd: tuple[str, ...], work_scale: str) -> None:
+    """The variables and attributes of a viscoelastic history (elastic ones have none)."""
+    data["time"] = (sd, r.time, cf_attrs(
+        "time at the end of the step", units="1",
+        comment="in the unit of the relaxation times (relaxation_times); 0: initial state"))
+    energy = ("; external = stored + viscous + frictional (contactlib.energy); " + work_scale)
+    data["external_work"] = (sd, r.external_work, cf_attrs(
+        "cumulative work of the indenter (int P d delta)",
+        comment="pressure averaged over each step on the body's surface" + energy))
+    data["stored_energy"] = (sd, r.stored_energy, cf_attrs(
+        "free energy stored in the body",
+        comment="g_inf/2 <e, K e> + sum g_i/2 <h_i, K h_i> at E*(0)" + energy))
+    data["viscous_work"] = (sd, r.viscous_work, cf_attrs(
+        "cumulative dissipation of the viscous body",
+        comment="sum (g_i/tau_i) int <h_i, K h_i> dt, exact for e linear in each step"
+                + energy))
+    attrs["relaxation_weights"] = np.array([g for g, _ in r.relaxation], dtype=float)
+    attrs["relaxation_times"] = np.array([t for _, t in r.relaxation], dtype=float)
+    attrs["relaxed_modulus_ratio"] = float(1.0 - sum(g for g, _ in r.relaxation))
+    attrs["segment_durations"] = np.asarray(r.durations, dtype=float)
+    attrs["mesh_extent"] = float(r.mesh_extent)
+    attrs["relaxation"] = ("Prony series E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)), "
+                           "g_i = relaxation_weights, tau_i = relaxation_times, constant "
+                           "Poisson's ratio; a_max, P_max and p0 use E*(0)")
 
 
 def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
@@ -595,12 +645,13 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     items = list(datasets)
     if not items:
         raise ValueError("stack_histories needs at least one history dataset")
-    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio")
+    same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio", "base",
+            "relaxation_weights", "relaxation_times", "segment_durations")
     first = items[0].attrs
     for ds in items[1:]:
         for key in same:
-            if key in first and not np.array_equal(np.asarray(ds.attrs.get(key)),
-                                                   np.asarray(first[key])):
+            if key in first and not np.array_equal(np.atleast_1d(ds.attrs.get(key)),
+                                                   np.atleast_1d(first[key])):
                 raise ValueError(f"histories to stack must share {key}: "
                                  f"{first[key]!r} vs {ds.attrs.get(key)!r}")
         if not np.array_equal(np.asarray(ds.attrs["load_path"]), np.asarray(first["load_path"])):
@@ -615,7 +666,7 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
         ds.attrs = {k: v for k, v in ds.attrs.items()
                     if k not in ("friction_coefficient", "message")}
         members.append(ds)
-    shared = ("xi_bounds", "segment", "load_ratio")  # the path and the mesh: no k in them
+    shared = ("xi_bounds", "segment", "load_ratio", "time")  # the path and the mesh: no k
     varying = [v for v in members[0].data_vars if v not in shared]
     out = xr.concat(members, dim="friction_coefficient", data_vars=varying, coords="minimal",
                     compat="equals", combine_attrs="override")
@@ -712,6 +763,47 @@ def study_from_dataset(ds: xr.Dataset) -> Study:
         observed_order=ds["observed_order"].values, error=ds["error"].values,
         wall_time=ds["wall_time"].values, peak_memory=ds["peak_memory"].values,
         reference_source=str(ds.attrs["reference"]))
+
+
+def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
+    """A :class:`~contactlib.layer_study.LayerStudy` as a dataset.
+
+    Dimensions ``geometry``, ``base``, ``poisson_ratio``, ``slab_ratio``
+    (a/h) and ``stick_ratio``; variables ``load_ratio`` (frictionless
+    P/P_Hertz) and ``load_error_estimate`` on the first four,
+    ``friction_coefficient``, ``error_estimate`` and ``resolved`` on all five.
+    Global attributes ``elements``, ``method`` (default), ``Conventions`` and
+    ``contactlib_version``.
+    """
+    import xarray as xr
+
+    dims4 = ("geometry", "base", "poisson_ratio", "slab_ratio")
+    dims5 = dims4 + ("stick_ratio",)
+    return xr.Dataset(
+        data_vars={
+            "load_ratio": (dims4, st.load_ratio, cf_attrs(
+                "frictionless load over the Hertz load at the same contact radius")),
+            "load_error_estimate": (dims4, st.load_error_estimate,
+                                    cf_attrs("estimated relative error of load_ratio")),
+            "friction_coefficient": (dims5, st.friction, cf_attrs(
+                "friction coefficient k", comment="self-similar loading, a/h held fixed")),
+            "error_estimate": (dims5, st.error_estimate,
+                               cf_attrs("estimated relative error of k")),
+            "resolved": (dims5, st.resolved.astype(bool), cf_attrs(
+                "converged, consistent and error_estimate at most 1e-3",
+                comment="thin bonded layers whose slip reverses are not", **_BOOL_FLAGS)),
+        },
+        coords={"geometry": ("geometry", list(st.geometries), {"long_name": "indenter"}),
+                "base": ("base", list(st.bases), {"long_name": "rigid base under the layer"}),
+                "poisson_ratio": ("poisson_ratio", np.asarray(st.nus, dtype=float),
+                                  cf_attrs("Poisson's ratio of the body")),
+                "slab_ratio": ("slab_ratio", np.asarray(st.ratios, dtype=float),
+                               cf_attrs("a/h", comment="0: half-space or half-plane")),
+                "stick_ratio": ("stick_ratio", np.asarray(st.stick_ratios, dtype=float),
+                                cf_attrs("c/a"))},
+        attrs={"title": "contactlib: layers, k and frictionless load against a/h",
+               "elements": int(st.n), "method": "default", "Conventions": CONVENTIONS,
+               "contactlib_version": version()})
 
 
 # ----------------------------------------------------------------------------- files
@@ -891,17 +983,22 @@ def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
         raise _damaged(path, "npz", exc) from exc
 
 
-def write_records(records: Sequence[Mapping[str, Any]], path: str | os.PathLike[str]) -> Path:
+# fields of case records written by earlier versions and no longer kept (ignored on reading)
+_RETIRED_RECORD_FIELDS = ("tolerance_message",)  # (merged into the message)
+
+
+def write_records(records: Sequence[CaseRecord], path: str | os.PathLike[str]) -> Path:
     """Write the case records of a scene (:func:`contactlib.stages.solve_cases`) to ``.npz``.
 
-    The workflow's transport between its stages: each record (a dict of
-    scalars and arrays, one a stick ratio) is flattened into arrays named
-    ``"<i>/<field>"``, next to ``count``, and written with
-    :func:`write_arrays` (atomically, no pickles).
+    The workflow's transport between its stages: every field of each
+    :class:`~contactlib.result.CaseRecord` that is not None becomes an array
+    named ``"<i>/<field>"`` (i the case's position), next to ``count``, the
+    number of records; written with :func:`write_arrays` (atomically, no
+    pickles).
 
     Parameters
     ----------
-    records : sequence of mapping
+    records : sequence of CaseRecord
     path : str or os.PathLike
         Destination; must end in ``.npz``.
 
@@ -911,43 +1008,53 @@ def write_records(records: Sequence[Mapping[str, Any]], path: str | os.PathLike[
     """
     arrays: dict[str, np.ndarray] = {"count": np.array(len(records))}
     for i, rec in enumerate(records):
-        for key, value in rec.items():
-            arrays[f"{i}/{key}"] = np.asarray(value)
+        for f in dataclasses.fields(CaseRecord):
+            value = getattr(rec, f.name)
+            if value is not None:
+                arrays[f"{i}/{f.name}"] = np.asarray(value)
     return write_arrays(arrays, path)
 
 
-def read_records(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+def read_records(path: str | os.PathLike[str]) -> list[CaseRecord]:
     """Read case records written by :func:`write_records`.
 
-    0-d arrays come back as Python scalars, so a record read back equals the
-    one written.
+    0-d arrays come back as Python scalars and fields not in the file take
+    their defaults (None, or NaN for the estimates), so a record read back
+    equals the one written field by field. Files of earlier versions read
+    too (a retired field, ``tolerance_message``, is skipped).
 
     Raises
     ------
     DamagedFileError
-        If the file exists but cannot be read back whole.
+        If the file exists but cannot be read back whole, or does not hold
+        case records.
     FileNotFoundError
         If there is no such file.
 
     Examples
     --------
     >>> import tempfile, os
+    >>> from contactlib import stages
+    >>> from contactlib.model import contact
+    >>> recs = stages.solve_cases(contact("sphere", 0.3), "default", 16, [0.0])
     >>> with tempfile.TemporaryDirectory() as folder:
-    ...     path = write_records([{"stick_ratio": 0.5, "k": [0.1, 0.2]}],
-    ...                          os.path.join(folder, "r.npz"))
-    ...     read_records(path)[0]["stick_ratio"]
-    0.5
+    ...     path = write_records(recs, os.path.join(folder, "r.npz"))
+    ...     back = read_records(path)
+    >>> back[0].stick_ratio, back[0].k, back[0].p.shape
+    (0.0, 0.0, (17,))
     """
     arrays = read_arrays(path)
     try:
         count = int(arrays["count"])
-        records: list[dict[str, Any]] = [{} for _ in range(count)]
+        fields: list[dict[str, Any]] = [{} for _ in range(count)]
         for name, value in arrays.items():
             if name == "count":
                 continue
             i, key = name.split("/", 1)
-            records[int(i)][key] = value.item() if value.ndim == 0 else value
-    except (KeyError, ValueError, IndexError) as exc:
+            if key not in _RETIRED_RECORD_FIELDS:
+                fields[int(i)][key] = value.item() if value.ndim == 0 else value
+        records = [CaseRecord(**f) for f in fields]
+    except (KeyError, ValueError, IndexError, TypeError) as exc:
         raise _damaged(path, "case-record npz", exc) from exc
     return records
 

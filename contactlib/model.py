@@ -53,7 +53,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .body import ElasticBody
+from .body import ElasticBody, ViscoelasticBody
 from .indenter import Displacements, Indenter, indenter
 
 __all__ = ["Contact", "contact"]
@@ -180,6 +180,29 @@ class Contact:
         """
         return self._summed(self.indenter.shear_kernel, x, s, 1.0, merge, with_du=with_du)
 
+    def smooth_remainder(self, part: str, x: np.ndarray, s: np.ndarray,
+                         weights: np.ndarray | None = None,
+                         owner: np.ndarray | None = None) -> np.ndarray | None:
+        """The body's smooth remainder (layer minus half-space) on the grid x by s, or None.
+
+        (3, x.size, s.size), or its weighted sums over s (see
+        :meth:`Indenter.smooth_remainder`), in units of the composite E*
+        (weight c2): the
+        kernels of :meth:`pressure_kernel` / :meth:`shear_kernel` are those of
+        :attr:`half_space_twin` plus this (:mod:`contactlib.operators`
+        integrates the two parts with different rules).
+        """
+        rem = self.indenter.smooth_remainder(self.body, part, x, s, weights, owner)
+        if rem is None:
+            return None
+        c1, c2 = self.compliance_weights
+        return rem if c1 == 0.0 else c2 * rem
+
+    @property
+    def half_space_twin(self) -> Contact:
+        """The same indenter on the body's material unbounded (the singular part)."""
+        return Contact(self.indenter, self.body.half_space)
+
     def length_degrees(self, part: str) -> np.ndarray | None:
         """Homogeneity degrees of the element integrals (see :meth:`Indenter.length_degrees`)."""
         return self.indenter.length_degrees(self.body, part)
@@ -247,7 +270,9 @@ class Contact:
 
 
 def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
-            indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> Contact:
+            indenter_modulus: float = math.inf, indenter_nu: float | None = None,
+            base: str = "smooth",
+            relaxation: tuple[tuple[float, float], ...] = ()) -> Contact:
     """The model of the public interface's names: an indenter on an elastic body.
 
     Parameters
@@ -256,10 +281,17 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
     nu : float
         Poisson's ratio of the body.
     slab_ratio : float
-        a/h of a layer on a smooth rigid base (0: half-space or half-plane).
+        a/h of a layer on a rigid base (0: half-space or half-plane).
     indenter_modulus : float
         E1/E2 of the indenter over the body (``inf``: rigid, the default).
     indenter_nu : float, optional
         Poisson's ratio of the indenter (None: the body's).
+    base : {"smooth", "bonded"}
+        The layer's rigid base (default smooth).
+    relaxation : tuple of (g, tau), optional
+        Prony terms of a viscoelastic body (:class:`~contactlib.body.ViscoelasticBody`;
+        its kernels are the elastic ones at E(0)); empty: elastic.
     """
-    return Contact(indenter(geometry, indenter_modulus, indenter_nu), ElasticBody(nu, slab_ratio))
+    body = ViscoelasticBody(nu, slab_ratio, base, relaxation=tuple(relaxation)) \
+        if relaxation else ElasticBody(nu, slab_ratio, base)
+    return Contact(indenter(geometry, indenter_modulus, indenter_nu), body)

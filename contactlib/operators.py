@@ -16,6 +16,11 @@ at ``edges`` (``nodes``) 0 = s_0 < ... < s_N:
   values with ``p_N = phi_N = 0``. The operator acts on the nodal values;
   its entries are element integrals of the kernels
   (:func:`contactlib.influence.element_integrals`). The default method's.
+  On a layer under rings the kernels are the half-space's plus a smooth
+  (analytic) remainder: the first part gets the singularity-aware rules of
+  ``element_integrals``, the remainder a plain Gauss rule on panels of at
+  most half a layer thickness, evaluated on the tensor grid of points by
+  panel nodes (:func:`smooth_integrals`).
 
 Units and scalings
 ------------------
@@ -38,22 +43,23 @@ Examples
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .elements import Mesh
+from .elements import Mesh, MeshStore, Store
 from .influence import apply_difference, element_integrals
 
 if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "StickBlocks"]
+           "StickBlocks", "smooth_integrals"]
 
 PARTS = ("normal", "shear")
+_SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
+_SMOOTH_PANEL = 0.5  # longest panel, in layer thicknesses
 
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
@@ -101,6 +107,36 @@ def step_operator(model: Contact, edges: np.ndarray, x: np.ndarray, part: str) -
 
 
 # ----------------------------------------------------------------------------- piecewise linear
+def smooth_integrals(model: Contact, x: np.ndarray, nodes: np.ndarray,
+                     part: str) -> np.ndarray | None:
+    """Element integrals (3, len(x), N) of the model's smooth remainder, or None.
+
+    ``G[k, i, j] = int_{nodes[j]}^{nodes[j+1]} R_k(x_i; s) ds`` with R
+    :meth:`Contact.smooth_remainder` (None where the model has none). R is
+    analytic with the layer thickness h as its length (its transform decays
+    like exp(-2 k h)), so an 8-point Gauss rule on panels of at most h/2
+    leaves ~(1/8)^16 relative; each element is cut into that many equal
+    panels.
+    """
+    x = np.asarray(x, dtype=float).reshape(-1)
+    nodes = np.asarray(nodes, dtype=float)
+    h = model.body.thickness
+    empty = np.empty(0)
+    if not np.isfinite(h) or model.smooth_remainder(part, empty, empty) is None:
+        return None  # (the empty probe: a slab under strips has no split kernels)
+    lo, length = nodes[:-1], np.diff(nodes)
+    panels = np.maximum(1, np.ceil(length / (_SMOOTH_PANEL * h))).astype(np.intp)
+    owner = np.repeat(np.arange(lo.size), panels)  # element of each panel
+    first = np.cumsum(panels) - panels  # each element's first panel
+    k = np.arange(owner.size) - first[owner]  # panel index within its element
+    plen = length[owner] / panels[owner]
+    t, w = np.polynomial.legendre.leggauss(_SMOOTH_POINTS)
+    s = (lo[owner] + plen * k)[:, None] + plen[:, None] * (0.5 * (t + 1.0))[None, :]
+    weights = (0.5 * plen[:, None] * w[None, :]).ravel()
+    return model.smooth_remainder(part, x, s.ravel(), weights,
+                                  np.repeat(owner, _SMOOTH_POINTS))
+
+
 def operator_part(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
                   with_w: bool = True, with_du: bool = True) -> np.ndarray:
     """One displacement operator on nodal values, shape (3, len(x), N + 1).
@@ -111,7 +147,12 @@ def operator_part(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
     ``with_du=False`` (shear) let the kernels skip an output they can skip
     cheaply (w as zeros, du/dx as NaN).
     """
-    g = element_integrals(_kernel(model, part, with_w, with_du), x, nodes)
+    smooth = smooth_integrals(model, x, nodes, part)
+    if smooth is None:
+        g = element_integrals(_kernel(model, part, with_w, with_du), x, nodes)
+    else:  # a layer: the half-space's singular kernels, plus the smooth remainder
+        g = element_integrals(_kernel(model.half_space_twin, part, with_w, with_du), x, nodes)
+        g += smooth
     # du/dx of an odd strip shear is log-infinite on the axis for every element
     # (the infinities cancel for a traction with q(0) = 0); it is never used
     # there, so the resulting inf - inf is left as NaN without a warning
@@ -132,35 +173,25 @@ def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
             operator_part(model, nodes, x, "shear"))
 
 
-class StickBlocks:
+class StickBlocks(Store):
     """Element integrals of reference stick meshes, kept for reuse across c/a.
 
     A bounded store (oldest entry dropped first) of the blocks
     :func:`nodal_operator_part` computes once per distinct (kernels, part,
     reference stick mesh). Memory: at most ``size`` blocks of 3 (M + 1) M
-    doubles (64 blocks at n = 256: 19 MB).
+    doubles (64 blocks at n = 256: 19 MB). It carries the computation's
+    graded meshes too (``meshes``, a :class:`~contactlib.elements.MeshStore`),
+    so that the one store a caller threads through its solves serves both.
     """
 
     def __init__(self, size: int = 64) -> None:
-        self.size = int(size)
-        self._blocks: OrderedDict[tuple, np.ndarray] = OrderedDict()
-
-    def get(self, key: tuple, compute: Callable[[], np.ndarray]) -> np.ndarray:
-        """The block of ``key``, computed by ``compute()`` and stored when missing."""
-        block = self._blocks.get(key)
-        if block is None:
-            block = compute()
-            if len(self._blocks) >= self.size:
-                self._blocks.popitem(last=False)
-            self._blocks[key] = block
-        return block
+        super().__init__(size)
+        self.meshes = MeshStore()
 
     def clear(self) -> None:
-        """Forget every block."""
-        self._blocks.clear()
-
-    def __len__(self) -> int:
-        return len(self._blocks)
+        """Forget every block and every mesh."""
+        super().clear()
+        self.meshes.clear()
 
 
 def nodal_operator_part(model: Contact, mesh: Mesh, part: str,

@@ -29,15 +29,13 @@ frictionless error is measured in the test-suite and docs/validation.md.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 from scipy import linalg
 
-from .elements import Mesh, uniform_mesh
+from .discrete import SelfSimilarSolution
+from .elements import uniform_mesh
 from .model import Contact
 from .operators import step_operator
-from .result import short_repr
 
 __all__ = ["PaperSolution", "solve_paper", "ring_operator", "collocation_points"]
 
@@ -60,25 +58,26 @@ def collocation_points(n: int) -> np.ndarray:
     return np.concatenate([[0.0, 0.5 / n], r[1:]])
 
 
-@dataclass(repr=False)
-class PaperSolution:
-    """Ring (strip) values of the paper's scheme (units E* = a = R = 1)."""
+class PaperSolution(SelfSimilarSolution):
+    """Ring (strip) values of the paper's scheme (units E* = a = R = 1), the paper's kind.
 
-    __repr__ = short_repr  # a few lines: scalars, arrays by shape
+    The fields are those of :class:`~contactlib.discrete.SelfSimilarSolution`:
+    ``p`` the step pressures and ``traction`` the shear coefficients qc, one
+    a ring; ``delta`` is NaN (Eq. 9 uses differences of w only) and there
+    are no nodal displacements.
+    """
 
-    geometry: Contact
-    mesh: Mesh
-    p: np.ndarray  # step pressures, one per ring
-    qc: np.ndarray  # shear coefficients, one per ring
-    k: float
-    converged: bool
-    residual_norm: float
-    iterations: int
-    message: str = ""
+    kind = "paper"
 
     @property
-    def stick_ratio(self) -> float:
-        return float(self.mesh.nodes[self.mesh.stick_index])
+    def qc(self) -> np.ndarray:
+        """The ring shear coefficients (``traction``)."""
+        return self.traction
+
+    def stick_points(self) -> np.ndarray:
+        """Midpoints of the stick rings (step tractions)."""
+        nodes, m = self.mesh.nodes, self.mesh.stick_index
+        return 0.5 * (nodes[:m] + nodes[1:m + 1])
 
     def _ring(self, x: np.ndarray) -> np.ndarray:
         n = self.mesh.n
@@ -157,7 +156,7 @@ def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant"
     if m == 0:
         p = linalg.solve(w_p, rhs9)
         res = np.linalg.norm(w_p @ p - rhs9) / np.linalg.norm(rhs9)
-        return PaperSolution(geometry, mesh, p, np.zeros(n), 0.0, True, float(res), 1)
+        return PaperSolution(geometry, mesh, p, np.zeros(n), np.nan, 0.0, True, float(res), 1)
 
     w_q = sh[0][2:] - sh[0][0]
     u_p, u_q = pr[1], sh[1]
@@ -177,7 +176,7 @@ def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant"
         b = np.concatenate([rhs9, np.zeros(n)])
         x = linalg.solve(a, b)
         res = np.linalg.norm(a @ x - b) / np.linalg.norm(b)
-        return PaperSolution(geometry, mesh, x[:n], x[n:], np.inf, True, float(res), 1)
+        return PaperSolution(geometry, mesh, x[:n], x[n:], np.nan, np.inf, True, float(res), 1)
 
     slip = np.arange(m, n)
 
@@ -212,5 +211,5 @@ def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant"
             break
     res = float(np.linalg.norm(residual(x)) / np.linalg.norm(rhs9))
     msg = "" if converged else f"Newton did not converge in {max_iter} iterations"
-    return PaperSolution(geometry, mesh, x[:n], x[n:2 * n], float(sigma * x[-1]), converged,
-                         res, it, msg)
+    return PaperSolution(geometry, mesh, x[:n], x[n:2 * n], np.nan, float(sigma * x[-1]),
+                         converged, res, it, msg)

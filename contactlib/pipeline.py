@@ -30,6 +30,7 @@ from .api import output_grid
 from .checks import FLAG_NAMES, VIOLATION_NAMES
 from .io import scene_to_dataset
 from .model import contact
+from .result import CaseRecord
 from .scene import Scene
 from .threads import blas_single_threaded
 
@@ -43,14 +44,15 @@ __all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
 def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
     geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]),
-                   float(spec.get("indenter_modulus", "inf")), spec.get("indenter_nu"))
+                   float(spec.get("indenter_modulus", "inf")), spec.get("indenter_nu"),
+                   spec.get("base", "smooth"))
     return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
 
 
 @blas_single_threaded
 def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
           shear: dict[str, np.ndarray] | None = None,
-          progress: Callable[[int, int], None] | None = None) -> list[dict]:
+          progress: Callable[[int, int], None] | None = None) -> list[CaseRecord]:
     """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
     return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
                               normal=normal, shear=shear, samples=scene.needs_samples,
@@ -59,7 +61,7 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
 
 
 @blas_single_threaded
-def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
+def check(records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Consistency flags and violation measures, one value a case."""
     flags = [stages.check_case(r) for r in records]
     out = {name: np.array([f[name] for f in flags], dtype=bool) for name in FLAG_NAMES}
@@ -68,14 +70,14 @@ def check(records: Sequence[dict]) -> dict[str, np.ndarray]:
 
 
 @blas_single_threaded
-def energy(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
+def energy(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Frictional work of the loading half-cycle, one value a case (docs/conventions.md)."""
     geom = scene.geometry_object
     return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
 
 
 @blas_single_threaded
-def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray]:
+def displacements(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Tangential displacement u R/a^2 on the output grid, shape (cases, xi)."""
     geom, xi = scene.geometry_object, output_grid()
     rows = [stages.profiles(geom, r, xi, stresses=False)["tangential_displacement"]
@@ -84,7 +86,7 @@ def displacements(scene: Scene, records: Sequence[dict]) -> dict[str, np.ndarray
 
 
 @blas_single_threaded
-def assemble(scene: Scene, records: Sequence[dict], *,
+def assemble(scene: Scene, records: Sequence[CaseRecord], *,
              checks: Mapping[str, np.ndarray] | None = None,
              work: Mapping[str, np.ndarray] | None = None,
              profiles: Mapping[str, np.ndarray] | None = None) -> xr.Dataset:
@@ -123,8 +125,8 @@ def assemble(scene: Scene, records: Sequence[dict], *,
     tolerance = elements = estimate = None
     if scene.tolerance is not None:
         tolerance = scene.tolerance
-        elements = np.array([int(r["elements"]) for r in records], dtype=np.int32)
-        estimate = np.array([float(r["error_estimate"]) for r in records])
+        elements = np.array([int(r.elements) for r in records], dtype=np.int32)
+        estimate = np.array([float(r.error_estimate) for r in records])
     return scene_to_dataset(sols, outputs=scene.outputs, scene=scene.name,
                             config_hash=scene.hash, violations=violations, elements=elements,
                             error_estimate=estimate, tolerance=tolerance)

@@ -6,7 +6,7 @@ shape (never their contents), e.g.::
 
     Solution: sphere, nu = 0.3, method = default, n = 256
              stick_ratio: 0.5
-    friction_coefficient: 0.152481
+    friction_coefficient: 0.152483 (estimated relative error 1.6e-05)
     ...
                   arrays: xi, pressure, shear, tangential_displacement (201,)
 """
@@ -23,10 +23,17 @@ import numpy as np
 
 from .indenter import indenter
 
-__all__ = ["Solution", "format_fields", "short_repr", "history_repr"]
+__all__ = ["Solution", "CaseRecord", "format_fields", "short_repr", "history_repr"]
 
 
 # ----------------------------------------------------------------------------- short repr
+def _with_error(value: float, relative_error: float) -> str:
+    """``value`` followed by its estimated relative error, when there is one."""
+    if isinstance(relative_error, float) and math.isfinite(relative_error):
+        return f"{_scalar(value)} (estimated relative error {relative_error:.1e})"
+    return _scalar(value)
+
+
 def _scalar(value: Any) -> str:
     """One value in a few characters: floats to 6 digits, arrays by shape."""
     if isinstance(value, (bool, np.bool_)):
@@ -90,6 +97,12 @@ def _status(converged: Any, iterations: Any, residual: Any) -> str:
             f"residual {float(residual):.3g})")
 
 
+def _last(res: Any, name: str) -> float:
+    """The last value of the per-step array ``name`` of ``res`` (NaN if it has none)."""
+    values = np.asarray(getattr(res, name, ()), dtype=float)
+    return float(values[-1]) if values.size else float("nan")
+
+
 def history_repr(res: Any) -> str:
     """Short ``repr`` of a :class:`contactlib.history_api.HistoryResult`."""
     path = " -> ".join(f"{v:g}" for v in res.load_path[:8])
@@ -97,8 +110,10 @@ def history_repr(res: Any) -> str:
         path += f" -> ... ({len(res.load_path)} levels)"
     head = (f"HistoryResult: {res.geometry}, nu = {res.nu:g}, k = {_scalar(res.friction)}, "
             f"n = {res.n}")
-    if indenter(res.geometry).accepts_layer:
+    if indenter(res.geometry).reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
+    if res.slab_ratio > 0:
+        head += f" ({getattr(res, 'base', 'smooth')} base)"
     steps = int(np.size(res.load_ratio)) - 1
     done = int(np.count_nonzero(np.asarray(res.converged)[1:]))
     iters = np.asarray(res.iterations)
@@ -111,7 +126,8 @@ def history_repr(res: Any) -> str:
         ("load_path", f"{path} ({res.steps} steps a segment, {steps} in all)"),
         ("top load", state(int(np.argmax(res.load_ratio)))),
         ("end", state(steps)),
-        ("frictional_work", f"{_scalar(res.frictional_work[-1])} (cumulative, at the end)"),
+        ("frictional_work", "at the end (cumulative): " + _with_error(
+            res.frictional_work[-1], _last(res, "work_error_estimate"))),
         ("converged", f"{done}/{steps} steps (at most {int(iters.max()) if iters.size else 0} "
                       f"iterations a step)"),
         ("message", res.message or "(none)"),
@@ -119,7 +135,115 @@ def history_repr(res: Any) -> str:
     names = ["xi", "xi_bounds", "segment", "load_ratio", "contact_radius", "stick_ratio",
              "indentation", "frictional_work", "converged", "iterations", "residual_norm",
              "state", "pressure", "shear", "tangential_displacement"]
+    if getattr(res, "relaxation", ()):  # a viscoelastic body: its relaxation and energies
+        items.insert(4, ("relaxation", f"{[list(p) for p in res.relaxation]} (g, tau); "
+                                       f"duration {_scalar(res.time[-1])}"))
+        items.insert(5, ("energy", f"external {_scalar(res.external_work[-1])} = stored "
+                                   f"{_scalar(res.stored_energy[-1])} + viscous "
+                                   f"{_scalar(res.viscous_work[-1])} + frictional (at the end)"))
+        names += ["time", "external_work", "stored_energy", "viscous_work"]
     return format_fields(head, items + _arrays_by_shape(res, names))
+
+
+@dataclass(frozen=True, repr=False, eq=False)
+class CaseRecord:
+    """One solved self-similar case as the stages hand it on (units E* = a = R = 1).
+
+    Made by :func:`contactlib.stages.case_record` from a discrete solution
+    (default or paper method), completed by the error estimates of
+    :func:`contactlib.stages.solve_cases`, turned into a :class:`Solution` by
+    :func:`contactlib.stages.to_solution`. The workflow carries it between
+    its rules as ``.npz`` (:func:`contactlib.io.write_records`,
+    :func:`contactlib.io.read_records`; one array ``"<i>/<field>"`` a field,
+    fields that are None left out). Frozen: a stage that adds to a record
+    returns a new one (:func:`dataclasses.replace`). Compared by identity
+    (its arrays have no single truth value).
+
+    Attributes
+    ----------
+    kind : str
+        The solver family that made it: ``"default"`` (nodal, piecewise-linear
+        tractions) or ``"paper"`` (the paper's rings or strips, step tractions).
+    stick_ratio : float
+        c/a of the case (for nu = 0.5 the one asked for; the mesh then has c = 0).
+    nodes : ndarray, shape (N + 1,)
+        Element nodes r/a (x/a), 0 ... 1.
+    stick_index : int
+        M with ``nodes[M]`` = c of the mesh.
+    p : ndarray
+        Pressure in units of E* a/R: nodal values (default, N + 1) or one a
+        ring (paper, N).
+    traction : ndarray
+        The shear coefficient, same layout as ``p``: q = shape(xi) traction,
+        shape = r/a for rings, 1 for strips (units of E* a/R).
+    k : float
+        Friction coefficient (>= 0; ``inf`` at full adhesion).
+    delta : float
+        Indentation in units of a^2/R (NaN for the paper's scheme, which has
+        no delta).
+    converged : bool
+    residual_norm : float
+        Relative residual of the last Newton step.
+    iterations : int
+    message : str
+        Notes joined by "; " (empty when there is nothing to say).
+    load : float
+        Total load in units of E* a^3/R (sphere) or E* a^2/R per unit length
+        (cylinder).
+    round_off : float
+        Last relative Newton step when Newton stopped on the round-off floor
+        (0 otherwise).
+    nodal_u, nodal_du : ndarray or None
+        u (units a^2/R) and du/dx (units a/R) at the nodes, from the solve's
+        own operators (default method only).
+    slip_x, slip_w, slip_q, slip_s : ndarray or None
+        The slip-zone samples of the checks and the work: points xi, their
+        quadrature weights, the shear q (units E* a/R) and the slip rate
+        s = 2u - xi du/dxi (units a^2/R); None when samples were not asked for.
+    stick_q, stick_p : ndarray or None
+        Shear and pressure at stick-zone points (element midpoints, and the
+        nodes for continuous tractions), units E* a/R.
+    elements : int or None
+        The n a tolerance reached (None without a tolerance).
+    error_estimate, load_error_estimate, work_error_estimate : float
+        Estimated relative errors of k, the load and the work (NaN when not
+        estimated).
+    resolved : bool
+        Converged, and ``error_estimate`` at most ``max_error``.
+    max_error : float
+        The accuracy asked for (NaN when not estimated).
+    """
+
+    __repr__ = short_repr
+
+    kind: str
+    stick_ratio: float
+    nodes: np.ndarray
+    stick_index: int
+    p: np.ndarray
+    traction: np.ndarray
+    k: float
+    delta: float
+    converged: bool
+    residual_norm: float
+    iterations: int
+    message: str
+    load: float
+    round_off: float = 0.0
+    nodal_u: np.ndarray | None = None
+    nodal_du: np.ndarray | None = None
+    slip_x: np.ndarray | None = None
+    slip_w: np.ndarray | None = None
+    slip_q: np.ndarray | None = None
+    slip_s: np.ndarray | None = None
+    stick_q: np.ndarray | None = None
+    stick_p: np.ndarray | None = None
+    elements: int | None = None
+    error_estimate: float = float("nan")
+    load_error_estimate: float = float("nan")
+    work_error_estimate: float = float("nan")
+    resolved: bool = False
+    max_error: float = float("nan")
 
 
 @dataclass(repr=False)
@@ -139,7 +263,7 @@ class Solution:
     n : int
         Number of elements (rings or strips) across the half-contact.
     slab_ratio : float
-        a/h for the cylinder on a slab (0 = half-plane); 0 for the sphere.
+        a/h of the layer (0 = half-space or half-plane).
     stick_ratio : float
         c/a, 0 (frictionless) ... 1 (full adhesion).
     friction_coefficient : float
@@ -171,6 +295,8 @@ class Solution:
         nu1 of the indenter (the body's nu for a rigid one, where it plays no role).
     dundurs_beta : float
         Dundurs' beta of the pair (> 0: slip inward, q = k p; < 0: outward, q = -k p).
+    base : str
+        The layer's rigid base, "smooth" or "bonded" (irrelevant at a/h = 0).
     error_estimate : float
         Estimated relative error of ``friction_coefficient`` (embedded
         solves on the nested meshes n/4 and n/2; 0 where k is exact).
@@ -224,19 +350,23 @@ class Solution:
     indenter_modulus_ratio: float = float("inf")
     indenter_poisson_ratio: float = float("nan")
     dundurs_beta: float = float("nan")
+    base: str = "smooth"
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:g}, method = {self.method}, n = {self.n}"
-        if indenter(self.geometry).accepts_layer:
+        if indenter(self.geometry).reports_layer(self.slab_ratio):
             head += f", a/h = {self.slab_ratio:g}"
+        if self.slab_ratio > 0:
+            head += f" ({self.base} base)"
         if self.indenter_modulus_ratio != float("inf"):
             head += (f", E1/E2 = {self.indenter_modulus_ratio:g}, nu1 = "
                      f"{self.indenter_poisson_ratio:g}, beta = {self.dundurs_beta:.4g}")
         items: list[tuple[str, Any]] = [
             ("stick_ratio", self.stick_ratio),
-            ("friction_coefficient", self.friction_coefficient),
-            ("load_ratio", self.load_ratio),
-            ("frictional_work", self.frictional_work),
+            ("friction_coefficient", _with_error(self.friction_coefficient, self.error_estimate)),
+            ("load_ratio", _with_error(self.load_ratio, self.load_error_estimate)),
+            ("frictional_work", _with_error(self.frictional_work, self.work_error_estimate)),
+            ("resolved", f"{bool(self.resolved)} (max_error {_scalar(self.max_error)})"),
             ("converged", _status(self.converged, self.iterations, self.residual_norm)),
             ("consistent", f"{bool(self.consistent)} (slip_direction_ok "
                            f"{bool(self.slip_direction_ok)}, stick_admissible "

@@ -44,9 +44,10 @@ __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "pars
 
 KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
-         "slab_ratio", "outputs", "indenter", "body")
+         "slab_ratio", "base", "outputs", "indenter", "body")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
-                 "slab_ratio", "max_error", "indenter", "body")
+                 "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
+                 "duration")
 _INDENTER_KEYS = {"indenter_modulus": "indenter.modulus_ratio", "indenter_nu": "indenter.nu"}
 
 
@@ -54,6 +55,11 @@ def config_hash(raw: Mapping[str, Any]) -> str:
     """A short SHA-256 of a scene's mapping (canonical JSON, sorted keys)."""
     text = json.dumps(raw, sort_keys=True, separators=(",", ":"), default=str)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def _base_spec(base: str) -> dict[str, str]:
+    """``{"base": base}`` for a bonded base, {} for the default (keys and jobs stay as before)."""
+    return {} if base == "smooth" else {"base": base}
 
 
 def _ratio_digest(values: tuple[float, ...]) -> str:
@@ -76,7 +82,9 @@ class Scene:
     stick_ratios : tuple of float
         c/a values, in the configured order (``all`` expanded to m/n).
     slab_ratio : float
-        a/h of the slab (cylinder; 0 = half-plane, and always 0 for a sphere).
+        a/h of the layer (0 = half-space or half-plane).
+    base : {"smooth", "bonded"}
+        The layer's rigid base (key ``base``, default smooth).
     outputs : tuple of str
         Subset of ``k_curve``, ``stresses``, ``displacements``, ``energy``.
     hash : str
@@ -103,11 +111,12 @@ class Scene:
     kind: str = "self-similar"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
+    base: str = "smooth"
 
     @property
     def geometry_object(self) -> Geometry:
         return Geometry(self.geometry, self.nu, self.slab_ratio, self.indenter_modulus,
-                        self.indenter_nu)
+                        self.indenter_nu, self.base)
 
     def _indenter_spec(self) -> dict[str, Any]:
         """The elastic indenter's keywords ({} for the rigid one, whose keys stay as before)."""
@@ -128,8 +137,10 @@ class Scene:
         do (a node at c), so its key carries a digest of the stick ratios.
         """
         key = f"{self.geometry}-nu{self.nu!r}-{self.method}-n{self.n}"
-        if indenter(self.geometry).accepts_layer:
+        if indenter(self.geometry).reports_layer(self.slab_ratio):
             key += f"-h{self.slab_ratio!r}"
+        if self.slab_ratio > 0 and self.base != "smooth":
+            key += f"-{self.base}"
         if self._indenter_spec():
             key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
         if self.method == "default":
@@ -164,7 +175,7 @@ class Scene:
         """What the influence stage needs (equal for every scene with the same key)."""
         return {"geometry": self.geometry, "nu": self.nu, "method": self.method, "n": self.n,
                 "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios),
-                **self._indenter_spec()}
+                **self._indenter_spec(), **_base_spec(self.base)}
 
 
 class ConfigError(ValueError):
@@ -263,14 +274,15 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     method = bad.check("method", validate.method, method)
     nu = bad.check("nu", validate.nu, raw.get("nu")) if "nu" in raw else None
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0))
+    base = bad.check("base", validate.base, raw.get("base", "smooth"))
     outputs = raw.get("outputs", list(OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
     ind = _scene_indenter(raw, nu, bad)
     n = None
-    if None not in (geometry, method, nu, slab):  # ... then what depends on several keys
-        slab = bad.check("slab_ratio", validate.slab_ratio, slab, geometry)
+    if None not in (geometry, method, nu, slab, base):  # ... then what depends on several keys
+        slab = bad.check("slab_ratio", validate.slab_ratio, slab, geometry, base)
         n = bad.check("n", validate.n, raw.get("n"), method)
     ratios = None
     if n is not None and "stick_ratios" in raw:
@@ -282,12 +294,12 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                     break
     bad.raise_any()
     if tolerance is not None:
-        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind), ratios, tolerance)
+        method, n = accuracy.plan(Geometry(geometry, nu, slab, *ind, base), ratios, tolerance)
     return Scene(name=name, geometry=geometry, nu=nu, method=method, n=n,
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
                  tolerance=tolerance, max_error=max_error, indenter_modulus=ind[0],
-                 indenter_nu=ind[1])
+                 indenter_nu=ind[1], base=base)
 
 
 @dataclass(frozen=True, repr=False)
@@ -314,6 +326,12 @@ class HistoryScene:
         scene's ``indenter`` key (a mapping, or a material name with ``body``).
     indenter_nu : float or None
         Poisson's ratio of the indenter (None: rigid, or the body's).
+    relaxation : tuple of (g, tau)
+        A viscoelastic body's Prony terms (key ``relaxation: [[g, tau], ...]``);
+        empty: elastic.
+    durations : tuple of float
+        Durations of the path segments (key ``duration``: the path's, split
+        equally, or one a segment); required with a relaxation.
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -331,6 +349,9 @@ class HistoryScene:
     kind: str = "history"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
+    relaxation: tuple[tuple[float, float], ...] = ()
+    durations: tuple[float, ...] = ()
+    base: str = "smooth"
 
     def run_spec(self, index: int) -> dict[str, Any]:
         """Keyword arguments of :func:`contactlib.history` for friction ``index``.
@@ -343,6 +364,10 @@ class HistoryScene:
                 "slab_ratio": self.slab_ratio, "max_error": self.max_error}
         if self.indenter_modulus != float("inf"):
             spec.update(indenter_modulus=self.indenter_modulus, indenter_nu=self.indenter_nu)
+        if self.relaxation:  # a viscoelastic body (an elastic scene's keywords unchanged)
+            spec.update(relaxation=[list(p) for p in self.relaxation],
+                        duration=list(self.durations))
+        spec.update(_base_spec(self.base))
         return spec
 
 
@@ -370,15 +395,23 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     geometry = bad.check("geometry", validate.geometry, raw["geometry"]) \
         if "geometry" in raw else None
     nu = bad.check("nu", validate.nu, raw["nu"]) if "nu" in raw else None
-    slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry)
+    base = bad.check("base", validate.base, raw.get("base", "smooth"))
+    slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry,
+                     base or "smooth", validate.HISTORY_MESH_EXTENT)
     max_error = bad.check("max_error", validate.max_error,
                           raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     ind = _scene_indenter(raw, nu, bad)
+    prony = bad.check("relaxation", validate.relaxation, raw.get("relaxation"))
+    durations = bad.check("duration", validate.duration, raw.get("duration"),
+                          len(path) - 1 if path else 1, bool(prony)) if prony is not None else ()
+    if prony and ind[0] != float("inf"):
+        bad.add("relaxation", "needs a rigid indenter")
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
                         hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
-                        indenter_nu=ind[1])
+                        indenter_nu=ind[1], relaxation=prony, durations=durations,
+                        base=base)
 
 
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:
@@ -453,3 +486,34 @@ def scene_mapping(config: Mapping[str, Any], name: str) -> Mapping[str, Any]:
         if name in found:
             return found[name]
     raise KeyError(name)
+
+
+__all__ += ["viscoelastic_scenes"]
+
+
+def viscoelastic_scenes(section: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
+    """The history scenes of a configuration's ``viscoelastic`` section, one a cycle duration.
+
+    The section gives ``geometry`` (default sphere), ``nu``, ``friction`` (a
+    list), ``relaxation`` ([[g, tau], ...]), ``durations`` (of the cycle, in
+    the unit of tau), ``load_path`` (default [0, 1, 0]), ``steps`` and ``n``
+    (optional). Scene ``visco-T<duration>`` is the cycle of that duration.
+
+    Examples
+    --------
+    >>> raw = viscoelastic_scenes({"nu": 0.3, "friction": [0.1], "relaxation": [[0.5, 1.0]],
+    ...                            "durations": [0.01, 1], "steps": 50})
+    >>> list(raw), raw["visco-T1"]["duration"]
+    (['visco-T0.01', 'visco-T1'], 1.0)
+    """
+    out: dict[str, dict[str, Any]] = {}
+    for duration in section["durations"]:
+        raw = {"kind": "history", "geometry": section.get("geometry", "sphere"),
+               "nu": section["nu"], "friction": section["friction"],
+               "load_path": section.get("load_path", [0, 1, 0]), "steps": section["steps"],
+               "relaxation": section["relaxation"], "duration": float(duration)}
+        if "n" in section:
+            raw["n"] = section["n"]
+        out[f"visco-T{float(duration):g}"] = raw
+    return out
+

@@ -11,9 +11,10 @@ one process: both give the same numbers.
   method puts a node at c, so its operators depend on c: the set holds one
   mesh per distinct stick ratio.
 * :func:`solve_cases` -- Newton per stick ratio, giving one *case record*
-  each: a flat ``dict`` of the nodal solution, its status and, when asked,
-  the samples the checks and the energy need (slip rate at Gauss points of
-  the slip zone, tractions at stick-zone points).
+  each (:class:`~contactlib.result.CaseRecord`): the discrete solution, its
+  status, its error estimates and, when asked, the samples the checks and
+  the energy need (slip rate at points of the slip zone, tractions at
+  stick-zone points).
 * :func:`check_case`, :func:`work_case`, :func:`profiles` -- the consistency
   flags, the frictional work, and the profiles on the output grid.
 * :func:`to_solution` -- a :class:`~contactlib.result.Solution` from the pieces.
@@ -23,6 +24,7 @@ Units inside: E* = a = R = 1 (see :mod:`contactlib.default_method`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any, Callable, Iterator, Sequence
 
@@ -30,11 +32,12 @@ import numpy as np
 
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
+from .discrete import SelfSimilarSolution
 from .operators import StickBlocks
-from .elements import Mesh, graded_mesh, uniform_mesh
+from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
-from .result import Solution
+from .result import CaseRecord, Solution
 from .accuracy import MAX_N, estimate, resolving_n
 
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases",
@@ -51,8 +54,6 @@ PARTS = ("normal", "shear")
 # nu = 0.3: k jumps by 2.3e-4 from n = 256 (9e-9 a) to 512 (2.3e-9 a)) have different floors.
 QUADRATURE_FLOOR_H = {"stick": 5e-11, "annulus": 5e-9}
 OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
-
-Record = dict[str, Any]
 
 
 def decoupled_message(geometry: Contact | None = None) -> str:
@@ -126,6 +127,11 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
 
 
+def _meshes(cache: StickBlocks | None) -> MeshStore | None:
+    """The caller's store of graded meshes, carried by its store of stick blocks."""
+    return None if cache is None else cache.meshes
+
+
 def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
             nodes: np.ndarray) -> np.ndarray | None:
     """The operator of one case from an influence set (None when not given)."""
@@ -154,7 +160,7 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
     """
     if method == "default":
         if ops is None:
-            mesh = graded_mesh(n, c)
+            mesh = graded_mesh(n, c, store=_meshes(cache))
             pw = _lookup(normal, method, c, mesh.nodes)
             qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
             ops = None if pw is None else (pw, qw)
@@ -168,51 +174,49 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
     return solve_paper(geometry, m, n, coulomb=coulomb, ops=ops)
 
 
-def case_record(geometry: Contact, d: DiscreteSolution | PaperSolution, samples: bool) -> Record:
+def case_record(geometry: Contact, d: SelfSimilarSolution, samples: bool) -> CaseRecord:
     """The case record of a discrete solution (and, with ``samples``, what checks and work need)."""
     nodes, m = d.mesh.nodes, d.mesh.stick_index
-    paper = isinstance(d, PaperSolution)
-    rec: Record = {
-        "kind": "paper" if paper else "default",
-        "stick_ratio": float(nodes[m]), "nodes": np.asarray(nodes, dtype=float),
-        "stick_index": int(m), "p": np.asarray(d.p, dtype=float),
-        "traction": np.asarray(d.qc if paper else d.phi, dtype=float),
-        "k": float(d.k), "delta": float(getattr(d, "delta", np.nan)),
-        "converged": bool(d.converged), "residual_norm": float(d.residual_norm),
-        "iterations": int(d.iterations), "message": str(d.message or ""),
-        "load": float(d.load() if paper else geometry.load(nodes, d.p)),
-        "round_off": float(getattr(d, "round_off", 0.0)),
-    }
-    if not paper:
-        rec["nodal_u"] = np.asarray(d.nodal_u, dtype=float)
-        rec["nodal_du"] = np.asarray(d.nodal_du, dtype=float)
+    converged, message = bool(d.converged), str(d.message or "")
+    extra: dict[str, Any] = {}
+    if d.nodal_u is not None:
+        extra.update(nodal_u=np.asarray(d.nodal_u, dtype=float),
+                     nodal_du=np.asarray(d.nodal_du, dtype=float))
     if samples:
         if 0 < m < d.mesh.n:
             xs, ws, q_slip, s_slip = d.slip_samples()
         else:
             xs = ws = q_slip = s_slip = np.empty(0)
-        # stick-zone points: element midpoints (and nodes for continuous tractions)
-        mids = 0.5 * (nodes[:m] + nodes[1:m + 1])
-        pts = mids if paper else np.concatenate([nodes[1:m], mids])
-        rec.update(slip_x=xs, slip_w=ws, slip_q=q_slip, slip_s=s_slip,
-                   stick_q=d.shear(pts), stick_p=d.pressure(pts))
+        pts = d.stick_points()
+        extra.update(slip_x=xs, slip_w=ws, slip_q=q_slip, slip_s=s_slip,
+                     stick_q=d.shear(pts), stick_p=d.pressure(pts))
         if not np.all(np.isfinite(s_slip)):  # never a silent NaN in a converged case
-            rec["converged"] = False
-            rec["message"] = "; ".join(x for x in (rec["message"], (
+            converged = False
+            message = "; ".join(x for x in (message, (
                 "the slip-rate samples hit a kernel singularity (a slip zone narrower than "
                 "the quadrature resolves); flags and work are not reliable")) if x)
-    return rec
+    return CaseRecord(
+        kind=d.kind, stick_ratio=float(nodes[m]), nodes=np.asarray(nodes, dtype=float),
+        stick_index=int(m), p=np.asarray(d.p, dtype=float),
+        traction=np.asarray(d.traction, dtype=float), k=float(d.k), delta=float(d.delta),
+        converged=converged, residual_norm=float(d.residual_norm),
+        iterations=int(d.iterations), message=message, load=float(d.load()),
+        round_off=float(d.round_off), **extra)
 
 
-def _rebuild(geometry: Contact, rec: Record) -> DiscreteSolution | PaperSolution:
-    mesh = Mesh(np.asarray(rec["nodes"], dtype=float), int(rec["stick_index"]))
-    common = dict(k=float(rec["k"]), converged=bool(rec["converged"]),
-                  residual_norm=float(rec["residual_norm"]),
-                  iterations=int(rec["iterations"]), message=str(rec["message"]))
-    if rec["kind"] == "paper":
-        return PaperSolution(geometry, mesh, rec["p"], rec["traction"], **common)
-    return DiscreteSolution(geometry, mesh, rec["p"], rec["traction"], float(rec["delta"]),
-                            nodal_u=rec.get("nodal_u"), nodal_du=rec.get("nodal_du"), **common)
+# the discrete solution of each record kind (the interpolation between its nodes)
+_KINDS: dict[str, type[SelfSimilarSolution]] = {
+    cls.kind: cls for cls in (DiscreteSolution, PaperSolution)}
+
+
+def _rebuild(geometry: Contact, rec: CaseRecord) -> SelfSimilarSolution:
+    """The discrete solution a case record holds (no solve: its fields as they are)."""
+    mesh = Mesh(np.asarray(rec.nodes, dtype=float), int(rec.stick_index))
+    return _KINDS[rec.kind](geometry, mesh, rec.p, rec.traction, float(rec.delta),
+                            k=float(rec.k), converged=bool(rec.converged),
+                            residual_norm=float(rec.residual_norm),
+                            iterations=int(rec.iterations), message=str(rec.message),
+                            nodal_u=rec.nodal_u, nodal_du=rec.nodal_du)
 
 
 def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[float], *,
@@ -220,7 +224,8 @@ def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[f
                 shear: dict[str, np.ndarray] | None = None, samples: bool = True,
                 tolerance: float | None = None,
                 progress: Callable[[int, int], None] | None = None,
-                max_error: float = validate.DEFAULT_MAX_ERROR, estimate: bool = True) -> list[Record]:
+                max_error: float = validate.DEFAULT_MAX_ERROR,
+                estimate: bool = True) -> list[CaseRecord]:
     """Solve every stick ratio; one case record each, in the given order.
 
     Parameters
@@ -251,9 +256,10 @@ def solve_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[f
 
     Returns
     -------
-    list of dict
-        Case records (see the module docstring). A case that fails to
-        converge is kept, with ``converged`` False and a message.
+    list of CaseRecord
+        One a stick ratio (see :class:`~contactlib.result.CaseRecord`). A
+        case that fails to converge is kept, with ``converged`` False and a
+        message.
     """
     out = []
     for i, rec in enumerate(iter_cases(geometry, method, n, stick_ratios, normal=normal,
@@ -269,7 +275,8 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                normal: dict[str, np.ndarray] | None = None,
                shear: dict[str, np.ndarray] | None = None, samples: bool = True,
                tolerance: float | None = None,
-               max_error: float = validate.DEFAULT_MAX_ERROR, estimate: bool = True) -> Iterator[Record]:
+               max_error: float = validate.DEFAULT_MAX_ERROR,
+               estimate: bool = True) -> Iterator[CaseRecord]:
     """The case records of :func:`solve_cases`, one at a time, in the given order.
 
     Successive default-method cases continue from each other: Newton's
@@ -299,20 +306,19 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                 d, coarse = lone, lone_coarse
         if method == "default" and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
-        extra = {}
+        extra, note = {}, ""
         if tolerance is not None:
-            d, extra = _to_tolerance(geometry, method, n, solved, d, tolerance, cache)
+            d, extra, note = _to_tolerance(geometry, method, n, solved, d, tolerance, cache)
         rec = case_record(geometry, d, samples)
-        rec.update(extra)
-        if extra.get("tolerance_message"):
-            rec["message"] = "; ".join(x for x in (rec["message"], extra["tolerance_message"])
-                                       if x)
+        if note:
+            extra["message"] = "; ".join(x for x in (rec.message, note) if x)
         if solved != c:  # nu = 0.5: Hertz for every stick ratio, k undetermined
-            rec["stick_ratio"] = c
-            rec["k"] = np.inf if c == 1.0 else 0.0
-            rec["message"] = decoupled_message(geometry)
+            extra.update(stick_ratio=c, k=np.inf if c == 1.0 else 0.0,
+                         message=decoupled_message(geometry))
+        rec = dataclasses.replace(rec, **extra)
         if estimate:
-            _embedded_estimate(geometry, method, n, rec, d, coarse, samples, max_error, cache)
+            rec = _embedded_estimate(geometry, method, n, rec, coarse, samples, max_error,
+                                     cache)
         yield rec
 
 
@@ -359,25 +365,25 @@ def _suspect(d, guess: float | None) -> bool:
     return not d.node_flags()["consistent"]
 
 
-def estimate_case(geometry: Contact, method: str, n: int, rec: Record, *,
-                  samples: bool = True, max_error: float = validate.DEFAULT_MAX_ERROR) -> Record:
-    """Add the error estimates and ``resolved`` to a case record solved outside :func:`iter_cases`.
+def estimate_case(geometry: Contact, method: str, n: int, rec: CaseRecord, *,
+                  samples: bool = True,
+                  max_error: float = validate.DEFAULT_MAX_ERROR) -> CaseRecord:
+    """The error estimates and ``resolved`` of a case record solved outside :func:`iter_cases`.
 
     Used for the inverse problem (k given): the nested coarse solves are made
-    at the record's stick ratio. Returns the same (updated) record.
+    at the record's stick ratio. Returns a new record (records are frozen).
     """
-    c = _solved_ratio(geometry, float(rec["stick_ratio"]))
+    c = _solved_ratio(geometry, float(rec.stick_ratio))
     cache = StickBlocks()
-    coarse = (_coarse_solves(geometry, n, c, float(rec["k"]), cache=cache)
+    coarse = (_coarse_solves(geometry, n, c, float(rec.k), cache=cache)
               if method == "default" and 0.0 < c < 1.0 else {})
-    _embedded_estimate(geometry, method, n, rec, None, coarse, samples, max_error, cache)
-    return rec
+    return _embedded_estimate(geometry, method, n, rec, coarse, samples, max_error, cache)
 
 
 def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
                     cache: StickBlocks | None = None) -> tuple:
     """Collocation operators (normal, shear) of a partial-slip case on its mesh n."""
-    mesh = graded_mesh(n, c)
+    mesh = graded_mesh(n, c, store=_meshes(cache))
     pw = _lookup(normal, "default", c, mesh.nodes)
     qw = _lookup(shear, "default", c, mesh.nodes)
     if pw is None:
@@ -416,11 +422,11 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
     no kernel evaluations.
     """
     out: dict[int, DiscreteSolution] = {}
-    mesh = graded_mesh(n, c)
+    mesh = graded_mesh(n, c, store=_meshes(cache))
     for m in (n // 2, n // 4):
         if m < 8:
             continue
-        sub = graded_mesh(m, c)
+        sub = graded_mesh(m, c, store=_meshes(cache))
         nested = (ops is not None and 2 * sub.n == mesh.n
                   and 2 * sub.stick_index == mesh.stick_index
                   and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))
@@ -463,10 +469,11 @@ def _relative(values: Sequence[float]) -> float:
         0.0 if values[0] == 0.0 else math.inf)
 
 
-def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
+def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
                        coarse: dict[int, DiscreteSolution], samples: bool,
-                       max_error: float, cache: StickBlocks | None = None) -> None:
-    """Add ``error_estimate``, ``load_error_estimate``, ``work_error_estimate`` and ``resolved``.
+                       max_error: float, cache: StickBlocks | None = None) -> CaseRecord:
+    """The record with ``error_estimate``, ``load_error_estimate``, ``work_error_estimate``,
+    ``resolved`` and ``max_error``.
 
     Default method: k, the load and (with samples) the work of the same case
     on the nested meshes n/4 and n/2 give the estimates (:func:`_relative`);
@@ -478,56 +485,56 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
     the default method at n = 64 (its own k does not converge to the
     physical value).
     """
-    c = float(rec["stick_ratio"])
+    c = float(rec.stick_ratio)
     solved = _solved_ratio(geometry, c)
-    rec.setdefault("work_error_estimate", math.nan)
+    out: dict[str, Any] = {}  # the fields this adds (the record is frozen)
     notes = []
     limit = False  # below the quadrature floor: refining does not help
-    if "error_estimate" in rec:  # a tolerance scene estimated k itself
-        rec.setdefault("load_error_estimate", math.nan)
+    if rec.elements is not None:  # a tolerance scene estimated k itself
+        pass
     elif method != "default":
         ref = solve_default(geometry, solved, 64, cache=cache)
-        k_ref, load_ref = ref.k, geometry.load(ref.mesh.nodes, ref.p)
-        if 0.0 < c < 1.0 and np.isfinite(rec["k"]) and k_ref > 0.0:
-            rec["error_estimate"] = abs(rec["k"] - k_ref) / k_ref
+        k_ref, load_ref = ref.k, ref.load()
+        if 0.0 < c < 1.0 and np.isfinite(rec.k) and k_ref > 0.0:
+            out["error_estimate"] = abs(rec.k - k_ref) / k_ref
         else:
-            rec["error_estimate"] = 0.0
-        rec["load_error_estimate"] = abs(rec["load"] - load_ref) / load_ref
+            out["error_estimate"] = 0.0
+        out["load_error_estimate"] = abs(rec.load - load_ref) / load_ref
         if samples:
-            rec["work_error_estimate"] = _relative([_work(geometry, ref), _record_work(
+            out["work_error_estimate"] = _relative([_work(geometry, ref), _record_work(
                 geometry, rec)]) if 0.0 < solved < 1.0 else 0.0
         notes.append("the paper's scheme as printed: error measured against the default "
                      "method at n = 64")
     else:
         levels = sorted(coarse)  # n/4, n/2
         sols = [coarse[m] for m in levels]
-        if bool(rec["converged"]) and 0.0 < solved < 1.0:
+        if bool(rec.converged) and 0.0 < solved < 1.0:
             # a coarse Newton that started from the continuation guess and failed
             # starts again from the fine k, within the discretization error of its root
             sols = [s if s.converged else solve_default(geometry, solved, m,
-                                                        k_guess=float(rec["k"]), cache=cache)
+                                                        k_guess=float(rec.k), cache=cache)
                     for m, s in zip(levels, sols)]
         if not 0.0 < solved < 1.0:  # k exact (0 or inf); the load still has an error
             sols = [solve_default(geometry, solved, m, cache=cache)
                     for m in (n // 4, n // 2) if m >= 8]
-            rec["error_estimate"] = 0.0
+            out["error_estimate"] = 0.0
         elif not sols:
-            rec["error_estimate"] = math.nan
+            out["error_estimate"] = math.nan
         elif not all(s.converged for s in sols):
-            rec["error_estimate"] = math.inf
+            out["error_estimate"] = math.inf
             bad = ", ".join(str(m) for m, s in zip(levels, sols) if not s.converged)
             notes.append(f"no error estimate: the same case on the nested mesh n = {bad} "
                          "did not converge")
         else:
-            rec["error_estimate"] = _relative([s.k for s in sols] + [float(rec["k"])])
-        loads = [geometry.load(s.mesh.nodes, s.p) for s in sols] + [float(rec["load"])]
-        rec["load_error_estimate"] = _relative(loads) if len(loads) > 1 else math.nan
-        if samples and sols and rec["slip_x"].size and 0.0 < solved < 1.0:
-            rec["work_error_estimate"] = _relative([_work(geometry, s) for s in sols]
+            out["error_estimate"] = _relative([s.k for s in sols] + [float(rec.k)])
+        loads = [s.load() for s in sols] + [float(rec.load)]
+        out["load_error_estimate"] = _relative(loads) if len(loads) > 1 else math.nan
+        if samples and sols and rec.slip_x.size and 0.0 < solved < 1.0:
+            out["work_error_estimate"] = _relative([_work(geometry, s) for s in sols]
                                                    + [_record_work(geometry, rec)])
         elif samples:  # no slip (full adhesion) or no shear (frictionless): no work
-            rec["work_error_estimate"] = 0.0
-        h_min = float(np.min(np.diff(np.asarray(rec["nodes"], dtype=float))))
+            out["work_error_estimate"] = 0.0
+        h_min = float(np.min(np.diff(np.asarray(rec.nodes, dtype=float))))
         floor = QUADRATURE_FLOOR_H["stick" if solved < 0.5 else "annulus"]
         limit = 0.0 < solved < 1.0 and h_min < floor
         if limit:
@@ -538,13 +545,13 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
                          "so no n resolves it (a limit of the method)")
         # Newton stopped on the round-off floor: its iterates scatter by about the
         # last step, twice which is added to the discretization estimate
-        rec["error_estimate"] = float(rec["error_estimate"]) + 2.0 * float(
-            rec.get("round_off", 0.0))
-    est = float(rec["error_estimate"])
-    good = bool(rec["converged"]) and np.isfinite(est) and est <= max_error and not limit
-    rec["resolved"] = good
-    rec["max_error"] = float(max_error)
-    if not good and bool(rec["converged"]) and np.isfinite(est) and est > max_error:
+        out["error_estimate"] = float(out["error_estimate"]) + 2.0 * float(
+            rec.round_off)
+    est = float(out.get("error_estimate", rec.error_estimate))
+    good = bool(rec.converged) and np.isfinite(est) and est <= max_error and not limit
+    out["resolved"] = good
+    out["max_error"] = float(max_error)
+    if not good and bool(rec.converged) and np.isfinite(est) and est > max_error:
         need = resolving_n(n, est, max_error) if method == "default" and not limit else None
         hint = (f"n = {need} should resolve it" if need is not None else
                 "no n resolves it" if limit else
@@ -552,7 +559,8 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: Record, d,
                 "use the default method")
         notes.append(f"estimated k error {est:.1e} exceeds max_error {max_error:g}: {hint}")
     if notes:
-        rec["message"] = "; ".join(x for x in [rec["message"]] + notes if x)
+        out["message"] = "; ".join(x for x in [rec.message] + notes if x)
+    return dataclasses.replace(rec, **out)
 
 
 def _work(geometry: Contact, d: DiscreteSolution) -> float:
@@ -562,10 +570,10 @@ def _work(geometry: Contact, d: DiscreteSolution) -> float:
                                         geometry.work_weight_power))
 
 
-def _record_work(geometry: Contact, rec: Record) -> float:
+def _record_work(geometry: Contact, rec: CaseRecord) -> float:
     """Frictional work of a case record from its stored slip samples."""
-    return float(energy.frictional_work(rec["slip_x"], rec["slip_w"], rec["slip_q"],
-                                        rec["slip_s"], geometry.work_factor,
+    return float(energy.frictional_work(rec.slip_x, rec.slip_w, rec.slip_q,
+                                        rec.slip_s, geometry.work_factor,
                                         geometry.work_weight_power))
 
 
@@ -603,15 +611,20 @@ def _continuation_guess(geometry: Contact, c: float,
 
 def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteSolution,
                   tolerance: float,
-                  cache: StickBlocks | None = None) -> tuple[DiscreteSolution, Record]:
-    """Refine one case until its a-posteriori k error meets the tolerance."""
+                  cache: StickBlocks | None = None
+                  ) -> tuple[DiscreteSolution, dict[str, Any], str]:
+    """Refine one case until its a-posteriori k error meets the tolerance.
+
+    Returns the solution, the record fields ``elements`` and
+    ``error_estimate``, and a note for the message (empty when none).
+    """
     from . import accuracy
 
     if method != "default":
         raise ValueError("a tolerance needs the default method (the paper's scheme does not "
                          "converge to the physical k)")
     if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact
-        return d, {"elements": n, "error_estimate": 0.0, "tolerance_message": ""}
+        return d, {"elements": n, "error_estimate": 0.0}, ""
     sols = {n: d}
 
     def solve_k(m: int) -> float:
@@ -619,24 +632,24 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
         return sols[m].k
 
     used, est, msg = accuracy.solve_to_tolerance(solve_k, n, tolerance, known={n: d.k})
-    return sols[used], {"elements": used, "error_estimate": est, "tolerance_message": msg}
+    return sols[used], {"elements": used, "error_estimate": est}, msg
 
 
 # ----------------------------------------------------------------------------- post-processing
-def check_case(rec: Record) -> dict[str, Any]:
+def check_case(rec: CaseRecord) -> dict[str, Any]:
     """Consistency flags of a case (see :mod:`contactlib.checks`)."""
-    return checks.flags(rec["stick_q"], rec["stick_p"], rec["k"], rec["slip_q"], rec["slip_s"])
+    return checks.flags(rec.stick_q, rec.stick_p, rec.k, rec.slip_q, rec.slip_s)
 
 
-def work_case(geometry: Contact, rec: Record) -> float:
+def work_case(geometry: Contact, rec: CaseRecord) -> float:
     """Frictional work of the loading half-cycle (docs/conventions.md scaling; 0 without slip)."""
-    if rec["slip_x"].size == 0:
+    if rec.slip_x.size == 0:
         return 0.0  # frictionless (k = 0), full adhesion, or nu = 0.5: nothing slips
-    return energy.frictional_work(rec["slip_x"], rec["slip_w"], rec["slip_q"], rec["slip_s"],
+    return energy.frictional_work(rec.slip_x, rec.slip_w, rec.slip_q, rec.slip_s,
                                   geometry.work_factor, geometry.work_weight_power)
 
 
-def profiles(geometry: Contact, rec: Record, xi: np.ndarray, *, stresses: bool = True,
+def profiles(geometry: Contact, rec: CaseRecord, xi: np.ndarray, *, stresses: bool = True,
              displacements: bool = True) -> dict[str, np.ndarray]:
     """Profiles on ``xi`` in the docs/conventions.md scalings (p/p0, q/p0, u R/a^2).
 
@@ -653,7 +666,7 @@ def profiles(geometry: Contact, rec: Record, xi: np.ndarray, *, stresses: bool =
     return out
 
 
-def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndarray, *,
+def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.ndarray, *,
                 flags: dict[str, Any] | None = None, work: float = float("nan"),
                 profile: dict[str, np.ndarray] | None = None,
                 message: str = "") -> Solution:
@@ -661,33 +674,33 @@ def to_solution(geometry: Contact, method: str, n: int, rec: Record, xi: np.ndar
     profile = profile or {}
     fl = flags or {}
     reversal = ""
-    if method == "default" and rec["converged"] and not fl.get("slip_direction_ok", True):
+    if method == "default" and rec.converged and not fl.get("slip_direction_ok", True):
         # (the paper's scheme is inconsistent on its own: no physical reading there)
         reversal = ("the slip runs along the shear somewhere in the slip zone: its direction "
                     "changes there, which one self-similar stick zone cannot hold; solve it "
                     "with history")
-    msg = "; ".join(x for x in (message, rec["message"], reversal) if x)
+    msg = "; ".join(x for x in (message, rec.message, reversal) if x)
     return Solution(
         geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,
-        slab_ratio=geometry.body.slab_ratio, stick_ratio=float(rec["stick_ratio"]),
-        friction_coefficient=float(rec["k"]), xi=xi,
+        slab_ratio=geometry.body.slab_ratio, stick_ratio=float(rec.stick_ratio),
+        friction_coefficient=float(rec.k), xi=xi,
         pressure=profile.get("pressure"), shear=profile.get("shear"),
         tangential_displacement=profile.get("tangential_displacement"),
-        load_ratio=float(rec["load"]) / geometry.hertz_load, frictional_work=float(work),
+        load_ratio=float(rec.load) / geometry.hertz_load, frictional_work=float(work),
         slip_direction_ok=bool(fl.get("slip_direction_ok", True)),
         stick_admissible=bool(fl.get("stick_admissible", True)),
         consistent=bool(fl.get("consistent", True)),
-        converged=bool(rec["converged"]), residual_norm=float(rec["residual_norm"]),
-        iterations=int(rec["iterations"]), message=msg,
-        error_estimate=float(rec.get("error_estimate", math.nan)),
-        load_error_estimate=float(rec.get("load_error_estimate", math.nan)),
-        work_error_estimate=(float(rec.get("work_error_estimate", math.nan))
+        converged=bool(rec.converged), residual_norm=float(rec.residual_norm),
+        iterations=int(rec.iterations), message=msg,
+        error_estimate=float(rec.error_estimate),
+        load_error_estimate=float(rec.load_error_estimate),
+        work_error_estimate=(float(rec.work_error_estimate)
                              if np.isfinite(work) else math.nan),
-        resolved=bool(rec.get("resolved", False)),
-        max_error=float(rec.get("max_error", math.nan)),
+        resolved=bool(rec.resolved),
+        max_error=float(rec.max_error),
         extra={"stick_violation": fl.get("stick_violation", float("nan")),
                "slip_violation": fl.get("slip_violation", float("nan")),
-               "indentation": float(rec["delta"])},
+               "indentation": float(rec.delta)},
         indenter_modulus_ratio=float(geometry.indenter.modulus_ratio),
         indenter_poisson_ratio=float(geometry.indenter_poisson_ratio),
-        dundurs_beta=float(geometry.beta))
+        dundurs_beta=float(geometry.beta), base=geometry.body.base)

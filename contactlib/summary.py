@@ -26,7 +26,8 @@ import xarray as xr
 
 from .indenter import indenter
 
-__all__ = ["key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS", "REPORT_COLUMNS"]
+__all__ = ["layer_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
+           "REPORT_COLUMNS"]
 
 COLUMNS = (
     "scene", "geometry", "method", "elements", "nu", "slab ratio a/h", "cases",
@@ -88,7 +89,8 @@ def _frictionless(ds: xr.Dataset) -> tuple[float, str]:
         "indenter_modulus": ratio, "indenter_nu": float(ds.attrs["indenter_poisson_ratio"])}
     sol = solve(str(ds.attrs["geometry"]), float(ds.attrs["poisson_ratio"]), stick_ratio=0.0,
                 n=int(ds.attrs["elements"]), method=str(ds.attrs.get("method", "default")),
-                slab_ratio=float(ds.attrs.get("slab_ratio", 0.0)), energy=False, **kw)
+                slab_ratio=float(ds.attrs.get("slab_ratio", 0.0)), energy=False,
+                base=str(ds.attrs.get("base", "smooth")), **kw)
     return float(sol.load_ratio), "solve"
 
 
@@ -280,7 +282,7 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
     for row in rows:
         body = f"{row['geometry']}, ν = {_g(row['nu'])}"
         slab = float(row["slab ratio a/h"])
-        if indenter(row["geometry"]).accepts_layer:
+        if indenter(row["geometry"]).reports_layer(slab):
             body += f", a/h = {_g(slab)}" if slab > 0 else ", half-plane"
         if not math.isinf(float(row.get("indenter E1/E2", math.inf))):
             body += (f"; indenter E1/E2 = {_g(row['indenter E1/E2'])}, "
@@ -309,3 +311,30 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
                 "; ".join(runs) if runs else "–",
         })
     return out
+
+
+def layer_rows(ds: xr.Dataset) -> list[dict[str, object]]:
+    """Rows of the layers table: one a (geometry, base, nu, a/h).
+
+    Columns: geometry, base, nu, a/h, the frictionless load ratio P/P_Hertz,
+    and k at each stick ratio of the dataset (of
+    :func:`contactlib.io.layer_study_to_dataset`), blank where the case is
+    not resolved (the slip reverses on thin bonded layers, or the error
+    estimate exceeds 1e-3).
+    """
+    rows: list[dict[str, object]] = []
+    cs = [float(c) for c in ds["stick_ratio"].values]
+    for g, geometry in enumerate(ds["geometry"].values):
+        for b, base in enumerate(ds["base"].values):
+            for v, nu in enumerate(ds["poisson_ratio"].values):
+                for r, ratio in enumerate(ds["slab_ratio"].values):
+                    row: dict[str, object] = {
+                        "geometry": str(geometry), "base": str(base), "nu": float(nu),
+                        "a/h": float(ratio),
+                        "frictionless P/P_Hertz": float(ds["load_ratio"].values[g, b, v, r])}
+                    for i, c in enumerate(cs):
+                        ok = bool(ds["resolved"].values[g, b, v, r, i])
+                        k = float(ds["friction_coefficient"].values[g, b, v, r, i])
+                        row[f"k at c/a = {c:g}"] = f"{k:.6g}" if ok else ""
+                    rows.append(row)
+    return rows

@@ -36,7 +36,7 @@ __all__ = [
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
     "MIN_TOLERANCE", "MAX_TOLERANCE", "indenter_modulus", "indenter_nu", "indenter_material",
-    "indenter_mapping",
+    "indenter_mapping", "BASES", "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base",
 ]
 
 # ----------------------------------------------------------------------------- limits
@@ -45,6 +45,24 @@ GEOMETRIES: tuple[str, ...] = ("sphere", "cylinder")
 
 METHODS: tuple[str, ...] = ("default", "paper", "paper-literal")
 """Self-similar methods: ours, the paper's scheme, and the paper's scheme as printed."""
+
+BASES: tuple[str, ...] = ("smooth", "bonded")
+"""Rigid bases under a layer: frictionless (the paper's slab) or bonded."""
+
+LAYER_RATIO_MAX: dict[tuple[str, str], float] = {
+    ("sphere", "smooth"): 20.0, ("sphere", "bonded"): 20.0,
+    ("cylinder", "smooth"): 80.0, ("cylinder", "bonded"): 1000.0,
+}
+"""Largest a/h (a_max/h in the history solver) per (geometry, base).
+
+Sphere: the ring tables of :mod:`contactlib.kernels.layer` cover
+max(r, s)/h <= 20 (r, s <= a; the history solver's mesh reaches 1.2 a_max,
+so there a_max/h <= 20/1.2). Cylinder: where k at n = 256 is resolved to
+1e-3 by its error estimate, measured (docs/validation.md, "Layers").
+"""
+
+HISTORY_MESH_EXTENT = 1.2
+"""The history solver's mesh length over a_max (``history_solver.MESH_EXTENT``)."""
 
 DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16}
 """Default number of elements across the half-contact, per method."""
@@ -183,15 +201,29 @@ def nu(value: Any) -> float:
     return number("nu", value, -1.0, 0.5, lo_open=True)
 
 
-def slab_ratio(value: Any, geometry_name: str | None = None) -> float:
-    """a/h of the slab, finite and >= 0 (0: half-plane); cylinder only.
+def base(value: Any) -> str:
+    """The rigid base under a layer: ``"smooth"`` or ``"bonded"``."""
+    return choice("base", value, BASES)
 
-    ``geometry_name`` (already checked) refuses a non-zero ratio for the sphere.
+
+def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "smooth",
+               extent: float = 1.0) -> float:
+    """a/h of the layer, finite and >= 0 (0: half-space or half-plane).
+
+    ``geometry_name`` and ``base_name`` (already checked) bound it by
+    :data:`LAYER_RATIO_MAX`; ``extent`` is the farthest point of the mesh in
+    units of the length scale (the history solver's 1.2 a_max), which
+    divides the sphere's bound (its kernels are bounded in r/h, not a/h).
     """
     v = number("slab_ratio", value, 0.0, None)
-    if geometry_name == "sphere" and v != 0.0:
-        raise InputError("slab_ratio", "0 for a sphere", value,
-                         f"slab_ratio applies to the cylinder only, got {value!r} for a sphere")
+    if geometry_name is None:
+        return v
+    hi = LAYER_RATIO_MAX[(geometry_name, base_name)]
+    if geometry_name == "sphere":
+        hi /= extent
+    if v > hi:
+        raise InputError("slab_ratio", f"<= {hi:g} for a {geometry_name} on a {base_name} "
+                         "base (the supported range)", value)
     return v
 
 
@@ -335,3 +367,65 @@ def max_error(value: Any) -> float:
 def tolerance(value: Any) -> float:
     """A relative tolerance on k, in [MIN_TOLERANCE, MAX_TOLERANCE]."""
     return number("tolerance", value, MIN_TOLERANCE, MAX_TOLERANCE)
+
+
+# ----------------------------------------------------------------------------- viscoelastic body
+__all__ += ["relaxation", "duration"]
+
+
+def relaxation(values: Any) -> tuple[tuple[float, float], ...]:
+    """A Prony series ``[[g_1, tau_1], ...]`` of the body's relaxation (empty: elastic).
+
+    E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)) with every g_i > 0,
+    sum g_i < 1 (a solid: E(inf) > 0) and every tau_i > 0 and finite.
+    None or an empty sequence is the elastic body.
+    """
+    req = "a list of pairs [g, tau] with g > 0, tau > 0 and sum of g < 1"
+    if values is None:
+        return ()
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise InputError("relaxation", req, values)
+    pairs = []
+    for item in values:
+        if isinstance(item, (str, bytes)) or not hasattr(item, "__iter__") or \
+                len(list(item)) != 2:
+            raise InputError("relaxation", req, values,
+                             f"relaxation must be {req}, got the malformed pair {item!r}")
+        g, tau = list(item)
+        g = number("relaxation", g, 0.0, 1.0, lo_open=True, hi_open=True)
+        tau = number("relaxation", tau, 0.0, None, lo_open=True)
+        pairs.append((g, tau))
+    if sum(g for g, _ in pairs) >= 1.0:
+        raise InputError("relaxation", req, values,
+                         f"relaxation must have a sum of g below 1 (E(inf) > 0), got "
+                         f"{sum(g for g, _ in pairs):g} from {values!r}")
+    return tuple(pairs)
+
+
+def duration(value: Any, segments: int, relaxed: bool) -> tuple[float, ...]:
+    """Durations of the ``segments`` path segments (same unit as the relaxation times).
+
+    ``value`` is the duration of the whole path (split equally) or a
+    sequence of one positive duration a segment. It is required, finite and
+    positive with a relaxation (``relaxed``), and refused without one.
+    Returns () for an elastic body.
+    """
+    if not relaxed:
+        if value is not None:
+            raise InputError("duration", "given with a relaxation", value,
+                             f"duration = {value!r} needs a relaxation (an elastic body "
+                             "has no time scale)")
+        return ()
+    if value is None:
+        raise InputError("duration", "given (> 0) with a relaxation", value,
+                         "duration is required with a relaxation (the path's duration, "
+                         "in the unit of tau)")
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+        total = number("duration", value, 0.0, None, lo_open=True)
+        return tuple(total / segments for _ in range(segments))
+    items = list(value)
+    if len(items) != segments:
+        raise InputError("duration", f"one number or {segments} (one a segment)", value,
+                         f"duration must give one number or one a path segment "
+                         f"({segments}), got {len(items)}: {value!r}")
+    return tuple(number("duration", v, 0.0, None, lo_open=True) for v in items)

@@ -33,6 +33,8 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
      ["HistoryResult", "load_levels", "DEFAULT_N", "MAX_N", "MAX_STEPS"]),
     ("contactlib.io", "Datasets and files: every CF convention, the one atomic write, "
      "intermediates, tables and figures on disk (the only module that writes).", None),
+    ("contactlib.result", "The case record the self-similar stages hand on (the workflow "
+     "carries it with ``io.write_records``/``io.read_records``).", ["CaseRecord"]),
     ("contactlib.theory", "Closed-form references (Hertz, the uncoupled limit, small-k work).",
      None),
     ("contactlib.model", "The model every solver takes: an indenter pressed into a body.", None),

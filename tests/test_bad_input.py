@@ -142,7 +142,10 @@ def test_cli_sweep_refuses_invalid_stick_ratio_lists(ratios, tmp_path):
     (["--n", "5000"], "--n must be an integer in [2, 4096]"),
     (["--n", "8"], "n must be at least 16"),
     (["--method", "paper", "--n", "16", "--stick-ratio", "0.3"], "multiple of 1/n"),
-    (["--geometry", "sphere", "--slab-ratio", "0.1"], "--slab-ratio"),
+    (["--geometry", "sphere", "--slab-ratio", "21"], "--slab-ratio"),
+    (["--geometry", "cylinder", "--slab-ratio", "81"], "--slab-ratio"),
+    (["--geometry", "cylinder", "--slab-ratio", "1001", "--base", "bonded"], "--slab-ratio"),
+    (["--geometry", "sphere", "--slab-ratio", "1", "--base", "rigid"], "--base"),
 ])
 def test_cli_refuses_what_only_the_library_knows(argv, name, tmp_path):
     options = dict(GOOD_SOLVE)
@@ -266,7 +269,9 @@ BAD_ARGUMENT = {
                    st.integers(4097, 10**300), st.floats().filter(
                        lambda v: not (math.isfinite(v) and v.is_integer() and 16 <= v <= 4096))),
     "slab_ratio": st.one_of(wrong_type, non_finite,
-                            reals_outside(0.0, None)),
+                            reals_outside(0.0, 80.0)),  # 80: the smooth-base cylinder's bound
+    "base": st.one_of(junk_text.filter(lambda t: t not in ("smooth", "bonded")), st.none(),
+                      st.integers()),
 }
 
 
@@ -329,7 +334,9 @@ BAD_SCENE_VALUE = {
     "n": BAD_ARGUMENT["n"].filter(lambda v: not (isinstance(v, int) and abs(v) > 10**300)),
     "slab_ratio": st.one_of(wrong_type, non_finite,
                             reals_outside(0.0, None).filter(lambda v: abs(v) < 1e300),
-                            st.floats(min_value=1e-3, max_value=10)),  # a sphere has no slab
+                            st.floats(min_value=20.001, max_value=1e6)),  # beyond the range
+    "base": st.one_of(junk_text.filter(lambda t: t not in ("smooth", "bonded")),
+                      st.integers()),
     "stick_ratios": st.one_of(st.text(max_size=5).filter(lambda t: t != "all"), st.just([]),
                               st.integers(), st.lists(st.one_of(
                                   non_finite, reals_outside(0.0, 1.0).filter(

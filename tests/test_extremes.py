@@ -282,7 +282,7 @@ def test_profiles_exactly_on_element_edges(geometry, slab):
     g = Geometry(geometry, 0.3, slab)
     for method, n, c in (("default", 32, 0.4), ("paper", 8, 0.5)):
         rec = stages.solve_cases(g, method, n, [c])[0]
-        nodes = rec["nodes"]
+        nodes = rec.nodes
         # the solver's own operators at its nodes (collocation points are nodes)
         if method == "default":
             for part in ("normal", "shear"):

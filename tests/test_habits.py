@@ -251,12 +251,29 @@ def test_solution_repr_is_short_and_shows_the_key_numbers() -> None:
     assert "0.005" not in text  # no array contents (xi[1] = 0.005)
 
 
+def test_solution_repr_carries_the_error_estimates() -> None:
+    # every answer carries its error: printing a solve shows k with its estimate and
+    # whether it is resolved (the estimate itself is tested in test_error_estimate.py)
+    sol = contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=64)
+    text = repr(sol)
+    assert len(text.splitlines()) <= 12, text
+    assert f"friction_coefficient: {sol.friction_coefficient:.6g} (estimated relative error " \
+        f"{sol.error_estimate:.1e})" in text, text
+    assert f"resolved: {sol.resolved} (max_error 0.001)" in text, text
+
+
 def test_history_repr_is_short() -> None:
     res = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 3, n=16)
     text = repr(res)
     assert len(text.splitlines()) <= 14 and len(text) < 1200, text
     assert "0 -> 1 -> 0" in text and f"({res.load_ratio.size}, 16)" in text
     assert f"{float(res.frictional_work[-1]):.6g}" in text
+
+
+def test_history_repr_carries_the_work_error_estimate() -> None:
+    res = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=32)
+    assert (f"frictional_work: at the end (cumulative): {res.frictional_work[-1]:.6g} "
+            f"(estimated relative error {res.work_error_estimate[-1]:.1e})") in repr(res)
 
 
 def test_internal_results_and_scenes_have_a_short_repr() -> None:

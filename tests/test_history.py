@@ -103,11 +103,39 @@ def test_cycle_work_equals_hysteresis_loop_area(geometry, slab_ratio):
     assert gaps[1] < 5e-3 and gaps[1] < 0.3 * gaps[0]
 
 
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_elastic_energy_balance_holds_at_every_step(geometry):
+    """External work = stored energy + frictional work, step by step (elastic body).
+
+    The external work is the pressure's work on the surface and the stored
+    energy <sigma, d>/2, both computed apart from the frictional work; the
+    balance fails by about 1 % of a cycle's work when the elements that
+    separate while slipping are left out of the frictional work.
+    """
+    res = history(geometry, 0.3, 0.2, [0, 1, 0.5, 1, 0], 50, n=120, error_estimate=False)
+    rest = res.external_work - res.stored_energy - res.frictional_work
+    assert np.all(np.abs(rest[1:]) <= 1e-3 * res.external_work[1:])
+
+
+def test_cycle_work_converges_in_the_step_count():
+    """A load-unload cycle's work at 100 steps a segment is within 3e-3 of 800 steps.
+
+    (0.9 % off when the slipping elements that separate in a step were left out.)
+    """
+    coarse, fine = (history("sphere", 0.3, 0.2, [0, 1, 0], steps, n=120,
+                            error_estimate=False).frictional_work[-1] for steps in (100, 800))
+    assert abs(coarse / fine - 1) < 3e-3
+
+
 def test_conditions_equilibrium_and_unloading_along_a_cycle():
     geometry, k = "sphere", 0.2
     res = history(geometry, 0.3, k, [0, 1, 0.4, 1, 0], 15, n=80)
     assert res.converged.all() and np.all(res.iterations[res.load_ratio > 0] >= 1)
-    assert np.all(np.diff(res.frictional_work) >= 0.0)
+    # the step work is the shear's work on the surface (energy-consistent); at 15 steps a
+    # segment the last unloading step releases more than it dissipates (-2.8 % of the
+    # total): a discretization error, which must stay within the work's error estimate
+    drop = -np.diff(res.frictional_work)
+    assert np.all(drop <= res.work_error_estimate[1:] * res.frictional_work[1:])
     assert np.all(res.segment_work() > 0.0)
     area = element_area(res)
     p0 = P0[geometry]
@@ -226,7 +254,7 @@ BAD = [
     ("load_path", []), ("load_path", [0]), ("load_path", [0, 1.5]), ("load_path", [0, -0.1]),
     ("load_path", [0.5, 1]), ("load_path", "0,1"), ("load_path", [0, "a"]),
     ("load_path", 1.0), ("geometry", "cone"), ("nu", 0.6), ("nu", -1.0), ("n", 4),
-    ("n", 10.5), ("slab_ratio", 0.1), ("slab_ratio", -1.0),
+    ("n", 10.5), ("slab_ratio", 17.0), ("slab_ratio", -1.0), ("base", "glued"),
 ]
 
 
@@ -258,7 +286,8 @@ CLI_BAD = [
     (["--load-path", ""], "--load-path"), (["--load-path", "0,1.5"], "--load-path"),
     (["--load-path", "0.2,1"], "--load-path"), (["--load-path", "0,x"], "--load-path"),
     (["--nu", "0.7"], "--nu"), (["--geometry", "cone"], "--geometry"),
-    (["--slab-ratio", "0.1"], "--slab-ratio"), (["--n", "4"], "n must"),
+    (["--slab-ratio", "17"], "--slab-ratio"), (["--base", "glued"], "--base"),
+    (["--n", "4"], "n must"),
 ]
 
 

@@ -214,8 +214,10 @@ def test_flag_names_are_written_once():
 
     fl = checks.flags(np.array([0.1]), np.array([1.0]), 0.2, np.array([0.2]), np.array([-1.0]))
     assert set(fl) == set(checks.FLAG_NAMES) | set(checks.VIOLATION_NAMES)
-    rec = {"stick_q": np.array([0.1]), "stick_p": np.array([1.0]), "k": 0.2,
-           "slip_q": np.array([0.2]), "slip_s": np.array([-1.0])}
+    from contactlib import stages
+    from contactlib.model import contact
+
+    rec = stages.solve_cases(contact("sphere", 0.3), "default", 16, [0.5], estimate=False)[0]
     assert set(pipeline.check([rec])) == set(fl)
     d = solve_default(Geometry("sphere", 0.3), 0.5, 16)
     assert set(d.node_flags()) == set(fl)

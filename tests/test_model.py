@@ -15,11 +15,12 @@ import pytest
 import contactlib
 
 from contactlib import history_solver as hs
+from contactlib import validate
 from contactlib.body import ElasticBody
-from contactlib.elements import graded_mesh
+from contactlib.elements import MeshStore, graded_mesh
 from contactlib.geometry import Geometry
 from contactlib.indenter import GEOMETRIES, Cylinder, Sphere, indenter
-from contactlib.kernels import disc, strip
+from contactlib.kernels import disc, layer, strip
 from contactlib.model import Contact, contact
 from contactlib.operators import StickBlocks, nodal_operator_part, operator_part, step_operator
 from contactlib.theory import beta_of_nu, hertz_pressure
@@ -99,8 +100,16 @@ def test_the_body_answers_rings_and_strips_with_the_closed_forms():
                        strip.shear_strip(x, s, 0.25, 10.0))):
         for a, b in zip(got, want):
             np.testing.assert_array_equal(a, b)
-    with pytest.raises(NotImplementedError, match="layer"):
-        ElasticBody(0.3, 0.1).ring_pressure(x, s)
+    for base in ("smooth", "bonded"):  # a layer: the layer kernels with h = 1/slab_ratio
+        body = ElasticBody(0.25, 0.1, base)
+        for got, want in ((body.ring_pressure(x, s), layer.pressure_disc(x, s, 0.25, 10.0, base)),
+                          (body.ring_shear(x, s), layer.shear_disc(x, s, 0.25, 10.0, base)),
+                          (body.strip_pressure(x, s),
+                           strip.pressure_strip(x, s, 0.25, 10.0, base))):
+            for a, b in zip(got, want):
+                np.testing.assert_array_equal(a, b)
+        assert body.ring_kernel_degrees is None
+        assert contact("sphere", 0.25, 0.1, base=base).length_degrees("normal") is None
 
 
 @pytest.mark.parametrize("name, slab", [("sphere", 0.0), ("cylinder", 0.0), ("cylinder", 0.05)])
@@ -160,6 +169,20 @@ def test_stick_blocks_are_a_caller_owned_store():
     assert len(store) == 1
 
 
+def test_graded_meshes_are_kept_by_a_caller_owned_store_only():
+    """A store builds each mesh once and hands out copies; without one nothing is kept."""
+    store = MeshStore(size=2)
+    a = graded_mesh(64, 0.3, store=store)
+    a.nodes[:] = -1.0  # a caller's copy: the store's nodes are untouched
+    b = graded_mesh(64, 0.3, store=store)
+    np.testing.assert_array_equal(b.nodes, graded_mesh(64, 0.3).nodes)
+    assert (store.misses, store.hits, len(store)) == (1, 1, 1)
+    graded_mesh(64, 0.4, store=store)
+    graded_mesh(64, 0.5, store=store)
+    assert len(store) == 2  # bounded: the oldest mesh went
+    assert isinstance(StickBlocks().meshes, MeshStore)  # a sweep's store brings its meshes
+
+
 def test_stick_blocks_do_not_make_results_depend_on_earlier_calls():
     """Each call owns its store: no bits carry over from earlier calls in the process."""
     m = contact("sphere", 0.3)
@@ -177,3 +200,7 @@ def test_stick_blocks_do_not_make_results_depend_on_earlier_calls():
     contactlib.sweep("sphere", 0.3, [0.2, 0.35, 0.7], n=64, energy=False)
     again = contactlib.sweep("sphere", 0.3, [0.5], n=64, energy=False)[0].friction_coefficient
     assert first == again
+
+
+def test_history_mesh_extent_is_the_one_validate_bounds_the_layer_with():
+    assert validate.HISTORY_MESH_EXTENT == hs.MESH_EXTENT

@@ -8,13 +8,26 @@ matrices.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
 import contactlib
 from contactlib import io, pipeline, stages
 from contactlib.geometry import Geometry
+from contactlib.discrete import SelfSimilarSolution
+from contactlib.result import CaseRecord
 from contactlib.scene import config_hash, parse_scene, parse_scenes
+
+def assert_same_record(a, b):
+    """Two case records hold the same numbers, field by field (None where one is None)."""
+    for f in dataclasses.fields(CaseRecord):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        assert (x is None) == (y is None), f.name
+        if x is not None:
+            np.testing.assert_array_equal(x, y, err_msg=f.name)
+
 
 CASES = [
     ("sphere", 0.3, 0.0, "default", 32, [0.0, 0.4, 1.0]),
@@ -32,9 +45,7 @@ def test_precomputed_influence_gives_the_same_numbers(geometry, nu, slab, method
     staged = stages.solve_cases(geom, method, n, ratios, normal=normal, shear=shear)
     direct = stages.solve_cases(geom, method, n, ratios)
     for a, b in zip(staged, direct):
-        assert a.keys() == b.keys()
-        for key in a:
-            np.testing.assert_array_equal(a[key], b[key], err_msg=key)
+        assert_same_record(a, b)
 
 
 def test_records_survive_the_npz_round_trip(tmp_path):
@@ -44,10 +55,32 @@ def test_records_survive_the_npz_round_trip(tmp_path):
     back = io.read_records(path)
     assert len(back) == 3
     for a, b in zip(recs, back):
-        assert a.keys() == b.keys()
-        for key in a:
-            np.testing.assert_array_equal(a[key], b[key], err_msg=key)
-        assert isinstance(b["converged"], bool) and isinstance(b["message"], str)
+        assert_same_record(a, b)
+        assert isinstance(b.converged, bool) and isinstance(b.message, str)
+        assert isinstance(b.stick_index, int) and isinstance(b.iterations, int)
+
+
+def test_records_are_frozen_and_typed():
+    rec = stages.solve_cases(Geometry("sphere", 0.3), "paper", 8, [0.5])[0]
+    assert isinstance(rec, CaseRecord) and rec.kind == "paper"
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        rec.k = 0.0  # type: ignore[misc]
+    assert rec.nodal_u is None and rec.slip_x.size == 4 and len(repr(rec)) < 1200
+
+
+def test_records_of_an_earlier_version_still_read(tmp_path):
+    """The npz layout of the dict records ("<i>/<field>", a retired tolerance_message)."""
+    rec = stages.solve_cases(Geometry("sphere", 0.3), "default", 16, [0.5], estimate=False)[0]
+    old = {f"0/{f.name}": np.asarray(getattr(rec, f.name)) for f in dataclasses.fields(rec)
+           if getattr(rec, f.name) is not None and f.default is dataclasses.MISSING}
+    old.update({"count": np.array(1), "0/tolerance_message": np.asarray("")})
+    path = io.write_arrays(old, tmp_path / "old.npz")
+    back = io.read_records(path)[0]
+    assert np.isnan(back.error_estimate) and back.elements is None and not back.resolved
+    np.testing.assert_array_equal(back.p, rec.p)
+    io.write_arrays({"count": np.array(1), "0/k": np.asarray(0.1)}, tmp_path / "bad.npz")
+    with pytest.raises(io.DamagedFileError, match="case-record"):
+        io.read_records(tmp_path / "bad.npz")
 
 
 def test_write_arrays_is_atomic_and_refuses_pickles(tmp_path):
@@ -135,8 +168,10 @@ def test_assemble_requires_what_the_scene_asked_for():
     ({"geometry": "sphere", "nu": 0.3, "stick_ratios": []}, "stick_ratios"),
     ({"geometry": "sphere", "nu": 0.3, "method": "paper", "stick_ratios": [0.3]},
      "stick_ratios"),
-    ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "slab_ratio": 0.1},
+    ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "slab_ratio": 21},
      "slab_ratio"),
+    ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "slab_ratio": 1, "base": "x"},
+     "base"),
     ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "outputs": ["x"]}, "outputs"),
     ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "colour": 1}, "colour"),
     ({"geometry": "sphere", "stick_ratios": [0.3]}, "nu"),
@@ -160,3 +195,18 @@ def test_scene_defaults_and_keys():
     assert d.hash != e.hash
     with pytest.raises(ValueError, match="non-empty mapping"):
         parse_scenes({})
+
+
+def test_both_self_similar_solvers_give_one_shape():
+    """Default and paper solutions share one base: the record never asks which made it."""
+    geom = Geometry("sphere", 0.3)
+    for method, n, kind in (("default", 32, "default"), ("paper", 8, "paper")):
+        d = stages.solve_one(geom, method, n, 0.5, None, None)
+        assert isinstance(d, SelfSimilarSolution) and d.kind == kind
+        assert [f.name for f in dataclasses.fields(d)] == [
+            f.name for f in dataclasses.fields(SelfSimilarSolution)]
+        rec = stages.case_record(geom, d, samples=True)
+        assert rec.kind == kind and rec.load == d.load()
+        np.testing.assert_array_equal(rec.traction, d.phi if kind == "default" else d.qc)
+        assert (rec.nodal_u is None) == (kind == "paper") and np.isnan(rec.delta) == (
+            kind == "paper")

@@ -9,7 +9,11 @@
 * :mod:`contactlib.plot.convergence`: error against time
   (:func:`contactlib.io.study_to_dataset`);
 * :mod:`contactlib.plot.materials`: named material pairs (elastic indenters),
-  k against c/a and the frictional work per load cycle.
+  k against c/a and the frictional work per load cycle;
+* :mod:`contactlib.plot.viscoelastic`: viscoelastic bodies, the dissipation
+  per cycle against the loading rate and load-indentation loops.
+* :mod:`contactlib.plot.layers`: the frictionless load and k against a/h on
+  layers (smooth and bonded bases).
 
 Figures take datasets and return a :class:`matplotlib.figure.Figure`; nothing
 here touches the disk or imports the numerics' solvers. Save with
@@ -33,8 +37,10 @@ from contactlib.plot.history import (
     hist_stick_map,
     hist_stick_radius,
 )
+from contactlib.plot.layers import fig_layers
 from contactlib.plot.materials import fig_material_pairs
 from contactlib.plot.paper import fig2_friction, fig3_tractions, fig4_displacement, fig5_work
+from contactlib.plot.viscoelastic import fig_viscoelastic
 
 __all__ = [
     "style_path",
@@ -48,4 +54,6 @@ __all__ = [
     "hist_displacement_loop",
     "hist_energy_per_cycle",
     "fig_material_pairs",
+    "fig_viscoelastic",
+    "fig_layers",
 ]

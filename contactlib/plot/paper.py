@@ -48,6 +48,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from numbers import Real
+from typing import NamedTuple
 
 import matplotlib
 import numpy as np
@@ -235,6 +236,31 @@ def _marker_size(case: _Case) -> float:
     return 4.5 if case.paper else 3.2
 
 
+def _by_geometry(cases: Sequence[_Case]) -> list[tuple[str, list[_Case]]]:
+    """The geometries the cases cover (sphere first), each with its cases in order."""
+    return [(g, [c for c in cases if c.geometry == g]) for g in _GEOMETRIES
+            if any(c.geometry == g for c in cases)]
+
+
+class _Series(NamedTuple):
+    """One case's curve over c/a: its look and its values."""
+
+    color: str
+    marker: str
+    size: float
+    x: np.ndarray  # stick ratios c/a
+    y: np.ndarray  # the variable drawn
+    consistent: np.ndarray
+    converged: np.ndarray  # converged and (default method) resolved
+
+
+def _series(case: _Case, name: str, colors: Sequence[str]) -> _Series:
+    """The colour, marker, size, c/a, values of ``name`` and flags of one case."""
+    return _Series(colors[case.index % len(colors)], MARKERS[case.index % len(MARKERS)],
+                   _marker_size(case), case.stick, case.values(name),
+                   case.flag("consistent"), case.flag("converged"))
+
+
 def _draw_points(ax: Axes, x: np.ndarray, y: np.ndarray, consistent: np.ndarray,
                  *, marker: str, color: str, size: float, clip_on: bool = True) -> None:
     """Filled markers for consistent points, open ones for inconsistent points."""
@@ -330,33 +356,26 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     k_max = float(k_max)
     cases = _cases(datasets, "fig2_friction",
                    ("friction_coefficient", "consistent", "converged"))
-    geometries = [g for g in _GEOMETRIES if any(c.geometry == g for c in cases)]
-    rows = max(sum(c.geometry == g for c in cases) for g in geometries)
-    entries = max(sum(c.geometry == g for c in cases) + _reference_count(g, cases)
-                  for g in geometries)
+    groups = _by_geometry(cases)
+    rows = max(len(members) for _, members in groups)
+    entries = max(len(members) + _reference_count(g, cases) for g, members in groups)
     with style_context():
         colors = palette()
-        ncol = len(geometries)
+        ncol = len(groups)
         main_in, strip_in, legend_in = 2.3, 0.1 + 0.13 * rows, legend_height(entries)
         fig = Figure(figsize=(7.0 if ncol == 2 else 5.2,
                               main_in + strip_in + legend_in + 1.15),
                      layout="constrained")
         grid = fig.add_gridspec(3, ncol, height_ratios=[main_in, strip_in, legend_in])
         any_high = any_low = False
-        for j, geometry in enumerate(geometries):
+        for j, (geometry, members) in enumerate(groups):
             ax = fig.add_subplot(grid[0, j])
             strip = fig.add_subplot(grid[1, j], sharex=ax)
-            members = [c for c in cases if c.geometry == geometry]
             handles: list[Line2D] = []
             bottom = _k_axis_bottom(members, k_max)
             for row, case in enumerate(members):
-                color = colors[case.index % len(colors)]
-                marker = MARKERS[case.index % len(MARKERS)]
-                size = _marker_size(case)
-                x = case.stick
-                k = case.values("friction_coefficient")
-                consistent = case.flag("consistent")
-                converged = case.flag("converged")
+                color, marker, size, x, k, consistent, converged = _series(
+                    case, "friction_coefficient", colors)
                 finite = np.isfinite(k)
                 ax.plot(x[finite], k[finite], color=color, zorder=2, **_line_style(case))
                 nan = np.isnan(k)
@@ -474,10 +493,11 @@ def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list
     handles: list[Line2D] = []
     # gamma dense near 1, where k grows without bound
     gamma = 1.0 - (1.0 - np.linspace(0.0, 1.0, 401)[:-1]) ** 2
+    ind = indenter(geometry)
+    layered = ind.reports_half_space_ratio or any(c.slab_ratio > 0 for c in members)
     for i, nu in enumerate(nus):
         k = uncoupled_friction(geometry, nu, gamma)
-        where = f", {indenter(geometry).half_space_name}" if indenter(geometry).accepts_layer \
-            else ""
+        where = f", {ind.half_space_name}" if layered else ""
         (line,) = ax.plot(gamma, k, color=_REF_COLOR, lw=1.0, dashes=_DASHES[i % len(_DASHES)],
                           zorder=1, label=f"uncoupled closed form, ν = {fmt(nu)}{where}")
         handles.append(line)
@@ -753,29 +773,23 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     ('log', 'log')
     """
     cases = _cases(datasets, "fig5_work", ("frictional_work", "consistent", "converged"))
-    geometries = [g for g in _GEOMETRIES if any(c.geometry == g for c in cases)]
-    entries = max(sum(c.geometry == g for c in cases) for g in geometries) + 2
+    groups = _by_geometry(cases)
+    entries = max(len(members) for _, members in groups) + 2
     with style_context():
         colors = palette()
-        ncol = len(geometries)
+        ncol = len(groups)
         fig, axes, holders = panel_grid(ncol, (2.5,), entries,
                                          width=7.0 if ncol == 2 else 4.4)
-        for j, geometry in enumerate(geometries):
+        for j, (geometry, members) in enumerate(groups):
             ax = axes[0, j]
-            members = [c for c in cases if c.geometry == geometry]
             handles: list[Line2D] = []
             notes: list[str] = []
             shown_x: list[float] = [PAPER_SMALLEST_STICK_RATIO]
             shown_v: list[float] = []  # converged cases: they set the V axis
             failed: list[tuple[_Case, float, float]] = []
             for case in members:
-                color = colors[case.index % len(colors)]
-                marker = MARKERS[case.index % len(MARKERS)]
-                size = _marker_size(case)
-                x = case.stick
-                v = case.values("frictional_work")
-                consistent = case.flag("consistent")
-                converged = case.flag("converged")
+                color, marker, size, x, v, consistent, converged = _series(
+                    case, "frictional_work", colors)
                 shown = (x > 0) & np.isfinite(v) & (v > 0)
                 shown_x += list(x[shown])
                 shown_v += list(v[shown & converged])

@@ -10,7 +10,7 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
 import contactlib
-from contactlib.scene import material_pair_scenes, parse_scene
+from contactlib.scene import material_pair_scenes, parse_scene, viscoelastic_scenes
 
 SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 VERSION = contactlib.__version__
@@ -165,11 +165,34 @@ def material_scenes(cfg, taken):
     return scenes, pairs
 
 
+def visco_scenes(cfg, taken):
+    """The `viscoelastic` target's history scenes (contactlib.scene.viscoelastic_scenes):
+    one cycle a duration, visco-T<duration>; every problem of the section at once."""
+    section = cfg.get("viscoelastic")
+    if not isinstance(section, dict):
+        return {}
+    scenes, lines = {}, []
+    for name, raw in viscoelastic_scenes(section).items():
+        if name in taken:
+            lines.append(f"viscoelastic.durations: scene name {name!r} is taken")
+            continue
+        try:
+            scenes[name] = parse_scene(name, raw)
+        except ValueError as exc:
+            lines += [f"viscoelastic: {line}" for line in getattr(exc, "problems", [str(exc)])]
+    if lines:
+        raise WorkflowError("invalid configuration:\n" + "\n".join(f"  {l}" for l in lines))
+    return scenes
+
+
 ALL_SCENES = _validate_config(config)
 # the `materials` target's scenes: built by the same rules, not part of `all`
 MATERIAL_SCENES, MATERIAL_PAIRS = material_scenes(config, ALL_SCENES)
+# the `viscoelastic` target's scenes (history scenes), not part of `all` either
+VISCO_SCENES = visco_scenes(config, {**ALL_SCENES, **MATERIAL_SCENES})
 SCENES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES}.items() if s.kind == "self-similar"}
-HISTORIES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES}.items() if s.kind == "history"}
+HISTORIES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES, **VISCO_SCENES}.items()
+             if s.kind == "history"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
 
 # influence sets, shared by every scene with the same key; the parts any of them needs

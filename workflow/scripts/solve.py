@@ -19,7 +19,7 @@ def progress(i, total):
 
 
 records = pipeline.solve(scene, parts.get("normal"), parts.get("shear"), progress)
-failed = [r["stick_ratio"] for r in records if not r["converged"]]
+failed = [r.stick_ratio for r in records if not r.converged]
 if failed:
     print(f"{scene.name}: not converged (kept, flagged): {failed}", flush=True)
 io.write_records(records, snakemake.output[0])  # noqa: F821

@@ -4,7 +4,7 @@ Usage::
 
     PYTHONPATH=. python benchmarks/material_pairs.py [--n 256]
 
-For each pair (indenter on body, from ``config/materials.yaml``) prints E1/E2,
+For each pair (indenter on body, from ``contactlib/data/materials.yaml``) prints E1/E2,
 nu1, nu2, beta (> 0: inward slip, q = k p; < 0: outward, q = -k p), and the
 friction coefficient k of the self-similar loading at c/a = 0.5 for the sphere
 on a half-space and the cylinder on a half-plane (default method), with the

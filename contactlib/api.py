@@ -96,6 +96,8 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     def f(c: float) -> float:
         d = solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
         cache[c] = d
+        if not np.isfinite(d.k):  # no self-similar solution found here (k is NaN)
+            return -friction  # ... taken as no positive k, so the search goes on past it
         last["k"] = d.k
         return d.k - friction
 

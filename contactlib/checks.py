@@ -17,11 +17,18 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["stick_violation", "slip_violation", "flags"]
+__all__ = ["stick_violation", "slip_violation", "flags", "FLAG_NAMES", "VIOLATION_NAMES"]
+
+# the names of the flags and of the measures behind them, written once: the workflow's
+# check stage, the datasets and the summary take them from here
+FLAG_NAMES = ("stick_admissible", "slip_direction_ok", "consistent")
+VIOLATION_NAMES = ("stick_violation", "slip_violation")
 
 
 def stick_violation(q: np.ndarray, p: np.ndarray, k: float) -> float:
     """max(|q| - k p) over stick points, relative to max|k p| (<= 0 when admissible)."""
+    if np.isnan(k):  # no k (a failed solve): nothing is admissible
+        return float("nan") if q.size else 0.0
     if q.size == 0 or not np.isfinite(k):
         return 0.0 if q.size == 0 else -np.inf
     scale = max(float(np.max(np.abs(k * p))), 1e-300)  # |.|: a scheme may give k < 0

@@ -120,6 +120,16 @@ class DiscreteSolution(SelfSimilarSolution):
         """
         return _slip_samples(self)
 
+    def node_flags(self) -> dict:
+        """The consistency flags (:func:`contactlib.checks.flags`) at the nodes alone.
+
+        Cheap (no kernel evaluation: u and du/dx at the nodes come from the
+        solve); the full check also sees element midpoints. Used to tell a
+        physical root of Newton's iteration from another one.
+        """
+        return _node_flags(self.mesh, self.geometry.shear_shape(self.mesh.nodes) * self.phi,
+                           self.p, self.k, self.nodal_u, self.nodal_du)
+
     def displacements(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(w, u, du/dx) at points x."""
         pw, qw = operators(self.geometry, self.mesh.nodes, x)
@@ -163,6 +173,16 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
     xs, ws = slip_points(r, m, max(order or 4, 2))
     u, du = sol.tangential(xs)
     return xs, ws, sol.shear(xs), 2.0 * u - xs * du
+
+
+def _node_flags(mesh: Mesh, q: np.ndarray, p: np.ndarray, k: float, nodal_u, nodal_du) -> dict:
+    """Consistency flags at the nodes: stick nodes 1..M-1, slip nodes M..N-1 (k's sign ignored)."""
+    r, m, nn = mesh.nodes, mesh.stick_index, mesh.n
+    if nodal_u is None or nodal_du is None or not np.isfinite(k):
+        return {**dict.fromkeys(checks.FLAG_NAMES, False),
+                **dict.fromkeys(checks.VIOLATION_NAMES, np.nan)}
+    return checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
+                        2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
 
 
 def _tie_columns(geometry: Contact, q_ops: np.ndarray) -> np.ndarray:
@@ -392,9 +412,12 @@ def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
         return float(k_guess)
     if n > 128:
         k64 = solve_default(geometry, stick_ratio, 64, power=power, cache=cache).k
-        k128 = solve_default(geometry, stick_ratio, 128, power=power, k_guess=k64,
-                             cache=cache).k
-        return k128 + (k128 - k64) / 3.0
+        k128 = solve_default(geometry, stick_ratio, 128, power=power,
+                             k_guess=k64 if np.isfinite(k64) else None, cache=cache).k
+        if np.isfinite(k64) and np.isfinite(k128):  # (a failed coarse solve reports NaN)
+            return k128 + (k128 - k64) / 3.0
+        if np.isfinite(k128):
+            return k128
     return float(geometry.uncoupled_friction(stick_ratio if edge is None else edge))
 
 
@@ -520,19 +543,23 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     if np.isfinite(k) and k * sigma < 0.0:  # the root slips against sign(beta)
         # physical when consistent at every node (e.g. a thin or nearly incompressible
         # slab, whose surface moves outward under a rigid indenter)
-        q = system.shape * phi
-        fl = checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
-                          2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
-        reversed_ok = fl["consistent"]
+        reversed_ok = _node_flags(mesh, system.shape * phi, p, k, nodal_u,
+                                  nodal_du)["consistent"]
     way = "outward (q = -k p)" if k < 0 else "inward (q = k p)"
     k = abs(k) if reversed_ok else sigma * k  # report k >= 0
-    if not (np.isfinite(k) and k > 0.0):
+    if not (np.isfinite(k) and k > 0.0):  # never a negative (or non-finite) k as if good
         converged = False
-        msg = (f"Newton on k ended at a root with slip {way}, against the sign of beta "
-               f"({geometry.beta:.3g}), where the slip does not oppose the shear: either a "
-               f"stick zone of c/a = {stick_ratio:.3g} below what n = {n} resolves, or the "
-               "slip direction changes within the slip zone, which one self-similar stick "
-               "zone cannot hold: solve it with history; not a solution")
+        if np.isfinite(k):
+            msg = (f"Newton on k ended at a root with slip {way} (|k| = {abs(k):.4g}), against "
+                   f"the sign of beta ({geometry.beta:.3g}), where the slip does not oppose the "
+                   f"shear: either a stick zone of c/a = {stick_ratio:.3g} below what n = {n} "
+                   "resolves, or the slip direction changes within the slip zone, which one "
+                   "self-similar stick zone cannot hold: solve it with history; not a "
+                   "solution, k is reported as NaN")
+        else:
+            msg = (f"Newton on k diverged (last iterate {k}); not a solution, k is reported "
+                   "as NaN")
+        k = np.nan
     elif reversed_ok:
         msg = "; ".join(x for x in (msg, f"the slip runs {way}, against the sign of the "
                                          f"half-space beta ({geometry.beta:.3g}): the body's "

@@ -53,6 +53,7 @@ import numpy as np
 if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-up time)
     import xarray as xr
 
+from contactlib.checks import FLAG_NAMES, VIOLATION_NAMES
 from contactlib.indenter import indenter
 from contactlib.result import CaseRecord, Solution
 
@@ -375,7 +376,6 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     return ds
 
 
-_FLAG_NAMES = tuple(name for name in _POINT_BOOL_ATTRS if name not in ("converged", "resolved"))
 _VIOLATION_COMMENT = "relative measure behind the flag; <= 1e-4 passes"
 
 
@@ -414,14 +414,14 @@ def scene_to_dataset(solutions: Sequence[Solution], *, outputs: Sequence[str],
     ds = to_dataset(list(solutions))
     drop = []
     if "k_curve" not in want:
-        drop += list(_FLAG_NAMES)
+        drop += list(FLAG_NAMES)
     if "energy" not in want:
         drop += ["frictional_work", "work_error_estimate"]
     ds = ds.drop_vars([name for name in drop if name in ds])
     if "k_curve" in want:
         if violations is None:
             raise ValueError("a scene with k_curve needs the violations")
-        for name in ("stick_violation", "slip_violation"):
+        for name in VIOLATION_NAMES:
             ds[name] = ("stick_ratio", np.asarray(violations[name], dtype=float),
                         cf_attrs(name.replace("_", " "), comment=_VIOLATION_COMMENT))
     if tolerance is not None:

@@ -1,10 +1,14 @@
-"""Named engineering materials for elastic indenters (``config/materials.yaml``).
+"""Named engineering materials for elastic indenters (``contactlib/data/materials.yaml``).
 
 The table lists Young's modulus E (GPa) and Poisson's ratio nu of common
 materials, each with its source. A computation needs only the pair: the
 modulus ratio E1/E2 of the indenter over the body and the two Poisson
 ratios (:func:`pair`); the composite modulus and Dundurs' beta follow
 (:class:`contactlib.model.Contact`).
+
+The table is package data (``contactlib/data/materials.yaml``, read with
+:mod:`importlib.resources`, so it travels with an installed wheel); the
+repository's ``config/materials.yaml`` is a link to it.
 
 Examples
 --------
@@ -17,15 +21,15 @@ Examples
 from __future__ import annotations
 
 from functools import lru_cache
-from pathlib import Path
+from importlib import resources
 from typing import Any
 
 from . import validate
 
 __all__ = ["MATERIALS_FILE", "materials", "pair", "scene_indenter"]
 
-MATERIALS_FILE = Path(__file__).resolve().parents[1] / "config" / "materials.yaml"
-"""The table of materials (in the repository's ``config`` folder)."""
+MATERIALS_FILE = resources.files("contactlib") / "data" / "materials.yaml"
+"""The table of materials: package data (an :mod:`importlib.resources` traversable)."""
 
 
 @lru_cache(maxsize=None)
@@ -33,8 +37,7 @@ def materials() -> dict[str, dict[str, Any]]:
     """Name -> {"E": GPa, "nu": float, "source": [...], ...} from :data:`MATERIALS_FILE`."""
     import yaml  # the workflow's dependency; loaded only when a material is named
 
-    with open(MATERIALS_FILE, encoding="utf-8") as fh:
-        table = yaml.safe_load(fh)["materials"]
+    table = yaml.safe_load(MATERIALS_FILE.read_text(encoding="utf-8"))["materials"]
     for name, entry in table.items():  # the table obeys the same rules as any input
         validate.number(f"materials.{name}.E", entry["E"], 0.0, None, lo_open=True)
         validate.nu(entry["nu"])

@@ -113,34 +113,72 @@ class Contact:
         return 1.0 / self.compliance_weights[1]
 
     # ------------------------------------------------------------------ kernels
+    @property
+    def merged_half_space(self) -> ElasticBody | None:
+        """One unbounded body whose kernels are the summed ones (None: they are summed).
+
+        The kernels of an unbounded body (half-space under rings, half-plane
+        under strips; :mod:`contactlib.kernels.disc`, ``strip``) are affine in
+        its material: K = D + beta_i C, with D (the direct terms) and C (the
+        coupling terms) independent of nu. Over an unbounded body the summed
+        kernels c2 K_2 +- c1 K_1 (module notes) are then D + (c2 beta2 -
+        c1 beta1) C: those of one unbounded body with |beta| = |c2 beta2 - c1 beta1|
+        (Poisson's ratio (1 - 2 |beta|)/(2 (1 - |beta|)), in (-1, 0.5]), whose
+        coupling terms (u and du/dx of a pressure, w of a shear) change sign
+        when beta < 0. Evaluated once, this costs what a rigid indenter costs;
+        equal to the explicit sum to round-off (``tests/test_elastic_indenter.py``).
+        None for a rigid indenter (the body alone) and over a layer (the
+        layer's kernels depend on nu otherwise).
+        """
+        c1, _ = self.compliance_weights
+        if c1 == 0.0 or not self.body.is_half_space:
+            return None
+        beta = abs(self.beta)
+        return ElasticBody((1.0 - 2.0 * beta) / (2.0 * (1.0 - beta)))
+
     def _summed(self, kernel, x: np.ndarray, s: np.ndarray, coupling: float,
-                **kw) -> Displacements:
-        """c2 (body) + c1 (indenter) kernels; ``coupling`` -1 flips the indenter's u, du."""
+                merge: bool = True, **kw) -> Displacements:
+        """c2 (body) + c1 (indenter) kernels; ``coupling`` -1 flips the indenter's u, du.
+
+        ``merge=False`` sums the two bodies' kernels explicitly even where
+        :attr:`merged_half_space` gives them in one evaluation (for tests).
+        """
+        merged = self.merged_half_space if merge else None
+        direct = -coupling  # the w term has the opposite sign to the u terms
+        if merged is not None:
+            w, u, du = kernel(merged, x, s, **kw)
+            if self.beta >= 0.0:
+                return w, u, du
+            # beta < 0: the coupling terms (the indenter's negative ones) change sign
+            return (direct * w, coupling * u, coupling * du)
         wb, ub, dub = kernel(self.body, x, s, **kw)
         c1, c2 = self.compliance_weights
         if c1 == 0.0:  # rigid indenter: the body alone, bit for bit
             return wb, ub, dub
         wi, ui, dui = kernel(self.indenter_body, x, s, **kw)
-        direct = -coupling  # the w term has the opposite sign to the u terms
         return (c2 * wb + direct * c1 * wi, c2 * ub + coupling * c1 * ui,
                 c2 * dub + coupling * c1 * dui)
 
-    def pressure_kernel(self, x: np.ndarray, s: np.ndarray, with_w: bool = True) -> Displacements:
+    def pressure_kernel(self, x: np.ndarray, s: np.ndarray, with_w: bool = True,
+                        merge: bool = True) -> Displacements:
         """(w, u, du/dx) of a unit uniform pressure on a disc / symmetric strip of radius s.
 
         Both bodies' compliances summed (module notes): w the closing of the
         gap, u the body's tangential displacement relative to the indenter.
         ``with_w=False`` may skip w (zeros) where that is cheaper (the disc).
+        ``merge=False``: the explicit sum (see :attr:`merged_half_space`).
         """
-        return self._summed(self.indenter.pressure_kernel, x, s, -1.0, with_w=with_w)
+        return self._summed(self.indenter.pressure_kernel, x, s, -1.0, merge, with_w=with_w)
 
-    def shear_kernel(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Displacements:
+    def shear_kernel(self, x: np.ndarray, s: np.ndarray, with_du: bool = True,
+                     merge: bool = True) -> Displacements:
         """(w, u, du/dx) of the unit shear element: q = r on a disc, or +-1 on a strip.
 
         q acts on the body and -q on the indenter (module notes).
         ``with_du=False`` may skip du/dx (NaN) where that is cheaper (the disc).
+        ``merge=False``: the explicit sum (see :attr:`merged_half_space`).
         """
-        return self._summed(self.indenter.shear_kernel, x, s, 1.0, with_du=with_du)
+        return self._summed(self.indenter.shear_kernel, x, s, 1.0, merge, with_du=with_du)
 
     def smooth_remainder(self, part: str, x: np.ndarray, s: np.ndarray,
                          weights: np.ndarray | None = None,

@@ -27,6 +27,7 @@ import numpy as np
 
 from . import stages
 from .api import output_grid
+from .checks import FLAG_NAMES, VIOLATION_NAMES
 from .io import scene_to_dataset
 from .model import contact
 from .result import CaseRecord
@@ -37,9 +38,6 @@ if TYPE_CHECKING:
     import xarray as xr
 
 __all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
-
-_FLAG_FIELDS = ("stick_admissible", "slip_direction_ok", "consistent")
-_VIOLATIONS = ("stick_violation", "slip_violation")
 
 
 @blas_single_threaded
@@ -66,8 +64,8 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
 def check(records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Consistency flags and violation measures, one value a case."""
     flags = [stages.check_case(r) for r in records]
-    out = {name: np.array([f[name] for f in flags], dtype=bool) for name in _FLAG_FIELDS}
-    out.update({name: np.array([f[name] for f in flags], dtype=float) for name in _VIOLATIONS})
+    out = {name: np.array([f[name] for f in flags], dtype=bool) for name in FLAG_NAMES}
+    out.update({name: np.array([f[name] for f in flags], dtype=float) for name in VIOLATION_NAMES})
     return out
 
 
@@ -114,7 +112,7 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
     for i, rec in enumerate(records):
         flags = None
         if checks is not None:
-            flags = {name: checks[name][i] for name in _FLAG_FIELDS + _VIOLATIONS}
+            flags = {name: checks[name][i] for name in FLAG_NAMES + VIOLATION_NAMES}
         prof = stages.profiles(geom, rec, xi, displacements=False) if "stresses" in want else {}
         if "displacements" in want:
             prof["tangential_displacement"] = profiles["tangential_displacement"][i]
@@ -122,7 +120,8 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
             geom, scene.method, scene.n, rec, xi, flags=flags,
             work=float(work["frictional_work"][i]) if "energy" in want else float("nan"),
             profile=prof))
-    violations = None if "k_curve" not in want else {name: checks[name] for name in _VIOLATIONS}
+    violations = (None if "k_curve" not in want
+                  else {name: checks[name] for name in VIOLATION_NAMES})
     tolerance = elements = estimate = None
     if scene.tolerance is not None:
         tolerance = scene.tolerance

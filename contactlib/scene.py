@@ -440,7 +440,7 @@ def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | 
 def material_pair_scenes(section: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
     """The scene mappings of a configuration's ``materials`` section, in its order.
 
-    Each pair ``[indenter, body]`` (material names of ``config/materials.yaml``)
+    Each pair ``[indenter, body]`` (material names of ``contactlib/data/materials.yaml``)
     gives a self-similar scene ``mat-<indenter>-on-<body>`` (``k_curve``) and a
     history scene ``mat-<indenter>-on-<body>-cycle`` (underscores of the names
     read as hyphens); the body's Poisson ratio is the material's.

@@ -299,29 +299,21 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
     for c in stick_ratios:
         c = float(c)
         solved = _solved_ratio(geometry, c)
-        guess = (_continuation_guess(geometry, solved, known) if method in NODAL_METHODS
-                 else None)
-        coarse: dict[int, DiscreteSolution] = {}
-        ops = None
-        if estimate and method == "default" and tolerance is None and 0.0 < solved < 1.0:
-            ops = _fine_operators(geometry, n, solved, normal, shear, cache)
-            coarse = _coarse_solves(geometry, n, solved, guess, ops, cache)
-            half, quarter = coarse.get(n // 2), coarse.get(n // 4)
-            if half is not None and half.converged and guess is None:
-                guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
-                if quarter is not None and quarter.converged:
-                    guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
-        d = solve_one(geometry, method, n, solved, normal, shear, guess, ops=ops, cache=cache,
-                      level_offsets=offsets)
-        if (method in NODAL_METHODS and not d.converged and guess is not None
-                and 0.0 < solved < 1.0):
-            # the continuation guess extrapolates k/k_uncoupled in c/a and can land
-            # outside Newton's basin (nu = 0, c/a = 0.01 after 1e-8, 1e-6, 1e-4): start
-            # again from the nested n/2 solution, or from the solver's own warm start
-            half = coarse.get(n // 2)
-            retry = half.k if half is not None and half.converged else None
-            d = solve_one(geometry, method, n, solved, normal, shear, retry, ops=ops,
-                          cache=cache)
+        cont = (_continuation_guess(geometry, solved, known) if method in NODAL_METHODS
+                else None)
+        with_coarse = estimate and method == "default" and tolerance is None
+        d, coarse, ops = _solve_from(geometry, method, n, solved, cont, normal, shear, cache,
+                                     with_coarse, level_offsets=offsets)
+        if cont is not None and _suspect(d, cont):
+            # the continuation guess extrapolates k/k_uncoupled in c/a and can land outside
+            # Newton's basin, or in that of another, unphysical root (cylinder, a/h = 1,
+            # nu = 0.499, c/a = 0.01 after 1e-8, 1e-6, 1e-4 at n = 256: k = 42.1, against
+            # 0.0832 alone): solve the case again as alone, and keep that unless it is worse
+            lone, lone_coarse, _ = _solve_from(geometry, method, n, solved, None, normal,
+                                               shear, cache, with_coarse, ops)
+            if lone.converged and (not d.converged or not _suspect(lone, None)
+                                   or _suspect(d, None)):
+                d, coarse = lone, lone_coarse
         if method in NODAL_METHODS and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
             known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
             offsets = getattr(d, "level_offsets", None) or None
@@ -341,6 +333,53 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
             rec = _embedded_estimate(geometry, method, n, rec, coarse, samples, max_error,
                                      cache)
         yield rec
+
+
+def _solve_from(geometry: Contact, method: str, n: int, c: float, guess: float | None,
+                normal, shear, cache: StickBlocks, with_coarse: bool,
+                ops: tuple | None = None, level_offsets: tuple | None = None
+                ) -> tuple[Any, dict[int, DiscreteSolution], tuple | None]:
+    """One case from a starting k (None: as alone): (solution, nested coarse solves, operators).
+
+    With ``with_coarse`` (default method, 0 < c < 1), the nested n/2 and n/4
+    solves come first; without a guess their Richardson extrapolation starts
+    the fine Newton. A fine Newton that fails from the guess starts again from
+    the n/2 solution, or from the solver's own warm start. ``level_offsets``:
+    the extrapolated method's coarse levels relative to its k, from the
+    previous case of a sweep (its guesses for the levels).
+    """
+    coarse: dict[int, DiscreteSolution] = {}
+    if with_coarse and 0.0 < c < 1.0:
+        ops = ops or _fine_operators(geometry, n, c, normal, shear, cache)
+        coarse = _coarse_solves(geometry, n, c, guess, ops, cache)
+        half, quarter = coarse.get(n // 2), coarse.get(n // 4)
+        if half is not None and half.converged and guess is None:
+            guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
+            if quarter is not None and quarter.converged:
+                guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
+    d = solve_one(geometry, method, n, c, normal, shear, guess, ops=ops, cache=cache,
+                  level_offsets=level_offsets if guess is not None else None)
+    if method in NODAL_METHODS and not d.converged and guess is not None and 0.0 < c < 1.0:
+        half = coarse.get(n // 2)
+        retry = half.k if half is not None and half.converged else None
+        d = solve_one(geometry, method, n, c, normal, shear, retry, ops=ops, cache=cache)
+    return d, coarse, ops
+
+
+def _suspect(d, guess: float | None) -> bool:
+    """A partial-slip root not to trust from a continuation guess.
+
+    Not converged; inconsistent at the nodes (:meth:`DiscreteSolution.node_flags`);
+    or, with ``guess``, more than 50 % away from it (a sweep's guesses are
+    within about 1e-6, and a few per cent where its points are far apart).
+    """
+    if not isinstance(d, DiscreteSolution) or not 0.0 < d.stick_ratio < 1.0:
+        return False
+    if not d.converged or not np.isfinite(d.k):
+        return True
+    if guess is not None and abs(d.k / guess - 1.0) > 0.5:
+        return True
+    return not d.node_flags()["consistent"]
 
 
 def estimate_case(geometry: Contact, method: str, n: int, rec: CaseRecord, *,
@@ -574,7 +613,8 @@ def _continuation_guess(geometry: Contact, c: float,
     (or extrapolated) from the three (or two) solved cases nearest in c/a,
     within 0.25 of it: quadratically, which puts a 50-point sweep's guesses
     within about 1e-6 and Newton converges in one or two steps. None (the
-    solver's own warm start) when fewer than two are known.
+    solver's own warm start) when fewer than two are known, or when the
+    ratio comes out beyond half the smallest or twice the largest known one.
     """
     if not 0.0 < c < 1.0 or len(known) < 2:
         return None
@@ -588,6 +628,9 @@ def _continuation_guess(geometry: Contact, c: float,
     for i in range(cs.size):
         others = np.delete(cs, i)
         ratio += rs[i] * float(np.prod((c - others) / (cs[i] - others)))
+    if not 0.5 * np.min(rs) <= ratio <= 2.0 * np.max(rs):
+        return None  # an extrapolation far beyond the points (quadratic from 1e-8, 1e-6,
+        # 1e-4 to 1e-2 amplifies their differences 1e4 times): not a guess
     k_unc = float(geometry.uncoupled_friction(c))
     guess = ratio * k_unc
     return guess if np.isfinite(guess) and guess > 0.0 else None

@@ -26,7 +26,8 @@ import xarray as xr
 
 from .indenter import indenter
 
-__all__ = ["layer_rows", "key_numbers", "report_rows", "COLUMNS", "REPORT_COLUMNS"]
+__all__ = ["layer_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
+           "REPORT_COLUMNS"]
 
 COLUMNS = (
     "scene", "geometry", "method", "elements", "nu", "slab ratio a/h", "cases",
@@ -49,6 +50,11 @@ c/a = 0, ``solve`` when it was computed by a frictionless solve with the
 scene's geometry, ν, method, n and a/h. The ``history`` columns hold
 space-separated lists, one entry a friction coefficient.
 """
+
+INDENTER_COLUMNS = ("indenter E1/E2", "indenter nu", "dundurs beta")
+"""Columns :func:`key_numbers` adds after :data:`COLUMNS` when a scene has an elastic
+indenter (the material scenes): E1/E2 (``inf`` for a rigid one), its Poisson ratio and
+Dundurs' beta of the pair (> 0: inward slip, q = k p; < 0: outward, q = -k p)."""
 
 REPORT_COLUMNS = (
     "scene", "body", "method", "cases / converged / consistent", "consistent up to c/a",
@@ -78,20 +84,32 @@ def _frictionless(ds: xr.Dataset) -> tuple[float, str]:
         return float("nan"), ""
     from contactlib.api import solve  # the solver only when a scene lacks c/a = 0
 
+    ratio = _indenter_ratio(ds)
+    kw = {} if math.isinf(ratio) else {
+        "indenter_modulus": ratio, "indenter_nu": float(ds.attrs["indenter_poisson_ratio"])}
     sol = solve(str(ds.attrs["geometry"]), float(ds.attrs["poisson_ratio"]), stick_ratio=0.0,
                 n=int(ds.attrs["elements"]), method=str(ds.attrs.get("method", "default")),
                 slab_ratio=float(ds.attrs.get("slab_ratio", 0.0)), energy=False,
-                base=str(ds.attrs.get("base", "smooth")))
+                base=str(ds.attrs.get("base", "smooth")), **kw)
     return float(sol.load_ratio), "solve"
 
 
+def _indenter_ratio(ds: xr.Dataset) -> float:
+    """E1/E2 of the dataset's indenter (``inf``: rigid, also when the attribute is absent)."""
+    return float(ds.attrs.get("indenter_modulus_ratio", "inf"))
+
+
 def _common(ds: xr.Dataset) -> dict[str, Any]:
+    ratio = _indenter_ratio(ds)
     return {
         "scene": str(ds.attrs.get("scene", "")),
         "geometry": str(ds.attrs["geometry"]),
         "elements": int(ds.attrs["elements"]),
         "nu": float(ds.attrs["poisson_ratio"]),
         "slab ratio a/h": float(ds.attrs.get("slab_ratio", 0.0)),
+        "indenter E1/E2": ratio,
+        "indenter nu": float(ds.attrs.get("indenter_poisson_ratio", ds.attrs["poisson_ratio"])),
+        "dundurs beta": float(ds.attrs.get("dundurs_beta", "nan")),
     }
 
 
@@ -213,10 +231,13 @@ def key_numbers(datasets: Sequence[xr.Dataset]) -> list[dict[str, Any]]:
         columns: the stick ratio c/a at the first step of the largest load,
         and the frictional work over the last two path segments when they
         form one load cycle (scaled with a_max), else empty; the other
-        per-case columns are NaN.
+        per-case columns are NaN. When a scene has an elastic indenter, every
+        row also has :data:`INDENTER_COLUMNS`.
     """
     rows = [_history(ds) if "step" in ds.dims else _self_similar(ds) for ds in datasets]
-    return [{name: row[name] for name in COLUMNS} for row in rows]
+    elastic = any(not math.isinf(row["indenter E1/E2"]) for row in rows)
+    columns = COLUMNS + INDENTER_COLUMNS if elastic else COLUMNS
+    return [{name: row[name] for name in columns} for row in rows]
 
 
 def _g(x: Any, digits: int = 4) -> str:
@@ -240,7 +261,8 @@ def _list(text: str, digits: int = 4) -> list[str]:
 def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
     """The rows of :func:`key_numbers` as a compact table for the report.
 
-    Columns :data:`REPORT_COLUMNS`: the body (geometry, ν, a/h) and the
+    Columns :data:`REPORT_COLUMNS`: the body (geometry, ν, a/h, and an
+    elastic indenter's E1/E2, ν1 and the pair's β) and the
     method (with n) merged, the three k values and the two work values
     each in one cell, numbers to four significant digits, "–" where a value
     does not apply or is absent, a frictionless load from a separate solve
@@ -263,6 +285,9 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
         slab = float(row["slab ratio a/h"])
         if indenter(row["geometry"]).reports_layer(slab):
             body += f", a/h = {_g(slab)}" if slab > 0 else ", half-plane"
+        if not math.isinf(float(row.get("indenter E1/E2", math.inf))):
+            body += (f"; indenter E1/E2 = {_g(row['indenter E1/E2'])}, "
+                     f"ν1 = {_g(row['indenter nu'])}, β = {float(row['dundurs beta']):+.4g}")
         history = row["method"] == "history"
         p0 = _g(row["frictionless P/P_Hertz"], 5)
         if row["frictionless source"] == "solve":

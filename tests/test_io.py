@@ -203,3 +203,23 @@ def test_write_table_csv_and_html(tmp_path):
     with pytest.raises(ValueError, match="empty"):
         write_table([], tmp_path / "u.csv")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["t.csv", "t.html"]
+
+
+def test_flag_names_are_written_once():
+    """The consistency flags and their measures are named in contactlib.checks alone: the
+    check stage, the datasets and checks.flags agree on them."""
+    from contactlib import checks, pipeline
+    from contactlib.default_method import solve_default
+    from contactlib.geometry import Geometry
+
+    fl = checks.flags(np.array([0.1]), np.array([1.0]), 0.2, np.array([0.2]), np.array([-1.0]))
+    assert set(fl) == set(checks.FLAG_NAMES) | set(checks.VIOLATION_NAMES)
+    from contactlib import stages
+    from contactlib.model import contact
+
+    rec = stages.solve_cases(contact("sphere", 0.3), "default", 16, [0.5], estimate=False)[0]
+    assert set(pipeline.check([rec])) == set(fl)
+    d = solve_default(Geometry("sphere", 0.3), 0.5, 16)
+    assert set(d.node_flags()) == set(fl)
+    ds = io.to_dataset(contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=16))
+    assert all(name in ds for name in checks.FLAG_NAMES)

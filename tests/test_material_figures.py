@@ -123,3 +123,30 @@ def test_materials_target_is_separate_from_the_main_job(tmp_path):
     assert counts["materials_figure"] == counts["materials"] == 1
     assert counts["solve"] == counts["history_run"] == counts["history_assemble"] == pairs
     assert "energy" not in counts and "key_numbers" not in counts
+    assert counts["materials_key_numbers"] == 1  # the pairs' own key-numbers table
+
+
+# ----------------------------------------------------------------------------- key numbers
+def test_key_numbers_of_material_scenes_name_the_indenter(data):
+    """The material scenes' rows carry E1/E2, nu1 and beta (the report's body cell too);
+    a table of rigid scenes keeps exactly the main job's columns."""
+    from contactlib.summary import COLUMNS, INDENTER_COLUMNS, key_numbers, report_rows
+
+    sims, hists = data
+    rows = key_numbers(list(sims) + list(hists))
+    assert all(tuple(r) == COLUMNS + INDENTER_COLUMNS for r in rows)
+    for (ind, body), row, hrow in zip(PAIRS, rows, rows[len(sims):]):
+        ratio, nu1, nu2 = pair(ind, body)
+        for r in (row, hrow):
+            assert r["indenter E1/E2"] == pytest.approx(ratio, rel=1e-12)
+            assert r["indenter nu"] == nu1 and r["nu"] == nu2
+        beta = contactlib.solve("sphere", nu2, stick_ratio=0.0, n=16, indenter_modulus=ratio,
+                                indenter_nu=nu1).dundurs_beta
+        assert row["dundurs beta"] == pytest.approx(beta, rel=1e-12, abs=1e-15)
+        assert row["k at c/a = 0.25"] != row["k at c/a = 0.25"]  # not in the scene: NaN
+    assert rows[0]["dundurs beta"] > 0 > rows[1]["dundurs beta"]
+    cells = [r["body"] for r in report_rows(rows)]
+    assert "β = +" in cells[0] and "β = -" in cells[1] and "E1/E2 = 3" in cells[0]
+    rigid = key_numbers([to_dataset(contactlib.sweep("sphere", 0.3, [0.0, 0.5], n=16,
+                                                     max_error=0.05))])
+    assert tuple(rigid[0]) == COLUMNS and "β" not in report_rows(rigid)[0]["body"]

@@ -2,7 +2,7 @@
 
 One figure, :func:`fig_material_pairs`, for the ``materials`` target of the
 workflow: for each pair of an indenter material pressed into a body material
-(``config/materials.yaml``), the self-similar friction coefficient k against
+(``contactlib/data/materials.yaml``), the self-similar friction coefficient k against
 the stick ratio c/a (a dataset of :func:`contactlib.io.to_dataset`) and the
 frictional work of one load cycle 0 -> 1 -> 0 against k (a stack of
 histories, :func:`contactlib.io.stack_histories`). Every label carries the

@@ -1,8 +1,9 @@
 # The `materials` target: named material pairs (config `materials:`), an elastic
 # indenter on a half-space. Each pair's self-similar scene (k against c/a) and
 # history scene (frictional work of the load cycle) are built by the usual rules
-# (influence, solve, check, assemble; history_run, history_assemble); this stage
-# draws them in one figure. Not part of `all`: run `snakemake --cores 2 materials`.
+# (influence, solve, check, assemble; history_run, history_assemble); these stages
+# draw them in one figure and sum them up in a key-numbers table (with the
+# indenter's E1/E2, nu1 and the pair's beta). Not part of `all`: run `snakemake --cores 2 materials`.
 
 
 rule materials_figure:
@@ -35,7 +36,33 @@ rule materials_figure:
         "../scripts/materials_figure.py"
 
 
+rule materials_key_numbers:
+    input:
+        expand("results/datasets/{scene}.nc", scene=list(MATERIAL_SCENES)),
+    output:
+        csv="results/tables/materials-key-numbers.csv",
+        html=report(
+            "results/tables/materials-key-numbers.html",
+            caption="../report/key_numbers.rst",
+            category="Key numbers",
+        ),
+    params:
+        version=VERSION,
+        title="contactlib: key numbers of the material pairs",
+    log:
+        "results/logs/tables/materials-key-numbers.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=800,
+        runtime=5,
+    script:
+        "../scripts/key_numbers.py"
+
+
 rule materials:
     input:
         rules.materials_figure.output,
+        rules.materials_key_numbers.output,
     default_target: False

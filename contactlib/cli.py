@@ -572,16 +572,20 @@ def format_history(res: Any) -> str:
     if res.slab_ratio > 0:
         head += f" ({getattr(res, 'base', 'smooth')} base)"
     head += _indenter_text(res)
+    errors = getattr(res, "work_error_estimate", None)
+    shown = errors is not None and any(math.isfinite(float(e)) for e in errors)
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
-                  f"{'V segment':>11} {'V total':>11}"]
+                  f"{'V segment':>11} {'V total':>11}" + (f" {'V error':>8}" if shown else "")]
     seg_work = res.segment_work()
     for i in range(1, len(res.load_path)):
         j = res.segment_end(i)
         rows.append(f"{i:7d} {res.load_ratio[j]:9.4f} {res.contact_radius[j]:9.5f} "
                     f"{_g(float(res.stick_ratio[j]), 5):>8} {seg_work[i - 1]:11.5g} "
-                    f"{res.frictional_work[j]:11.5g}")
+                    f"{res.frictional_work[j]:11.5g}"
+                    + (f" {float(errors[j]):8.1e}" if shown else ""))
     total = res.converged.size - 1
-    rows.append(f"  work in {work_scale}; converged steps: "
+    rows.append(f"  work in {work_scale}" + ("; V error: estimated relative error of V total"
+                                             if shown else "") + "; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
     if getattr(res, "relaxation", ()):  # a viscoelastic body: its time and energies

@@ -499,3 +499,13 @@ def test_a_closed_pipe_on_stdout_stops_quietly_and_keeps_the_file(tmp_path) -> N
     run = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, timeout=120)
     assert run.stderr.strip() in ("0", "141"), run.stderr  # 0 if it all fitted the pipe
     assert out.exists() and out.stat().st_size > 0
+
+
+def test_history_table_shows_the_work_error_estimate() -> None:
+    res = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=32)
+    text = cli.format_history(res)
+    assert "V error" in text.splitlines()[1]
+    top = res.segment_end(1)
+    assert f"{res.work_error_estimate[top]:8.1e}" in text.splitlines()[2]
+    bare = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=32, error_estimate=False)
+    assert "V error" not in cli.format_history(bare)  # no estimate, no column

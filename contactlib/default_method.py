@@ -58,7 +58,8 @@ from .discrete import SelfSimilarSolution
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
-from .operators import StickBlocks, nodal_operator_part, operator_part, operators
+from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_part,
+                        operators)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
            "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
@@ -69,6 +70,14 @@ __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_o
 # (e.g. Windows, Apple arm64) the step still helps, but k keeps a round-off
 # floor of about 1e-5 relative at n = 1024.
 _EXTENDED = np.longdouble
+# c/a at or below which the stick zone's normal rows are written relative to the axis
+# (w(r_i) - w(0), :func:`assemble`): near the axis w is O(1) and its variation O(r^2),
+# so the plain rows leave a round-off of ~1e-16/c in the stick-zone pressure, which the
+# stick-edge condition amplifies (nu = 0.499, n = 256, c/a = 1e-8: k off by 2.9e-4
+# (sphere) and 8.6e-4 (half-plane) instead of 6e-5 and 1.4e-5; c/a = 1e-7: 9e-5; 1e-5:
+# 6e-7). Above 1e-4 the plain rows are kept (bit for bit as before, no extra element
+# integrals; benchmarks/bench_axis_rows.py).
+AXIS_ROWS_BELOW = 1e-4
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256) ...
 # ... and whenever Newton's steps stop shrinking on the round-off floor: then the
 # iteration goes on with the refinement (nu = 0.3, c/a = 0.99 at n = 128 and 0.9999
@@ -245,12 +254,17 @@ class PartialSlipSystem:
                      + abs(self.edge_traction(x, k)) / max(abs(x[self.stick_edge]), 1e-300))
 
 
-def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray) -> PartialSlipSystem:
+def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
+             axis: tuple[np.ndarray, np.ndarray] | None = None) -> PartialSlipSystem:
     """The partial-slip system on ``mesh`` from the nodal operators (see the module notes).
 
     Rows: normal collocation at every node (w = delta - r^2/2), then the
     stick condition u = C r^2 at nodes 1 ... M. The slip-zone shear is
-    eliminated by Coulomb's law, phi_i = k p_i / shape_i.
+    eliminated by Coulomb's law, phi_i = k p_i / shape_i. ``axis`` (the
+    rows w(r_i) - w(0) of the pressure and of the shear at nodes 1 ... M,
+    :func:`~contactlib.operators.axis_w_rows`) replaces the normal rows
+    1 ... M by w(r_i) - w(0) = -r_i^2/2: the same equations, without the
+    cancellation of O(1) displacements near the axis of a tiny stick zone.
     """
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
@@ -273,6 +287,16 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray) -> P
     a0[nr:, nn + m] = -(r[stick_rows] ** 2)
     a1b[nr:] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
     b = np.concatenate([-0.5 * r**2, np.zeros(m)])
+    if axis is not None:  # rows 0 ... M: w(0) - w(r_{M+1}), w(r_i) - w(0) (i = 1 ... M)
+        dqx = _tie_columns(geometry, axis[1])
+        near = np.arange(m + 1)
+        sign = np.where(near == 0, -1.0, 1.0)[:, None]
+        at = np.concatenate([[m], np.arange(m)])  # axis rows are at r_1 ... r_{M+1}
+        a0[near, :nn] = sign * axis[0][at, :-1]
+        a0[near, nn] = 0.0  # delta drops out of every difference
+        a0[near, nn + 1:nn + m] = sign * dqx[at][:, stick_cols]
+        a1b[near] = sign * dqx[at][:, slip_cols] / shape[slip_nodes]
+        b[0] = 0.5 * r[m + 1] ** 2  # w(0) - w(r_{M+1}); -r_i^2/2 for the others as before
     return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
 
@@ -504,7 +528,10 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     if m == nn:
         return _full_adhesion(geometry, mesh, pw, qw)
 
-    system = assemble(geometry, mesh, pw, qw)
+    axis = None
+    if r[m] <= AXIS_ROWS_BELOW:  # tiny stick zone: its normal rows relative to the axis
+        axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part) for part in ("normal", "shear"))
+    system = assemble(geometry, mesh, pw, qw, axis)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)

@@ -161,6 +161,15 @@ class Indenter(ABC):
         """
 
     @abstractmethod
+    def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                      part: str) -> Displacements:
+        """(w(x) - w(0), 0, 0) of the basic load of ``part`` on the body, without cancellation.
+
+        The normal displacement relative to the axis (centre line): O(x^2/s)
+        near it, where w itself is O(s). Units as :meth:`pressure_kernel`.
+        """
+
+    @abstractmethod
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         """Degrees of homogeneity in length of the element integrals (w, u, du/dx).
 
@@ -262,6 +271,10 @@ class Sphere(Indenter):
                      with_du: bool = True) -> Displacements:
         return body.ring_shear(x, s, with_du=with_du)
 
+    def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                      part: str) -> Displacements:
+        return body.ring_axis_w(x, s, part)
+
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         d = body.ring_kernel_degrees
         if d is None:
@@ -332,6 +345,10 @@ class Cylinder(Indenter):
     def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
                      with_du: bool = True) -> Displacements:
         return body.strip_shear(x, s)
+
+    def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                      part: str) -> Displacements:
+        return body.strip_axis_w(x, s, part)
 
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         return None  # the half-plane's w carries a log, a layer its thickness

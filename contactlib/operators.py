@@ -50,7 +50,7 @@ if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "StickBlocks"]
+           "StickBlocks", "axis_w_rows"]
 
 PARTS = ("normal", "shear")
 
@@ -199,3 +199,24 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
     g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])
     g[:, m + 1:, :] = element_integrals(kernel, nodes[m + 1:], nodes)
     return apply_difference(g, nodes)
+
+
+def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str) -> np.ndarray:
+    """w(x) - w(0) of the nodal values, shape (len(x), N + 1), without cancellation.
+
+    The normal rows of :func:`operator_part` minus its row at the axis, from
+    the kernels' own differences (:meth:`~contactlib.model.Contact.axis_w_kernel`).
+    Near the axis w(x) - w(0) is O(x^2) while w is O(1): rows formed by
+    subtracting the operator's rows keep an absolute round-off of ~1e-16,
+    which is all of the signal of a stick zone of c/a = 1e-8 (the default
+    method's normal rows there, see :func:`contactlib.default_method.assemble`).
+    Units as :func:`operator_part` (a^2/R per unit traction).
+    """
+    if part not in PARTS:
+        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+
+    def kernel(xx: np.ndarray, ss: np.ndarray):
+        return model.axis_w_kernel(xx, ss, part)
+
+    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes)[:1]
+    return apply_difference(g, nodes)[0]

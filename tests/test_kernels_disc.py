@@ -680,3 +680,33 @@ def test_fit_coefficients_are_reproducible(name):
     P0, R0 = disc._FITS[name]
     np.testing.assert_allclose(P, P0, rtol=1e-10, atol=1e-15)
     np.testing.assert_allclose(R, R0, rtol=1e-10, atol=1e-15)
+
+
+# ----------------------------------------------------------------------------- 7.
+# w(r) - w(0) without cancellation (the default method's rows of a tiny stick zone)
+@pytest.mark.parametrize("s", [1.0, 1e-8, 3.7e2])
+def test_axis_w_against_mpmath(s):
+    """w(r; s) - w(0; s) of the pressure disc within 1e-14 of its own value (not of s),
+    from r = 1e-9 s (where the plain difference of w has no correct digit) to 5 s;
+    the shear's is beta min(r, s)^2 exactly."""
+    mp = _mp()
+    mp.mp.dps = 40
+    t = np.array([1e-9, 1e-6, 1e-3, 0.1, 0.5, 0.7, 0.70710678, 0.72, 0.9, 0.999999, 1.0,
+                  1.000001, 1.3, 5.0])
+    r = t * s
+    dw = disc.axis_w_disc(r, s, 0.3, "normal")[0]
+    for ri, got in zip(r, dw):
+        rr, ss = mp.mpf(float(ri)), mp.mpf(float(s))
+        if rr <= ss:
+            w = 4 / mp.pi * ss * mp.ellipe((rr / ss) ** 2)
+        else:
+            m = (ss / rr) ** 2
+            w = 4 / mp.pi * rr * (mp.ellipe(m) - (1 - m) * mp.ellipk(m))
+        ref = float(w - 2 * ss)
+        assert abs(got - ref) <= 1e-14 * abs(ref), (ri / s, got, ref)
+    dws = disc.axis_w_disc(r, s, 0.3, "shear")[0]
+    assert np.array_equal(dws, beta_of_nu(0.3) * np.minimum(r, s) ** 2)
+    # consistent with the kernels where the plain difference is accurate
+    far = t >= 0.1
+    plain = pressure_disc(r[far], s, 0.3)[0] - pressure_disc(0.0, s, 0.3)[0]
+    assert np.allclose(dw[far], plain, rtol=0, atol=2e-15 * s)

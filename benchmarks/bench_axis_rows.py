@@ -1,0 +1,60 @@
+"""Cost of the axis-referenced normal rows of a tiny stick zone, as a ratio in one run.
+
+``contactlib.default_method`` writes the normal rows of the stick zone as
+w(r_i) - w(0) when c/a <= AXIS_ROWS_BELOW (1e-4); above, nothing changes. This
+times one default-method solve (n = 256, nu = 0.499, both geometries) with the
+rows and with the plain rows (the threshold set below c/a) in the same process,
+best of 3, one BLAS thread, and prints the ratio and k against the closed form.
+
+Run: ``PYTHONPATH=. OPENBLAS_NUM_THREADS=1 python benchmarks/bench_axis_rows.py``
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+from scipy import special
+
+from contactlib import default_method
+from contactlib.model import contact
+from contactlib.theory import beta_of_nu
+
+
+def closed_form(geometry: str, nu: float, c: float) -> float:
+    """The uncoupled closed form (K' = K(1 - c^2) without rounding 1 - c^2)."""
+    kp = special.ellipkm1(c * c)
+    if geometry == "sphere":
+        return beta_of_nu(nu) * math.atanh(c) / c / kp
+    return beta_of_nu(nu) * special.ellipk(c * c) / kp
+
+
+def best(fn, repeat: int = 3):
+    times, out = [], None
+    for _ in range(repeat):
+        t = time.perf_counter()
+        out = fn()
+        times.append(time.perf_counter() - t)
+    return min(times), out
+
+
+def main() -> None:
+    nu, n = 0.499, 256
+    threshold = default_method.AXIS_ROWS_BELOW
+    print(f"{'case':22s} {'plain (s)':>10s} {'axis (s)':>10s} {'ratio':>6s} "
+          f"{'k err plain':>12s} {'k err axis':>12s}")
+    for geometry in ("sphere", "cylinder"):
+        model = contact(geometry, nu)
+        for c in (1e-8, 1e-6, 1e-4):
+            truth = closed_form(geometry, nu, c)
+            default_method.AXIS_ROWS_BELOW = -1.0
+            t_plain, s_plain = best(lambda: default_method.solve_default(model, c, n))
+            default_method.AXIS_ROWS_BELOW = threshold
+            t_axis, s_axis = best(lambda: default_method.solve_default(model, c, n))
+            print(f"{geometry + ', c/a = ' + format(c, 'g'):22s} {t_plain:10.3f} {t_axis:10.3f} "
+                  f"{t_axis / t_plain:6.2f} {s_plain.k / truth - 1:12.2e} "
+                  f"{s_axis.k / truth - 1:12.2e}")
+
+
+if __name__ == "__main__":
+    main()

@@ -530,7 +530,11 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
 
     axis = None
     if r[m] <= AXIS_ROWS_BELOW:  # tiny stick zone: its normal rows relative to the axis
-        axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part) for part in ("normal", "shear"))
+        try:
+            axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part)
+                         for part in ("normal", "shear"))
+        except NotImplementedError:  # an indenter without w(x) - w(0): the plain rows
+            axis = None
     system = assemble(geometry, mesh, pw, qw, axis)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)

@@ -160,14 +160,16 @@ class Indenter(ABC):
         (NaN) where that is cheaper. Units as :meth:`pressure_kernel`.
         """
 
-    @abstractmethod
     def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
                       part: str) -> Displacements:
         """(w(x) - w(0), 0, 0) of the basic load of ``part`` on the body, without cancellation.
 
         The normal displacement relative to the axis (centre line): O(x^2/s)
         near it, where w itself is O(s). Units as :meth:`pressure_kernel`.
+        An indenter without it raises NotImplementedError (the default
+        method then keeps its plain normal rows).
         """
+        raise NotImplementedError(f"{self.name}: no axis-referenced kernel w(x) - w(0)")
 
     @abstractmethod
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:

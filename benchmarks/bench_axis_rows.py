@@ -1,10 +1,12 @@
-"""Cost of the axis-referenced normal rows of a tiny stick zone, as a ratio in one run.
+"""Cost of the difference rows of the extremes, as a ratio in one run.
 
-``contactlib.default_method`` writes the normal rows of the stick zone as
-w(r_i) - w(0) when c/a <= AXIS_ROWS_BELOW (1e-4); above, nothing changes. This
-times one default-method solve (n = 256, nu = 0.499, both geometries) with the
-rows and with the plain rows (the threshold set below c/a) in the same process,
-best of 3, one BLAS thread, and prints the ratio and k against the closed form.
+``contactlib.default_method`` writes the normal rows of a tiny stick zone as
+w(r_i) - w(0) when c/a <= AXIS_ROWS_BELOW (1e-4), and the normal and stick rows
+of a thin slip annulus relative to a node a few widths inside when 1 - c/a <=
+EDGE_ROWS_BELOW (5e-4); elsewhere nothing changes. This times one
+default-method solve (n = 256, nu = 0.499, both geometries) with those rows and
+with the plain rows (both thresholds disabled) in the same process, best of 3,
+one BLAS thread, and prints the ratio and k against the closed form.
 
 Run: ``PYTHONPATH=. OPENBLAS_NUM_THREADS=1 python benchmarks/bench_axis_rows.py``
 """
@@ -40,18 +42,18 @@ def best(fn, repeat: int = 3):
 
 def main() -> None:
     nu, n = 0.499, 256
-    threshold = default_method.AXIS_ROWS_BELOW
+    threshold = default_method.AXIS_ROWS_BELOW, default_method.EDGE_ROWS_BELOW
     print(f"{'case':22s} {'plain (s)':>10s} {'axis (s)':>10s} {'ratio':>6s} "
           f"{'k err plain':>12s} {'k err axis':>12s}")
     for geometry in ("sphere", "cylinder"):
         model = contact(geometry, nu)
-        for c in (1e-8, 1e-6, 1e-4):
+        for c in (1e-8, 1e-6, 1e-4, 1 - 1e-4, 1 - 1e-5):
             truth = closed_form(geometry, nu, c)
-            default_method.AXIS_ROWS_BELOW = -1.0
+            default_method.AXIS_ROWS_BELOW = default_method.EDGE_ROWS_BELOW = -1.0
             t_plain, s_plain = best(lambda: default_method.solve_default(model, c, n))
-            default_method.AXIS_ROWS_BELOW = threshold
+            default_method.AXIS_ROWS_BELOW, default_method.EDGE_ROWS_BELOW = threshold
             t_axis, s_axis = best(lambda: default_method.solve_default(model, c, n))
-            print(f"{geometry + ', c/a = ' + format(c, 'g'):22s} {t_plain:10.3f} {t_axis:10.3f} "
+            print(f"{geometry + ', c/a = ' + format(c, '.6g'):22s} {t_plain:10.3f} {t_axis:10.3f} "
                   f"{t_axis / t_plain:6.2f} {s_plain.k / truth - 1:12.2e} "
                   f"{s_axis.k / truth - 1:12.2e}")
 

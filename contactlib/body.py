@@ -101,14 +101,15 @@ class ElasticBody:
         self._ring_layer()
         return disc.shear_disc(x, s, self.nu, with_du=with_du)
 
-    def ring_axis_w(self, x: np.ndarray, s: np.ndarray, part: str) -> Displacements:
-        """(w(x) - w(0), 0, 0) of the disc load of ``part``, without cancellation.
+    def ring_axis_w(self, x: np.ndarray, s: np.ndarray, part: str,
+                    ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the disc load of ``part``, without cancellation.
 
-        :func:`contactlib.kernels.disc.axis_w_disc`; a layer raises
+        :func:`contactlib.kernels.disc.w_difference_disc`; a layer raises
         NotImplementedError.
         """
         self._ring_layer()
-        return disc.axis_w_disc(x, s, self.nu, part)
+        return disc.w_difference_disc(x, ref, s, self.nu, part)
 
     @property
     def ring_kernel_degrees(self) -> np.ndarray | None:
@@ -128,13 +129,14 @@ class ElasticBody:
         """
         return strip.pressure_strip(x, s, self.nu, self.thickness)
 
-    def strip_axis_w(self, x: np.ndarray, s: np.ndarray, part: str) -> Displacements:
-        """(w(x) - w(0), 0, 0) of the strip load of ``part``, without cancellation.
+    def strip_axis_w(self, x: np.ndarray, s: np.ndarray, part: str,
+                     ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the strip load of ``part``, without cancellation.
 
-        :func:`contactlib.kernels.strip.axis_w_strip` with the thickness
+        :func:`contactlib.kernels.strip.w_difference_strip` with the thickness
         :attr:`thickness`.
         """
-        return strip.axis_w_strip(x, s, self.nu, part, self.thickness)
+        return strip.w_difference_strip(x, ref, s, self.nu, part, self.thickness)
 
     def strip_shear(self, x: np.ndarray, s: np.ndarray) -> Displacements:
         """(w, u, du/dx) under the odd shear sgn(x) on |x| < s (half-plane or slab).

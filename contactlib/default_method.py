@@ -59,7 +59,7 @@ from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
 from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_part,
-                        operators)
+                        operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
            "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
@@ -78,6 +78,16 @@ _EXTENDED = np.longdouble
 # 6e-7). Above 1e-4 the plain rows are kept (bit for bit as before, no extra element
 # integrals; benchmarks/bench_axis_rows.py).
 AXIS_ROWS_BELOW = 1e-4
+# 1 - c/a at or below which the thin slip annulus's normal rows (nodes beyond r_i0, the
+# first node beyond 1 - EDGE_REF_WIDTHS (1 - c/a)) and stick rows are written relative
+# to r_i0 (:func:`assemble`): there w and u are O(1) and O(beta) while the annulus's
+# tractions act on its width; a perturbation of 1e-16 of the pressure operator moved k by
+# 3e-4 (sphere, nu = 0.499, c/a = 1 - 1e-5, n = 256). nu = 0.49999, relative k error at
+# n = 64 ... 512, plain rows: 6.4e-5, 2.1e-4, -2.9e-4, 5.7e-3; difference rows: 4.4e-5,
+# 1.5e-5, 4.0e-6, 6.1e-6 (half-plane 4.0e-5, 1.3e-5, 1.1e-6, -1.1e-5). Above, the plain
+# rows (bit for bit as before).
+EDGE_ROWS_BELOW = 5e-4
+EDGE_REF_WIDTHS = 4.0
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256) ...
 # ... and whenever Newton's steps stop shrinking on the round-off floor: then the
 # iteration goes on with the refinement (nu = 0.3, c/a = 0.99 at n = 128 and 0.9999
@@ -255,7 +265,9 @@ class PartialSlipSystem:
 
 
 def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
-             axis: tuple[np.ndarray, np.ndarray] | None = None) -> PartialSlipSystem:
+             axis: tuple[np.ndarray, np.ndarray] | None = None,
+             edge: tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
+             ) -> PartialSlipSystem:
     """The partial-slip system on ``mesh`` from the nodal operators (see the module notes).
 
     Rows: normal collocation at every node (w = delta - r^2/2), then the
@@ -265,6 +277,12 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
     :func:`~contactlib.operators.axis_w_rows`) replaces the normal rows
     1 ... M by w(r_i) - w(0) = -r_i^2/2: the same equations, without the
     cancellation of O(1) displacements near the axis of a tiny stick zone.
+    ``edge`` = (i0, w rows of the pressure and of the shear, u rows of the
+    pressure and of the shear) replaces the normal rows i0 + 1 ... N by
+    w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2 and the stick rows i0 + 1 ... M by
+    u(r_i) - u(r_i0) = C (r_i^2 - r_i0^2) (a thin slip annulus), from
+    :func:`~contactlib.operators.axis_w_rows` and
+    :func:`~contactlib.operators.u_difference_rows` with ``ref = r_i0``.
     """
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
@@ -297,6 +315,21 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
         a0[near, nn + 1:nn + m] = sign * dqx[at][:, stick_cols]
         a1b[near] = sign * dqx[at][:, slip_cols] / shape[slip_nodes]
         b[0] = 0.5 * r[m + 1] ** 2  # w(0) - w(r_{M+1}); -r_i^2/2 for the others as before
+    if edge is not None:  # rows i0+1 ... N: w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2
+        i0, dp, dq, up, uq = edge
+        dqx = _tie_columns(geometry, dq)
+        rows = np.arange(i0 + 1, nn + 1)
+        a0[rows, :nn] = dp[:, :-1]
+        a0[rows, nn] = 0.0
+        a0[rows, nn + 1:nn + m] = dqx[:, stick_cols]
+        a1b[rows] = dqx[:, slip_cols] / shape[slip_nodes]
+        b[rows] = -0.5 * (r[rows] - r[i0]) * (r[rows] + r[i0])
+        uqx = _tie_columns(geometry, uq)
+        srows = nr + np.arange(i0, m)  # stick rows of the nodes i0 + 1 ... M
+        a0[srows, :nn] = up[:m - i0, :-1]
+        a0[srows, nn + 1:nn + m] = uqx[:m - i0, stick_cols]
+        a0[srows, nn + m] = -(r[i0 + 1:m + 1] - r[i0]) * (r[i0 + 1:m + 1] + r[i0])
+        a1b[srows] = uqx[:m - i0, slip_cols] / shape[slip_nodes]
     return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
 
@@ -535,7 +568,18 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
                          for part in ("normal", "shear"))
         except NotImplementedError:  # an indenter without w(x) - w(0): the plain rows
             axis = None
-    system = assemble(geometry, mesh, pw, qw, axis)
+    edge = None
+    if 1.0 - r[m] <= EDGE_ROWS_BELOW:  # thin slip annulus: its normal rows relative to r_i0
+        i0 = int(np.searchsorted(r, 1.0 - EDGE_REF_WIDTHS * (1.0 - r[m])))
+        try:
+            ref = float(r[i0])
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:], part, ref=ref)
+                                 for part in ("normal", "shear")) + tuple(
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                for part in ("normal", "shear"))
+        except NotImplementedError:
+            edge = None
+    system = assemble(geometry, mesh, pw, qw, axis, edge)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)

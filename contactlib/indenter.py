@@ -161,11 +161,12 @@ class Indenter(ABC):
         """
 
     def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
-                      part: str) -> Displacements:
-        """(w(x) - w(0), 0, 0) of the basic load of ``part`` on the body, without cancellation.
+                      part: str, ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the basic load of ``part`` on the body, without cancellation.
 
-        The normal displacement relative to the axis (centre line): O(x^2/s)
-        near it, where w itself is O(s). Units as :meth:`pressure_kernel`.
+        The normal displacement relative to the axis (centre line; ref = 0):
+        O(x^2/s) near it, where w itself is O(s); or relative to a point ref
+        nearby. Units as :meth:`pressure_kernel`.
         An indenter without it raises NotImplementedError (the default
         method then keeps its plain normal rows).
         """
@@ -274,8 +275,8 @@ class Sphere(Indenter):
         return body.ring_shear(x, s, with_du=with_du)
 
     def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
-                      part: str) -> Displacements:
-        return body.ring_axis_w(x, s, part)
+                      part: str, ref: float = 0.0) -> Displacements:
+        return body.ring_axis_w(x, s, part, ref)
 
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         d = body.ring_kernel_degrees
@@ -349,8 +350,8 @@ class Cylinder(Indenter):
         return body.strip_shear(x, s)
 
     def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
-                      part: str) -> Displacements:
-        return body.strip_axis_w(x, s, part)
+                      part: str, ref: float = 0.0) -> Displacements:
+        return body.strip_axis_w(x, s, part, ref)
 
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         return None  # the half-plane's w carries a log, a layer its thickness

@@ -142,8 +142,9 @@ class Contact:
         """
         return self._summed(self.indenter.shear_kernel, x, s, 1.0, with_du=with_du)
 
-    def axis_w_kernel(self, x: np.ndarray, s: np.ndarray, part: str) -> Displacements:
-        """(w(x) - w(0), 0, 0) of the basic load of ``part``, both bodies, without cancellation.
+    def axis_w_kernel(self, x: np.ndarray, s: np.ndarray, part: str,
+                      ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the basic load of ``part``, both bodies, without cancellation.
 
         The closing of the gap relative to the axis (centre line): where w
         is O(s) and the difference O(x^2/s), this keeps its relative accuracy
@@ -151,7 +152,7 @@ class Contact:
         :func:`contactlib.operators.axis_w_rows`).
         """
         def kernel(body, xx, ss):
-            return self.indenter.axis_w_kernel(body, xx, ss, part)
+            return self.indenter.axis_w_kernel(body, xx, ss, part, ref)
         return self._summed(kernel, x, s, -1.0 if part == "normal" else 1.0)
 
     def length_degrees(self, part: str) -> np.ndarray | None:

@@ -402,3 +402,27 @@ def test_tiny_stick_zone_converges_to_the_closed_form(geometry):
         assert err[1] < err[0] / 3 and err[2] < err[1] / 3
     else:
         assert max(err) < 3e-5
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("part", ["normal", "shear"])
+def test_difference_rows_are_the_plain_row_differences(geometry, part):
+    """The difference rows of a thin annulus are the same equations as the plain operator's
+    row differences: equal to the plain rows' own round-off, which their cancellation
+    raises to ~1e-12 of the row scale (the accuracy of the differences themselves is
+    tested against mpmath in the kernel tests)."""
+    from contactlib.elements import graded_mesh
+    from contactlib.model import contact
+    from contactlib.operators import axis_w_rows, u_difference_rows
+
+    model = contact(geometry, 0.3)
+    nodes = graded_mesh(32, 1 - 1e-3).nodes
+    i0 = 20
+    x = nodes[i0 + 1:]
+    plain = operator_part(model, nodes, nodes, part)
+    dw = axis_w_rows(model, nodes, x, part, ref=float(nodes[i0]))
+    du = u_difference_rows(model, nodes, x, part, float(nodes[i0]))
+    for got, k in ((dw, 0), (du, 1)):
+        want = plain[k][i0 + 1:] - plain[k][i0]
+        scale = np.abs(plain[k]).max()
+        assert np.abs(got - want).max() <= 1e-10 * scale

@@ -613,3 +613,22 @@ def test_axis_w_slab_is_the_plain_difference(part):
     dw = strip.axis_w_strip(x, 1.0, 0.3, part, h=2.0)[0]
     plain = kernel(x, 1.0, 0.3, 2.0)[0] - kernel(0.0, 1.0, 0.3, 2.0)[0]
     assert np.allclose(dw, plain, rtol=0, atol=1e-14)
+
+
+@pytest.mark.parametrize("x0", [0.3, 1.0 - 4e-5])
+def test_w_difference_half_plane_against_mpmath(x0):
+    """w(x; s) - w(x0; s) of the half-plane pressure strip within 1e-14 of its value."""
+    mp = pytest.importorskip("mpmath")
+    mp.mp.dps = 40
+
+    def f(v):
+        return v * mp.log(abs(v)) if v != 0 else mp.mpf(0)
+
+    width = 1.0 - x0 if x0 > 0.5 else 0.1
+    for x in x0 + width * np.array([0.25, 0.75, 1.0 - 1e-4]):
+        for s in (0.2, 0.9, x0 - 0.25 * width, x0 + 0.5 * width, x0 + width, 1.5):
+            got = float(strip.w_difference_strip(np.array([x]), x0, np.array([s]), 0.3,
+                                                 "normal")[0][0])
+            xx, xr, ss = mp.mpf(float(x)), mp.mpf(float(x0)), mp.mpf(float(s))
+            ref = float(2 / mp.pi * (-f(xx + ss) + f(xx - ss) + f(xr + ss) - f(xr - ss)))
+            assert abs(got - ref) <= 1e-14 * abs(ref), (x, s, got, ref)

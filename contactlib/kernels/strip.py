@@ -182,7 +182,7 @@ from math import factorial
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["BASES", "pressure_strip", "shear_strip", "axis_w_strip"]
+__all__ = ["BASES", "pressure_strip", "shear_strip", "axis_w_strip", "w_difference_strip"]
 
 Arr = NDArray[np.float64]
 _TWO_PI = 2.0 / np.pi
@@ -934,5 +934,73 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
         rem_x = _evaluate(kind, xa, sa, nu, h, base)[0] - _evaluate(kind, xa, sa, nu, np.inf)[0]
         zx = np.zeros(xa.shape)
         rem_0 = _evaluate(kind, zx, sa, nu, h, base)[0] - _evaluate(kind, zx, sa, nu, np.inf)[0]
+        dw = dw + (rem_x - rem_0)
+    return dw, zero, zero.copy()
+
+
+def _f_difference(a: Arr, b: Arr, d: Arr) -> Arr:
+    """F(a) - F(b), F(t) = t ln|t|, with d = a - b given exactly; no cancellation where a, b
+    have one sign (else the plain difference: both within |d| of 0, both small)."""
+    out = np.empty(a.shape)
+    same = (a * b > 0.0)
+    asame, bsame, dsame = a[same], b[same], d[same]
+    out[same] = dsame * np.log(np.abs(asame)) + bsame * np.log1p(dsame / bsame)
+    other = ~same
+    with np.errstate(divide="ignore", invalid="ignore"):
+        fa = np.where(a[other] != 0.0, a[other] * np.log(np.abs(np.where(a[other] != 0.0,
+                                                                          a[other], 1.0))), 0.0)
+        fb = np.where(b[other] != 0.0, b[other] * np.log(np.abs(np.where(b[other] != 0.0,
+                                                                          b[other], 1.0))), 0.0)
+    out[other] = fa - fb
+    return out
+
+
+def w_difference_strip(x: ArrayLike, x0: float, s: ArrayLike, nu: float, part: str,
+                       h: float = np.inf, base: str = "smooth") -> tuple[Arr, Arr, Arr]:
+    """w(x; s) - w(x0; s) of the strip load of ``part``, without cancellation.
+
+    Parameters
+    ----------
+    x, s : array_like
+        Surface points (their absolute values are used) and strip
+        half-widths (>= 0), broadcast.
+    x0 : float
+        The reference point (>= 0); 0 gives :func:`axis_w_strip`.
+    nu, part, h, base :
+        As :func:`axis_w_strip`.
+
+    Returns
+    -------
+    dw, zero, zero : ndarray
+        As :func:`axis_w_strip`.
+
+    Notes
+    -----
+    Half-plane, pressure: (2/pi)[-(F(x+s) - F(x0+s)) + F(x-s) - F(x0-s)],
+    each difference of F(t) = t ln|t| as (a - b) ln|a| + b log1p((a - b)/b)
+    with a - b = x - x0 (no cancellation where a and b have one sign); shear:
+    2 beta (min(x, s) - min(x0, s)). A slab's remainder is differenced
+    directly (its absolute round-off, ~1e-16 s, stays).
+    """
+    if x0 == 0.0:
+        return axis_w_strip(x, s, nu, part, h, base)
+    xa = np.abs(np.asarray(x, dtype=float))
+    sa = np.asarray(s, dtype=float)
+    xa, sa = np.broadcast_arrays(xa, sa)
+    zero = np.zeros(xa.shape)
+    d = xa - x0
+    if part == "shear":
+        dw = 2.0 * _beta(nu) * (np.minimum(xa, sa) - np.minimum(x0, sa))
+    elif part == "normal":
+        dw = (2.0 / np.pi) * (_f_difference(xa - sa, x0 - sa, d)
+                              - _f_difference(xa + sa, x0 + sa, d))
+    else:
+        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+    dw = np.where(sa > 0.0, dw, 0.0)
+    if np.isfinite(h):
+        kind = "pressure" if part == "normal" else "shear"
+        ref = np.full(xa.shape, float(x0))
+        rem_x = _evaluate(kind, xa, sa, nu, h, base)[0] - _evaluate(kind, xa, sa, nu, np.inf)[0]
+        rem_0 = _evaluate(kind, ref, sa, nu, h, base)[0] - _evaluate(kind, ref, sa, nu, np.inf)[0]
         dw = dw + (rem_x - rem_0)
     return dw, zero, zero.copy()

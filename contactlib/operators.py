@@ -45,6 +45,7 @@ import numpy as np
 
 from .elements import Mesh, MeshStore, Store
 from .influence import apply_difference, element_integrals
+from .kernels.disc import gauss_tiers
 
 if TYPE_CHECKING:
     from .model import Contact
@@ -225,16 +226,13 @@ def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
     return apply_difference(g, nodes)[0]
 
 
-_GL16 = np.polynomial.legendre.leggauss(16)
-_GL16_T, _GL16_W = 0.5 * (_GL16[0] + 1.0), 0.5 * _GL16[1]
-
-
 def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
                       ref: float) -> np.ndarray:
     """u(x) - u(ref) of the nodal values, shape (len(x), N + 1), without cancellation.
 
     For each (point, load radius) sample the kernel difference is the
-    16-point Gauss-Legendre integral of the kernel's own du/dx over the
+    Gauss-Legendre integral (6, 10 or 16 points by distance,
+    :func:`contactlib.kernels.disc.gauss_tiers`) of the kernel's own du/dx over the
     interval between ``ref`` and x where the load edge s lies at least the
     interval's length from it (the singularity of du/dx at s is then far
     enough for a relative error below 1e-16), else the plain difference of
@@ -250,13 +248,15 @@ def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: st
     def kernel(xx: np.ndarray, ss: np.ndarray):
         length = xx - ref
         gap = np.maximum(np.maximum(ss - np.maximum(xx, ref), np.minimum(xx, ref) - ss), 0.0)
-        smooth = gap >= np.abs(length)
         out = np.empty(xx.shape)
-        if smooth.any():
-            ls, sv = length[smooth], ss[smooth]
-            t = ref + ls[None, :] * _GL16_T[:, None]
-            du = np.asarray(kern(t, np.broadcast_to(sv, t.shape))[2]).reshape(t.shape)
-            out[smooth] = ls * (_GL16_W @ du)
+        smooth = np.zeros(xx.shape, dtype=bool)
+        for tier, gt, gw in gauss_tiers(gap, np.abs(length)):
+            if tier.any():
+                ls, sv = length[tier], ss[tier]
+                t = ref + ls[None, :] * gt[:, None]
+                du = np.asarray(kern(t, np.broadcast_to(sv, t.shape))[2]).reshape(t.shape)
+                out[tier] = ls * (gw @ du)
+                smooth |= tier
         rest = ~smooth
         if rest.any():
             sv = ss[rest]

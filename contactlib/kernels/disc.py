@@ -513,9 +513,22 @@ def axis_w_disc(r, s, nu: float, part: str) -> tuple[np.ndarray, np.ndarray, np.
     return dw, zero, zero.copy()
 
 
-_GL_T, _GL_W = np.polynomial.legendre.leggauss(16)
-_GL_T = 0.5 * (_GL_T + 1.0)
-_GL_W = 0.5 * _GL_W
+# Gauss-Legendre rules on [0, 1] for an integrand with a log singularity at least
+# ``gap`` interval lengths away (error ~ rho^(-2n), rho = 2 gap + 1 + sqrt((2 gap + 1)^2 - 1)
+# for gap measured from the interval's end): (smallest gap, points), below 1e-18 each.
+GAUSS_TIERS = tuple((gap, tuple(0.5 * (v + 1.0) if i == 0 else 0.5 * v
+                                for i, v in enumerate(np.polynomial.legendre.leggauss(p))))
+                    for gap, p in ((8.0, 6), (2.0, 10), (1.0, 16)))
+
+
+def gauss_tiers(gap: np.ndarray, length: np.ndarray):
+    """(mask, nodes, weights) for each tier of :data:`GAUSS_TIERS` (gap in units of length)."""
+    ratio = np.where(length > 0.0, gap / np.where(length > 0.0, length, 1.0), np.inf)
+    taken = np.zeros(gap.shape, dtype=bool)
+    for lo, (t, w) in GAUSS_TIERS:
+        mask = (ratio >= lo) & ~taken
+        taken |= mask
+        yield mask, t, w
 
 
 def _dwdr_pressure(t: np.ndarray, s: np.ndarray) -> np.ndarray:
@@ -554,7 +567,8 @@ def w_difference_disc(r, r0: float, s, nu: float,
     -----
     Shear: beta (min(r, s)^2 - min(r0, s)^2) as a product. Pressure: where the
     disc edge s lies at least |r - r0| from the interval between r0 and r,
-    the 16-point Gauss-Legendre integral of dw/dr over it (the log
+    the Gauss-Legendre integral of dw/dr over it (6, 10 or 16 points as s
+    is 8, 2 or 1 interval lengths away, :data:`GAUSS_TIERS`; the log
     singularity of dw/dr at s is then at least one interval length away: a
     relative error below 1e-14), else the plain difference of
     :func:`pressure_disc` (both points then within a few |r - r0| of s, where
@@ -573,12 +587,14 @@ def w_difference_disc(r, r0: float, s, nu: float,
         raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
     length = np.abs(ra - r0)
     gap = np.maximum(np.maximum(sa - np.maximum(ra, r0), np.minimum(ra, r0) - sa), 0.0)
-    smooth = (gap >= length) & (sa > 0.0)
     dw = np.empty(ra.shape)
-    if smooth.any():
-        rs, ss = ra[smooth], sa[smooth]
-        t = r0 + (rs - r0)[None, :] * _GL_T[:, None]
-        dw[smooth] = (rs - r0) * (_GL_W @ _dwdr_pressure(t, ss[None, :]))
+    smooth = np.zeros(ra.shape, dtype=bool)
+    for tier, gt, gw in gauss_tiers(np.where(sa > 0.0, gap, -1.0), length):
+        if tier.any():
+            rs, ss = ra[tier], sa[tier]
+            t = r0 + (rs - r0)[None, :] * gt[:, None]
+            dw[tier] = (rs - r0) * (gw @ _dwdr_pressure(t, ss[None, :]))
+            smooth |= tier
     rest = ~smooth
     if rest.any():
         dw[rest] = (pressure_disc(ra[rest], sa[rest], nu)[0]

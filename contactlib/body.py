@@ -125,6 +125,20 @@ class ElasticBody:
         """The same material unbounded: the singular part of a layer's kernels."""
         return ElasticBody(self.nu)
 
+    def ring_axis_w(self, x: np.ndarray, s: np.ndarray, part: str,
+                    ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the disc load of ``part``, without cancellation.
+
+        :func:`contactlib.kernels.disc.w_difference_disc`. A layer raises
+        NotImplementedError (its smooth remainder has no difference form yet;
+        the default method then keeps its plain normal rows).
+        """
+        if not self.is_half_space:
+            raise NotImplementedError(
+                f"no cancellation-free w(x) - w(ref) of ring loads on a layer "
+                f"(slab_ratio = {self.slab_ratio!r})")
+        return disc.w_difference_disc(x, ref, s, self.nu, part)
+
     @property
     def ring_kernel_degrees(self) -> np.ndarray | None:
         """Degrees of homogeneity in length of the disc kernels (w, u, du/dr) at unit load.
@@ -142,6 +156,15 @@ class ElasticBody:
         :attr:`thickness` and the :attr:`base`.
         """
         return strip.pressure_strip(x, s, self.nu, self.thickness, self.base)
+
+    def strip_axis_w(self, x: np.ndarray, s: np.ndarray, part: str,
+                     ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the strip load of ``part``, without cancellation.
+
+        :func:`contactlib.kernels.strip.w_difference_strip` with the thickness
+        :attr:`thickness` and the :attr:`base`.
+        """
+        return strip.w_difference_strip(x, ref, s, self.nu, part, self.thickness, self.base)
 
     def strip_shear(self, x: np.ndarray, s: np.ndarray) -> Displacements:
         """(w, u, du/dx) under the odd shear sgn(x) on |x| < s (half-plane or slab).

@@ -58,7 +58,8 @@ from .discrete import SelfSimilarSolution
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
-from .operators import StickBlocks, nodal_operator_part, operator_part, operators
+from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_part,
+                        operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
            "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
@@ -69,6 +70,39 @@ __all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_o
 # (e.g. Windows, Apple arm64) the step still helps, but k keeps a round-off
 # floor of about 1e-5 relative at n = 1024.
 _EXTENDED = np.longdouble
+# c/a at or below which the stick zone's normal rows are written relative to the axis
+# (w(r_i) - w(0), :func:`assemble`): near the axis w is O(1) and its variation O(r^2),
+# so the plain rows leave a round-off of ~1e-16/c in the stick-zone pressure, which the
+# stick-edge condition amplifies (nu = 0.499, n = 256, c/a = 1e-8: k off by 2.9e-4
+# (sphere) and 8.6e-4 (half-plane) instead of 6e-5 and 1.4e-5; c/a = 1e-7: 9e-5; 1e-5:
+# 6e-7). Above 1e-4 the plain rows are kept (bit for bit as before, no extra element
+# integrals; benchmarks/bench_axis_rows.py).
+AXIS_ROWS_BELOW = 1e-4
+# 1 - c/a at or below which the thin slip annulus's normal rows (nodes beyond r_i0, the
+# first node beyond 1 - EDGE_REF_WIDTHS (1 - c/a)) and stick rows are written relative
+# to r_i0 (:func:`assemble`): there w and u are O(1) and O(beta) while the annulus's
+# tractions act on its width; a perturbation of 1e-16 of the pressure operator moved k by
+# 3e-4 (sphere, nu = 0.499, c/a = 1 - 1e-5, n = 256). nu = 0.49999, relative k error at
+# n = 64 ... 512, plain rows: 6.4e-5, 2.1e-4, -2.9e-4, 5.7e-3; difference rows: 4.4e-5,
+# 1.5e-5, 4.0e-6, 6.1e-6 (half-plane 4.0e-5, 1.3e-5, 1.1e-6, -1.1e-5). Above, the plain
+# rows (bit for bit as before).
+EDGE_ROWS_BELOW = 5e-4
+EDGE_REF_WIDTHS = 4.0
+# High n: where the elements next to c are below NEAR_ROWS_BELOW min(c, a - c) (n >~ 1500;
+# never at the default n = 256, whose are ~9e-5 of it), the normal rows within
+# NEAR_ROWS_WIDTH min(c, a - c) of c and the stick rows from there to c are written
+# relative to the node just inside c - that width (:func:`assemble`, as for the annulus).
+# Sphere, nu = 0.3, c/a = 0.5, (k(n) - k_inf) n^2 / k_inf with the plain rows: 0.83, 0.83,
+# 0.83 at n = 1024, 1536, 2048, then 0.95, 1.86, 0.12, 3.05 at 2560 ... 4096 (k(4096)
+# 1.3e-7 off the n^-2 trend); with these rows 0.80, 0.75, 0.73, 0.69, 0.82 at 2048 ... 4096
+# (Richardson from 2048/4096 within 2.2e-9 of the plain 512/1024/2048 one).
+NEAR_ROWS_BELOW = 2e-6
+NEAR_ROWS_WIDTH = 0.1
+
+
+def _near_c_h(r: np.ndarray, m: int) -> float:
+    """The smaller of the two elements next to c."""
+    return float(min(r[m] - r[m - 1], r[m + 1] - r[m]))
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256) ...
 # ... and whenever Newton's steps stop shrinking on the round-off floor: then the
 # iteration goes on with the refinement (nu = 0.3, c/a = 0.99 at n = 128 and 0.9999
@@ -265,12 +299,25 @@ class PartialSlipSystem:
                      + abs(self.edge_traction(x, k)) / max(abs(x[self.stick_edge]), 1e-300))
 
 
-def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray) -> PartialSlipSystem:
+def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
+             axis: tuple[np.ndarray, np.ndarray] | None = None,
+             edge: tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
+             ) -> PartialSlipSystem:
     """The partial-slip system on ``mesh`` from the nodal operators (see the module notes).
 
     Rows: normal collocation at every node (w = delta - r^2/2), then the
     stick condition u = C r^2 at nodes 1 ... M. The slip-zone shear is
-    eliminated by Coulomb's law, phi_i = k p_i / shape_i.
+    eliminated by Coulomb's law, phi_i = k p_i / shape_i. ``axis`` (the
+    rows w(r_i) - w(0) of the pressure and of the shear at nodes 1 ... M,
+    :func:`~contactlib.operators.axis_w_rows`) replaces the normal rows
+    1 ... M by w(r_i) - w(0) = -r_i^2/2: the same equations, without the
+    cancellation of O(1) displacements near the axis of a tiny stick zone.
+    ``edge`` = (i0, w rows of the pressure and of the shear, u rows of the
+    pressure and of the shear) replaces the normal rows i0 + 1 ... N by
+    w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2 and the stick rows i0 + 1 ... M by
+    u(r_i) - u(r_i0) = C (r_i^2 - r_i0^2) (a thin slip annulus), from
+    :func:`~contactlib.operators.axis_w_rows` and
+    :func:`~contactlib.operators.u_difference_rows` with ``ref = r_i0``.
     """
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
@@ -293,6 +340,31 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray) -> P
     a0[nr:, nn + m] = -(r[stick_rows] ** 2)
     a1b[nr:] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
     b = np.concatenate([-0.5 * r**2, np.zeros(m)])
+    if axis is not None:  # rows 0 ... M: w(0) - w(r_{M+1}), w(r_i) - w(0) (i = 1 ... M)
+        dqx = _tie_columns(geometry, axis[1])
+        near = np.arange(m + 1)
+        sign = np.where(near == 0, -1.0, 1.0)[:, None]
+        at = np.concatenate([[m], np.arange(m)])  # axis rows are at r_1 ... r_{M+1}
+        a0[near, :nn] = sign * axis[0][at, :-1]
+        a0[near, nn] = 0.0  # delta drops out of every difference
+        a0[near, nn + 1:nn + m] = sign * dqx[at][:, stick_cols]
+        a1b[near] = sign * dqx[at][:, slip_cols] / shape[slip_nodes]
+        b[0] = 0.5 * r[m + 1] ** 2  # w(0) - w(r_{M+1}); -r_i^2/2 for the others as before
+    if edge is not None:  # rows i0+1 ... N: w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2
+        i0, dp, dq, up, uq = edge
+        dqx = _tie_columns(geometry, dq)
+        rows = np.arange(i0 + 1, i0 + 1 + dp.shape[0])
+        a0[rows, :nn] = dp[:, :-1]
+        a0[rows, nn] = 0.0
+        a0[rows, nn + 1:nn + m] = dqx[:, stick_cols]
+        a1b[rows] = dqx[:, slip_cols] / shape[slip_nodes]
+        b[rows] = -0.5 * (r[rows] - r[i0]) * (r[rows] + r[i0])
+        uqx = _tie_columns(geometry, uq)
+        srows = nr + np.arange(i0, m)  # stick rows of the nodes i0 + 1 ... M
+        a0[srows, :nn] = up[:m - i0, :-1]
+        a0[srows, nn + 1:nn + m] = uqx[:m - i0, stick_cols]
+        a0[srows, nn + m] = -(r[i0 + 1:m + 1] - r[i0]) * (r[i0 + 1:m + 1] + r[i0])
+        a1b[srows] = uqx[:m - i0, slip_cols] / shape[slip_nodes]
     return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
 
@@ -527,7 +599,37 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     if m == nn:
         return _full_adhesion(geometry, mesh, pw, qw)
 
-    system = assemble(geometry, mesh, pw, qw)
+    axis = None
+    if r[m] <= AXIS_ROWS_BELOW:  # tiny stick zone: its normal rows relative to the axis
+        try:
+            axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part)
+                         for part in ("normal", "shear"))
+        except NotImplementedError:  # an indenter without w(x) - w(0): the plain rows
+            axis = None
+    edge = None
+    if 1.0 - r[m] <= EDGE_ROWS_BELOW:  # thin slip annulus: its normal rows relative to r_i0
+        i0 = int(np.searchsorted(r, 1.0 - EDGE_REF_WIDTHS * (1.0 - r[m])))
+        try:
+            ref = float(r[i0])
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:], part, ref=ref)
+                                 for part in ("normal", "shear")) + tuple(
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                for part in ("normal", "shear"))
+        except NotImplementedError:
+            edge = None
+    elif axis is None and _near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m]):
+        width = NEAR_ROWS_WIDTH * min(r[m], 1.0 - r[m])
+        i0 = int(np.searchsorted(r, r[m] - width))
+        i1 = int(np.searchsorted(r, r[m] + width))
+        try:
+            ref = float(r[i0])
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:i1 + 1], part, ref=ref)
+                                 for part in ("normal", "shear")) + tuple(
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                for part in ("normal", "shear"))
+        except NotImplementedError:
+            edge = None
+    system = assemble(geometry, mesh, pw, qw, axis, edge)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)

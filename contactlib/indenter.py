@@ -187,6 +187,18 @@ class Indenter(ABC):
         """
         return None
 
+    def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                      part: str, ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the basic load of ``part`` on the body, without cancellation.
+
+        The normal displacement relative to the axis (centre line; ref = 0):
+        O(x^2/s) near it, where w itself is O(s); or relative to a point ref
+        nearby. Units as :meth:`pressure_kernel`.
+        An indenter without it raises NotImplementedError (the default
+        method then keeps its plain normal rows).
+        """
+        raise NotImplementedError(f"{self.name}: no axis-referenced kernel w(x) - w(0)")
+
     @abstractmethod
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         """Degrees of homogeneity in length of the element integrals (w, u, du/dx).
@@ -296,6 +308,10 @@ class Sphere(Indenter):
         return body.ring_remainder("pressure" if part == "normal" else "shear", x, s,
                                    weights, owner)
 
+    def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                      part: str, ref: float = 0.0) -> Displacements:
+        return body.ring_axis_w(x, s, part, ref)
+
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         d = body.ring_kernel_degrees
         if d is None:
@@ -367,6 +383,10 @@ class Cylinder(Indenter):
     def shear_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
                      with_du: bool = True) -> Displacements:
         return body.strip_shear(x, s)
+
+    def axis_w_kernel(self, body: ElasticBody, x: np.ndarray, s: np.ndarray,
+                      part: str, ref: float = 0.0) -> Displacements:
+        return body.strip_axis_w(x, s, part, ref)
 
     def length_degrees(self, body: ElasticBody, part: str) -> np.ndarray | None:
         return None  # the half-plane's w carries a log, a layer its thickness

@@ -116,7 +116,7 @@ class _Packer:
         self.pending: list = []
 
     def add(self, xs: np.ndarray, start: np.ndarray, length: np.ndarray,
-            rule: tuple[np.ndarray, np.ndarray], put) -> None:
+            rule: tuple[np.ndarray, np.ndarray], put, touch: bool = False) -> None:
         t, w = rule
         p = t.size
         k = xs.size
@@ -132,6 +132,8 @@ class _Packer:
             s = self.ws.s[lo:hi].reshape(p, b - a)
             np.multiply(t[:, None], length[None, a:b], out=s)  # start + length t, as before
             s += start[None, a:b]
+            if touch:  # pieces ending at x: no rule point may round onto x itself
+                _off_the_point(s, xs[a:b], start[a:b])
             self.pending.append((lo, a, b, w, length, put))
             self.fill = hi
             a = b
@@ -153,6 +155,22 @@ class _Packer:
         self.fill = 0
 
 
+def _off_the_point(s: np.ndarray, xs: np.ndarray, start: np.ndarray) -> None:
+    """Move rule points that rounded onto their point x one ulp into their piece, in place.
+
+    A piece of length L next to x puts its outermost smoothstep point at
+    about 2e-8 L from x, which rounds onto x once L is below ~5e-9 x (a slip
+    annulus of 1e-5 a at n = 256): the kernels' du/dx is log-infinite there.
+    One ulp into the piece the integrand is finite; the weight of that point
+    (~1e-8 of the piece) makes the change of the integral negligible.
+    """
+    hit = s == xs[None, :]
+    if hit.any():
+        toward = np.where(start >= xs, np.inf, -np.inf)
+        s[hit] = np.nextafter(np.broadcast_to(xs, s.shape)[hit],
+                              np.broadcast_to(toward, s.shape)[hit])
+
+
 def _sink(flat: list, pos: np.ndarray, add: bool = False):
     """``put`` for the packer: write (or add) piece results at flat positions ``pos``."""
     def put(a, b, res):
@@ -166,7 +184,7 @@ def _sink(flat: list, pos: np.ndarray, add: bool = False):
 
 
 def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
-                      chunk: int = 2_000_000) -> np.ndarray:
+                      chunk: int = 2_000_000, ref: float | None = None) -> np.ndarray:
     """Integrals of a kernel over every element for every evaluation point.
 
     Parameters
@@ -180,6 +198,10 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
         Increasing element nodes, ``nodes[0] = 0``.
     chunk : int
         Maximum number of (point, element) pairs handled at once (memory).
+    ref : float, optional
+        A node where the kernel is singular as well as at ``x`` (a kernel
+        difference K(x; s) - K(ref; s)): the elements are classified by
+        their distance to the nearer of ``x`` and ``ref``.
 
     Returns
     -------
@@ -198,6 +220,10 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
     flat = [out[k].reshape(-1) for k in range(3)]
     with np.errstate(divide="ignore"):
         inv_len = 1.0 / length
+    dist_ref = None
+    if ref is not None:  # distance (in lengths) of each element to the node ref
+        with np.errstate(invalid="ignore"):
+            dist_ref = np.maximum(np.maximum(lo_e - ref, ref - hi_e), 0.0) * inv_len
     rows = max(1, min(int(chunk), _BLOCK_PAIRS) // n)
     ws = _SCRATCH
     packer = _Packer(kernel)
@@ -219,6 +245,8 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
         np.maximum(dist, 0.0, out=dist)
         with np.errstate(invalid="ignore"):
             dist *= inv_len
+        if dist_ref is not None:
+            np.minimum(dist, dist_ref[None, :], out=dist)
         code[...] = side  # key = 2 * class + side; class 0 = near (< _NEAR lengths)
         for t in _THRESHOLDS:
             np.greater_equal(dist, t, out=side)
@@ -262,7 +290,7 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
             if piece.size:
                 pa = a_end.take(piece)
                 packer.add(xs_near.take(piece), pa, b_end.take(piece) - pa, _RULE_NEAR,
-                           _sink(flat, near[0].take(piece), add=True))
+                           _sink(flat, near[0].take(piece), add=True), touch=True)
     packer.flush()
     return out
 

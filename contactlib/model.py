@@ -203,6 +203,19 @@ class Contact:
         """The same indenter on the body's material unbounded (the singular part)."""
         return Contact(self.indenter, self.body.half_space)
 
+    def axis_w_kernel(self, x: np.ndarray, s: np.ndarray, part: str,
+                      ref: float = 0.0) -> Displacements:
+        """(w(x) - w(ref), 0, 0) of the basic load of ``part``, both bodies, without cancellation.
+
+        The closing of the gap relative to the axis (centre line): where w
+        is O(s) and the difference O(x^2/s), this keeps its relative accuracy
+        (a tiny stick zone's normal rows, see
+        :func:`contactlib.operators.axis_w_rows`).
+        """
+        def kernel(body, xx, ss):
+            return self.indenter.axis_w_kernel(body, xx, ss, part, ref)
+        return self._summed(kernel, x, s, -1.0 if part == "normal" else 1.0)
+
     def length_degrees(self, part: str) -> np.ndarray | None:
         """Homogeneity degrees of the element integrals (see :meth:`Indenter.length_degrees`)."""
         return self.indenter.length_degrees(self.body, part)

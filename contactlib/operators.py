@@ -50,12 +50,14 @@ import numpy as np
 
 from .elements import Mesh, MeshStore, Store
 from .influence import apply_difference, element_integrals
+from .kernels.disc import gauss_tiers
 
 if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "StickBlocks", "smooth_integrals", "restrict_nested"]
+           "StickBlocks", "smooth_integrals", "restrict_nested", "axis_w_rows",
+           "u_difference_rows"]
 
 PARTS = ("normal", "shear")
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
@@ -261,3 +263,69 @@ def restrict_nested(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]
         out[:, :, :-1] += odd * left
         out[:, :, 1:] += odd * (1.0 - left)
     return out[:, ::2, :], out[:, 1::2, :]
+
+def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
+                ref: float = 0.0) -> np.ndarray:
+    """w(x) - w(ref) of the nodal values, shape (len(x), N + 1), without cancellation.
+
+    The normal rows of :func:`operator_part` minus its row at the axis, from
+    the kernels' own differences (:meth:`~contactlib.model.Contact.axis_w_kernel`).
+    Near the axis w(x) - w(0) is O(x^2) while w is O(1): rows formed by
+    subtracting the operator's rows keep an absolute round-off of ~1e-16,
+    which is all of the signal of a stick zone of c/a = 1e-8 (the default
+    method's normal rows there, see :func:`contactlib.default_method.assemble`).
+    A node ``ref`` > 0 gives the rows relative to it (a thin slip annulus).
+    Units as :func:`operator_part` (a^2/R per unit traction).
+    """
+    if part not in PARTS:
+        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+
+    def kernel(xx: np.ndarray, ss: np.ndarray):
+        return model.axis_w_kernel(xx, ss, part, ref)
+
+    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes,
+                          ref=ref if ref > 0.0 else None)[:1]
+    return apply_difference(g, nodes)[0]
+
+
+def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
+                      ref: float) -> np.ndarray:
+    """u(x) - u(ref) of the nodal values, shape (len(x), N + 1), without cancellation.
+
+    For each (point, load radius) sample the kernel difference is the
+    Gauss-Legendre integral (6, 10 or 16 points by distance,
+    :func:`contactlib.kernels.disc.gauss_tiers`) of the kernel's own du/dx over the
+    interval between ``ref`` and x where the load edge s lies at least the
+    interval's length from it (the singularity of du/dx at s is then far
+    enough for a relative error below 1e-16), else the plain difference of
+    u (both points then within a few interval lengths of s). The rows of a
+    thin slip annulus's stick condition (:func:`contactlib.default_method.assemble`):
+    there u is O(beta) while its variation across the annulus is O(width).
+    Units as :func:`operator_part`.
+    """
+    if part not in PARTS:
+        raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
+    kern = _kernel(model, part, with_w=False)
+
+    def kernel(xx: np.ndarray, ss: np.ndarray):
+        length = xx - ref
+        gap = np.maximum(np.maximum(ss - np.maximum(xx, ref), np.minimum(xx, ref) - ss), 0.0)
+        out = np.empty(xx.shape)
+        smooth = np.zeros(xx.shape, dtype=bool)
+        for tier, gt, gw in gauss_tiers(gap, np.abs(length)):
+            if tier.any():
+                ls, sv = length[tier], ss[tier]
+                t = ref + ls[None, :] * gt[:, None]
+                du = np.asarray(kern(t, np.broadcast_to(sv, t.shape))[2]).reshape(t.shape)
+                out[tier] = ls * (gw @ du)
+                smooth |= tier
+        rest = ~smooth
+        if rest.any():
+            sv = ss[rest]
+            out[rest] = (np.asarray(kern(xx[rest], sv)[1])
+                         - np.asarray(kern(np.full(sv.shape, ref), sv)[1]))
+        zero = np.zeros(xx.shape)
+        return out, zero, zero
+
+    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes, ref=ref)[:1]
+    return apply_difference(g, nodes)[0]

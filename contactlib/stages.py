@@ -46,14 +46,18 @@ __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter
            "case_record", "estimate_case", "QUADRATURE_FLOOR_H"]
 
 PARTS = ("normal", "shear")
-# Elements shorter than this (in a) next to c: the kernels' quadrature error (about 1e-11)
-# is amplified in the stick-edge condition, and k gets worse under refinement. A tiny stick
-# zone (c/a < 1/2; nu = 0.499, sphere, c/a = 1e-8: relative k error -1.7e-3, -5.4e-4,
-# 2.5e-3, 9.6e-3 at n = 64 ... 512, smallest element 1.4e-11 ... 2e-13 a; c/a = 1e-6 at
-# n = 256, 9e-11 a: 9e-5) and a thin slip annulus (c/a > 1/2, next to the contact edge;
-# c/a = 1 - 1e-5 at n = 256, 9e-10 a: 2.4e-4 sphere, 1.1e-3 half-plane; c/a = 0.9999,
-# nu = 0.3: k jumps by 2.3e-4 from n = 256 (9e-9 a) to 512 (2.3e-9 a)) have different floors.
-QUADRATURE_FLOOR_H = {"stick": 5e-11, "annulus": 5e-9}
+# Elements shorter than this (in a) next to c are never reported as resolved: below them
+# k is not known to converge under refinement. Both floors were the round-off of O(1)
+# displacements amplified in the stick-edge condition, not the element quadrature: a
+# tiny stick zone's normal rows are now relative to the axis (c/a <= 1e-4), a thin slip
+# annulus's normal and stick rows relative to a node a few widths inside (1 - c/a <=
+# 5e-4) (contactlib.default_method.AXIS_ROWS_BELOW, EDGE_ROWS_BELOW). nu = 0.499 against
+# the closed form, sphere, c/a = 1e-8: -1.24e-3, -3.1e-4, -6.0e-5, +4.5e-5 at n = 64 ...
+# 512 (before -1.2e-3, -2.2e-4, -2.7e-4, and erratic); c/a = 1 - 1e-5: 4.4e-5, 1.5e-5,
+# 4.0e-6, 6.1e-6 (before 6.4e-5, 2.1e-4, -2.9e-4, 5.7e-3); half-plane within 1.4e-5 at
+# every n for both. The floors were 5e-11 (stick) and 5e-9 (annulus); they are now the
+# smallest elements measured (n = 512: 2.25e-13 a at c/a = 1e-8, 2.3e-10 a at 1 - 1e-5).
+QUADRATURE_FLOOR_H = {"stick": 2e-13, "annulus": 2e-10}
 OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
 NODAL_METHODS = ("default", "extrapolated")  # nodal tractions on the graded mesh at c
 

@@ -156,8 +156,8 @@ def test_spence_point_stiff_indenter():
 
 def _uncoupled(geometry, beta, g):
     """Spence's closed forms, written here: sphere beta artanh(g)/(g K'), half-plane beta K/K'."""
-    from scipy.special import ellipk
-    kp = ellipk(1 - g**2)
+    from scipy.special import ellipk, ellipkm1
+    kp = ellipkm1(g**2)  # K'(g) = K(1 - g^2), without rounding 1 - g^2 at small g
     return beta * (math.atanh(g) / (g * kp) if geometry == "sphere" else ellipk(g**2) / kp)
 
 

@@ -380,3 +380,49 @@ def test_physical_scale_does_not_change_dimensionless_answers(geometry, slab, me
                 assert d - d_ref == pytest.approx(-(2 / np.pi) * load * math.log(a), rel=1e-9)
             else:
                 assert d == pytest.approx(d_ref, rel=1e-9)
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_tiny_stick_zone_converges_to_the_closed_form(geometry):
+    """c/a = 1e-8, nu = 0.499: k approaches the closed form under refinement.
+
+    Before the stick zone's normal rows were written relative to the axis
+    (contactlib.default_method.AXIS_ROWS_BELOW), the round-off of the O(1)
+    normal displacements left the sphere at -1.2e-3, -2.2e-4, -2.7e-4 at
+    n = 64, 128, 256 and the half-plane at -8.6e-4 at n = 256; now the
+    sphere falls like n^-2 (-1.24e-3, -3.1e-4, -6.0e-5) and the half-plane
+    stays within 1.4e-5.
+    """
+    c = 1e-8
+    truth = uncoupled("sphere" if geometry == "sphere" else "cylinder", 0.499, c)
+    err = [abs(solve(geometry, 0.499, stick_ratio=c, n=n, energy=False).friction_coefficient
+               / truth - 1) for n in (64, 128, 256)]
+    assert err[2] < 1e-4
+    if geometry == "sphere":  # n^-2: each halving of the elements cuts the error about 4x
+        assert err[1] < err[0] / 3 and err[2] < err[1] / 3
+    else:
+        assert max(err) < 3e-5
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("part", ["normal", "shear"])
+def test_difference_rows_are_the_plain_row_differences(geometry, part):
+    """The difference rows of a thin annulus are the same equations as the plain operator's
+    row differences: equal to the plain rows' own round-off, which their cancellation
+    raises to ~1e-12 of the row scale (the accuracy of the differences themselves is
+    tested against mpmath in the kernel tests)."""
+    from contactlib.elements import graded_mesh
+    from contactlib.model import contact
+    from contactlib.operators import axis_w_rows, u_difference_rows
+
+    model = contact(geometry, 0.3)
+    nodes = graded_mesh(32, 1 - 1e-3).nodes
+    i0 = 20
+    x = nodes[i0 + 1:]
+    plain = operator_part(model, nodes, nodes, part)
+    dw = axis_w_rows(model, nodes, x, part, ref=float(nodes[i0]))
+    du = u_difference_rows(model, nodes, x, part, float(nodes[i0]))
+    for got, k in ((dw, 0), (du, 1)):
+        want = plain[k][i0 + 1:] - plain[k][i0]
+        scale = np.abs(plain[k]).max()
+        assert np.abs(got - want).max() <= 1e-10 * scale

@@ -680,3 +680,67 @@ def test_fit_coefficients_are_reproducible(name):
     P0, R0 = disc._FITS[name]
     np.testing.assert_allclose(P, P0, rtol=1e-10, atol=1e-15)
     np.testing.assert_allclose(R, R0, rtol=1e-10, atol=1e-15)
+
+
+# ----------------------------------------------------------------------------- 7.
+# w(r) - w(0) without cancellation (the default method's rows of a tiny stick zone)
+@pytest.mark.parametrize("s", [1.0, 1e-8, 3.7e2])
+def test_axis_w_against_mpmath(s):
+    """w(r; s) - w(0; s) of the pressure disc within 1e-14 of its own value (not of s),
+    from r = 1e-9 s (where the plain difference of w has no correct digit) to 5 s;
+    the shear's is beta min(r, s)^2 exactly."""
+    mp = _mp()
+    mp.mp.dps = 40
+    t = np.array([1e-9, 1e-6, 1e-3, 0.1, 0.5, 0.7, 0.70710678, 0.72, 0.9, 0.999999, 1.0,
+                  1.000001, 1.3, 5.0])
+    r = t * s
+    dw = disc.axis_w_disc(r, s, 0.3, "normal")[0]
+    for ri, got in zip(r, dw):
+        rr, ss = mp.mpf(float(ri)), mp.mpf(float(s))
+        if rr <= ss:
+            w = 4 / mp.pi * ss * mp.ellipe((rr / ss) ** 2)
+        else:
+            m = (ss / rr) ** 2
+            w = 4 / mp.pi * rr * (mp.ellipe(m) - (1 - m) * mp.ellipk(m))
+        ref = float(w - 2 * ss)
+        assert abs(got - ref) <= 1e-14 * abs(ref), (ri / s, got, ref)
+    dws = disc.axis_w_disc(r, s, 0.3, "shear")[0]
+    assert np.array_equal(dws, beta_of_nu(0.3) * np.minimum(r, s) ** 2)
+    # consistent with the kernels where the plain difference is accurate
+    far = t >= 0.1
+    plain = pressure_disc(r[far], s, 0.3)[0] - pressure_disc(0.0, s, 0.3)[0]
+    assert np.allclose(dw[far], plain, rtol=0, atol=2e-15 * s)
+
+
+@pytest.mark.parametrize("r0", [0.3, 1.0 - 4e-5])
+def test_w_difference_against_mpmath(r0):
+    """w(r; s) - w(r0; s) of the pressure disc within 1e-14 of its value where the load
+    edge s is at least |r - r0| from the points (the plain difference loses 1e-12 ... 1e-11
+    there), within 1e-15 s where s is between or next to them (the plain difference of
+    the kernels, whose absolute round-off is ~1e-16 s)."""
+    mp = _mp()
+    mp.mp.dps = 40
+
+    def w(r, s):
+        r, s = mp.mpf(float(r)), mp.mpf(float(s))
+        if r <= s:
+            return 4 / mp.pi * s * mp.ellipe((r / s) ** 2)
+        m = (s / r) ** 2
+        return 4 / mp.pi * r * (mp.ellipe(m) - (1 - m) * mp.ellipk(m))
+
+    width = 1.0 - r0 if r0 > 0.5 else 0.1
+    for r in r0 + width * np.array([0.25, 0.75, 1.0 - 1e-4]):
+        for s in (0.2, 0.9, r0 - 0.25 * width, r0 + 0.5 * width, r0 + width, 1.5):
+            got = float(disc.w_difference_disc(np.array([r]), r0, np.array([s]), 0.3,
+                                               "normal")[0][0])
+            ref = float(w(r, s) - w(r0, s))
+            far = max(s - max(r, r0), min(r, r0) - s, 0.0) >= abs(r - r0)
+            tol = 1e-14 * abs(ref) if far else 1e-15 * s
+            assert abs(got - ref) <= tol, (r, s, got, ref)
+    sh = disc.w_difference_disc(np.array([r0 + 0.5 * width]), r0,
+                                np.array([0.1, r0 + 0.25 * width, 2.0]), 0.3, "shear")[0]
+    b = beta_of_nu(0.3)
+    x = r0 + 0.5 * width
+    want = [0.0] + [float(b * (mp.mpf(float(a)) ** 2 - mp.mpf(r0) ** 2))
+                     for a in (r0 + 0.25 * width, x)]
+    assert np.allclose(sh, want, rtol=1e-14, atol=0)

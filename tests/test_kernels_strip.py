@@ -15,6 +15,7 @@ from scipy.integrate import IntegrationWarning, quad
 
 from contactlib.kernels import strip
 from contactlib.kernels.strip import pressure_strip, shear_strip
+from contactlib.theory import beta_of_nu
 
 NUS = [0.0, 0.3, 0.45]
 
@@ -574,3 +575,60 @@ def test_validation():
         shear_strip(0.0, 1.0, 0.3, 0.0)
     with pytest.raises(ValueError, match="Poisson"):
         shear_strip(0.0, 1.0, 0.7)
+
+
+# w(x) - w(0) without cancellation (the default method's rows of a tiny stick zone)
+@pytest.mark.parametrize("s", [1.0, 1e-8, 3.7e2])
+def test_axis_w_half_plane_against_mpmath(s):
+    """w(x; s) - w(0; s) of the half-plane pressure strip within 1e-14 of its own value,
+    from x = 1e-9 s (where the plain difference has no correct digit) to 30 s, against
+    mpmath's (2/pi)[F(s) - F(x + s) + F(x - s) + F(-s)], F(t) = t ln|t|; the shear's is
+    2 beta min(|x|, s) exactly."""
+    mp = pytest.importorskip("mpmath")
+    mp.mp.dps = 40
+    t = np.array([1e-9, 1e-6, 1e-3, 0.1, 0.49, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.5,
+                  1.99, 2.0, 2.5, 30.0])
+    x = t * s
+    dw = strip.axis_w_strip(x, s, 0.3, "normal")[0]
+
+    def f(v):
+        return v * mp.log(abs(v)) if v != 0 else mp.mpf(0)
+    for xi, got in zip(x, dw):
+        xx, ss = mp.mpf(float(xi)), mp.mpf(float(s))
+        ref = float(2 / mp.pi * (-f(xx + ss) + f(xx - ss) + f(ss) - f(-ss)))
+        assert abs(got - ref) <= 1e-14 * abs(ref), (xi / s, got, ref)
+    dws = strip.axis_w_strip(x, s, 0.3, "shear")[0]
+    assert np.allclose(dws, 2.0 * beta_of_nu(0.3) * np.minimum(x, s), rtol=1e-15, atol=0)
+    far = t >= 0.1
+    plain = strip.pressure_strip(x[far], s, 0.3)[0] - strip.pressure_strip(0.0, s, 0.3)[0]
+    assert np.allclose(dw[far], plain, rtol=0, atol=1e-14 * s * (1 + abs(np.log(s))))
+
+
+@pytest.mark.parametrize("part", ["normal", "shear"])
+def test_axis_w_slab_is_the_plain_difference(part):
+    """On a slab the remainder's difference is formed directly: the result equals the
+    plain difference of the kernels to round-off of the kernels themselves."""
+    x = np.array([1e-3, 0.3, 0.9, 1.0, 1.7, 4.0])
+    kernel = strip.pressure_strip if part == "normal" else strip.shear_strip
+    dw = strip.axis_w_strip(x, 1.0, 0.3, part, h=2.0)[0]
+    plain = kernel(x, 1.0, 0.3, 2.0)[0] - kernel(0.0, 1.0, 0.3, 2.0)[0]
+    assert np.allclose(dw, plain, rtol=0, atol=1e-14)
+
+
+@pytest.mark.parametrize("x0", [0.3, 1.0 - 4e-5])
+def test_w_difference_half_plane_against_mpmath(x0):
+    """w(x; s) - w(x0; s) of the half-plane pressure strip within 1e-14 of its value."""
+    mp = pytest.importorskip("mpmath")
+    mp.mp.dps = 40
+
+    def f(v):
+        return v * mp.log(abs(v)) if v != 0 else mp.mpf(0)
+
+    width = 1.0 - x0 if x0 > 0.5 else 0.1
+    for x in x0 + width * np.array([0.25, 0.75, 1.0 - 1e-4]):
+        for s in (0.2, 0.9, x0 - 0.25 * width, x0 + 0.5 * width, x0 + width, 1.5):
+            got = float(strip.w_difference_strip(np.array([x]), x0, np.array([s]), 0.3,
+                                                 "normal")[0][0])
+            xx, xr, ss = mp.mpf(float(x)), mp.mpf(float(x0)), mp.mpf(float(s))
+            ref = float(2 / mp.pi * (-f(xx + ss) + f(xx - ss) + f(xr + ss) - f(xr - ss)))
+            assert abs(got - ref) <= 1e-14 * abs(ref), (x, s, got, ref)

@@ -304,8 +304,9 @@ class Solution:
         The same for ``load_ratio`` and ``frictional_work`` (NaN when not
         estimated).
     resolved : bool
-        Converged, and ``error_estimate`` at most ``max_error``; a case that
-        is not resolved is not to be used as a good number.
+        Converged, ``error_estimate`` at most ``max_error``, and (default
+        and extrapolated methods, when the checks ran) consistent; a case
+        that is not resolved is not to be used as a good number.
     max_error : float
         The accuracy asked for (relative error of k).
 

@@ -721,6 +721,14 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
         reversal = ("the slip runs along the shear somewhere in the slip zone: its direction "
                     "changes there, which one self-similar stick zone cannot hold; solve it "
                     "with history")
+    # a converged root that breaks the single stick zone's conditions is no answer,
+    # however well resolved its discretization is (strong coupling next to full stick)
+    inconsistent = (method in NODAL_METHODS and bool(rec.converged)
+                    and not fl.get("consistent", True))
+    if inconsistent and not fl.get("stick_admissible", True):
+        reversal = "; ".join(x for x in (reversal, (
+            "the stick zone needs |q| > k p somewhere: one self-similar stick zone cannot "
+            "hold at this c/a, so k is not resolved")) if x)
     msg = "; ".join(x for x in (message, rec.message, reversal) if x)
     return Solution(
         geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,
@@ -738,7 +746,7 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
         load_error_estimate=float(rec.load_error_estimate),
         work_error_estimate=(float(rec.work_error_estimate)
                              if np.isfinite(work) else math.nan),
-        resolved=bool(rec.resolved),
+        resolved=bool(rec.resolved) and not inconsistent,
         max_error=float(rec.max_error),
         extra={"stick_violation": fl.get("stick_violation", float("nan")),
                "slip_violation": fl.get("slip_violation", float("nan")),

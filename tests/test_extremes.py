@@ -426,3 +426,12 @@ def test_difference_rows_are_the_plain_row_differences(geometry, part):
         want = plain[k][i0 + 1:] - plain[k][i0]
         scale = np.abs(plain[k]).max()
         assert np.abs(got - want).max() <= 1e-10 * scale
+
+
+def test_an_inconsistent_root_is_never_resolved():
+    # sphere, nu = -0.99, c/a = 1 - 1e-5: Newton converges (k = 1.03) with a tiny
+    # discretization estimate, but the stick zone is not admissible: no answer
+    sol = solve("sphere", -0.99, stick_ratio=1 - 1e-5)
+    assert sol.converged and sol.error_estimate < 1e-3
+    assert not sol.stick_admissible and not sol.consistent
+    assert not sol.resolved and "cannot hold" in sol.message

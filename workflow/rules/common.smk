@@ -231,9 +231,20 @@ def side_threads(wanted):
     its own serial part, the imports, runs). With --cores 2 these jobs take one
     core each and run beside the chain of the self-similar scenes; only the last
     job (figures_paper) takes both.
+
+    Only where the jobs run on this machine: a cluster job (and Snakemake
+    running it on its node) gets `wanted`. Call it when jobs are made (in a
+    `threads:` function), when the executor is known.
     """
     cores = _cores()
-    return wanted if cores is None else max(1, min(wanted, cores // 2))
+    if cores is None or not workflow.local_exec or workflow.remote_exec:
+        return wanted
+    return max(1, min(wanted, cores // 2))
+
+
+def figure_threads(family, n):
+    """n worker processes; the history family's at most half of --cores (side_threads)."""
+    return n if family == "paper" else (lambda wildcards: side_threads(n))
 
 
 # Job priorities: the length of the chain of jobs still to come after a job (quiet

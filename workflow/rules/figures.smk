@@ -28,7 +28,7 @@ for _family, _figs in FIGURE_FAMILIES.items():
             f"results/benchmarks/figures/{_family}.tsv"
         conda:
             "../envs/contactlib.yaml"
-        threads: min(2, len(_figs)) if _family == "paper" else side_threads(min(2, len(_figs)))
+        threads: figure_threads(_family, min(2, len(_figs)))
         priority: PRIORITY[f"figures_{_family}"]
         resources:
             mem_mb=800 + 400 * min(2, len(_figs)),

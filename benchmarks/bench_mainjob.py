@@ -1,6 +1,7 @@
 """The main job against a dense LU, measured in the same run.
 
     python benchmarks/bench_mainjob.py [--repeat R] [--cores C] [--working-tree] [--keep DIR]
+                                       [--compare REV]
 
 For each of R repeats (default 1) this
 
@@ -21,6 +22,9 @@ how much of the machine other jobs leave (the acceptance is on wall time).
 The fastest, because the reference swings most with the load (it uses the
 BLAS's default threads, 1.0 - 1.9 s for the same factorization here) and
 its best time is the machine's speed; the main job varies far less.
+With ``--compare REV`` each repeat also runs the main job of the commit REV
+(``git archive REV``) between the same references, right after this one, and
+prints its line too: before and after a change, measured under the same load.
 With ``--keep DIR`` the last run's ``results`` folder is copied to DIR (to
 compare its datasets and figures byte for byte with another version's).
 Acceptance (issue 17): ratio at most 20. The BLAS thread variables are left
@@ -72,8 +76,8 @@ def wall(cmd: list[str], cwd: Path, env: dict, cpu: list[float] | None = None) -
     return t
 
 
-def fresh_copy(dest: Path, working_tree: bool) -> None:
-    """The repository's tracked files in dest: HEAD, or the working tree's versions."""
+def fresh_copy(dest: Path, working_tree: bool, rev: str = "HEAD") -> None:
+    """The repository's tracked files in dest: rev (HEAD), or the working tree's versions."""
     if working_tree:
         names = subprocess.run(["git", "ls-files", "-z"], cwd=REPO, check=True,
                                capture_output=True).stdout.decode().split("\0")
@@ -83,7 +87,7 @@ def fresh_copy(dest: Path, working_tree: bool) -> None:
                 (dest / name).parent.mkdir(parents=True, exist_ok=True)
                 shutil.copy2(src, dest / name)
     else:
-        archive = subprocess.run(["git", "archive", "HEAD"], cwd=REPO, check=True,
+        archive = subprocess.run(["git", "archive", rev], cwd=REPO, check=True,
                                  capture_output=True).stdout
         subprocess.run(["tar", "-x", "-C", str(dest)], input=archive, check=True)
 
@@ -94,40 +98,53 @@ def main() -> None:
     parser.add_argument("--cores", type=int, default=2)
     parser.add_argument("--working-tree", action="store_true")
     parser.add_argument("--keep", type=Path, default=None)
+    parser.add_argument("--compare", default=None, metavar="REV")
     args = parser.parse_args()
     print(f"machine: {os.cpu_count()} CPUs, Python {sys.version.split()[0]}, BLAS threads "
           f"{os.environ.get('OPENBLAS_NUM_THREADS', 'default')}", flush=True)
     ratios, cpu_ratios = [], []
     for i in range(args.repeat):
         with tempfile.TemporaryDirectory(prefix="contactlib-mainjob-") as tmp:
-            work = Path(tmp)
-            fresh_copy(work, args.working_tree)
-            env = dict(os.environ, PYTHONPATH=str(work))
+            work = Path(tmp) / "this"
+            copies = {"this": work}
+            if args.compare:
+                copies[args.compare] = Path(tmp) / "compare"
+            for name, dest in copies.items():
+                dest.mkdir()
+                if name == "this":
+                    fresh_copy(dest, args.working_tree)
+                else:
+                    fresh_copy(dest, False, args.compare)
             ref = [sys.executable, "-c", REFERENCE]
+            env = dict(os.environ, PYTHONPATH=str(work))
             load = os.getloadavg()[0]
             ref_cpu: list[float] = []
-            job_cpu: list[float] = []
             before = [wall(ref, work, env, ref_cpu) for _ in range(2)]
-            job = wall([sys.executable, "-m", "snakemake", "--cores", str(args.cores)],
-                       work, env, job_cpu)
+            jobs = {}
+            for name, dest in copies.items():
+                cpu: list[float] = []
+                t = wall([sys.executable, "-m", "snakemake", "--cores", str(args.cores)],
+                         dest, dict(os.environ, PYTHONPATH=str(dest)), cpu)
+                jobs[name] = (t, cpu[0], len(list((dest / "results" / "logs").rglob("*.log"))))
             after = [wall(ref, work, env, ref_cpu) for _ in range(2)]
-            jobs = len(list((work / "results" / "logs").rglob("*.log")))
             if args.keep is not None:
                 shutil.rmtree(args.keep, ignore_errors=True)
                 shutil.copytree(work / "results", args.keep)
-        ratio = job / min(before + after)
-        ratios.append(ratio)
         refs = " ".join(f"{t:.2f}" for t in before + after)
-        cpu_ratio = job_cpu[0] / min(ref_cpu)
-        cpu_ratios.append(cpu_ratio)
-        print(f"run {i + 1}: main job {job:.1f} s ({jobs} job logs), LU {SIZE} reference "
-              f"{refs} s, ratio {ratio:.1f} (load average before {load:.1f}); CPU time: "
-              f"main job {job_cpu[0]:.1f} s, reference {min(ref_cpu):.2f} - {max(ref_cpu):.2f} s, "
-              f"ratio {cpu_ratio:.1f}", flush=True)
+        for name, (job, cpu_job, logs) in jobs.items():
+            ratio = job / min(before + after)
+            cpu_ratio = cpu_job / min(ref_cpu)
+            if name == "this":
+                ratios.append(ratio)
+                cpu_ratios.append(cpu_ratio)
+            label = f"run {i + 1}" if name == "this" else f"  {name} (--compare)"
+            print(f"{label}: main job {job:.1f} s ({logs} job logs), LU {SIZE} reference "
+                  f"{refs} s, ratio {ratio:.1f} (load average before {load:.1f}); CPU time: "
+                  f"main job {cpu_job:.1f} s, reference {min(ref_cpu):.2f} - "
+                  f"{max(ref_cpu):.2f} s, ratio {cpu_ratio:.1f}", flush=True)
     if len(ratios) > 1:
         print(f"ratio range {min(ratios):.1f} - {max(ratios):.1f} over {len(ratios)} runs; "
               f"CPU-time ratio {min(cpu_ratios):.1f} - {max(cpu_ratios):.1f}")
-
 
 if __name__ == "__main__":
     main()

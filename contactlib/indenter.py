@@ -43,7 +43,6 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
-from scipy import special
 
 from .validate import GEOMETRIES
 
@@ -269,6 +268,8 @@ class Indenter(ABC):
 
 def _complement_k(g: np.ndarray) -> np.ndarray:
     """K'(g) = K(sqrt(1 - g^2)), without losing it as g -> 0."""
+    from scipy import special  # here, so that reading results does not import scipy
+
     return special.ellipkm1(g**2)
 
 
@@ -414,6 +415,8 @@ class Cylinder(Indenter):
 
     def uncoupled_friction(self, beta: float, gamma: np.ndarray) -> np.ndarray:
         """k = beta K(g) / K'(g) on a half-plane (Spence 1973)."""
+        from scipy import special
+
         g = np.asarray(gamma, dtype=float)
         return beta * special.ellipk(g**2) / _complement_k(g)
 

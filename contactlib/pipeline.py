@@ -25,17 +25,18 @@ from typing import TYPE_CHECKING, Any, Callable, Mapping, Sequence
 
 import numpy as np
 
-from . import stages
-from .api import output_grid
 from .checks import FLAG_NAMES, VIOLATION_NAMES
-from .io import scene_to_dataset
-from .model import contact
 from .result import CaseRecord
-from .scene import Scene
 from .threads import blas_single_threaded
 
 if TYPE_CHECKING:
     import xarray as xr
+
+    from .scene import Scene
+
+# The solver modules (stages and what it imports: scipy.linalg) are imported in
+# the functions that need them, so that a workflow job running a light stage
+# (check: numpy only) does not pay for them at start-up.
 
 __all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
 
@@ -43,6 +44,9 @@ __all__ = ["influence", "solve", "check", "energy", "displacements", "assemble"]
 @blas_single_threaded
 def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
     """Influence matrices of one part for a :meth:`Scene.influence_spec`."""
+    from . import stages
+    from .model import contact
+
     geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]),
                    float(spec.get("indenter_modulus", "inf")), spec.get("indenter_nu"),
                    spec.get("base", "smooth"))
@@ -54,6 +58,8 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
           shear: dict[str, np.ndarray] | None = None,
           progress: Callable[[int, int], None] | None = None) -> list[CaseRecord]:
     """Case records of every stick ratio of a scene (see :func:`stages.solve_cases`)."""
+    from . import stages
+
     return stages.solve_cases(scene.geometry_object, scene.method, scene.n, scene.stick_ratios,
                               normal=normal, shear=shear, samples=scene.needs_samples,
                               tolerance=scene.tolerance, progress=progress,
@@ -63,7 +69,9 @@ def solve(scene: Scene, normal: dict[str, np.ndarray] | None,
 @blas_single_threaded
 def check(records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Consistency flags and violation measures, one value a case."""
-    flags = [stages.check_case(r) for r in records]
+    from . import checks  # what stages.check_case calls, without the solver's imports
+
+    flags = [checks.flags(r.stick_q, r.stick_p, r.k, r.slip_q, r.slip_s) for r in records]
     out = {name: np.array([f[name] for f in flags], dtype=bool) for name in FLAG_NAMES}
     out.update({name: np.array([f[name] for f in flags], dtype=float) for name in VIOLATION_NAMES})
     return out
@@ -72,6 +80,8 @@ def check(records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
 @blas_single_threaded
 def energy(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Frictional work of the loading half-cycle, one value a case (docs/conventions.md)."""
+    from . import stages
+
     geom = scene.geometry_object
     return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
 
@@ -79,6 +89,9 @@ def energy(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]
 @blas_single_threaded
 def displacements(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     """Tangential displacement u R/a^2 on the output grid, shape (cases, xi)."""
+    from . import stages
+    from .api import output_grid
+
     geom, xi = scene.geometry_object, output_grid()
     rows = [stages.profiles(geom, r, xi, stresses=False)["tangential_displacement"]
             for r in records]
@@ -100,6 +113,10 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
     The conventions (names, CF attributes) are those of
     :func:`contactlib.io.scene_to_dataset`.
     """
+    from . import stages
+    from .api import output_grid
+    from .io import scene_to_dataset
+
     geom, xi = scene.geometry_object, output_grid()
     want = set(scene.outputs)
     for name, given, needed in (("checks", checks, "k_curve"), ("work", work, "energy"),

@@ -15,6 +15,7 @@ rule assemble:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["assemble"]
     resources:
         mem_mb=800,
         runtime=5,

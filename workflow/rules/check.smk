@@ -16,6 +16,7 @@ rule check:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["check"]
     resources:
         mem_mb=500,
         runtime=5,

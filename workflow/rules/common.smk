@@ -238,9 +238,56 @@ def history_params(wildcards):
             "hash": s.hash}
 
 
+def _cores():
+    """--cores, or None where it is not set (a cluster run with --jobs only)."""
+    try:
+        return workflow.cores
+    except WorkflowError:
+        return None
+
+
+def side_threads(wanted):
+    """Threads of a job that can run beside others: `wanted`, but at most half of --cores.
+
+    Snakemake starts a job only when its threads are free, so a job asking for
+    every core waits until all running jobs end (and then keeps cores idle while
+    its own serial part, the imports, runs). With --cores 2 these jobs take one
+    core each and run beside the chain of the self-similar scenes; only the last
+    job (figures_paper) takes both.
+
+    Only where the jobs run on this machine: a cluster job (and Snakemake
+    running it on its node) gets `wanted`. Call it when jobs are made (in a
+    `threads:` function), when the executor is known.
+    """
+    cores = _cores()
+    if cores is None or not workflow.local_exec or workflow.remote_exec:
+        return wanted
+    return max(1, min(wanted, cores // 2))
+
+
+def figure_threads(family, n):
+    """n worker processes; the history family's at most half of --cores (side_threads)."""
+    return n if family == "paper" else (lambda wildcards: side_threads(n))
+
+
+# Job priorities: the length of the chain of jobs still to come after a job (quiet
+# 2-core machine, seconds: influence 3.4 + solve 2.1 + profiles 1.2 + assemble 1 +
+# figures 3.3 + table 1 for a default scene; a history run 1 - 5, its dataset 1,
+# the history figures 5), so that the long chains start first and the short jobs
+# fill the cores beside them; without this the scheduler (which prefers big
+# inputs among equal priorities) left a default scene's solve for last, and the
+# main job ended on one core.
+PRIORITY = {
+    "influence": 3, "history_run": 3,
+    "solve": 2, "history_assemble": 2, "figures_history": 2,
+    "displacements": 1, "check": 1, "energy": 1, "assemble": 1,
+    "figures_paper": 0, "key_numbers": 0,
+}
+
+
 def history_threads(wildcards):
-    """One worker process a friction coefficient (Snakemake caps it at --cores)."""
-    return len(HISTORIES[wildcards.hscene].frictions)
+    """One worker process a friction coefficient, at most half of --cores (side_threads)."""
+    return side_threads(len(HISTORIES[wildcards.hscene].frictions))
 
 
 def influence_files(wildcards):

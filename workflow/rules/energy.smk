@@ -15,6 +15,7 @@ rule energy:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["energy"]
     resources:
         mem_mb=500,
         runtime=5,

@@ -6,7 +6,10 @@
 # scenes; figures_history: history_* from the history scenes), one job each that
 # draws the family's figures in parallel worker processes (threads), forked
 # after the imports (matplotlib, xarray: most of a figure's time when it had a
-# process of its own); each figure keeps its own report caption
+# process of its own); each figure keeps its own report caption. The history
+# family's datasets are ready early: it takes at most half of the cores
+# (side_threads), so that it runs beside the self-similar scenes' jobs instead
+# of waiting for all of them; the paper family, last in line, takes two.
 for _family, _figs in FIGURE_FAMILIES.items():
 
     rule:
@@ -25,7 +28,8 @@ for _family, _figs in FIGURE_FAMILIES.items():
             f"results/benchmarks/figures/{_family}.tsv"
         conda:
             "../envs/contactlib.yaml"
-        threads: min(2, len(_figs))
+        threads: figure_threads(_family, min(2, len(_figs)))
+        priority: PRIORITY[f"figures_{_family}"]
         resources:
             mem_mb=800 + 400 * min(2, len(_figs)),
             runtime=5 + len(_figs),
@@ -50,6 +54,7 @@ rule key_numbers:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["key_numbers"]
     resources:
         mem_mb=800,
         runtime=5,

@@ -16,9 +16,7 @@ rule history_run:
     conda:
         "../envs/contactlib.yaml"
     threads: history_threads
-    # first, when jobs wait for cores: a history's figures (the stick map is the
-    # slowest figure) then overlap with the self-similar scenes' chain of jobs
-    priority: 1
+    priority: PRIORITY["history_run"]
     resources:
         mem_mb=mem_history,
         runtime=runtime_history,
@@ -41,6 +39,7 @@ rule history_assemble:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["history_assemble"]
     resources:
         mem_mb=800,
         runtime=5,

@@ -19,6 +19,7 @@ rule influence:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["influence"]
     resources:
         mem_mb=mem_influence,
         runtime=lambda wildcards, attempt: 10 * attempt,

@@ -18,6 +18,7 @@ rule solve:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["solve"]
     resources:
         mem_mb=mem_solve,
         runtime=runtime_solve,
@@ -40,6 +41,7 @@ rule displacements:
     conda:
         "../envs/contactlib.yaml"
     threads: 1
+    priority: PRIORITY["displacements"]
     resources:
         mem_mb=mem_solve,
         runtime=runtime_solve,

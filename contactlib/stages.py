@@ -727,8 +727,10 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
                     and not fl.get("consistent", True))
     if inconsistent and not fl.get("stick_admissible", True):
         reversal = "; ".join(x for x in (reversal, (
-            "the stick zone needs |q| > k p somewhere: one self-similar stick zone cannot "
-            "hold at this c/a, so k is not resolved")) if x)
+            f"the stick zone needs |q| > k p somewhere (violation "
+            f"{fl.get('stick_violation', float('nan')):.1e}): either one self-similar stick "
+            "zone cannot hold at this c/a or n is too coarse to show that it does (a larger "
+            "n tells which), so k is not resolved")) if x)
     msg = "; ".join(x for x in (message, rec.message, reversal) if x)
     return Solution(
         geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,

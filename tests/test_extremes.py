@@ -434,4 +434,4 @@ def test_an_inconsistent_root_is_never_resolved():
     sol = solve("sphere", -0.99, stick_ratio=1 - 1e-5)
     assert sol.converged and sol.error_estimate < 1e-3
     assert not sol.stick_admissible and not sol.consistent
-    assert not sol.resolved and "cannot hold" in sol.message
+    assert not sol.resolved and "stick zone cannot hold" in sol.message

@@ -71,6 +71,7 @@ def test_agrees_with_the_converged_reference_at_n512(geometry):
 RATIOS_EXTREME = [1e-6, 1e-4, 1e-2, 0.5, 0.99, 0.999, 0.9999, 1.0 - 1e-5]
 
 
+@pytest.mark.slow  # (fast tier: test_closed_form_at_0499[sphere])
 @pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
 def test_closed_form_nearly_incompressible(geometry):
     """nu = 0.49999: every c/a is covered by its estimate or not resolved/converged."""
@@ -90,7 +91,7 @@ def test_closed_form_nearly_incompressible(geometry):
     assert not sols[0].resolved and not sols[-1].resolved
 
 
-@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("geometry", ["sphere", pytest.param("cylinder", marks=pytest.mark.slow)])
 def test_closed_form_at_0499(geometry):
     """nu = 0.499: agreement to the coupling correction (<= 1.3e-5 measured) plus the estimate."""
     sols = api.sweep(geometry, 0.499, RATIOS_EXTREME, method="extrapolated", energy=False)

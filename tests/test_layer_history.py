@@ -45,6 +45,7 @@ def test_vanishing_layer_gives_the_half_space_cycle_work(base):
     assert gap < 1e-4
 
 
+@pytest.mark.slow  # (fast tier: test_vanishing_layer_gives_the_half_space_cycle_work)
 @pytest.mark.parametrize("base", ["smooth", "bonded"])
 def test_cycle_work_falls_with_the_layer_ratio(base):
     """W(a_max/h) for 0, 0.5, 1, 2 decreases by more than its error estimates.
@@ -61,7 +62,7 @@ def test_cycle_work_falls_with_the_layer_ratio(base):
     assert 0.30 < w[1] / w[0] < 0.36 and err[1] < 0.03  # resolved at a_max/h = 0.5
 
 
-@pytest.mark.parametrize("base", ["smooth", "bonded"])
+@pytest.mark.parametrize("base", ["smooth", pytest.param("bonded", marks=pytest.mark.slow)])
 def test_monotonic_loading_is_only_approximately_self_similar_on_a_layer(base):
     """c/a at P_max against the self-similar c/a(k) on the same layer at the final a/h.
 

@@ -48,7 +48,7 @@ def _frictionless(geometry, ratio, n):
     return sol
 
 
-@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("geometry", ["sphere", pytest.param("cylinder", marks=pytest.mark.slow)])
 def test_load_tends_to_the_thin_incompressible_asymptote(geometry):
     """P/P_asymptote - 1 falls with h/a; it is the asymptote with a widened by 1.45 h.
 

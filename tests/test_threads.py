@@ -106,6 +106,7 @@ def test_cli_sweep_bytes_do_not_depend_on_blas_threads(tmp_path):
     assert one == two
 
 
+@pytest.mark.slow  # (fast tier: test_cli_sweep_bytes_do_not_depend_on_blas_threads)
 def test_cli_history_bytes_do_not_depend_on_blas_threads(tmp_path):
     args = ("history", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.2",
             "--load-path", "0,1,0", "--steps", "20")

@@ -212,7 +212,8 @@ def test_energy_balance_cycles(geometry, duration):
     assert np.all(np.diff(res.viscous_work) >= -1e-12 * ext[-1])
 
 
-@pytest.mark.parametrize("duration", [1e-3, 1.0, 1e3])
+@pytest.mark.parametrize("duration", [1e-3, pytest.param(1.0, marks=pytest.mark.slow),
+                                      pytest.param(1e3, marks=pytest.mark.slow)])
 def test_energy_balance_default_fretting(duration):
     """The default config's fretting path (sphere-fretting), SLS at T/tau = 1e-3, 1, 1e3."""
     res = history("sphere", 0.3, 0.2, [0, 1, 0.5, 1, 0.5, 1, 0.5], 100, relaxation=SLS,

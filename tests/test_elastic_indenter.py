@@ -346,6 +346,7 @@ def test_history_solves_the_flagged_thin_slabs(nu, slab):
 REVERSED = dict(geometry="cylinder", nu=0.499, slab_ratio=1.0)  # slab's coupling reverses slip
 
 
+@pytest.mark.slow  # (3.5 s; the continuation guard: stages._suspect)
 def test_sweep_continuation_keeps_the_lone_root():
     """c/a = 0.01 after 1e-8, 1e-6, 1e-4 (n = 256): the continuation guess extrapolated
     quadratically to k = 422 and Newton landed on an inconsistent root k = 42.1; alone, the

@@ -261,7 +261,8 @@ def _stability(geometry: str, slab: float, nu: float, n: int) -> dict[str, int]:
     return count
 
 
-@pytest.mark.parametrize("geometry,slab,nu", [("sphere", 0.0, 0.3), ("cylinder", 0.0, -0.5)])
+@pytest.mark.parametrize("geometry,slab,nu", [
+    ("sphere", 0.0, 0.3), pytest.param("cylinder", 0.0, -0.5, marks=pytest.mark.slow)])
 def test_stability_grid_sample(geometry, slab, nu):
     """Two rows of the grid at n = 32 (fast): agree within the estimate, or flagged."""
     _stability(geometry, slab, nu, 32)

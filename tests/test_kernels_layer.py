@@ -159,7 +159,7 @@ POINTS = [(0.0, 1.0, 1.0), (0.3, 1.0, 1.0), (1.0, 1.0, 1.0), (2.5, 1.0, 1.0),
 
 @pytest.mark.parametrize("base,nu", [("smooth", 0.3),
                                      pytest.param("bonded", 0.3, marks=pytest.mark.slow),
-                                     ("bonded", 0.5)])
+                                     pytest.param("bonded", 0.5, marks=pytest.mark.slow)])
 @pytest.mark.parametrize("kind", ["pressure", "shear"])
 def test_kernels_against_hankel_quadrature(kind, base, nu):
     fn = layer.pressure_disc if kind == "pressure" else layer.shear_disc

@@ -176,7 +176,8 @@ def test_kernels_against_hankel_quadrature(kind, base, nu):
 
 
 # --- thick layer ---------------------------------------------------------------------
-@pytest.mark.parametrize("base", BASES)
+@pytest.mark.parametrize("base", [b if b == "smooth" else pytest.param(b, marks=pytest.mark.slow)
+                                  for b in BASES])
 def test_thick_layer_tends_to_half_space(base):
     """Layer minus half-space = the leading terms of the thick-layer (power-series) limit.
 
@@ -244,7 +245,8 @@ def taylor_cww(nu, base):
     return 4 * (k - 1) / (k + 1) ** 2, (8 * k * (k + 1) / 3 - 16 * (k - 1)) / (k + 1) ** 3
 
 
-@pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.3), ("bonded", 0.45),
+@pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.3),
+                                     pytest.param("bonded", 0.45, marks=pytest.mark.slow),
                                      ("bonded", 0.5)])
 def test_thin_layer_limits(base, nu):
     """Centre deflection under p = 1 - r^2/a^2 at a/h = 10 and 20 (the kernels).

@@ -90,6 +90,7 @@ def test_unknown_geometry_is_refused_with_the_name():
         contact("cone", 0.3)
 
 
+@pytest.mark.slow  # (2 s; the kernels' own tests check the closed forms in the fast tier)
 def test_the_body_answers_rings_and_strips_with_the_closed_forms():
     x, s = np.array([0.2, 0.7, 1.5]), np.array([1.0, 1.0, 1.0])
     half = ElasticBody(0.25)

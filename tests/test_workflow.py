@@ -145,6 +145,7 @@ MICRO = {"scenes": {"micro": {"geometry": "sphere", "nu": 0.3, "method": "defaul
                               "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]}}}
 
 
+@pytest.mark.slow  # (4.6 s; the fast tier keeps the DAG, lint and dry-run checks)
 def test_micro_run_dataset_matches_the_library(tmp_path):
     """The fast tier's end-to-end run: one scene, two cases, no figures."""
     wd = make_workdir(tmp_path, MICRO)

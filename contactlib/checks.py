@@ -15,9 +15,12 @@ zone shows violations of order 1e-2 ... 1.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-__all__ = ["stick_violation", "slip_violation", "flags", "FLAG_NAMES", "VIOLATION_NAMES"]
+__all__ = ["stick_violation", "slip_violation", "flags", "record_flags", "FLAG_NAMES",
+           "VIOLATION_NAMES"]
 
 # the names of the flags and of the measures behind them, written once: the workflow's
 # check stage, the datasets and the summary take them from here
@@ -52,3 +55,9 @@ def flags(stick_q, stick_p, k, slip_q, slip_s, rtol: float = 1e-4) -> dict:
     return {"stick_admissible": ok_stick, "slip_direction_ok": ok_slip,
             "consistent": ok_stick and ok_slip,
             "stick_violation": sv, "slip_violation": dv}
+
+
+def record_flags(rec: Any) -> dict[str, Any]:
+    """:func:`flags` of a case record (:class:`contactlib.result.CaseRecord`: its stored
+    stick-zone and slip-zone samples and k)."""
+    return flags(rec.stick_q, rec.stick_p, rec.k, rec.slip_q, rec.slip_s)

@@ -89,6 +89,7 @@ from scipy import linalg
 from .energy import (decay_integrals, dot, mean_traction, step_external_work, step_work,
                      stored_energy, viscous_step_work)
 from .model import Contact
+from .validate import HISTORY_MESH_EXTENT
 from .operators import step_operator
 
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
@@ -99,7 +100,7 @@ __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS"
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"
-MESH_EXTENT = 1.2  # mesh length over a_max
+MESH_EXTENT = HISTORY_MESH_EXTENT  # mesh length over a_max (validate bounds layers with it)
 
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
 MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved

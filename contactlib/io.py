@@ -579,7 +579,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     attrs.update(_layer_attrs(ind, r))
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
-    attrs["mesh_extent"] = float(hs.MESH_EXTENT)
+    attrs["mesh_extent"] = float(r.mesh_extent)  # 1.2, or the creep extent (viscoelastic)
     if getattr(r, "relaxation", ()):  # a viscoelastic body: time, energies, relaxation
         _add_viscoelastic(r, data, attrs, sd, work_scale)
     if r.resolved is not None:
@@ -613,7 +613,6 @@ def _add_viscoelastic(r: HistoryResult, data: dict[str, Any], attrs: dict[str, A
     attrs["relaxation_times"] = np.array([t for _, t in r.relaxation], dtype=float)
     attrs["relaxed_modulus_ratio"] = float(1.0 - sum(g for g, _ in r.relaxation))
     attrs["segment_durations"] = np.asarray(r.durations, dtype=float)
-    attrs["mesh_extent"] = float(r.mesh_extent)
     attrs["relaxation"] = ("Prony series E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)), "
                            "g_i = relaxation_weights, tau_i = relaxation_times, constant "
                            "Poisson's ratio; a_max, P_max and p0 use E*(0)")

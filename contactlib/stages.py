@@ -418,18 +418,13 @@ def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
     return pw, qw
 
 
-def _restrict(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`contactlib.operators.restrict_nested` (kept under its old name)."""
-    return restrict_nested(op, fine)
-
-
 def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
                    ops: tuple | None = None,
                    cache: StickBlocks | None = None) -> dict[int, DiscreteSolution]:
     """The same case on the nested meshes n/2 and n/4 (those with at least 8 elements).
 
     With the fine operators ``ops`` given, the coarse ones are restricted
-    from them (:func:`_restrict`) where the meshes are nested, which costs
+    from them (:func:`~contactlib.operators.restrict_nested`) where the meshes are nested, which costs
     no kernel evaluations.
     """
     out: dict[int, DiscreteSolution] = {}
@@ -443,7 +438,8 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
                   and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))
         odd = None
         if nested:
-            (pw, pw_odd), (qw, qw_odd) = _restrict(ops[0], mesh), _restrict(ops[1], mesh)
+            (pw, pw_odd), (qw, qw_odd) = (restrict_nested(ops[0], mesh),
+                                          restrict_nested(ops[1], mesh))
             odd = (mesh.nodes[1::2], pw_odd, qw_odd)
             ops, mesh = (pw, qw), sub
         else:
@@ -680,7 +676,7 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
 # ----------------------------------------------------------------------------- post-processing
 def check_case(rec: CaseRecord) -> dict[str, Any]:
     """Consistency flags of a case (see :mod:`contactlib.checks`)."""
-    return checks.flags(rec.stick_q, rec.stick_p, rec.k, rec.slip_q, rec.slip_s)
+    return checks.record_flags(rec)
 
 
 def work_case(geometry: Contact, rec: CaseRecord) -> float:

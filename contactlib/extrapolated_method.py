@@ -56,7 +56,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import energy, validate
-from .default_method import DiscreteSolution, assemble, newton_on_k, solve_default, start_k
+from .default_method import DiscreteSolution, assemble, newton_on_k, solve_default
 from .elements import Mesh, graded_mesh
 from .model import Contact
 from .operators import StickBlocks, nodal_operator_part, restrict_nested
@@ -248,6 +248,42 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
                             float(newton.stagnated))
 
 
+START_N = 64
+"""Without a starting k, the first level solved is the coarsest with at least this many
+elements, from the uncoupled closed form (as the default method's own warm start, which
+solves n = 64 from it: where the coupling is strong, e.g. nu = -0.5, c/a = 0.98 with
+k = 13.6, the closed form is far off and a coarser mesh can land on another root); the
+finer coarse levels follow from it, then the coarser ones. No kernel is evaluated for
+this start: every level's operators are restricted from the finest mesh's."""
+
+
+def _good(d: DiscreteSolution | None) -> bool:
+    return d is not None and d.converged and bool(np.isfinite(d.k)) and d.k > 0.0
+
+
+def _level_order(ns, guess: bool) -> list[int]:
+    """The order in which the levels are solved (indices, coarsest = 0, finest last)."""
+    coarse = list(range(len(ns) - 1))
+    if guess:
+        return coarse + [len(ns) - 1]
+    first = next((i for i in coarse if ns[i] >= START_N), coarse[-1])
+    return coarse[first:] + coarse[:first][::-1] + [len(ns) - 1]
+
+
+def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
+    """Newton's start on level i without a guess: from the finer levels solved, else the
+    uncoupled closed form at the stick edge."""
+    finer = [s.k for s in sols[i + 1:-1] if _good(s)]
+    if len(finer) >= 2:  # the n^-2 trend of the two next finer levels, continued one level
+        return finer[0] + 4.0 * (finer[0] - finer[1])
+    if finer:
+        return finer[0]
+    done = [s.k for s in sols[:i] if _good(s)]
+    if done:
+        return done[-1]
+    return float(geometry.uncoupled_friction(mesh.nodes[mesh.stick_index]))
+
+
 def _work(geometry: Contact, d: DiscreteSolution) -> float:
     xs, ws, q, s = d.slip_samples()
     return float(energy.frictional_work(xs, ws, q, s, geometry.work_factor,
@@ -317,26 +353,20 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         odds.append(odd)
     meshes, opss, odds = meshes[::-1], opss[::-1], odds[::-1]  # coarsest first
     ns = [n // 2 ** i for i in range(LEVELS - 1, -1, -1)]
-    # without a guess, the default method's warm start for the coarsest level (the
-    # Richardson value of n = 64 and 128 from n = 256 on, else the uncoupled closed form):
-    # the closed form alone is far off where the coupling is strong (nu = -0.5, c/a = 0.98:
-    # k = 13.6) and Newton can land on another root there
-    k0 = k_guess if k_guess is not None else start_k(
-        geometry, c, n, 2.0,
-        edge=meshes[0].nodes[meshes[0].stick_index], cache=cache)
-    sols: list[DiscreteSolution] = []
-    for i, (m, mesh, (p_op, q_op), odd) in enumerate(zip(ns, meshes, opss, odds)):
-        if i == LEVELS - 1 and len(sols) >= 2:  # the finest root predicted from the
-            k0 = _predict([s.k for s in sols])  # coarse levels' expansion
-        if i < LEVELS - 1 and k_guess is not None and level_offsets is not None:
-            k0 = k_guess * (1.0 + level_offsets[i])
-        d = _level(geometry, c, m, mesh, p_op, q_op, k0, one_step=i == LEVELS - 1)
-        if odd is not None:
-            x, po, qo = odd
+    sols: list[DiscreteSolution | None] = [None] * LEVELS
+    for i in _level_order(ns, k_guess is not None):
+        if i == LEVELS - 1:  # the finest root predicted from the coarse levels' expansion
+            k0 = _predict([s.k for s in sols[:-1]])
+        elif k_guess is not None:  # continuation: each coarse level from the neighbour's
+            k0 = k_guess * (1.0 + level_offsets[i]) if level_offsets is not None else (
+                sols[i - 1].k if i and _good(sols[i - 1]) else k_guess)
+        else:
+            k0 = _start(geometry, c, meshes[i], sols, i)
+        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=i == LEVELS - 1)
+        if odds[i] is not None:
+            x, po, qo = odds[i]
             d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)
-        sols.append(d)
-        if d.converged and d.k > 0.0:
-            k0 = d.k
+        sols[i] = d
     top = sols[-1]
     out = ExtrapolatedSolution(**{f: getattr(top, f) for f in (
         "geometry", "mesh", "p", "traction", "delta", "k", "converged", "residual_norm",
@@ -357,6 +387,11 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     if nested:
         out.k, out.error_estimate = extrapolate(out.level_k)
         out.extrapolated_load, out.load_error_estimate = extrapolate(out.level_load)
+        if not out.k * top.k > 0.0:  # levels far outside the expansion (sphere, nu = 0,
+            # c/a = 0.999, n = 128: k = 94, 471, 4624, 1202 extrapolated to -1293): the
+            # finest level's root, the largest difference between levels its estimate
+            out.k = top.k
+            out.error_estimate = float(np.max(np.abs(np.diff(out.level_k)))) / abs(top.k)
     else:  # the expansion in n needs nested levels: the finest level, its differences
         out.error_estimate = float(np.max(np.abs(np.diff(out.level_k)))) / abs(top.k)
         out.extrapolated_load = out.level_load[-1]

@@ -234,11 +234,14 @@ def _expand_phi(geometry: Contact, f: np.ndarray) -> np.ndarray:
 
 
 def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k: float,
-                       y: np.ndarray, rhs: np.ndarray, block: int = 256) -> np.ndarray:
+                       y: np.ndarray, rhs: np.ndarray, block: int = 256,
+                       extended: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """rhs - (a0 + k a1) y in extended precision, a block of rows at a time.
 
     ``a1`` is given by its nonzero columns ``cols`` only. Memory: two blocks
-    of rows in long double (27 MB at n = 4096), never a full extended copy.
+    of rows in long double (27 MB at n = 4096), never a full extended copy,
+    unless the caller gives ``extended``, (a0, a1_cols) already in long double
+    (the same numbers: the conversion is exact), to reuse across solves.
     """
     ye = y.astype(_EXTENDED)
     yc = ye[cols]
@@ -246,9 +249,19 @@ def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k:
     out = np.empty(rhs.size)
     for r0 in range(0, rhs.size, block):
         rows = slice(r0, r0 + block)
-        acc = a0[rows].astype(_EXTENDED) @ ye + ke * (a1_cols[rows].astype(_EXTENDED) @ yc)
+        if extended is None:
+            e0, e1 = a0[rows].astype(_EXTENDED), a1_cols[rows].astype(_EXTENDED)
+        else:
+            e0, e1 = extended[0][rows], extended[1][rows]
+        acc = e0 @ ye + ke * (e1 @ yc)
         out[rows] = (rhs[rows].astype(_EXTENDED) - acc).astype(float)
     return out
+
+
+# systems up to this size keep their long-double copy through one Newton iteration
+# (:func:`newton_on_k`; 2 x 16 size^2 bytes, 32 MB at 1024) instead of converting
+# the rows again for every refined solve
+_EXTENDED_COPY_UP_TO = 1024
 
 
 @dataclass
@@ -394,17 +407,18 @@ class NewtonResult:
 
 
 def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray, k: float,
-                   rhs: np.ndarray, refine: bool) -> np.ndarray:
+                   rhs: np.ndarray, refine: bool,
+                   extended: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """Solve with the LU of A(k), plus one step of extended-precision refinement if asked."""
     y = linalg.lu_solve(lu, rhs, check_finite=False)
     if not refine:
         return y
-    res = _extended_residual(a0s, a1s, cols, k, y, rhs)
+    res = _extended_residual(a0s, a1s, cols, k, y, rhs, extended=extended)
     return y + linalg.lu_solve(lu, res, check_finite=False)
 
 
 def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
-                refine: bool = False) -> NewtonResult:
+                refine: bool = False, refine_derivative: bool = True) -> NewtonResult:
     """Newton's method on the stick-edge condition g(k) = 0.
 
     Each iteration factorizes A(k) once; the derivative dg/dk comes from the
@@ -417,7 +431,10 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     ~eps cond(A) ~ eps N^2: g(k) was noisy at ~1e-5 relative in k for
     N = 1024 (Newton stalled there). ``refine`` adds one step of iterative
     refinement with the residual in extended precision, which removes the
-    noise (k stable to ~1e-10 at N = 1024 and 2048).
+    noise (k stable to ~1e-10 at N = 1024 and 2048). ``refine_derivative=False``
+    refines the solution but not dx/dk: the derivative's round-off then only
+    scales the step (a relative error e of dg/dk moves k by e times the last
+    step), which costs half the extended-precision residuals.
     """
     sysm = system
     slip, nn, j = sysm.slip_nodes, sysm.nn, sysm.stick_edge
@@ -435,13 +452,17 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     converged, it, stagnated = False, 0, 0.0
     x = xk = None
     step, prev_step = 0.0, np.inf
+    extended = None
     for it in range(1, max_iter + 1):
         ak = a0s.copy()
         ak[:, slip] += k * a1s
         lu = linalg.lu_factor(ak, overwrite_a=True, check_finite=False)
-        x = cs * _refined_solve(lu, a0s, a1s, slip, k, bs, refine)
+        if refine and extended is None and bs.size <= _EXTENDED_COPY_UP_TO:
+            extended = (a0s.astype(_EXTENDED), a1s.astype(_EXTENDED))
+        x = cs * _refined_solve(lu, a0s, a1s, slip, k, bs, refine, extended)
         g = shape[j] * x[nn + j] - k * x[j]
-        xk = -cs * _refined_solve(lu, a0s, a1s, slip, k, rs * (sysm.a1b @ x[slip]), refine)
+        xk = -cs * _refined_solve(lu, a0s, a1s, slip, k, rs * (sysm.a1b @ x[slip]),
+                                  refine and refine_derivative, extended)
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg
         k -= step

@@ -221,12 +221,12 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
         if newton.converged:
             k_start = newton.k
     if one_step or (newton.converged and refine):
-        newton = newton_on_k(system, k_start, max_iter=1, refine=True)
+        newton = newton_on_k(system, k_start, max_iter=1, refine=True, refine_derivative=False)
         if not newton.converged:
             if abs(newton.k - k_start) <= ONE_STEP * abs(newton.k):
                 newton.converged = True
             else:
-                newton = newton_on_k(system, newton.k, refine=True)
+                newton = newton_on_k(system, newton.k, refine=True, refine_derivative=False)
         newton.iterations += iterations
     k = newton.k
     if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
@@ -333,7 +333,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         return solve_default(geometry, c, n, ops=ops, cache=cache)
     if n % N_MULTIPLE:
         raise ValueError(f"n must be a multiple of {N_MULTIPLE}, got {n}")
-    fine = graded_mesh(n, c)
+    fine = graded_mesh(n, c, store=None if cache is None else cache.meshes)
     pw, qw = _fine_ops(geometry, fine, ops, cache)
     meshes, opss, odds = [fine], [(pw, qw)], [None]
     nested = True
@@ -357,12 +357,18 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     for i in _level_order(ns, k_guess is not None):
         if i == LEVELS - 1:  # the finest root predicted from the coarse levels' expansion
             k0 = _predict([s.k for s in sols[:-1]])
-        elif k_guess is not None:  # continuation: each coarse level from the neighbour's
-            k0 = k_guess * (1.0 + level_offsets[i]) if level_offsets is not None else (
-                sols[i - 1].k if i and _good(sols[i - 1]) else k_guess)
+        elif k_guess is not None and level_offsets is not None:  # continuation: each
+            # coarse level from the neighbour's offset, corrected by the ratio the coarser
+            # level found to its own guess (the guess's error is common to the levels)
+            k0 = k_guess * (1.0 + level_offsets[i])
+            if i and _good(sols[i - 1]):
+                k0 *= sols[i - 1].k / (k_guess * (1.0 + level_offsets[i - 1]))
+        elif k_guess is not None:
+            k0 = sols[i - 1].k if i and _good(sols[i - 1]) else k_guess
         else:
             k0 = _start(geometry, c, meshes[i], sols, i)
-        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=i == LEVELS - 1)
+        near = i == LEVELS - 1 or (level_offsets is not None and k_guess is not None and i > 0)
+        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=near)
         if odds[i] is not None:
             x, po, qo = odds[i]
             d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)

@@ -610,19 +610,19 @@ def _continuation_guess(geometry: Contact, c: float,
 
     The ratio of k to the uncoupled closed form varies slowly with c/a
     (1.04 ... 1.12 at nu = 0.3 for c/a up to 0.98), so it is interpolated
-    (or extrapolated) from the three (or two) solved cases nearest in c/a,
-    within 0.25 of it: quadratically, which puts a 50-point sweep's guesses
+    (or extrapolated) from the three (or two) solved cases nearest in c/a
+    that lie within 0.25 of it: quadratically, which puts a 50-point sweep's guesses
     within about 1e-6 and Newton converges in one or two steps. None (the
     solver's own warm start) when fewer than two are known, or when the
     ratio comes out beyond half the smallest or twice the largest known one.
     """
     if not 0.0 < c < 1.0 or len(known) < 2:
         return None
-    near = sorted(known, key=lambda t: abs(t[0] - c))[:3]
+    near = [t for t in sorted(known, key=lambda t: abs(t[0] - c))[:3] if abs(t[0] - c) <= 0.25]
     cs = np.array([t[0] for t in near])
     rs = np.array([t[1] for t in near])
-    if np.unique(cs).size < cs.size or np.max(np.abs(cs - c)) > 0.25:
-        return None
+    if cs.size < 2 or np.unique(cs).size < cs.size:
+        return None  # (a sweep with steps over 0.125 in c/a: linear from the two nearest)
     # Lagrange interpolation (quadratic with three neighbours, else linear)
     ratio = 0.0
     for i in range(cs.size):

@@ -61,8 +61,8 @@ from .model import Contact
 from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_part,
                         operators, u_difference_rows)
 
-__all__ = ["DiscreteSolution", "solve_default", "assemble", "start_k", "newton_on_k",
-           "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
+__all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "start_k",
+           "newton_on_k", "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
            "nodal_operator_part"]
 
 # Extended precision for the residual of one step of iterative refinement (see
@@ -568,6 +568,49 @@ def _full_adhesion(geometry: Contact, mesh: Mesh, pw: np.ndarray,
                             "", pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi)
 
 
+def difference_rows(geometry: Contact, mesh: Mesh) -> tuple[tuple | None, tuple | None]:
+    """The rows :func:`assemble` writes as differences on ``mesh``: (axis, edge), each or None.
+
+    ``axis`` for a tiny stick zone (c/a <= :data:`AXIS_ROWS_BELOW`), ``edge`` for a
+    thin slip annulus (1 - c/a <= :data:`EDGE_ROWS_BELOW`) or, at high resolution,
+    the band around c (elements next to c below :data:`NEAR_ROWS_BELOW` min(c, a - c));
+    None where the plain rows are kept, or the indenter has no kernel differences.
+    Their kernels are evaluated here (only in those three cases).
+    """
+    r, m = mesh.nodes, mesh.stick_index
+    axis = None
+    if r[m] <= AXIS_ROWS_BELOW:  # tiny stick zone: its normal rows relative to the axis
+        try:
+            axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part)
+                         for part in ("normal", "shear"))
+        except NotImplementedError:  # an indenter without w(x) - w(0): the plain rows
+            axis = None
+    edge = None
+    if 1.0 - r[m] <= EDGE_ROWS_BELOW:  # thin slip annulus: its normal rows relative to r_i0
+        i0 = int(np.searchsorted(r, 1.0 - EDGE_REF_WIDTHS * (1.0 - r[m])))
+        try:
+            ref = float(r[i0])
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:], part, ref=ref)
+                                 for part in ("normal", "shear")) + tuple(
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                for part in ("normal", "shear"))
+        except NotImplementedError:
+            edge = None
+    elif axis is None and _near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m]):
+        width = NEAR_ROWS_WIDTH * min(r[m], 1.0 - r[m])
+        i0 = int(np.searchsorted(r, r[m] - width))
+        i1 = int(np.searchsorted(r, r[m] + width))
+        try:
+            ref = float(r[i0])
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:i1 + 1], part, ref=ref)
+                                 for part in ("normal", "shear")) + tuple(
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                for part in ("normal", "shear"))
+        except NotImplementedError:
+            edge = None
+    return axis, edge
+
+
 def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float = 2.0,
                   k_guess: float | None = None, tol: float = 1e-9,
                   max_iter: int = 30,
@@ -620,36 +663,7 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     if m == nn:
         return _full_adhesion(geometry, mesh, pw, qw)
 
-    axis = None
-    if r[m] <= AXIS_ROWS_BELOW:  # tiny stick zone: its normal rows relative to the axis
-        try:
-            axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part)
-                         for part in ("normal", "shear"))
-        except NotImplementedError:  # an indenter without w(x) - w(0): the plain rows
-            axis = None
-    edge = None
-    if 1.0 - r[m] <= EDGE_ROWS_BELOW:  # thin slip annulus: its normal rows relative to r_i0
-        i0 = int(np.searchsorted(r, 1.0 - EDGE_REF_WIDTHS * (1.0 - r[m])))
-        try:
-            ref = float(r[i0])
-            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:], part, ref=ref)
-                                 for part in ("normal", "shear")) + tuple(
-                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
-                for part in ("normal", "shear"))
-        except NotImplementedError:
-            edge = None
-    elif axis is None and _near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m]):
-        width = NEAR_ROWS_WIDTH * min(r[m], 1.0 - r[m])
-        i0 = int(np.searchsorted(r, r[m] - width))
-        i1 = int(np.searchsorted(r, r[m] + width))
-        try:
-            ref = float(r[i0])
-            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:i1 + 1], part, ref=ref)
-                                 for part in ("normal", "shear")) + tuple(
-                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
-                for part in ("normal", "shear"))
-        except NotImplementedError:
-            edge = None
+    axis, edge = difference_rows(geometry, mesh)
     system = assemble(geometry, mesh, pw, qw, axis, edge)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)

@@ -56,14 +56,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import energy, validate
-from .default_method import DiscreteSolution, assemble, newton_on_k, solve_default
+from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, DiscreteSolution, assemble,
+                             difference_rows, newton_on_k, solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
 from .operators import StickBlocks, nodal_operator_part, restrict_nested
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "N_MULTIPLE", "resolving_n", "work_error",
-           "quadrature_noise", "NOISE", "NOISE_POWER"]
+           "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
+           "DIFFERENCE_NOISE_POWER"]
 
 ORDERS = (2.0, 3.0, 4.0)
 """The orders of the default method's error expansion that are eliminated."""
@@ -79,16 +81,32 @@ ONE_STEP = 3e-5
 refined step is about 0.4 step^2 (measured: 1e-5 -> 2e-11 ... 2e-9, 1e-4 -> 1.2e-9 ...
 6.2e-9 at c/a = 0.1 ... 0.98, n = 256 and 512), under 4e-10 here."""
 
-# The kernels' quadrature error (about 1e-11), amplified by the smallest elements next to c,
-# puts noise into each level's k that no expansion in n describes. Measured against the
-# closed form at nu = 0.49999 (sharp there: the coupling correction is O(beta^2) ~ 4e-10)
-# and against the converged reference at c/a = 0.9: relative k noise up to
-# NOISE[side] * h_min^-1.5, h_min the smallest element (units of a) on the side that
-# holds it, "stick" for c/a < 1/2 (c/a = 1e-4 ... 1e-6: 4.5e-7 at h = 2.2e-9, 2.4e-5 at
-# 9e-11, 5.5e-5 at 2.2e-11) and "annulus" above (c/a = 0.99 ... 0.9999: 3e-7 at h =
-# 2.3e-7, 3.5e-5 at 9.3e-9, 6.8e-4 at 2.3e-9); each constant is the largest of its points.
+# The kernels' quadrature error (about 1e-11) and the round-off of O(1) displacements,
+# amplified by the smallest elements next to c, put noise into each level's k that no
+# expansion in n describes. Measured against the closed form at nu = 0.49999 (sharp there:
+# the coupling correction is O(beta^2) ~ 4e-10) and against the converged reference at
+# c/a = 0.9, both geometries, n = 256 and 512; each constant is the largest of its points.
+# Plain rows (1e-4 < c/a < 1 - 5e-4): relative k noise up to NOISE[side] * h_min^-1.5,
+# h_min the smallest element (units of a) on the side that holds it, "stick" for
+# c/a < 1/2 (c/a = 1e-4 ... 1e-6 with plain rows: 4.5e-7 at h = 2.2e-9, 2.4e-5 at 9e-11,
+# 5.5e-5 at 2.2e-11) and "annulus" above (c/a = 0.99 ... 0.9999: 3e-7 at h = 2.3e-7,
+# 3.5e-5 at 9.3e-9, 6.8e-4 at 2.3e-9).
 NOISE = {"stick": 4.6e-20, "annulus": 7.5e-17}
 NOISE_POWER = 1.5
+# Difference rows (default_method.difference_rows: c/a <= AXIS_ROWS_BELOW, the stick
+# side, or 1 - c/a <= EDGE_ROWS_BELOW, the annulus side), which every level uses as the
+# default method does: the noise grows much more slowly, DIFFERENCE_NOISE[side] *
+# h_min^-0.5. Stick side, c/a = 1e-8, 1e-6, 1e-4 (h = 9e-13 ... 2.2e-9): largest errors
+# 5.7e-5 (sphere, 1e-8, n = 512), 2.4e-6 (sphere, 1e-6, n = 512), 7.4e-8 (1e-4, n = 256);
+# annulus side, c/a = 0.9999 and 1 - 1e-5 (h = 9.3e-9 ... 2.3e-10): 1.5e-5 (cylinder,
+# 0.9999, n = 512), 1.8e-5 (cylinder, 1 - 1e-5, n = 512). With the plain rows the same
+# cases were off by up to 1.3e-3 (sphere, 1e-8) and 9.4e-3 (sphere, 1 - 1e-5, n = 512).
+# Checked on points not fitted (c/a = 1e-7, 1e-5, 3e-5, 0.9996, 0.99995, 1 - 5e-6 at
+# n = 256 and 384): the stick side's c/a = 1e-7, n = 384 was 2.2 times the bound fitted
+# above (sphere: 3.5e-5), so the stick constant is raised to cover it (2.7e-11 -> 6e-11);
+# the annulus points lay within 0.64 of theirs.
+DIFFERENCE_NOISE = {"stick": 6e-11, "annulus": 7.2e-10}
+DIFFERENCE_NOISE_POWER = 0.5
 
 
 @dataclass(repr=False)
@@ -173,15 +191,24 @@ def _predict(coarse_k, orders=ORDERS) -> float:
     return float(coef[0] + sum(coef[1:]))  # at h = 1
 
 
-def quadrature_noise(mesh: Mesh) -> float:
+def quadrature_noise(mesh: Mesh, difference: bool | None = None) -> float:
     """Measured bound of the relative k noise from the kernels' quadrature on ``mesh``.
 
-    ``NOISE[side] * h_min^-1.5`` (see :data:`NOISE`): negligible (< 1e-9) at c/a =
-    0.02 ... 0.98 up to n = 512, the dominant error at c/a <= 1e-5 and >= 0.999.
+    ``NOISE[side] * h_min^-1.5`` with the plain rows, ``DIFFERENCE_NOISE[side] *
+    h_min^-0.5`` with the difference rows (see :data:`NOISE`, :data:`DIFFERENCE_NOISE`):
+    negligible (< 2e-9) at c/a = 0.02 ... 0.98 up to n = 512, the dominant error at
+    c/a <= 1e-4 and >= 0.999. ``difference``: whether the rows were differences
+    (default: where :func:`~contactlib.default_method.difference_rows` writes them on a
+    half-space, by c/a).
     """
     c = float(mesh.nodes[mesh.stick_index])
     h_min = float(np.min(np.diff(mesh.nodes)))
-    return NOISE["stick" if c < 0.5 else "annulus"] * h_min ** -NOISE_POWER
+    side = "stick" if c < 0.5 else "annulus"
+    if difference is None:
+        difference = c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW
+    if difference:
+        return DIFFERENCE_NOISE[side] * h_min ** -DIFFERENCE_NOISE_POWER
+    return NOISE[side] * h_min ** -NOISE_POWER
 
 
 def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | None:
@@ -200,18 +227,21 @@ def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None):
 
 
 def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
-           k0: float, one_step: bool, refine: bool = True) -> DiscreteSolution:
+           k0: float, one_step: bool, rows: tuple = (None, None),
+           refine: bool = True) -> DiscreteSolution:
     """One level: Newton on k from k0, the last step with extended-precision refinement.
 
     ``one_step``: k0 is within a few 1e-6 of the root (the finest level), and
     one refined step is final when it moves k by at most :data:`ONE_STEP`.
     Otherwise Newton runs plainly (refining only where it stagnates) and one
     refined step follows (``refine``; without it the round-off of a coarse
-    level reached 2.7e-6 in k at nu = -0.5, c/a = 0.98, n = 256, k = 13.6). The ordinary case (a root with the slip against the
-    shear, converged) is finished here; anything else is handed to
-    :func:`solve_default` on the same operators, which says what went wrong.
+    level reached 2.7e-6 in k at nu = -0.5, c/a = 0.98, n = 256, k = 13.6). ``rows``:
+    the difference rows of :func:`~contactlib.default_method.difference_rows` on ``mesh``
+    (the default method's own; (None, None): the plain rows). The ordinary case (a root
+    with the slip against the shear, converged) is finished here; anything else is
+    handed to :func:`solve_default` on the same operators, which says what went wrong.
     """
-    system = assemble(geometry, mesh, pw, qw)
+    system = assemble(geometry, mesh, pw, qw, *rows)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0
     k_start = sigma * k0
     iterations = 0
@@ -297,7 +327,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
                        work: bool = True,
                        level_offsets: tuple[float, ...] | None = None,
                        ) -> ExtrapolatedSolution | DiscreteSolution:
-    """Solve one stick ratio on the nested meshes n/4, n/2, n and extrapolate k and the load.
+    """Solve one stick ratio on the nested meshes n/8, n/4, n/2, n; extrapolate k and the load.
 
     Parameters
     ----------
@@ -368,7 +398,11 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         else:
             k0 = _start(geometry, c, meshes[i], sols, i)
         near = i == LEVELS - 1 or (level_offsets is not None and k_guess is not None and i > 0)
-        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=near)
+        rows = difference_rows(geometry, meshes[i])  # as the default method's, if any
+        if i == LEVELS - 1:  # the noise of the finest level's rows (see quadrature_noise)
+            difference = rows != (None, None) and (c <= AXIS_ROWS_BELOW
+                                                   or 1.0 - c <= EDGE_ROWS_BELOW)
+        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=near, rows=rows)
         if odds[i] is not None:
             x, po, qo = odds[i]
             d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)
@@ -407,7 +441,8 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
                                             "extrapolated"] if x)
     # the levels' Newton round-off floors (refined: ~1e-10) and the quadrature noise of
     # the smallest elements add to the estimate
-    out.error_estimate += 2.0 * max(s.round_off for s in sols) + quadrature_noise(top.mesh)
+    out.error_estimate += (2.0 * max(s.round_off for s in sols)
+                           + quadrature_noise(top.mesh, difference=difference))
     out.level_offsets = tuple(float(s.k) / out.k - 1.0 for s in sols[:-1])
     if work:
         out.level_work = tuple(_work(geometry, s) for s in sols)

@@ -62,8 +62,8 @@ from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_
                         operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "start_k",
-           "newton_on_k", "PartialSlipSystem", "NewtonResult", "operators", "operator_part",
-           "nodal_operator_part"]
+           "newton_on_k", "REFINED_FINAL_STEP", "PartialSlipSystem", "NewtonResult",
+           "operators", "operator_part", "nodal_operator_part"]
 
 # Extended precision for the residual of one step of iterative refinement (see
 # solve_default): 80-bit on x86-64 Linux; where long double is plain double
@@ -103,6 +103,16 @@ NEAR_ROWS_WIDTH = 0.1
 def _near_c_h(r: np.ndarray, m: int) -> float:
     """The smaller of the two elements next to c."""
     return float(min(r[m] - r[m - 1], r[m + 1] - r[m]))
+REFINED_FINAL_STEP = 3e-5
+"""A refined Newton step below this (relative) is final: the error after it is about
+0.4 step^2 (measured: 1e-5 -> 2e-11 ... 2e-9, 1e-4 -> 1.2e-9 ... 6.2e-9 at c/a = 0.1 ...
+0.98, n = 256 and 512; n = 2048: 2.8e-5 -> 1.4e-11 (sphere, c/a = 0.5), 1.2e-5 ->
+2.3e-10 (cylinder, 0.9); but n = 512 at c/a = 0.99: 2.7e-9 from a step near 3e-5).
+The default method uses it from n = 1024, where its own start (three coarse levels) is
+within ~1e-6 (one factorization fewer a solve, where one costs most)."""
+_THREE_LEVEL_START_FROM_N = 1024  # start_k from n = 64, 128, 256 (orders 2 and 3) instead
+# of 64 and 128 (order 2): within ~1e-6 of the root instead of 1e-5 ... 3e-5, so that
+# one refined step is final (REFINED_FINAL_STEP) where a factorization costs most
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256) ...
 # ... and whenever Newton's steps stop shrinking on the round-off floor: then the
 # iteration goes on with the refinement (nu = 0.3, c/a = 0.99 at n = 128 and 0.9999
@@ -418,7 +428,8 @@ def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray
 
 
 def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
-                refine: bool = False, refine_derivative: bool = True) -> NewtonResult:
+                refine: bool = False, refine_derivative: bool = True,
+                final_step: float = 0.0) -> NewtonResult:
     """Newton's method on the stick-edge condition g(k) = 0.
 
     Each iteration factorizes A(k) once; the derivative dg/dk comes from the
@@ -434,7 +445,9 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     noise (k stable to ~1e-10 at N = 1024 and 2048). ``refine_derivative=False``
     refines the solution but not dx/dk: the derivative's round-off then only
     scales the step (a relative error e of dg/dk moves k by e times the last
-    step), which costs half the extended-precision residuals.
+    step), which costs half the extended-precision residuals. ``final_step``: a
+    refined step of at most this (relative) is the last one (the error after a
+    refined step is about 0.4 step^2: see :data:`REFINED_FINAL_STEP`).
     """
     sysm = system
     slip, nn, j = sysm.slip_nodes, sysm.nn, sysm.stick_edge
@@ -467,6 +480,9 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
         step = g / dg
         k -= step
         size_step = abs(step) / max(abs(k), 1e-12)
+        if refine and size_step <= final_step:  # converged to well below 1e-9: final
+            converged = True
+            break
         # Newton converges quadratically (error after a step ~ 1e3 step^2 here):
         # stop after a step below 1e-6 relative. Beyond n ~ 1000 the stick-edge
         # condition reaches its round-off floor (k to ~1e-6): when the steps
@@ -507,6 +523,11 @@ def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
         k64 = solve_default(geometry, stick_ratio, 64, power=power, cache=cache).k
         k128 = solve_default(geometry, stick_ratio, 128, power=power,
                              k_guess=k64 if np.isfinite(k64) else None, cache=cache).k
+        if n >= _THREE_LEVEL_START_FROM_N and np.isfinite(k64) and np.isfinite(k128):
+            k256 = solve_default(geometry, stick_ratio, 256, power=power,
+                                 k_guess=k128 + (k128 - k64) / 3.0, cache=cache).k
+            if np.isfinite(k256):  # k + A n^-2 + B n^-3 through the three levels
+                return (32.0 * k256 - 12.0 * k128 + k64) / 21.0
         if np.isfinite(k64) and np.isfinite(k128):  # (a failed coarse solve reports NaN)
             return k128 + (k128 - k64) / 3.0
         if np.isfinite(k128):
@@ -667,7 +688,9 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     system = assemble(geometry, mesh, pw, qw, axis, edge)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
-    newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N)
+    newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N,
+                         final_step=(REFINED_FINAL_STEP if n >= _THREE_LEVEL_START_FROM_N
+                                     else 0.0))
     x, k = newton.x, newton.k  # signed: q = k p in the slip zone
     res = system.residual(x, k)
     p = np.append(x[:nn], 0.0)

@@ -56,8 +56,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import energy, validate
-from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, DiscreteSolution, assemble,
-                             difference_rows, newton_on_k, solve_default)
+from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, REFINED_FINAL_STEP,
+                             DiscreteSolution, assemble, difference_rows, newton_on_k,
+                             solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
 from .operators import StickBlocks, nodal_operator_part, restrict_nested
@@ -76,10 +77,10 @@ LEVELS = 4
 N_MULTIPLE = validate.EXTRAPOLATED_N_MULTIPLE
 """n must be a multiple of this (both zones' element counts divisible by 8: every level nested)."""
 
-ONE_STEP = 3e-5
-"""A first Newton step on the finest mesh below this (relative) is final: the error after a
-refined step is about 0.4 step^2 (measured: 1e-5 -> 2e-11 ... 2e-9, 1e-4 -> 1.2e-9 ...
-6.2e-9 at c/a = 0.1 ... 0.98, n = 256 and 512), under 4e-10 here."""
+ONE_STEP = REFINED_FINAL_STEP
+"""A first Newton step on the finest mesh below this (relative) is final (the default
+method's :data:`~contactlib.default_method.REFINED_FINAL_STEP`: the error after a refined
+step is about 0.4 step^2, under 4e-10 here)."""
 
 # The kernels' quadrature error (about 1e-11) and the round-off of O(1) displacements,
 # amplified by the smallest elements next to c, put noise into each level's k that no

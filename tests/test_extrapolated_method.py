@@ -170,6 +170,38 @@ def test_levels_are_the_default_discretization():
     assert np.isclose(s.k_fine, s.level_k[-1])
 
 
+def test_sweep_continuation_gives_the_roots_of_cases_solved_alone():
+    """A sweep (coarse levels from the neighbour's offsets, one refined step each) lands on
+    the roots each case finds alone (no guess), with steps of 0.087 in c/a; and it uses
+    its guesses: from the third case on at most 7 factorizations a case (alone: 11)."""
+    ratios = list(np.round(np.linspace(0.02, 0.98, 12), 4))
+    sols = api.sweep("sphere", 0.3, ratios, method="extrapolated", energy=False)
+    model = contact("sphere", 0.3)
+    for s in sols:
+        alone = solve_extrapolated(model, s.stick_ratio, 256)
+        assert abs(s.friction_coefficient / alone.k - 1.0) < 1e-9, (s.stick_ratio,)
+    assert all(s.iterations <= 7 for s in sols[2:]), [s.iterations for s in sols]
+
+
+def test_no_negative_extrapolated_k():
+    """Levels far outside the expansion (sphere, nu = 0, c/a = 0.999, n = 128: k = 94, 471,
+    4624, 1202) extrapolate to a negative k: the finest root is kept, with an estimate
+    of the levels' spread (not resolved)."""
+    s = solve_extrapolated(contact("sphere", 0.0), 0.999, 128)
+    assert s.k == s.k_fine and s.error_estimate > 1.0
+
+
+def test_noise_model_follows_the_rows():
+    """Difference rows (c/a <= 1e-4, 1 - c/a <= 5e-4) get their own, smaller noise bound."""
+    from contactlib.elements import graded_mesh
+    from contactlib.extrapolated_method import quadrature_noise
+
+    tiny, thin, mid = (graded_mesh(256, c) for c in (1e-6, 1.0 - 1e-5, 0.5))
+    assert quadrature_noise(tiny) < 0.2 * quadrature_noise(tiny, difference=False)
+    assert quadrature_noise(thin) < 1e-2 * quadrature_noise(thin, difference=False)
+    assert quadrature_noise(mid) == quadrature_noise(mid, difference=False) < 1e-9
+
+
 # ----------------------------------------------------------------------------- tolerance
 def test_plan_picks_the_cheapest_method_that_meets_the_tolerance():
     from contactlib import accuracy

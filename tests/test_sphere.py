@@ -172,3 +172,24 @@ def test_identical_requests_identical_results():
 def test_bad_input_raises_value_error_naming_argument(kwargs, name):
     with pytest.raises(ValueError, match=name):
         solve(**kwargs)
+
+
+def test_high_n_one_refined_step_lands_on_the_full_newton_root():
+    """From n = 1024 the start comes from n = 64, 128, 256 (orders 2 and 3) and one refined
+    Newton step within REFINED_FINAL_STEP is final: the same root as Newton run to its
+    ordinary stopping rule on the same system (to 1e-9: the refined roots' round-off is
+    ~1e-10 here; measured 2.8e-10), one factorization."""
+    from contactlib.default_method import (assemble, difference_rows, newton_on_k,
+                                           solve_default)
+    from contactlib.elements import graded_mesh
+    from contactlib.model import contact
+    from contactlib.operators import nodal_operator_part
+
+    model, c, n = contact("sphere", 0.3), 0.4, 1024
+    mesh = graded_mesh(n, c)
+    ops = (nodal_operator_part(model, mesh, "normal"), nodal_operator_part(model, mesh, "shear"))
+    d = solve_default(model, c, n, ops=ops)
+    full = newton_on_k(assemble(model, mesh, *ops, *difference_rows(model, mesh)), d.k * 1.001,
+                       refine=True)
+    assert d.converged and d.iterations == 1
+    assert abs(d.k / full.k - 1.0) < 1e-9, (d.k, full.k)

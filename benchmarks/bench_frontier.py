@@ -1,6 +1,6 @@
 """The accuracy frontier (issue 18): cost ratios of k to 1e-6, measured in one run.
 
-    python benchmarks/bench_frontier.py           # about 3-5 minutes
+    python benchmarks/bench_frontier.py           # about 5-8 minutes
     python benchmarks/bench_frontier.py --quick   # (a) only
 
 This machine is shared and noisy: every printed cost is a ratio of two times
@@ -28,6 +28,8 @@ c. **The 1e-9 floor.** The peak memory of an extrapolated solve at n = 2048
    (a child process, its maximum resident set) and what its own estimate
    says: the kernels' quadrature noise (:func:`quadrature_noise`) bounds the
    reachable accuracy.
+d. **Error against time** of both methods (c/a = 0.1 ... 0.9, nu = 0.3): time a case
+   over one LU of 1024 and the k error against the converged reference.
 """
 
 from __future__ import annotations
@@ -37,17 +39,19 @@ import os
 for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")  # before numpy is imported
 
+import json
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 from scipy import linalg
 
 import contactlib
-from contactlib import stages
+from contactlib import default_method, stages
 from contactlib.accuracy import predicted_error
-from contactlib.default_method import difference_rows, solve_default
+from contactlib.default_method import REFINED_FINAL_STEP, difference_rows, solve_default
 from contactlib.elements import graded_mesh
 from contactlib.extrapolated_method import quadrature_noise, solve_extrapolated
 from contactlib.model import contact
@@ -129,6 +133,16 @@ def part_b() -> None:
                                                                            ops=ops))):
         t, r = ratio(f, size)
         print(f"   {name:26s} {t:6.2f} s = {r:5.2f} LU({size})")
+    # one refined step final (REFINED_FINAL_STEP) against Newton run to its ordinary rule
+    # (two factorizations, as before), alternating in this process
+    one, two = [], []
+    for _ in range(REPEAT):
+        one.append(ratio(lambda: solve_default(model, c, n, ops=ops), size)[1])
+        default_method.REFINED_FINAL_STEP = 0.0
+        two.append(ratio(lambda: solve_default(model, c, n, ops=ops), size)[1])
+        default_method.REFINED_FINAL_STEP = REFINED_FINAL_STEP
+    print(f"   default, ops given: one factorization {min(one):.2f} LU, two (Newton run on) "
+          f"{min(two):.2f} LU")
     _, r_rows = ratio(lambda: difference_rows(model, mesh), size)
     print(f"   (building the operators alone: {t_ops:.2f} s = {t_ops / lu_time(size):.2f} "
           f"LU; the default method's difference rows around c: {r_rows:.2f} LU)")
@@ -159,12 +173,35 @@ def part_c() -> None:
           "docs/accuracy.md")
 
 
+REFERENCE = Path(__file__).resolve().parents[1] / "tests" / "data" / "frontier_reference.json"
+TRADE = (("default", 64), ("default", 128), ("default", 256), ("default", 512),
+         ("extrapolated", 128), ("extrapolated", 256), ("extrapolated", 512))
+
+
+def part_d() -> None:
+    print("d. error against time, nu = 0.3, c/a = 0.1 ... 0.9 (stages.solve_cases: solve, "
+          "flags' samples, estimates), k error against tests/data/frontier_reference.json")
+    cases = json.loads(REFERENCE.read_text())["cases"]
+    for geometry in ("sphere", "cylinder"):
+        ref = {c["stick_ratio"]: c["k"] for c in cases
+               if c["geometry"] == geometry and c["nu"] == 0.3}
+        ratios = sorted(ref)
+        model = contact(geometry, 0.3)
+        for method, n in TRADE:
+            recs = stages.solve_cases(model, method, n, ratios)
+            err = [abs(r.k / ref[r.stick_ratio] - 1.0) for r in recs]
+            _, r = ratio(lambda: stages.solve_cases(model, method, n, ratios), 1024, repeat=2)
+            print(f"   {geometry:8s} {method:12s} n={n:4d}: {r / len(ratios):6.2f} LU(1024) a case, "
+                  f"k error median {np.median(err):.1e}, largest {max(err):.1e}")
+
+
 def main() -> None:
     part_a()
     if "--quick" in sys.argv:
         return
     part_b()
     part_c()
+    part_d()
 
 
 if __name__ == "__main__":

@@ -2,6 +2,7 @@
 
     python benchmarks/bench_frontier.py           # about 5-8 minutes
     python benchmarks/bench_frontier.py --quick   # (a) only
+    python benchmarks/bench_frontier.py --lead    # (e) only: a lead, not a method
 
 This machine is shared and noisy: every printed cost is a ratio of two times
 measured moments apart in the same process (the reference LU is timed again
@@ -30,6 +31,7 @@ c. **The 1e-9 floor.** The peak memory of an extrapolated solve at n = 2048
    reachable accuracy.
 d. **Error against time** of both methods (c/a = 0.1 ... 0.9, nu = 0.3): time a case
    over one LU of 1024 and the k error against the converged reference.
+e. **A lead** (``--lead``): three nested levels at n = 64, against the default's n = 64.
 """
 
 from __future__ import annotations
@@ -195,7 +197,38 @@ def part_d() -> None:
                   f"k error median {np.median(err):.1e}, largest {max(err):.1e}")
 
 
+def part_e() -> None:
+    """A lead, not a method of the package: three nested levels (n/4, n/2, n) at n = 64."""
+    from contactlib import extrapolated_method
+
+    print("e. lead: the extrapolated method with three levels at n = 64 (module constants "
+          "LEVELS = 3, N_MULTIPLE = 64 set here only), nu = 0.3, c/a = 0.1 ... 0.9")
+    cases = json.loads(REFERENCE.read_text())["cases"]
+    for geometry in ("sphere", "cylinder"):
+        ref = {c["stick_ratio"]: c["k"] for c in cases
+               if c["geometry"] == geometry and c["nu"] == 0.3}
+        ratios = sorted(ref)
+        model = contact(geometry, 0.3)
+        _, r_def = ratio(lambda: stages.solve_cases(model, "default", 64, ratios), 1024, repeat=3)
+        saved = extrapolated_method.LEVELS, extrapolated_method.N_MULTIPLE
+        extrapolated_method.LEVELS, extrapolated_method.N_MULTIPLE = 3, 64
+        try:
+            recs = stages.solve_cases(model, "extrapolated", 64, ratios)
+            _, r_ex = ratio(lambda: stages.solve_cases(model, "extrapolated", 64, ratios), 1024,
+                            repeat=3)
+        finally:
+            extrapolated_method.LEVELS, extrapolated_method.N_MULTIPLE = saved
+        err = [abs(r.k / ref[r.stick_ratio] - 1.0) for r in recs]
+        est = [r.error_estimate for r in recs]
+        print(f"   {geometry:8s} default n=64 {r_def / len(ratios):.2f} LU a case; three "
+              f"levels at 64: {r_ex / len(ratios):.2f} LU, k error {min(err):.1e} ... "
+              f"{max(err):.1e}, estimates {min(est):.1e} ... {max(est):.1e}")
+
+
 def main() -> None:
+    if "--lead" in sys.argv:
+        part_e()
+        return
     part_a()
     if "--quick" in sys.argv:
         return

@@ -180,15 +180,19 @@ TRADE = (("default", 64), ("default", 128), ("default", 256), ("default", 512),
          ("extrapolated", 128), ("extrapolated", 256), ("extrapolated", 512))
 
 
-def part_d() -> None:
-    print("d. error against time, nu = 0.3, c/a = 0.1 ... 0.9 (stages.solve_cases: solve, "
-          "flags' samples, estimates), k error against tests/data/frontier_reference.json")
+def reference_cases():
+    """(geometry, model, {c/a: k}, sorted c/a) of the reference at nu = 0.3, per geometry."""
     cases = json.loads(REFERENCE.read_text())["cases"]
     for geometry in ("sphere", "cylinder"):
         ref = {c["stick_ratio"]: c["k"] for c in cases
                if c["geometry"] == geometry and c["nu"] == 0.3}
-        ratios = sorted(ref)
-        model = contact(geometry, 0.3)
+        yield geometry, contact(geometry, 0.3), ref, sorted(ref)
+
+
+def part_d() -> None:
+    print("d. error against time, nu = 0.3, c/a = 0.1 ... 0.9 (stages.solve_cases: solve, "
+          "flags' samples, estimates), k error against tests/data/frontier_reference.json")
+    for geometry, model, ref, ratios in reference_cases():
         for method, n in TRADE:
             recs = stages.solve_cases(model, method, n, ratios)
             err = [abs(r.k / ref[r.stick_ratio] - 1.0) for r in recs]
@@ -203,12 +207,7 @@ def part_e() -> None:
 
     print("e. lead: the extrapolated method with three levels at n = 64 (module constants "
           "LEVELS = 3, N_MULTIPLE = 64 set here only), nu = 0.3, c/a = 0.1 ... 0.9")
-    cases = json.loads(REFERENCE.read_text())["cases"]
-    for geometry in ("sphere", "cylinder"):
-        ref = {c["stick_ratio"]: c["k"] for c in cases
-               if c["geometry"] == geometry and c["nu"] == 0.3}
-        ratios = sorted(ref)
-        model = contact(geometry, 0.3)
+    for geometry, model, ref, ratios in reference_cases():
         _, r_def = ratio(lambda: stages.solve_cases(model, "default", 64, ratios), 1024, repeat=3)
         saved = extrapolated_method.LEVELS, extrapolated_method.N_MULTIPLE
         extrapolated_method.LEVELS, extrapolated_method.N_MULTIPLE = 3, 64

@@ -512,8 +512,10 @@ def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
     """Newton's starting k >= 0: the caller's guess, else a cheap estimate.
 
     For n > 128 the Richardson extrapolation of the n = 64 and n = 128
-    solutions (error O(h^2)) puts Newton within ~1e-6 of the answer, so one
-    or two fine factorizations suffice; for smaller n the uncoupled closed
+    solutions (error O(h^2)) puts Newton within 1e-5 ... 3e-5 of the answer,
+    so one or two fine factorizations suffice; from n = 1024 on the n = 256
+    solution is added and k + A n^-2 + B n^-3 fitted through the three
+    (within ~1e-6: one refined step is then final, see REFINED_FINAL_STEP); for smaller n the uncoupled closed
     form (with |beta|) at the stick-edge node ``edge`` (default c/a). The
     solver multiplies it by sign(beta).
     """

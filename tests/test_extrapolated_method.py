@@ -191,6 +191,18 @@ def test_no_negative_extrapolated_k():
     assert s.k == s.k_fine and s.error_estimate > 1.0
 
 
+@pytest.mark.parametrize("geometry, nu, c", [("cylinder", 0.3, 0.1945),
+                                               ("sphere", -0.5, 0.3691)])
+def test_a_vanishing_n2_term_is_no_reason_to_stop_extrapolating(geometry, nu, c):
+    """Where the n^-2 coefficient crosses zero the levels are still inside the expansion:
+    k is extrapolated (was the finest root, 7e-7 and 2.3e-6 off, with estimates of 2.8e-4
+    and 9e-4). Truth: the same case at n = 512 (its estimate ~5e-8)."""
+    model = contact(geometry, nu)
+    s, fine = solve_extrapolated(model, c, 256), solve_extrapolated(model, c, 512)
+    err = abs(s.k / fine.k - 1.0)
+    assert s.error_estimate < 1e-6 and err <= 3.0 * s.error_estimate + fine.error_estimate
+
+
 def test_noise_model_follows_the_rows():
     """Difference rows (c/a <= 1e-4, 1 - c/a <= 5e-4) get their own, smaller noise bound."""
     from contactlib.elements import graded_mesh

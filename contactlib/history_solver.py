@@ -79,7 +79,6 @@ cycle takes about 3 iterations.
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
@@ -105,6 +104,9 @@ MESH_EXTENT = HISTORY_MESH_EXTENT  # mesh length over a_max (validate bounds lay
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
 MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
 _MAX_DURATIONS = 4  # step durations whose scaled operators a viscoelastic run keeps
+# the LAPACK routines behind scipy.linalg.lu_factor / lu_solve, called without their
+# wrappers' checks (a step's many small systems made those a tenth of its time)
+_GETRF, _GETRS = linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((1, 1)),))
 
 
 @dataclass(frozen=True)
@@ -418,16 +420,14 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
         key = state.tobytes()
         if cache.get("key") != key:
             a, c, factor, stick = _assemble(ops, k, state, cache)
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", linalg.LinAlgWarning)
-                lu = linalg.lu_factor(a, overwrite_a=True, check_finite=False)
-            cache.update(key=key, lu=lu, c=c, factor=factor, stick=stick)
+            lu, piv, _ = _GETRF(a, overwrite_a=True)  # LAPACK directly: lu_factor's own call
+            cache.update(key=key, lu=(lu, piv), c=c, factor=factor, stick=stick)
         lu, c, factor, stick = cache["lu"], cache["c"], cache["factor"], cache["stick"]
         b = _rhs(ops, load, u_old, c, stick)
         if w_shift is not None:
             b[:c.size] -= w_shift[c]
             b[c.size:c.size + stick.size] -= u_shift[c[stick]]
-        x = linalg.lu_solve(lu, b, check_finite=False)
+        x = _GETRS(*lu, b, overwrite_b=True)[0]  # a singular U gives inf/nan (below)
         if not np.all(np.isfinite(x)):  # singular system for these sets
             cache.clear()
             break

@@ -399,7 +399,9 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
     cache : dict, optional
         Keeps the last LU factorization between calls (same ``ops`` and ``k``):
         the matrix depends only on the sets, so a step that starts from the
-        previous step's final sets reuses its factorization.
+        previous step's final sets reuses its factorization. It also keeps
+        the slip elements' columns ``pw +- k qw``, ``pu +- k qu`` of ``ops``
+        and ``k`` (:func:`_slip_columns`).
     w_shift, u_shift : ndarray, optional
         Displacements the step adds whatever its tractions (a viscoelastic
         body's memory, :func:`run_history`): w = pw p + qw q + w_shift,

@@ -360,8 +360,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     (stick radius) and 0.57 (work) of the error at every step whose slip
     annulus is resolved, and at most 9.3 and 8.5 times the largest error of a
     path segment; at the default n = 240 and 200 steps at least 0.40 and
-    0.49, at most 2.0 and 4.0 times. The estimate costs 26 ... 37 % of the
-    run (CPU time, the default config's history scenes).
+    0.75 (0.49 over all steps), at most 2.0 and 4.0 times. The estimate
+    costs 26 ... 38 % of the run (CPU time, the default config's history
+    scenes).
 
     ``max_error`` defaults to 1e-2 for a history (1e-3 for self-similar
     cases): the default n = 240 and 200 steps a segment give the cumulative

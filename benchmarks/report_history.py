@@ -2,7 +2,8 @@
 
 Run: python benchmarks/report_history.py [section ...]
 Sections: convergence, spence, work, cycles, highk, patterns, slab, onestep,
-steady, timing, errors, errors_cost (default: all, about 25 min on one core). Every table is printed as Markdown.
+steady, timing, errors, errors_default, errors_cost (default: all, about 40 min on one
+core; errors_default alone about 12 min). Every table is printed as Markdown.
 
 References (all independent of the incremental solver): the self-similar
 default method (``contactlib.solve``, n = 256 unless stated), Spence's
@@ -308,10 +309,23 @@ def timing() -> None:
     print("```")
 
 
-ERROR_PATHS = {"cycle": (0, 1, 0), "fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5, 1)}
+ERROR_PATHS = {"cycle": (0, 1, 0), "fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5, 1),
+               "scene-fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5)}
+# (geometry, nu, k, path): the issue's set (nu = 0.3, k = 0.1 ... 0.3, both paths), then
+# the default scenes' other k, nu = 0 and k = 0.5 (a slip annulus of few elements)
+ERROR_CASES = ([(g, NU, k, p) for g in ("sphere", "cylinder") for k in (0.1, 0.2, 0.3)
+                for p in ("cycle", "fretting")]
+               + [(g, NU, k, "cycle") for g in ("sphere", "cylinder") for k in (0.05, 0.5)]
+               + [(g, 0.0, 0.2, "cycle") for g in ("sphere", "cylinder")]
+               + [("sphere", 0.0, 0.3, "fretting")])
+# at the default resolution (truth n = 960, 4 x steps: 0.5 ... 2 min a case)
+DEFAULT_ERROR_CASES = [("sphere", NU, 0.05, "cycle"), ("sphere", NU, 0.2, "cycle"),
+                       ("sphere", NU, 0.3, "cycle"), ("cylinder", NU, 0.2, "cycle"),
+                       ("sphere", NU, 0.2, "scene-fretting")]
 
 
-def error_check(geometry: str, k: float, path: str, n: int, steps: int) -> dict:
+def error_check(geometry: str, k: float, path: str, n: int, steps: int,
+                nu: float = NU) -> dict:
     """Error estimates of one history against the same history refined fourfold.
 
     The truth is the run with 4n elements and 4 x steps (fine step i = refined
@@ -320,11 +334,16 @@ def error_check(geometry: str, k: float, path: str, n: int, steps: int) -> dict:
     1/3), ``inflation`` the largest, over path segments, of the segment's
     largest estimate over its largest true error (<= 10: not inflated), both
     over the steps flagged resolved by the slip-zone criterion (``annulus``)
-    and over all steps.
+    and over all steps; ``cost`` the CPU time of the estimate over the run's
+    (the same history without estimate, timed in this process).
     """
     levels = ERROR_PATHS[path]
-    res = history(geometry, NU, k, levels, steps, n=n)
-    ref = history(geometry, NU, k, levels, 4 * steps, n=4 * n, error_estimate=False)
+    t0 = time.process_time()
+    res = history(geometry, nu, k, levels, steps, n=n)
+    t1 = time.process_time()
+    history(geometry, nu, k, levels, steps, n=n, error_estimate=False)
+    t2 = time.process_time()
+    ref = history(geometry, nu, k, levels, 4 * steps, n=4 * n, error_estimate=False)
     c = np.nan_to_num(res.stick_ratio * res.contact_radius)
     c_ref = np.nan_to_num(ref.stick_ratio * ref.contact_radius)[::4]
     w, w_ref = res.frictional_work, ref.frictional_work[::4]
@@ -332,7 +351,8 @@ def error_check(geometry: str, k: float, path: str, n: int, steps: int) -> dict:
             "w": np.divide(np.abs(w - w_ref), w_ref, out=np.zeros_like(w), where=w_ref > 0)}
     est = {"c": res.stick_radius_error_estimate, "w": res.work_error_estimate}
     annulus = hs.annulus_resolved(k, res.state) & (res.load_ratio > 0)
-    out = {"resolved": int(res.resolved[1:].sum()), "steps": res.load_ratio.size - 1}
+    out = {"resolved": int(res.resolved[1:].sum()), "steps": res.load_ratio.size - 1,
+           "cost": (t1 - t0) / (t2 - t1) - 1.0}
     for q in ("c", "w"):
         for label, mask in (("annulus", annulus), ("all", res.load_ratio > 0)):
             t, e = true[q], est[q]
@@ -346,51 +366,55 @@ def error_check(geometry: str, k: float, path: str, n: int, steps: int) -> dict:
     return out
 
 
-def errors(n: int = 120, steps: int = 50) -> None:
+def errors(n: int = 120, steps: int = 50, cases=None) -> None:
     """Error estimates against runs refined fourfold, and their cost."""
-    print(f"\n## Error estimates (n = {n}, {steps} steps a segment; truth 4n, 4 x steps; "
-          f"nu = {NU})\n")
-    print("| geometry | k | path | resolved | c: min est/true (annulus; all) | "
+    print(f"\n## Error estimates (n = {n}, {steps} steps a segment; truth 4n, 4 x steps)\n")
+    print("| geometry | nu | k | path | resolved | c: min est/true (annulus; all) | "
           "c: max inflation | c true, est (end) | W: min est/true (annulus; all) | "
-          "W: max inflation | W true, est (end) |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    for geometry in ("sphere", "cylinder"):
-        for k in (0.1, 0.2, 0.3):
-            for path in ERROR_PATHS:
-                r = error_check(geometry, k, path, n, steps)
-                print(f"| {geometry} | {k} | {path} | {r['resolved']}/{r['steps']} | "
-                      f"{r['c_under_annulus']:.2f}; {r['c_under_all']:.2f} | "
-                      f"{r['c_inflation_annulus']:.1f}; {r['c_inflation_all']:.1f} | "
-                      f"{r['c_true_end']:.1e}, {r['c_est_end']:.1e} | "
-                      f"{r['w_under_annulus']:.2f}; {r['w_under_all']:.2f} | "
-                      f"{r['w_inflation_annulus']:.1f}; {r['w_inflation_all']:.1f} | "
-                      f"{r['w_true_end']:.1e}, {r['w_est_end']:.1e} |", flush=True)
-    errors_cost()
+          "W: max inflation | W true, est (end) | estimate's cost |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for geometry, nu, k, path in cases or ERROR_CASES:
+        r = error_check(geometry, k, path, n, steps, nu)
+        print(f"| {geometry} | {nu} | {k} | {path} | {r['resolved']}/{r['steps']} | "
+              f"{r['c_under_annulus']:.2f}; {r['c_under_all']:.2f} | "
+              f"{r['c_inflation_annulus']:.1f}; {r['c_inflation_all']:.1f} | "
+              f"{r['c_true_end']:.1e}, {r['c_est_end']:.1e} | "
+              f"{r['w_under_annulus']:.2f}; {r['w_under_all']:.2f} | "
+              f"{r['w_inflation_annulus']:.1f}; {r['w_inflation_all']:.1f} | "
+              f"{r['w_true_end']:.1e}, {r['w_est_end']:.1e} | {r['cost']:.0%} |", flush=True)
+
+
+def errors_default() -> None:
+    """The same at the default resolution (n = 240, the scenes' steps a segment)."""
+    for steps, path in ((200, "cycle"), (100, "scene-fretting")):
+        errors(240, steps, [c for c in DEFAULT_ERROR_CASES if c[3] == path])
 
 
 def errors_cost() -> None:
-    """CPU time of a history with and without its error estimate."""
-    print("\nCost of the estimate (CPU time, best of 3, path 0 -> 1 -> 0, k = 0.2):\n")
-    print("| geometry | n | steps | without (s) | with (s) | extra |")
-    print("|---|---|---|---|---|---|")
-    for geometry in ("sphere", "cylinder"):
-        for n_t, steps_t in ((240, 100), (240, 400), (480, 200)):
-            t = {}
+    """CPU time of the default config's history scenes with and without their estimates."""
+    print("\nCost of the estimate (CPU time, best of 3 alternating; the history scenes of "
+          "config/config.yaml, every k of a scene):\n")
+    print("| scene | without (s) | with (s) | extra |")
+    print("|---|---|---|---|")
+    scenes = {"sphere-cycle": ("sphere", (0.05, 0.1, 0.15, 0.2, 0.3), (0, 1, 0), 200),
+              "halfplane-cycle": ("cylinder", (0.05, 0.1, 0.15, 0.2, 0.3), (0, 1, 0), 200),
+              "sphere-fretting": ("sphere", (0.2,), (0, 1, 0.5, 1, 0.5, 1, 0.5), 100)}
+    for name, (geometry, ks, path, steps) in scenes.items():
+        t = {False: np.inf, True: np.inf}
+        for _ in range(3):
             for flag in (False, True):
-                best = np.inf
-                for _ in range(3):
-                    t0 = time.process_time()  # the machine may be shared: CPU, not wall
-                    history(geometry, NU, 0.2, (0, 1, 0), steps_t, n=n_t, error_estimate=flag)
-                    best = min(best, time.process_time() - t0)
-                t[flag] = best
-            print(f"| {geometry} | {n_t} | {steps_t} | {t[False]:.2f} | {t[True]:.2f} | "
-                  f"{t[True] / t[False] - 1:.0%} |", flush=True)
+                t0 = time.process_time()  # the machine may be shared: CPU, not wall
+                for k in ks:
+                    history(geometry, NU, k, path, steps, error_estimate=flag)
+                t[flag] = min(t[flag], time.process_time() - t0)
+        print(f"| {name} | {t[False]:.2f} | {t[True]:.2f} | {t[True] / t[False] - 1:.0%} |",
+              flush=True)
 
 
 SECTIONS = {"convergence": convergence, "spence": spence, "work": work, "cycles": cycles,
             "highk": highk, "patterns": patterns, "slab": slab, "onestep": onestep,
             "steady": steady, "timing": timing, "errors": errors,
-            "errors_cost": errors_cost}
+            "errors_default": errors_default, "errors_cost": errors_cost}
 
 if __name__ == "__main__":
     names = sys.argv[1:] or list(SECTIONS)

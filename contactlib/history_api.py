@@ -89,7 +89,7 @@ MIN_N = validate.HISTORY_MIN_N
 MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
-DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
+DEFAULT_MAX_ERROR = validate.HISTORY_DEFAULT_MAX_ERROR  # a history's own: 1e-2
 _MIN_SPLIT_STEPS = 40  # fewer steps a segment: one coarse run (B would be too coarse)
 
 
@@ -254,6 +254,23 @@ def creep_extent(model: Contact) -> float:
     return hs.MESH_EXTENT * model.indenter.hertz_radius(1.0 / relaxed)
 
 
+def _refinement(n: int, steps: int, err_c: float, err_w: float, max_error: float) -> str:
+    """What would resolve the path's last step: n and steps scaled by estimate / max_error.
+
+    Both errors fall about like 1/n and 1/steps together (the work's mesh and step
+    parts are first order; the stick radius is good to a fraction of an element),
+    so refining both by the ratio r of the last step's larger estimate to
+    ``max_error`` resolves it; the time grows like r^3 or more.
+    """
+    ratio = max(err_c, err_w) / max_error
+    if not np.isfinite(ratio) or ratio <= 1.0:
+        return "use a larger n and more steps"
+    r = math.ceil(ratio * 10.0) / 10.0
+    return (f"the last step's estimate is {r:g} x max_error; about n = "
+            f"{min(math.ceil(r * n), MAX_N)} with {math.ceil(r * steps)} steps a segment "
+            f"would resolve it")
+
+
 # ----------------------------------------------------------------------------- public API
 @blas_single_threaded
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
@@ -294,7 +311,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     max_error : float
         Accuracy a step must reach to be flagged ``resolved``, in (0, 1): the
         bound on both the stick radius error (units of a_max) and the relative
-        error of the cumulative frictional work. Default 1e-3.
+        error of the cumulative frictional work. Default 1e-2, a history's own
+        (see the notes).
     error_estimate : bool
         Estimate the errors from an embedded coarser run (default). If False
         the estimates are NaN and ``resolved`` reflects only convergence and
@@ -333,19 +351,25 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     :func:`contactlib.history_solver.error_estimates`). The work error is the
     mesh error and the step error estimated separately and added as absolute
     values, so that errors of opposite sign do not cancel; the stick radius
-    error is this run minus run A, at least half an element wherever the
-    stick edge is an element edge. Measured against runs refined fourfold (4n
-    elements, 4x steps; sphere and half-plane, nu = 0.3, k = 0.1, 0.2, 0.3, a
-    0 -> 1 -> 0 cycle and a fretting path, ``benchmarks/report_history.py
-    errors``) at n = 120, 50 steps: the work estimate is at least 0.55 of
-    the error at every step and at most 8.3 times the largest error of a
-    segment; the stick radius estimate at least 0.36 of the error, at most
-    12 times (cylinder, k = 0.1, fretting: an element-edge stick radius).
-    The estimate costs 24 ... 45 % of the run (CPU time; more than the 30 %
-    aimed at for up to 400 steps at n = 240). At the default n = 240 and 100
-    steps a segment the work of a cycle is truly in error by 0.5 ... 0.8 %
-    (truth n = 960, 400 steps; estimate 1.0 ... 1.7 %): no step is resolved
-    at the default ``max_error`` 1e-3, which needs more steps and elements.
+    error is this run minus run A (not across a jump of A's stick radius),
+    at least half an element wherever the stick edge is an element edge.
+    Measured against runs refined fourfold (4n elements, 4x steps;
+    ``benchmarks/report_history.py errors errors_default``, docs/accuracy.md):
+    at n = 120, 50 steps (17 paths: sphere and half-plane, nu = 0.3 and 0,
+    k = 0.05 ... 0.5, cycles and fretting) the estimates are at least 0.36
+    (stick radius) and 0.57 (work) of the error at every step whose slip
+    annulus is resolved, and at most 9.3 and 8.5 times the largest error of a
+    path segment; at the default n = 240 and 200 steps at least 0.40 and
+    0.75 (0.49 over all steps), at most 2.0 and 4.0 times. The estimate
+    costs 26 ... 38 % of the run (CPU time, the default config's history
+    scenes).
+
+    ``max_error`` defaults to 1e-2 for a history (1e-3 for self-similar
+    cases): the default n = 240 and 200 steps a segment give the cumulative
+    work to about 1 % while loading (0.05 ... 0.4 % at the end of a cycle,
+    truth n = 960, 800 steps) and an element-edge stick radius to a quarter
+    of an element; 1e-3 needs about 4 n and 4x steps. The ``message`` of a
+    flagged history names the n and steps that would resolve its last step.
 
     Measured against the self-similar solver (sphere, nu = 0.3, monotonic
     loading): c/a within 0.25 % for c/a = 0.2 ... 0.9 at n = 120 ... 480 and
@@ -448,8 +472,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
                        f"{max_error:g} (stick radius error up to {np.nanmax(err_c):.2g} a_max, "
                        f"relative work error up to {np.nanmax(err_w):.2g})")
         notes.append(f"{np.count_nonzero(~resolved[1:])} of {levels.size - 1} steps are flagged "
-                     f"not resolved ({'; '.join(why) or 'not converged'}): use a larger n "
-                     f"and more steps")
+                     f"not resolved ({'; '.join(why) or 'not converged'}): "
+                     f"{_refinement(n, steps, err_c[-1], err_w[-1], max_error)}")
     if model.decoupled and k > 0:
         cause = "nu = 0.5" if model.indenter.rigid else "beta = 0"
         notes.append(f"{cause}: the normal and tangential problems decouple; no shear arises")

@@ -79,7 +79,6 @@ cycle takes about 3 iterations.
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
@@ -96,7 +95,7 @@ __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS"
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
            "stick_radius", "MESH_EXTENT", "RawHistory", "run_history",
            "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates",
-           "annulus_resolved"]
+           "annulus_resolved", "straddle"]
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"
@@ -105,6 +104,9 @@ MESH_EXTENT = HISTORY_MESH_EXTENT  # mesh length over a_max (validate bounds lay
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
 MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
 _MAX_DURATIONS = 4  # step durations whose scaled operators a viscoelastic run keeps
+# the LAPACK routines behind scipy.linalg.lu_factor / lu_solve, called without their
+# wrappers' checks (a step's many small systems made those a tenth of its time)
+_GETRF, _GETRS = linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((1, 1)),))
 
 
 @dataclass(frozen=True)
@@ -191,8 +193,37 @@ class StepResult:
     residual: float
 
 
-def _assemble(ops: Operators, k: float,
-              state: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _rows(index: np.ndarray) -> np.ndarray | slice:
+    """``index`` as a slice when it is a contiguous run (a view instead of a gather)."""
+    if index.size and int(index[-1]) - int(index[0]) + 1 == index.size:
+        return slice(int(index[0]), int(index[-1]) + 1)
+    return index
+
+
+def _block(mat: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """``mat[np.ix_(rows, cols)]``, by slicing where the indices are contiguous runs."""
+    r, c = _rows(rows), _rows(cols)
+    if isinstance(r, slice):
+        return mat[r, c]
+    return mat[r][:, c]
+
+
+def _slip_columns(ops: Operators, k: float, cache: dict) -> tuple[np.ndarray, ...]:
+    """``pw + k qw``, ``pw - k qw``, ``pu + k qu``, ``pu - k qu``: the slip elements' columns.
+
+    Computed once per operators and k (kept in ``cache``); each entry is the
+    sum :func:`_assemble` forms, ``pw + qw * (+-k)``, so the matrix is the same
+    to the last bit.
+    """
+    key = (id(ops), k)
+    if cache.get("slip_key") != key:
+        cache.update(slip_key=key, slip=(ops.pw + ops.qw * k, ops.pw + ops.qw * -k,
+                                         ops.pu + ops.qu * k, ops.pu + ops.qu * -k))
+    return cache["slip"]
+
+
+def _assemble(ops: Operators, k: float, state: np.ndarray, cache: dict | None = None
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Matrix of the conditions for the given sets (it depends on nothing else).
 
     The slip shears are eliminated (``q_i = +-k p_i``), so the unknowns are the
@@ -200,29 +231,37 @@ def _assemble(ops: Operators, k: float,
     Rows: normal collocation on the contact elements, stick collocation, load.
     Returns ``(A, c, factor, stick)``: the contact elements ``c``, the factor
     with ``q_c = factor * p_c`` on the slip elements, and the positions (within
-    ``c``) of the stick elements.
+    ``c``) of the stick elements. ``A`` is in Fortran order (LAPACK's).
     """
     c = np.flatnonzero(state)
     m = c.size
     st = state[c]
     factor = np.zeros(m)
-    if 0.0 < k < np.inf:
-        factor[st == SLIP_INWARD] = k
-        factor[st == SLIP_OUTWARD] = -k
+    slipping = 0.0 < k < np.inf
+    if slipping:
+        inward, outward = st == SLIP_INWARD, st == SLIP_OUTWARD
+        factor[inward] = k
+        factor[outward] = -k
     stick = np.flatnonzero(st == STICK) if k > 0.0 else np.zeros(0, dtype=np.int64)
     cs = c[stick]
     ms = cs.size
     size = m + ms + 1
-    a = np.zeros((size, size))
-    # normal: w_i - delta = -r_i^2 / 2 on the contact elements
-    qw_c = ops.qw[c]
-    a[:m, :m] = ops.pw[np.ix_(c, c)] + qw_c[:, c] * factor[None, :]
-    a[:m, m:m + ms] = qw_c[:, cs]
+    a = np.zeros((size, size), order="F")
+    # normal: w_i - delta = -r_i^2 / 2 on the contact elements (a slip element's
+    # column carries its shear +-k p)
+    a[:m, :m] = _block(ops.pw, c, c)
+    a[:m, m:m + ms] = _block(ops.qw, c, cs)
     a[:m, -1] = -1.0
     # stick: u_i = u_i^old
-    qu_s = ops.qu[cs]
-    a[m:m + ms, :m] = ops.pu[np.ix_(cs, c)] + qu_s[:, c] * factor[None, :]
-    a[m:m + ms, m:m + ms] = qu_s[:, cs]
+    a[m:m + ms, :m] = _block(ops.pu, cs, c)
+    a[m:m + ms, m:m + ms] = _block(ops.qu, cs, cs)
+    if slipping:
+        w_in, w_out, u_in, u_out = _slip_columns(ops, k, {} if cache is None else cache)
+        for pos, w_mat, u_mat in ((np.flatnonzero(inward), w_in, u_in),
+                                  (np.flatnonzero(outward), w_out, u_out)):
+            if pos.size:
+                a[:m, pos] = _block(w_mat, c, c[pos])
+                a[m:m + ms, pos] = _block(u_mat, cs, c[pos])
     # load
     a[-1, :m] = ops.area[c]
     return a, c, factor, stick
@@ -239,20 +278,32 @@ def _rhs(ops: Operators, load: float, u_old: np.ndarray, c: np.ndarray,
     return b
 
 
-def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: np.ndarray,
-                du: np.ndarray, gap: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
-    """Proposed new sets, the size of each element's violation, and the residual.
+def _scales(ops: Operators, state: np.ndarray, p: np.ndarray, du: np.ndarray,
+            gap: np.ndarray) -> tuple[float, float, float]:
+    """Pressure, gap and slip scales of the switching tolerances and the residual.
 
-    Violations are scaled by the current pressure and displacement scales; the
-    residual is the largest scaled violation of any condition (complementarity,
-    sign and Coulomb), including those the current sets impose as equalities.
+    The gap scale is the larger of the largest gap and r^2 of the outermost
+    contact element; the slip scale is the largest slip increment, floored at
+    1e-6 of the gap scale (a^2/R) so that a step with no motion has a finite
+    scale.
     """
-    p_scale = max(float(np.max(np.abs(p))), 1e-300)
-    g_scale = max(float(np.max(ops.mid[state > 0] ** 2)) if np.any(state > 0) else 0.0,
-                  float(np.max(np.abs(gap))), 1e-300)
-    # slip increments: the largest one, floored at 1e-6 of the displacement scale
-    # (a^2/R, like the gap) so that a step with no motion has a finite scale
-    d_scale = max(float(np.max(np.abs(du))), 1e-6 * g_scale)
+    p_scale = max(float(np.abs(p).max()), 1e-300)
+    last = np.flatnonzero(state)[-1:]  # the midpoints increase outward
+    g_scale = max(float(ops.mid[last[0]] ** 2) if last.size else 0.0,
+                  float(np.abs(gap).max()), 1e-300)
+    d_scale = max(float(np.abs(du).max()), 1e-6 * g_scale)
+    return p_scale, g_scale, d_scale
+
+
+def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: np.ndarray,
+                du: np.ndarray, gap: np.ndarray,
+                scales: tuple[float, float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """Proposed new sets and the size of each element's violation.
+
+    Violations are scaled by the current pressure and displacement scales
+    (:func:`_scales`).
+    """
+    p_scale, g_scale, d_scale = scales
     tol_p, tol_g, tol_d = _REL_TOL * p_scale, _REL_TOL * g_scale, _REL_TOL * d_scale
     new = state.copy()
     viol = np.zeros(state.size)
@@ -263,19 +314,20 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
     gain = ~contact & (gap < -tol_g)
     new[lose] = SEPARATED
     viol[lose] = -p[lose] / p_scale
-    viol[gain] = -gap[gain] / g_scale
-    if k == 0.0 or np.isinf(k):
-        new[gain] = SLIP_INWARD if k == 0.0 else STICK
-    else:
-        # touching down: the projection rule at p = q = 0 with the element's own
-        # stiffnesses, i.e. stick if the traction that would hold the element
-        # (-du / qu_ii) is within k times the pressure that would push it back
-        # (-g / pw_ii); else slip against the increment
-        ii = np.flatnonzero(gain)
-        p_trial = -gap[ii] / ops.pw[ii, ii]
-        q_trial = -du[ii] / ops.qu[ii, ii]
-        new[ii] = np.where(np.abs(q_trial) <= k * p_trial, STICK,
-                           np.where(q_trial > 0.0, SLIP_INWARD, SLIP_OUTWARD))
+    ii = np.flatnonzero(gain)
+    if ii.size:
+        viol[ii] = -gap[ii] / g_scale
+        if k == 0.0 or np.isinf(k):
+            new[ii] = SLIP_INWARD if k == 0.0 else STICK
+        else:
+            # touching down: the projection rule at p = q = 0 with the element's own
+            # stiffnesses, i.e. stick if the traction that would hold the element
+            # (-du / qu_ii) is within k times the pressure that would push it back
+            # (-g / pw_ii); else slip against the increment
+            p_trial = -gap[ii] / ops.pw[ii, ii]
+            q_trial = -du[ii] / ops.qu[ii, ii]
+            new[ii] = np.where(np.abs(q_trial) <= k * p_trial, STICK,
+                               np.where(q_trial > 0.0, SLIP_INWARD, SLIP_OUTWARD))
 
     stay = contact & ~lose
     if k == 0.0:
@@ -284,36 +336,45 @@ def _violations(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: n
         new[stay] = STICK
     else:
         kp = k * np.maximum(p, 0.0)
-        stick = stay & (state == STICK)
-        over = stick & (np.abs(q) > kp + k * tol_p)
-        new[over & (q > 0)] = SLIP_INWARD
-        new[over & (q < 0)] = SLIP_OUTWARD
-        viol[over] = (np.abs(q[over]) - kp[over]) / p_scale
-        wrong_in = stay & (state == SLIP_INWARD) & (du > tol_d)
-        wrong_out = stay & (state == SLIP_OUTWARD) & (du < -tol_d)
-        wrong = wrong_in | wrong_out
-        new[wrong] = STICK
-        viol[wrong] = np.abs(du[wrong]) / d_scale
+        over = stay & (state == STICK) & (np.abs(q) > kp + k * tol_p)
+        if over.any():
+            new[over & (q > 0)] = SLIP_INWARD
+            new[over & (q < 0)] = SLIP_OUTWARD
+            viol[over] = (np.abs(q[over]) - kp[over]) / p_scale
+        wrong = stay & (((state == SLIP_INWARD) & (du > tol_d))
+                        | ((state == SLIP_OUTWARD) & (du < -tol_d)))
+        if wrong.any():
+            new[wrong] = STICK
+            viol[wrong] = np.abs(du[wrong]) / d_scale
+    return new, viol
 
-    # residual of every condition (the equalities of the current sets included)
-    res = 0.0
-    if np.any(contact):
-        res = max(res, float(np.max(np.abs(gap[contact]))) / g_scale,
-                  float(np.max(np.maximum(-p[contact], 0.0))) / p_scale)
-    if np.any(~contact):
-        res = max(res, float(np.max(np.maximum(-gap[~contact], 0.0))) / g_scale,
-                  float(np.max(np.abs(p[~contact]) + np.abs(q[~contact]))) / p_scale)
-    if k > 0.0 and np.any(contact):
+
+def _residual(k: float, state: np.ndarray, p: np.ndarray, q: np.ndarray, du: np.ndarray,
+              gap: np.ndarray, scales: tuple[float, float, float]) -> float:
+    """Largest scaled violation of any condition (complementarity, sign and Coulomb).
+
+    The equalities the current sets impose are included; scaled by
+    :func:`_scales`.
+    """
+    p_scale, g_scale, d_scale = scales
+    contact = state > 0
+    # contact: gap = 0, p >= 0; separated: gap >= 0, p = q = 0
+    res = np.where(contact, np.maximum(np.abs(gap) / g_scale, np.maximum(-p, 0.0) / p_scale),
+                   np.maximum(np.maximum(-gap, 0.0) / g_scale,
+                              (np.abs(p) + np.abs(q)) / p_scale))
+    if k > 0.0:
         kp = k * np.maximum(p, 0.0) if np.isfinite(k) else np.full(p.size, np.inf)
-        st = contact & (state == STICK)
-        if np.any(st):
-            res = max(res, float(np.max(np.abs(du[st]))) / d_scale,
-                      float(np.max(np.maximum(np.abs(q[st]) - kp[st], 0.0))) / p_scale)
-        sl = contact & (state >= SLIP_INWARD)
-        if np.any(sl):
-            res = max(res, float(np.max(np.abs(np.abs(q[sl]) - kp[sl]))) / p_scale,
-                      float(np.max(np.maximum(q[sl] * du[sl], 0.0))) / (p_scale * d_scale))
-    return new, viol, res
+        excess = np.abs(q) - kp
+        st = state == STICK
+        if st.any():  # stick: du = 0, |q| <= k p
+            res[st] = np.maximum(res[st], np.maximum(np.abs(du[st]) / d_scale,
+                                                     np.maximum(excess[st], 0.0) / p_scale))
+        sl = state >= SLIP_INWARD
+        if sl.any():  # slip: |q| = k p, q du <= 0
+            res[sl] = np.maximum(res[sl], np.maximum(
+                np.abs(excess[sl]) / p_scale,
+                np.maximum(q[sl] * du[sl], 0.0) / (p_scale * d_scale)))
+    return float(res.max())
 
 
 def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
@@ -338,7 +399,9 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
     cache : dict, optional
         Keeps the last LU factorization between calls (same ``ops`` and ``k``):
         the matrix depends only on the sets, so a step that starts from the
-        previous step's final sets reuses its factorization.
+        previous step's final sets reuses its factorization. It also keeps
+        the slip elements' columns ``pw +- k qw``, ``pu +- k qu`` of ``ops``
+        and ``k`` (:func:`_slip_columns`).
     w_shift, u_shift : ndarray, optional
         Displacements the step adds whatever its tractions (a viscoelastic
         body's memory, :func:`run_history`): w = pw p + qw q + w_shift,
@@ -353,22 +416,20 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
     seen: set[bytes] = {state.tobytes()}
     one_at_a_time = False
     p = q = u = gap = np.zeros(ops.n)
-    delta, res = 0.0, np.inf
+    delta, last = 0.0, None
     it = 0
     for it in range(1, max_iter + 1):
         key = state.tobytes()
         if cache.get("key") != key:
-            a, c, factor, stick = _assemble(ops, k, state)
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", linalg.LinAlgWarning)
-                lu = linalg.lu_factor(a, check_finite=False)
-            cache.update(key=key, lu=lu, c=c, factor=factor, stick=stick)
+            a, c, factor, stick = _assemble(ops, k, state, cache)
+            lu, piv, _ = _GETRF(a, overwrite_a=True)  # LAPACK directly: lu_factor's own call
+            cache.update(key=key, lu=(lu, piv), c=c, factor=factor, stick=stick)
         lu, c, factor, stick = cache["lu"], cache["c"], cache["factor"], cache["stick"]
         b = _rhs(ops, load, u_old, c, stick)
         if w_shift is not None:
             b[:c.size] -= w_shift[c]
             b[c.size:c.size + stick.size] -= u_shift[c[stick]]
-        x = linalg.lu_solve(lu, b, check_finite=False)
+        x = _GETRS(*lu, b, overwrite_b=True)[0]  # a singular U gives inf/nan (below)
         if not np.all(np.isfinite(x)):  # singular system for these sets
             cache.clear()
             break
@@ -387,9 +448,12 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             u += u_shift
         gap = w - delta + 0.5 * ops.mid**2
         du = u - u_old
-        new, viol, res = _violations(ops, k, state, p, q, du, gap)
+        scales = _scales(ops, state, p, du, gap)
+        last = (k, state, p, q, du, gap, scales)  # the residual's arguments, if kept
+        new, viol = _violations(ops, k, state, p, q, du, gap, scales)
         if np.array_equal(new, state):
-            return StepResult(p, q, u, gap, delta, _label(k, state, du), True, it, res)
+            return StepResult(p, q, u, gap, delta, _label(k, state, du), True, it,
+                              _residual(k, state, p, q, du, gap, scales))
         if one_at_a_time or new.tobytes() in seen:
             # a cycle: from now on change one element at a time, largest violation first
             one_at_a_time = True
@@ -399,6 +463,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             new = nxt
         seen.add(new.tobytes())
         state = new
+    res = np.inf if last is None else _residual(*last)
     return StepResult(p, q, u, gap, delta, _label(k, state, u - u_old), False, it, res)
 
 
@@ -716,6 +781,53 @@ def _window_max(values: np.ndarray, segment: np.ndarray) -> np.ndarray:
     return out
 
 
+def straddle(diff: np.ndarray, a: np.ndarray, segment: np.ndarray, touching: np.ndarray,
+              h: float) -> np.ndarray:
+    """``diff`` at a fine step inside a jump of the coarse run: at most its neighbours'.
+
+    With half the steps, the coarse run's steps are the fine run's even
+    steps, and an odd fine step takes a value interpolated between two coarse
+    steps. Where the stick radius jumps between those two (the stick zone
+    collapsing near the top of a reloading) the interpolated value lies far
+    from either and from the fine value, which has jumped at a step of its
+    own: the difference there is no error of the fine run. At such a step
+    (a coarse change over the two steps above two fine elements and more
+    than twice the coarse changes either side of it, both neighbours in the
+    same segment and in contact) the difference is at most the larger of
+    the two neighbours', where fine and coarse steps coincide.
+
+    Parameters
+    ----------
+    diff : ndarray
+        |fine - coarse| at every fine step (units of the quantity).
+    a : ndarray
+        The coarse values at the fine steps (exact at the even steps).
+    segment : ndarray of int
+        Path segment of every fine step.
+    touching : ndarray of bool
+        The fine run is in contact at the step.
+    h : float
+        Fine element size (units a_max).
+
+    Returns
+    -------
+    ndarray
+        ``diff`` with the steps inside a coarse jump lowered.
+    """
+    out = diff.copy()
+    size = diff.size
+    i = np.arange(1, size - 1, 2)
+    i = i[(segment[i - 1] == segment[i]) & (segment[i + 1] == segment[i])
+          & touching[i - 1] & touching[i + 1]]
+    centre = np.abs(a[i + 1] - a[i - 1])
+    before = np.where(i >= 3, np.abs(a[i - 1] - a[np.maximum(i - 3, 0)]), 0.0)
+    after = np.where(i + 3 < size, np.abs(a[np.minimum(i + 3, size - 1)] - a[i + 1]), 0.0)
+    jump = (centre > 2.0 * h) & (centre > 2.0 * (before + after))
+    j = i[jump]
+    out[j] = np.minimum(diff[j], np.maximum(diff[j - 1], diff[j + 1]))
+    return out
+
+
 def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.ndarray,
                     coarse: RawHistory, steps_coarse: int, segment_coarse: np.ndarray,
                     coarser: RawHistory | None = None, steps_coarser: int | None = None,
@@ -742,7 +854,11 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     takes ``|F - A|``: its step error is small (the advancing stick edge is
     resolved below the element size at every step), and the split estimate
     overstated its error up to 25-fold in the fretting paths of
-    ``benchmarks/report_history.py errors``.
+    ``benchmarks/report_history.py errors``. Where A's stick radius jumps
+    between two of its steps (the stick zone collapsing near the top of a
+    reloading) the fine steps in between take at most their neighbours'
+    difference (:func:`straddle`): the interpolated coarse value there is
+    no estimate of anything, and it had inflated the estimate 12-fold.
 
     Each estimate is the largest within two steps either side (same path
     segment). The stick radius is an element edge wherever its refinement
@@ -787,7 +903,10 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
         f = np.nan_to_num(getattr(fine, name))  # no contact: no stick zone
         a = coarse_values(coarse, steps_coarse, segment_coarse, name)
         if coarser is None or not split:
-            return _window_max(np.abs(f - a), segment)
+            diff = np.abs(f - a)
+            if not split and steps == 2 * steps_coarse:
+                diff = straddle(diff, a, segment, fine.contact_radius > 0, h)
+            return _window_max(diff, segment)
         s = a - coarse_values(coarser, steps_coarser, segment_coarser, name)
         return _window_max(np.abs(f - a - 0.5 * s) + 0.5 * np.abs(s), segment)
 

@@ -75,7 +75,7 @@ def test_dataset_carries_estimates_flags_and_max_error():
 
 def test_default_max_error_and_skipped_estimate():
     res = history("sphere", NU, 0.2, [0, 1], 8, n=40, error_estimate=False)
-    assert res.max_error == DEFAULT_MAX_ERROR == 1e-3
+    assert res.max_error == DEFAULT_MAX_ERROR == 1e-2  # a history's own default
     assert np.all(np.isnan(res.stick_radius_error_estimate))
     assert np.all(np.isnan(res.work_error_estimate))
     assert np.array_equal(res.resolved, res.converged & hs.annulus_resolved(0.2, res.state))
@@ -128,3 +128,21 @@ def test_work_estimate_with_opposite_mesh_and_step_errors():
     ref = history("sphere", NU, 0.2, PATHS["cycle"], 200, n=480, error_estimate=False)
     true = abs(res.frictional_work[-1] / ref.frictional_work[-1] - 1)
     assert true / 3 <= res.work_error_estimate[-1] <= 10 * true
+
+
+def test_coarse_jump_between_two_coarse_steps_is_not_an_error():
+    """A stick radius that jumps between two coarse steps (every other fine step): the
+    fine step in between keeps at most its neighbours' difference; a smooth change keeps
+    the interpolated difference."""
+    h = 0.01
+    segment = np.ones(9, dtype=int)
+    segment[0] = 0
+    touching = np.ones(9, dtype=bool)
+    a = np.array([0.0, 0.47, 0.47, 0.47, 0.47, 0.35, 0.24, 0.24, 0.24])  # odd: interpolated
+    f = np.array([0.0, 0.47, 0.47, 0.47, 0.46, 0.29, 0.25, 0.24, 0.24])
+    out = hs.straddle(np.abs(f - a), a, segment, touching, h)
+    assert out[5] == pytest.approx(0.01) and np.abs(f - a)[5] == pytest.approx(0.06)
+    np.testing.assert_array_equal(np.delete(out, 5), np.delete(np.abs(f - a), 5))
+    smooth = np.linspace(0.5, 0.3, 9)  # a steady change: not a jump
+    d = np.abs(smooth + 0.003 * (np.arange(9) % 2) - smooth)
+    np.testing.assert_array_equal(hs.straddle(d, smooth, segment, touching, h), d)

@@ -343,12 +343,13 @@ def build_parser() -> argparse.ArgumentParser:
                            "long), or one a segment, in the unit of tau")
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--max-error", metavar="E",
-                      default=f"{validate.HISTORY_DEFAULT_MAX_ERROR:g}",
+                      default=f"{validate.DEFAULT_MAX_ERROR:g}",
                       help="accuracy a step must reach, in (0, 1): a step whose estimated "
                            "error of the stick radius (in a_max) or relative error of the "
                            "frictional work exceeds it is flagged not resolved; "
-                           "default: %(default)s (a history's own: the default n and steps "
-                           "reach about 1 %%; 1e-3 needs about 4 n and 4 x steps)")
+                           "default: %(default)s, as for solve and sweep (the default n and "
+                           "steps reach about 1 %%, so ask for 1e-2 or refine: 1e-3 needs "
+                           "about 4 n and 4 x steps)")
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
 

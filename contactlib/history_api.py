@@ -89,7 +89,7 @@ MIN_N = validate.HISTORY_MIN_N
 MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
-DEFAULT_MAX_ERROR = validate.HISTORY_DEFAULT_MAX_ERROR  # a history's own: 1e-2
+DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
 _MIN_SPLIT_STEPS = 40  # fewer steps a segment: one coarse run (B would be too coarse)
 
 
@@ -364,12 +364,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     costs 26 ... 38 % of the run (CPU time, the default config's history
     scenes).
 
-    ``max_error`` defaults to 1e-2 for a history (1e-3 for self-similar
-    cases): the default n = 240 and 200 steps a segment give the cumulative
+    ``max_error`` defaults to 1e-3, as for self-similar cases. The
+    default n = 240 and 200 steps a segment give the cumulative
     work to about 1 % while loading (0.05 ... 0.4 % at the end of a cycle,
     truth n = 960, 800 steps) and an element-edge stick radius to a quarter
-    of an element; 1e-3 needs about 4 n and 4x steps. The ``message`` of a
-    flagged history names the n and steps that would resolve its last step.
+    of an element, so at the defaults a history is flagged unless it asks
+    for ``max_error=1e-2`` (as the workflow's history scenes do); 1e-3
+    needs about 4 n and 4x steps. The ``message`` of a flagged history
+    names the n and steps that would resolve its last step.
 
     Measured against the self-similar solver (sphere, nu = 0.3, monotonic
     loading): c/a within 0.25 % for c/a = 0.2 ... 0.9 at n = 120 ... 480 and

@@ -346,7 +346,7 @@ class HistoryScene:
     n: int
     slab_ratio: float
     hash: str
-    max_error: float = validate.HISTORY_DEFAULT_MAX_ERROR
+    max_error: float = validate.DEFAULT_MAX_ERROR
     kind: str = "history"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
@@ -400,7 +400,7 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry,
                      base or "smooth", validate.HISTORY_MESH_EXTENT)
     max_error = bad.check("max_error", validate.max_error,
-                          raw.get("max_error", validate.HISTORY_DEFAULT_MAX_ERROR))
+                          raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     ind = _scene_indenter(raw, nu, bad)
     prony = bad.check("relaxation", validate.relaxation, raw.get("relaxation"))
     durations = bad.check("duration", validate.duration, raw.get("duration"),

@@ -33,7 +33,6 @@ __all__ = [
     "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
     "EXTRAPOLATED_N_MULTIPLE",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
-    "HISTORY_DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
@@ -91,12 +90,6 @@ MAX_STEPS = 100_000
 
 DEFAULT_MAX_ERROR = 1e-3
 """Default accuracy asked of a result: a larger error estimate is not resolved."""
-HISTORY_DEFAULT_MAX_ERROR = 1e-2
-"""Default accuracy asked of a loading history's steps (docs/accuracy.md, "History"):
-the default history (n = 240, 200 steps a segment) is in error by about 1 % in the
-cumulative work while loading and half an element (0.0025 a_max) in an element-edge
-stick radius; 1e-3 needs about four times the elements and the steps."""
-
 MIN_TOLERANCE = 1e-8
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""

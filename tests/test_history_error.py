@@ -75,7 +75,7 @@ def test_dataset_carries_estimates_flags_and_max_error():
 
 def test_default_max_error_and_skipped_estimate():
     res = history("sphere", NU, 0.2, [0, 1], 8, n=40, error_estimate=False)
-    assert res.max_error == DEFAULT_MAX_ERROR == 1e-2  # a history's own default
+    assert res.max_error == DEFAULT_MAX_ERROR == 1e-3  # the default of every command
     assert np.all(np.isnan(res.stick_radius_error_estimate))
     assert np.all(np.isnan(res.work_error_estimate))
     assert np.array_equal(res.resolved, res.converged & hs.annulus_resolved(0.2, res.state))

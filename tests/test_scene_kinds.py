@@ -26,7 +26,7 @@ def test_history_scene_parses_with_every_friction():
     assert isinstance(s, HistoryScene) and s.frictions == (0.3, 0.1)
     assert s.run_spec(1) == {"geometry": "sphere", "nu": 0.3, "friction": 0.1,
                              "load_path": [0.0, 1.0, 0.0], "steps": 4, "n": 40,
-                             "slab_ratio": 0.0, "max_error": 1e-2}  # a history's default
+                             "slab_ratio": 0.0, "max_error": 1e-3}  # the default, as for every case
     assert parse_scene("h", dict(HIST, friction=0.2)).frictions == (0.2,)
 
 

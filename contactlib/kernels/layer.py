@@ -102,7 +102,9 @@ sums each cell's points with one small matrix product (``_chebyshev_eval``).
 absolute error would be multiplied by ``h`` or ``h^2``; there the double power
 series of the Bessel functions is summed instead, with the moments
 ``M_k = int_0^inf R(t) t^k dt`` (same quadrature on ``t < 96``; 14 terms a
-variable; 2e-14 relative against the quadrature). The leading term gives the
+variable; 2e-14 relative against the quadrature). It hands over to the table
+smoothly: the share ``b(rho) b(sigma)`` of the series, ``b`` = 1 below 0.2 and
+0 from 0.25, quintic between (``_series_weight``), so nothing jumps. The leading term gives the
 thick-layer limit, e.g. for the pressure ``w - w_halfspace -> (s^2/h)
 M_0(Rww)`` (uniform, O(s/h) relative).
 
@@ -135,6 +137,7 @@ _CELL = 0.5  # table cell width in rho and sigma
 _DEG = 10  # Chebyshev degree in each variable
 _N_CELLS = int(round(RATIO_MAX / _CELL))
 _SERIES_MAX = 0.25  # max(rho, sigma) below which the power series is used
+_BLEND = 0.05  # the series hands over to the table smoothly over _SERIES_MAX - _BLEND ... MAX
 _SERIES_TERMS = 14
 _T_MAX = 24.0
 _T_PANEL = 0.25
@@ -478,19 +481,34 @@ def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
     return out
 
 
+def _series_weight(z: Arr) -> Arr:
+    """The series' share b(z): 1 below _SERIES_MAX - _BLEND, 0 from _SERIES_MAX, C^2 between.
+
+    A point takes b(rho) b(sigma) of the series and the rest of the table: a product, so
+    that the grid and integrated evaluations keep their tensor structure, and no jump (the
+    table's ~1e-12 error against the series at the switch was one: the default method's
+    finest elements next to a stick edge there turned it into k errors of ~1e-5).
+    """
+    x = np.clip((np.asarray(z, dtype=float) - (_SERIES_MAX - _BLEND)) / _BLEND, 0.0, 1.0)
+    return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)
+
+
 def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
     """(3, n) remainder functions of ``kind`` at 1-d (rho, sigma), chunk by chunk."""
     out = np.empty((3, rho.size))
     for a in range(0, rho.size, _CHUNK):
         sl = slice(a, a + _CHUNK)
         r, g = rho[sl], sigma[sl]
-        small = np.maximum(r, g) < _SERIES_MAX
-        if small.all():
+        m = np.maximum(r, g)
+        if np.all(m < _SERIES_MAX - _BLEND):
             out[:, sl] = _series_eval(tab.series[kind], r, g)
             continue
         val = _chebyshev_eval(tab.coef[kind], r, g)
+        small = m < _SERIES_MAX
         if small.any():
-            val[:, small] = _series_eval(tab.series[kind], r[small], g[small])
+            b = _series_weight(r[small]) * _series_weight(g[small])
+            ser = _series_eval(tab.series[kind], r[small], g[small])
+            val[:, small] += b * (ser - val[:, small])
         out[:, sl] = val
     return out
 
@@ -540,8 +558,10 @@ def _remainders_grid(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
     small_r = np.flatnonzero(rho < _SERIES_MAX)
     small_s = np.flatnonzero(sigma < _SERIES_MAX)
     if small_r.size and small_s.size:
-        out[:, small_r[:, None], small_s[None, :]] = _series_grid(
-            tab.series[kind], rho[small_r], sigma[small_s])
+        idx = (slice(None), small_r[:, None], small_s[None, :])
+        b = _series_weight(rho[small_r])[:, None] * _series_weight(sigma[small_s])[None, :]
+        ser = _series_grid(tab.series[kind], rho[small_r], sigma[small_s])
+        out[idx] += b * (ser - out[idx])
     return out
 
 
@@ -568,6 +588,9 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
     coef = tab.coef[kind]
     small_r = rho < _SERIES_MAX
     n_small = int(np.searchsorted(sigma, _SERIES_MAX))  # sigma[:n_small] < _SERIES_MAX
+    b_r = _series_weight(rho)  # the series' share b(rho) b(sigma) (_series_weight)
+    wb = weights[:n_small] * _series_weight(sigma[:n_small])
+    tywb = tyw[:, :n_small] * _series_weight(sigma[:n_small])
     used = np.unique(cj)
     # left[b, i] = the coefficients of cell (cell of rho_i, b) summed against T(x_i): (f l)
     left = np.empty((used.size, rho.size, 3 * (_DEG + 1)))
@@ -584,16 +607,18 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
             starts, cols = _segments(owner[lo:hi])
             ib = np.add.reduceat(tyw[:, lo:hi], starts, axis=1)  # (l, segments)
             block = (lb @ ib).reshape(rho.size, 3, -1).transpose(1, 0, 2)
-            if series_cols:  # rows in the series' range take the series there
-                block = block * ~small_r[None, :, None]
+            if series_cols:  # the table's share 1 - b(rho) b(sigma) there
+                ibb = np.add.reduceat(tywb[:, lo:hi], starts, axis=1)
+                block = block - (lb @ ibb).reshape(rho.size, 3, -1).transpose(1, 0, 2) \
+                    * b_r[None, :, None]
             out[:, :, int(cols[0]):int(cols[-1]) + 1] += block  # a run's owners are consecutive
     rs = np.flatnonzero(small_r)
     if rs.size and n_small:
         starts, cols = _segments(owner[:n_small])
         for f, (pref, amat, rv) in enumerate(_series_factors(tab.series[kind], rho[rs],
                                                              sigma[:n_small])):
-            bmat = np.add.reduceat(amat * (pref * weights[:n_small])[:, None], starts, axis=0)
-            out[f, rs[:, None], cols[None, :]] += rv @ bmat.T
+            bmat = np.add.reduceat(amat * (pref * wb)[:, None], starts, axis=0)
+            out[f, rs[:, None], cols[None, :]] += (rv * b_r[rs, None]) @ bmat.T
     return out
 
 

@@ -580,7 +580,6 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
     contracted with the Chebyshev polynomials in sigma first, so the cost is
     ~10 (rho.size) (n_out) a function and cell instead of rho.size sigma.size.
     """
-    out = np.zeros((3, rho.size, n_out))
     ci, x = _cells(rho)
     cj, y = _cells(sigma)
     tx = _chebyshev_basis(x)  # (k, i)
@@ -592,26 +591,53 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
     wb = weights[:n_small] * _series_weight(sigma[:n_small])
     tywb = tyw[:, :n_small] * _series_weight(sigma[:n_small])
     used = np.unique(cj)
-    # left[b, i] = the coefficients of cell (cell of rho_i, b) summed against T(x_i): (f l)
-    left = np.empty((used.size, rho.size, 3 * (_DEG + 1)))
+    nl = _DEG + 1
+    # left[u] (f i, l): the coefficients of cell (cell of rho_i, used[u]) summed against
+    # T(x_i); one matrix product a rho cell (all sigma cells at once)
+    left = np.empty((used.size, 3, rho.size, nl))
+    span = slice(int(used[0]), int(used[-1]) + 1) \
+        if used[-1] - used[0] + 1 == used.size else used  # a view where the cells are a run
     for a, rows in _groups(ci):
-        cells = coef[a * _N_CELLS + used]  # (b, f l, k)
-        left[:, rows, :] = np.einsum("ki,bjk->bij", tx[:, rows], cells, optimize=True)
-    slot = {int(b): i for i, b in enumerate(used.tolist())}
-    bounds = np.flatnonzero(np.r_[True, cj[1:] != cj[:-1], True])
-    for c0, c1 in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
-        lb = left[slot[int(cj[c0])]].reshape(-1, _DEG + 1)  # (i f, l)
-        for lo, hi, series_cols in ((c0, min(c1, n_small), True), (max(c0, n_small), c1, False)):
-            if lo >= hi:
-                continue
-            starts, cols = _segments(owner[lo:hi])
-            ib = np.add.reduceat(tyw[:, lo:hi], starts, axis=1)  # (l, segments)
-            block = (lb @ ib).reshape(rho.size, 3, -1).transpose(1, 0, 2)
-            if series_cols:  # the table's share 1 - b(rho) b(sigma) there
-                ibb = np.add.reduceat(tywb[:, lo:hi], starts, axis=1)
-                block = block - (lb @ ibb).reshape(rho.size, 3, -1).transpose(1, 0, 2) \
-                    * b_r[None, :, None]
-            out[:, :, int(cols[0]):int(cols[-1]) + 1] += block  # a run's owners are consecutive
+        prod = coef[a * _N_CELLS:(a + 1) * _N_CELLS][span].reshape(-1, nl) @ tx[:, rows]
+        left[:, :, rows, :] = prod.reshape(used.size, 3, nl, -1).transpose(0, 1, 3, 2)
+    left = left.reshape(used.size, 3 * rho.size, nl)
+    # runs of q in one sigma cell, of one owner, on one side of n_small; their sums of T(y) w
+    cut = np.r_[True, (cj[1:] != cj[:-1]) | (owner[1:] != owner[:-1])]
+    if 0 < n_small < sigma.size:
+        cut[n_small] = True
+    starts = np.flatnonzero(cut)
+    ib = np.add.reduceat(tyw, starts, axis=1)  # (l, runs)
+    k_small = int(np.searchsorted(starts, n_small))  # runs [0, k_small): sigma < _SERIES_MAX
+    if k_small:  # the table's share 1 - b(rho) b(sigma) there: b(rho) b(sigma) T subtracted
+        ibb = np.add.reduceat(tywb, starts[:k_small], axis=1)
+        b_fi = np.tile(b_r, 3)[:, None]
+    run_cell = np.searchsorted(used, cj[starts])
+    per_run = np.empty((3 * rho.size, starts.size))  # (f i, run)
+    bounds = np.flatnonzero(np.r_[True, run_cell[1:] != run_cell[:-1], True])
+    for r0, r1 in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
+        lf = left[run_cell[r0]]  # (f i, l)
+        per_run[:, r0:r1] = lf @ ib[:, r0:r1]
+        if r0 < k_small:
+            r2 = min(r1, k_small)
+            per_run[:, r0:r2] -= (lf @ ibb[:, r0:r2]) * b_fi
+    # each owner's runs into its column: the first run of each, then the rest (an element
+    # across a cell edge)
+    per_run = per_run.reshape(3, rho.size, starts.size)
+    run_owner = owner[starts]
+    first = np.r_[True, run_owner[1:] != run_owner[:-1]]
+    rest = np.flatnonzero(~first)
+    owners = run_owner[first]
+    if owners.size == n_out and owners[-1] == n_out - 1:  # every owner 0 ... n_out - 1
+        out = per_run if rest.size == 0 else per_run[:, :, np.flatnonzero(first)]
+    else:
+        out = np.zeros((3, rho.size, n_out))
+        out[:, :, owners] = per_run[:, :, first]
+    if rest.size:
+        extra = run_owner[rest]
+        if np.all(np.diff(extra) > 0):  # no owner twice among them
+            out[:, :, extra] += per_run[:, :, rest]
+        else:
+            np.add.at(out, (slice(None), slice(None), extra), per_run[:, :, rest])
     rs = np.flatnonzero(small_r)
     if rs.size and n_small:
         starts, cols = _segments(owner[:n_small])

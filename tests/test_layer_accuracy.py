@@ -111,3 +111,79 @@ def test_convergence_study_honours_the_base():
     assert io.study_from_dataset(ds).base == "bonded"
     with pytest.raises(ValueError, match="base"):
         convergence.study(*args, slab_ratio=1.0, reference=bonded)
+
+
+def _j0_minus_1(x):
+    """J0(x) - 1 by its power series (no cancellation; x <= 5 here)."""
+    x2 = (x / 2.0) ** 2
+    term, out = np.ones_like(x), np.zeros_like(x)
+    for m in range(1, 40):
+        term = term * (-x2) / (m * m)
+        out = out + term
+    return out
+
+
+def _axis_difference_by_transform(kind, r, s, nu, base):
+    """w(r) - w(0) of the remainder (h = 1) from its Hankel integral with J0 - 1 summed as
+    a series: written here from docs/theory.md, independent of the table."""
+    from scipy import special
+    t, w = np.polynomial.legendre.leggauss(30)
+    edges = np.arange(0.0, 30.0 + 1e-9, 0.1)
+    lo, hi = edges[:-1, None], edges[1:, None]
+    tt, ww = (0.5 * (hi - lo) * t + 0.5 * (hi + lo)).ravel(), (0.5 * (hi - lo) * w).ravel()
+    rww, rwu, _ = layer.remainder_transfer(tt, nu, base)
+    s = np.asarray(s)[:, None]
+    if kind == "pressure":
+        return 2 * s[:, 0] * ((rww * special.j1(s * tt) * _j0_minus_1(r * tt) / tt) @ ww)
+    return -2 * s[:, 0] ** 2 * ((rwu * special.jv(2, s * tt) * _j0_minus_1(r * tt) / tt) @ ww)
+
+
+@pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.3), ("bonded", 0.5)])
+def test_remainder_axis_difference_keeps_its_digits(base, nu):
+    """remainder_axis_w against the transform with J0 - 1 as a series, r/h = 1e-7 ... 0.15.
+
+    Measured: <= 9.5e-7 relative for r/h <= 0.01 (the interpolant's second derivative),
+    <= 1e-5 at 0.15; subtracting two table values instead loses everything at 1e-7
+    (their round-off is 1e-16 of w, the difference 1e-14 of it)."""
+    rng = np.random.default_rng(0)
+    s = np.concatenate([rng.uniform(0.0, 0.3, 12), rng.uniform(0.3, 19.0, 12)])
+    for r, tol in ((1e-7, 2e-6), (1e-4, 2e-6), (1e-2, 2e-6), (0.15, 3e-5)):
+        for kind in ("pressure", "shear"):
+            got = layer.remainder_axis_w(kind, r, s, nu, 1.0, base)
+            ref = _axis_difference_by_transform(kind, r, s, nu, base)
+            assert np.max(np.abs(got - ref) / np.abs(ref)) < tol, (r, kind)
+
+
+def test_u_near_the_axis_is_odd_in_r():
+    """u of the remainder near the axis (r/h down to 1e-8) to 3e-9 relative in all three
+    evaluations; the interpolant's even part (~1e-12 at r = 0) would be 1e-4 of u there."""
+    tab = layer.layer_table(0.3, "bonded")
+    rho = np.array([1e-8, 1e-6, 1e-3, 0.03, 0.049])
+    sig = np.array([0.5, 3.0, 7.3, 12.0, 19.0])
+    for kind in ("pressure", "shear"):
+        ref = layer._remainder_quadrature(kind, rho, sig, 0.3, "bonded")[1]
+        grid = layer._remainders_grid(kind, rho, sig, tab)[1]
+        rr, ss = np.meshgrid(rho, sig, indexing="ij")
+        scattered = layer._remainders(kind, rr.ravel(), ss.ravel(), tab)[1].reshape(rr.shape)
+        summed = layer._remainders_integrated(kind, rho, sig, np.ones(sig.size),
+                                              np.arange(sig.size), sig.size, tab)[1]
+        for got in (grid, scattered, summed):
+            assert np.max(np.abs(got / ref - 1.0)) < 3e-9, kind
+
+
+def test_tiny_stick_zone_on_a_layer():
+    """Sphere, bonded, a/h = 1, c/a = 1e-6 (axis-referenced rows on the layer now).
+
+    Measured k: 0.007915432, 0.007915942, 0.007915840 at n = 64, 128, 256 (the last
+    within 2e-8 of k with the remainder's element integrals from the quadrature itself,
+    a one-off check; estimate 1.8e-5);
+    with the plain rows and the interpolant's even part in u near the axis, n = 256 gave
+    0.007916426 (7e-5 off) and n = 512 0.007919238. The estimate at n = 64 covers the
+    difference to n = 256."""
+    kw = dict(stick_ratio=1e-6, slab_ratio=1.0, base="bonded", energy=False)
+    coarse = contactlib.solve("sphere", 0.3, n=64, **kw)
+    fine = contactlib.solve("sphere", 0.3, n=256, **kw)
+    assert coarse.resolved and fine.resolved
+    diff = abs(coarse.friction_coefficient / fine.friction_coefficient - 1.0)
+    assert diff <= coarse.error_estimate
+    assert fine.error_estimate < 3e-5

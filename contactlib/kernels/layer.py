@@ -125,8 +125,8 @@ from scipy import special
 from . import disc
 from ..theory import beta_of_nu
 
-__all__ = ["BASES", "RATIO_MAX", "LayerTable", "layer_table", "pressure_disc",
-           "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
+__all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "LayerTable", "layer_table", "pressure_disc",
+           "remainder_axis_w", "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
 
 Arr = NDArray[np.float64]
 
@@ -443,6 +443,35 @@ def _chebyshev_basis(z: Arr) -> Arr:
     return tz
 
 
+_PARITY_MAX = 0.05  # rho below which u takes the odd part of its interpolant in rho ...
+_PARITY_FULL = 0.03  # ... wholly below this, blended (C^2) between
+
+
+def _parity_weight(rho: Arr) -> Arr:
+    """The odd part's share in u: 1 below _PARITY_FULL, 0 from _PARITY_MAX, quintic between."""
+    x = np.clip((rho - _PARITY_FULL) / (_PARITY_MAX - _PARITY_FULL), 0.0, 1.0)
+    return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)
+
+
+def _odd_basis(rho: Arr) -> Arr:
+    """(_DEG + 1, n): the part of T_k(4 rho - 1) odd in rho (rho in the first cell).
+
+    T_k(-1 + d) = sum_m M[k, m] d^m with d = 4 rho (:func:`_axis_powers`); the
+    odd powers. u (a J1 transform) is odd in rho; the interpolant's even part
+    (~1e-12 at rho = 0) is its error, which near the axis, where u ~ rho, would
+    be a relative error of 1e-12/rho in the stick zone's rows.
+    """
+    d = 4.0 * rho
+    return _ODD_POWERS @ (d[None, :] ** np.arange(1, _DEG + 1, 2)[:, None])
+
+
+def _u_near_axis(coef: NDArray[np.float64], rho: Arr, cell_j: NDArray[np.intp],
+                 ty: Arr) -> Arr:
+    """u at scattered points (rho_n in the first rho cell, sigma cell cell_j[n], T(y) ty)."""
+    cu = coef[cell_j, _DEG + 1:2 * (_DEG + 1), :]  # (n, l, k): u's rows of cell (0, j)
+    return np.einsum("nlk,kn,ln->n", cu, _odd_basis(rho), ty, optimize=True)
+
+
 def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
     """(3, n) values of the tabulated functions at (rho, sigma) in the table range.
 
@@ -504,6 +533,11 @@ def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
             out[:, sl] = _series_eval(tab.series[kind], r, g)
             continue
         val = _chebyshev_eval(tab.coef[kind], r, g)
+        near = np.flatnonzero(r < _PARITY_MAX)
+        if near.size:  # u: the odd part of the interpolant in rho
+            j, y = _cells(g[near])
+            odd = _u_near_axis(tab.coef[kind], r[near], j, _chebyshev_basis(y))
+            val[1, near] += _parity_weight(r[near]) * (odd - val[1, near])
         small = m < _SERIES_MAX
         if small.any():
             b = _series_weight(r[small]) * _series_weight(g[small])
@@ -555,6 +589,14 @@ def _remainders_grid(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
                 out[:, rows, cols] = block
             else:
                 out[:, np.arange(rho.size)[rows][:, None], np.arange(sigma.size)[cols]] = block
+    near = np.flatnonzero(rho < _PARITY_MAX)
+    if near.size:  # u: the odd part of the interpolant in rho
+        todd = _odd_basis(rho[near]).T  # (i, k)
+        for b, cols in col_groups:
+            cu = coef[b, _DEG + 1:2 * (_DEG + 1), :]  # (l, k): u's rows of cell (0, b)
+            idx = (1, near[:, None], np.arange(sigma.size)[cols])
+            out[idx] += _parity_weight(rho[near])[:, None] * ((todd @ cu.T) @ ty[:, cols]
+                                                              - out[idx])
     small_r = np.flatnonzero(rho < _SERIES_MAX)
     small_s = np.flatnonzero(sigma < _SERIES_MAX)
     if small_r.size and small_s.size:
@@ -600,6 +642,12 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
     for a, rows in _groups(ci):
         prod = coef[a * _N_CELLS:(a + 1) * _N_CELLS][span].reshape(-1, nl) @ tx[:, rows]
         left[:, :, rows, :] = prod.reshape(used.size, 3, nl, -1).transpose(0, 1, 3, 2)
+    near = np.flatnonzero(rho < _PARITY_MAX)
+    if near.size:  # u: the odd part of the interpolant in rho
+        cu = coef[used, nl:2 * nl, :]  # (u, l, k): u's rows of the cells (0, used)
+        odd = np.matmul(cu, _odd_basis(rho[near])).transpose(0, 2, 1)  # (u, i, l)
+        left[:, 1, near, :] += _parity_weight(rho[near])[None, :, None] * (
+            odd - left[:, 1, near, :])
     left = left.reshape(used.size, 3 * rho.size, nl)
     # runs of q in one sigma cell, of one owner, on one side of n_small; their sums of T(y) w
     cut = np.r_[True, (cj[1:] != cj[:-1]) | (owner[1:] != owner[:-1])]
@@ -646,6 +694,85 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
             bmat = np.add.reduceat(amat * (pref * wb)[:, None], starts, axis=0)
             out[f, rs[:, None], cols[None, :]] += (rv * b_r[rs, None]) @ bmat.T
     return out
+
+
+AXIS_RHO_MAX = _SERIES_MAX - _BLEND  # r/h below which remainder_axis_w applies (series share 1)
+
+
+def _axis_powers() -> Arr:
+    """(k, m): T_k(-1 + d) = sum_m [k, m] d^m, m = 0 ... _DEG.
+
+    T_k(1 - d) = k sum_m (-2)^m (k + m - 1)! / ((k - m)! (2m)!) d^m (k >= 1), and
+    T_k(-1 + d) = (-1)^k T_k(1 - d).
+    """
+    out = np.zeros((_DEG + 1, _DEG + 1))
+    out[0, 0] = 1.0
+    for k in range(1, _DEG + 1):
+        for m in range(k + 1):
+            out[k, m] = (-1.0) ** k * k * (-2.0) ** m * factorial(k + m - 1) / (
+                factorial(k - m) * factorial(2 * m))
+    return out
+
+
+_AXIS_POWERS = _axis_powers()[:, 2::2]  # the even powers from d^2 (differences from the axis)
+_ODD_POWERS = _axis_powers()[:, 1::2]  # the odd powers
+
+
+def remainder_axis_w(kind: str, r: ArrayLike, s: ArrayLike, nu: float, h: float,
+                     base: str) -> Arr:
+    """w(r; s) - w(0; s) of the layer's smooth remainder, without cancellation.
+
+    Parameters
+    ----------
+    kind : {"pressure", "shear"}
+        The basic load (unit pressure, or shear q = r, on the disc of radius s).
+    r, s : array_like
+        Surface points and disc radii (broadcast; ``s <= 0`` gives 0), with
+        ``r/h <= AXIS_RHO_MAX`` (0.2) and ``max(r, s)/h <= RATIO_MAX``.
+    nu, h, base :
+        As :func:`pressure_disc` (``h`` finite).
+
+    Returns
+    -------
+    ndarray
+        The difference (units of w), O(r^2) near the axis, with the relative
+        accuracy of the remainder's second derivative: the table's Chebyshev
+        sum in rho is differenced term by term as polynomials in d = 4 rho,
+        keeping the even powers (the function is even in rho; the odd powers
+        are interpolation error, ~2e-11 rho, which would swamp r^2 near the
+        axis), and the power series drops its rho^0 term; nothing is
+        subtracted.
+        Added to the half-space's :func:`contactlib.kernels.disc.axis_w_disc`
+        it gives the layer's axis-referenced rows of the default method.
+    """
+    if kind not in _SPECS:
+        raise ValueError(f"kind must be 'pressure' or 'shear', got {kind!r}")
+    nu, h, base = _check_layer(nu, h, base)
+    rb, sb = np.broadcast_arrays(np.abs(np.asarray(r, dtype=float)),
+                                 np.asarray(s, dtype=float))
+    shape = rb.shape
+    rho, sigma, pos = _scaled_rho_sigma(rb.ravel(), sb.ravel(), h)
+    if rho.size and rho.max() > AXIS_RHO_MAX:
+        raise ValueError(f"remainder_axis_w needs r/h <= {AXIS_RHO_MAX}, got {rho.max():.3g}")
+    tab = layer_table(nu, base)
+    nl = _DEG + 1
+    # table: cell (0, j); w's coefficients c[l, k] of T_k(4 rho - 1) T_l(y), each T_k as a
+    # polynomial in d = 4 rho with its even powers only (the remainder is even in rho; the
+    # odd ones are the interpolant's error, which would dominate as rho -> 0)
+    j, y = _cells(sigma)
+    d = 4.0 * rho
+    dk = _AXIS_POWERS @ (d[None, :] ** np.arange(2, nl, 2)[:, None])  # (k, n)
+    coef = tab.coef[kind][j, :nl, :]  # (n, l, k): the w rows of cell (0, j)
+    table = np.einsum("nlk,kn,ln->n", coef, dk, _chebyshev_basis(y), optimize=True)
+    out = table
+    small = sigma < _SERIES_MAX
+    if small.any():  # the series' share b(sigma) (b(rho) = 1 here), its rho^0 term dropped
+        pref, amat, rv = next(_series_factors(tab.series[kind], rho[small], sigma[small]))
+        series = pref * np.einsum("nl,nl->n", amat[:, 1:], rv[:, 1:])
+        b = _series_weight(sigma[small])
+        out[small] += b * (series - out[small])
+    out = np.where(pos, out, 0.0) * _scales(kind, h)[0]
+    return out.reshape(shape)
 
 
 def _grid_axes(r: Arr, s: Arr) -> bool:

@@ -29,6 +29,15 @@ k instead of a resolution. Two steps:
    cannot be met at MAX_N is reported as such, never silently.
 
 Both use relative errors, |k_n - k| / k.
+
+**Layers.** The error models were measured on the half-space (sphere) and on
+the half-plane and the paper's smooth slab a/h = 0.05 (cylinder) only
+(:func:`planned_body`). On any other layer the plan takes the default
+method alone, whose n^-2 model serves only as the starting n: the a
+posteriori check (step 2), which covers the difference to a solution
+refined fourfold on layers too (docs/validation.md#layers), then decides
+the n. The extrapolated method is not planned there: neither its error
+model nor its own estimate has been measured on a layer.
 """
 
 from __future__ import annotations
@@ -44,7 +53,8 @@ from .model import Contact
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
            "plan", "estimate", "solve_to_tolerance",
            "resolving_n", "DEFAULT_MAX_ERROR", "EXTRAPOLATED_ERROR_AT_256", "RELATIVE_COST",
-           "PLANNED_METHODS", "predicted_method_error", "relative_cost"]
+           "PLANNED_METHODS", "predicted_method_error", "relative_cost", "planned_body",
+           "MODEL_SLAB_RATIO"]
 
 MAX_N = validate.MAX_N
 MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
@@ -82,6 +92,23 @@ RELATIVE_COST = {"default": 1.0, "extrapolated": 1.5}
 # study's medians (SAFETY), the extrapolated method's constant is the largest error measured
 # over 30 cases (1.5 is enough: 6.5e-7 x 1.5 < 1e-6)
 PLAN_SAFETY = {"default": SAFETY, "extrapolated": 1.5}
+# The largest a/h of the (smooth-base) slab the error models were measured on: the paper's
+# cylinder case, a/h = 1/20 (the sphere's models are the half-space's alone)
+MODEL_SLAB_RATIO = {"sphere": 0.0, "cylinder": 0.05}
+
+
+def planned_body(geometry: Contact) -> bool:
+    """Whether the planner's error models were measured on ``geometry``'s body.
+
+    True on the half-space or half-plane, and for the cylinder on the smooth
+    slab up to a/h = :data:`MODEL_SLAB_RATIO` (the paper's case); False on
+    every other layer, where :func:`plan` takes the default method alone.
+    """
+    body = geometry.body
+    if body.is_half_space:
+        return True
+    limit = MODEL_SLAB_RATIO.get(geometry.indenter.name, 0.0)
+    return body.base == "smooth" and float(body.slab_ratio) <= limit
 
 
 def predicted_method_error(method: str, geometry: str, stick_ratio: float, n: int) -> float:
@@ -149,6 +176,10 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     some n, the one of least :func:`relative_cost` (the extrapolated method
     from about 1e-5 down: 1e-6 costs it n = 256, the default n = 2048).
 
+    On a layer the models were not measured on (:func:`planned_body`) only
+    the default method is planned, its n^-2 model giving the starting n; the
+    a posteriori check after the solve decides the n used.
+
     Raises
     ------
     ValueError
@@ -156,6 +187,11 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
         worst stick ratio and the n it would need).
     """
     tol = check_tolerance(tolerance)
+    layer_note = ""
+    if not planned_body(geometry):
+        methods = ("default",)
+        layer_note = (" (on this layer only the default method is planned: the error models "
+                      "were measured on the half-space)")
     if tuple(methods) != ("default",):
         options = []
         for method in methods:
@@ -182,7 +218,7 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     if n > MAX_N:
         raise ValueError(f"tolerance {tol:g} needs about n = {n} at c/a = {worst:g} (measured "
                          f"k error {e256:.1e} at n = 256, falling like n^-2), beyond the "
-                         f"largest supported n = {MAX_N}")
+                         f"largest supported n = {MAX_N}{layer_note}")
     return "default", n
 
 

@@ -129,15 +129,23 @@ class ElasticBody:
                     ref: float = 0.0) -> Displacements:
         """(w(x) - w(ref), 0, 0) of the disc load of ``part``, without cancellation.
 
-        :func:`contactlib.kernels.disc.w_difference_disc`. A layer raises
-        NotImplementedError (its smooth remainder has no difference form yet;
-        the default method then keeps its plain normal rows).
+        :func:`contactlib.kernels.disc.w_difference_disc`. On a layer, relative
+        to the axis (ref = 0) and for x/h <= :data:`contactlib.kernels.layer.AXIS_RHO_MAX`:
+        the half-space's difference plus the remainder's
+        (:func:`contactlib.kernels.layer.remainder_axis_w`). Otherwise a layer
+        raises NotImplementedError (the default method then keeps its plain
+        normal rows).
         """
-        if not self.is_half_space:
+        if self.is_half_space:
+            return disc.w_difference_disc(x, ref, s, self.nu, part)
+        h = self.thickness
+        if ref != 0.0 or np.max(np.abs(x), initial=0.0) > layer.AXIS_RHO_MAX * h:
             raise NotImplementedError(
-                f"no cancellation-free w(x) - w(ref) of ring loads on a layer "
-                f"(slab_ratio = {self.slab_ratio!r})")
-        return disc.w_difference_disc(x, ref, s, self.nu, part)
+                f"no cancellation-free w(x) - w(ref) of ring loads on a layer away from the "
+                f"axis (slab_ratio = {self.slab_ratio!r}, ref = {ref!r})")
+        dw, zero, zero2 = disc.w_difference_disc(x, 0.0, s, self.nu, part)
+        kind = "pressure" if part == "normal" else "shear"
+        return dw + layer.remainder_axis_w(kind, x, s, self.nu, h, self.base), zero, zero2
 
     @property
     def ring_kernel_degrees(self) -> np.ndarray | None:

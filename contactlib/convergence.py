@@ -42,6 +42,9 @@ class Study:
     ----------
     geometry, nu, method, slab_ratio
         The problem, as for :func:`contactlib.solve`.
+    base : {"smooth", "bonded"}
+        The layer's rigid base (as for :func:`contactlib.solve`; "smooth" on
+        the half-space).
     ns : tuple of int
         Resolutions (elements), each twice the previous.
     stick_ratios : tuple of float
@@ -78,6 +81,7 @@ class Study:
     wall_time: np.ndarray
     peak_memory: np.ndarray
     reference_source: str
+    base: str = "smooth"
 
     def order_of(self, quantity: str) -> np.ndarray:
         """Observed order of ``quantity`` (one of :attr:`quantities`), one a stick ratio."""
@@ -121,14 +125,14 @@ def _measure(fn: Callable[[], api.Solution]) -> tuple[api.Solution, float, float
 
 
 def study(geometry: str, nu: float, method: str, ns: Sequence[int],
-          stick_ratios: Sequence[float], *, slab_ratio: float = 0.0,
+          stick_ratios: Sequence[float], *, slab_ratio: float = 0.0, base: str = "smooth",
           reference: Study | None = None,
           progress: Callable[[str], None] | None = None) -> Study:
     """Solve every (n, c/a) and measure errors against the extrapolated values.
 
     Parameters
     ----------
-    geometry, nu, method, slab_ratio
+    geometry, nu, method, slab_ratio, base
         As for :func:`contactlib.solve`.
     ns : sequence of int
         Resolutions, each twice the previous (at least three for an order).
@@ -136,8 +140,8 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
     stick_ratios : sequence of float
         c/a values in (0, 1).
     reference : Study, optional
-        Another study of the same problem (same geometry, nu, slab ratio and
-        stick ratios) whose extrapolated values serve as the truth, e.g. the
+        Another study of the same problem (same geometry, nu, slab ratio, base
+        and stick ratios) whose extrapolated values serve as the truth, e.g. the
         default method's for the paper's scheme, whose k converges too
         slowly and erratically to extrapolate on its own (the workflow reads
         it back with :func:`contactlib.io.study_from_dataset`).
@@ -160,7 +164,8 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
     for i, n in enumerate(ns):
         for j, c in enumerate(cs):
             sol, times[i, j], memory[i, j] = _measure(lambda: api.solve(
-                geometry, nu, stick_ratio=c, n=n, method=method, slab_ratio=slab_ratio))
+                geometry, nu, stick_ratio=c, n=n, method=method, slab_ratio=slab_ratio,
+                base=base))
             values[:, i, j] = (sol.friction_coefficient, sol.load_ratio, sol.frictional_work,
                                float(np.max(np.abs(sol.shear))))
             if progress is not None:
@@ -178,10 +183,11 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
         same = (reference.geometry == geometry
                 and float(reference.nu) == float(nu)
                 and float(reference.slab_ratio) == float(slab_ratio)
+                and reference.base == base
                 and np.array_equal(np.asarray(reference.stick_ratios), np.array(cs)))
         if not same:
-            raise ValueError("reference must be a study of the same geometry, nu, slab ratio "
-                             "and stick ratios")
+            raise ValueError("reference must be a study of the same geometry, nu, slab ratio, "
+                             "base and stick ratios")
         ref = np.asarray(reference.reference)
         with np.errstate(invalid="ignore", divide="ignore"):
             error = np.abs(values - ref[:, None, :]) / np.abs(ref[:, None, :])
@@ -189,7 +195,7 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
     return Study(geometry=geometry, nu=float(nu), method=method, slab_ratio=float(slab_ratio),
                  ns=tuple(ns), stick_ratios=tuple(cs), quantities=QUANTITIES, values=values,
                  reference=ref, observed_order=order, error=error, wall_time=times,
-                 peak_memory=memory, reference_source=ref_source)
+                 peak_memory=memory, reference_source=ref_source, base=base)
 
 
 def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coefficient",
@@ -210,6 +216,8 @@ def trade_table(datasets: Sequence[xr.Dataset], quantity: str = "friction_coeffi
         label = f"{geometry} {method}"
         if indenter(geometry).reports_layer(float(ds.attrs.get("slab_ratio", 0.0))):
             label += f" a/h={float(ds.attrs['slab_ratio']):g}"
+            if ds.attrs.get("base", "smooth") != "smooth":
+                label += f" {ds.attrs['base']}"
         err = ds["error"].sel(quantity=quantity).values  # (n, stick_ratio)
         times = ds["wall_time"].values
         ns = ds["n"].values

@@ -730,6 +730,8 @@ def study_to_dataset(study: Study, name: str | None = None) -> xr.Dataset:
                "slab_ratio": float(st.slab_ratio), "Conventions": CONVENTIONS,
                "reference": st.reference_source, "contactlib_version": version()},
     )
+    if st.slab_ratio > 0 and st.base != "smooth":  # as every layer dataset (_layer_attrs)
+        ds.attrs["base"] = st.base
     if name is not None:
         ds.attrs["study"] = name
     return ds
@@ -761,7 +763,7 @@ def study_from_dataset(ds: xr.Dataset) -> Study:
         values=ds["value"].values, reference=ds["reference"].values,
         observed_order=ds["observed_order"].values, error=ds["error"].values,
         wall_time=ds["wall_time"].values, peak_memory=ds["peak_memory"].values,
-        reference_source=str(ds.attrs["reference"]))
+        reference_source=str(ds.attrs["reference"]), base=str(ds.attrs.get("base", "smooth")))
 
 
 def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:

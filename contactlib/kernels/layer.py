@@ -86,19 +86,25 @@ to ~1e-13 of scale against a rule with panels of 0.1, 30 points, ``t < 36``.
 *Table* (``layer_table``, once per (nu, base), ``functools.lru_cache``; the
 smooth table does not depend on nu): tensor Chebyshev interpolation of the
 six functions on cells of 0.5 x 0.5 covering ``0 <= rho, sigma <= RATIO_MAX
-= 20``, degree 9 in each variable (100 coefficients a cell and function;
-7.7 MB a table; built in 1-4 s). Measured interpolation error at random
-points against the quadrature: <= 3e-12 (smooth), <= 9e-12 (bonded, nu = 0.3)
-and <= 1.6e-11 (bonded, nu = 1/2) of the scale (1 for Pw, Pu, Pd;
+= 20``, degree 10 in each variable at the Chebyshev-Lobatto points (which
+include the cell edges, so that neighbouring cells agree on their common edge
+and the table is continuous to round-off; 121 coefficients a cell and
+function; 8.9 MiB a table; built in 2-3 s). Measured interpolation error at
+random points against the quadrature: <= 5e-13 (smooth), <= 1.7e-12 (bonded,
+nu = 0.3) and <= 5.2e-12 (bonded, nu = 1/2) of the scale (1 for Pw, Pu, Pd;
 max(1, rho, sigma) for Sd; max(1, rho, sigma)^2 for Su, Sw), largest for the
-derivatives. Evaluation sorts the points by cell and sums each cell's
-points with one small matrix product (``_chebyshev_eval``).
+derivatives. (Degree 9 at interior Chebyshev points: <= 1.6e-11, and jumps of
+that size across cell edges, which the default method's finest elements turned
+into k errors of 2e-3 at n = 2048.) Evaluation sorts the points by cell and
+sums each cell's points with one small matrix product (``_chebyshev_eval``).
 
 *Small arguments* (``max(rho, sigma) < 0.25``, i.e. thick layers): the table's
 absolute error would be multiplied by ``h`` or ``h^2``; there the double power
 series of the Bessel functions is summed instead, with the moments
 ``M_k = int_0^inf R(t) t^k dt`` (same quadrature on ``t < 96``; 14 terms a
-variable; 2e-14 relative against the quadrature). The leading term gives the
+variable; 2e-14 relative against the quadrature). It hands over to the table
+smoothly: the share ``b(rho) b(sigma)`` of the series, ``b`` = 1 below 0.2 and
+0 from 0.25, quintic between (``_series_weight``), so nothing jumps. The leading term gives the
 thick-layer limit, e.g. for the pressure ``w - w_halfspace -> (s^2/h)
 M_0(Rww)`` (uniform, O(s/h) relative).
 
@@ -119,8 +125,8 @@ from scipy import special
 from . import disc
 from ..theory import beta_of_nu
 
-__all__ = ["BASES", "RATIO_MAX", "LayerTable", "layer_table", "pressure_disc",
-           "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
+__all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "LayerTable", "layer_table", "pressure_disc",
+           "remainder_axis_w", "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
 
 Arr = NDArray[np.float64]
 
@@ -128,9 +134,10 @@ BASES = ("smooth", "bonded")
 RATIO_MAX = 20.0  # max(r, s)/h covered by the tables
 
 _CELL = 0.5  # table cell width in rho and sigma
-_DEG = 9  # Chebyshev degree in each variable
+_DEG = 10  # Chebyshev degree in each variable
 _N_CELLS = int(round(RATIO_MAX / _CELL))
 _SERIES_MAX = 0.25  # max(rho, sigma) below which the power series is used
+_BLEND = 0.05  # the series hands over to the table smoothly over _SERIES_MAX - _BLEND ... MAX
 _SERIES_TERMS = 14
 _T_MAX = 24.0
 _T_PANEL = 0.25
@@ -329,16 +336,29 @@ class LayerTable:
 
 
 def _chebyshev_nodes() -> Arr:
-    return np.cos(np.pi * (np.arange(_DEG + 1) + 0.5) / (_DEG + 1))
+    """Chebyshev-Lobatto points cos(pi j / _DEG), j = 0.._DEG (both ends of the cell)."""
+    return np.cos(np.pi * np.arange(_DEG + 1) / _DEG)
+
+
+def _lobatto_inverse() -> Arr:
+    """(k, j): values at :func:`_chebyshev_nodes` -> Chebyshev coefficients (DCT-I)."""
+    k = np.arange(_DEG + 1)
+    inv = (2.0 / _DEG) * np.cos(np.pi * np.outer(k, k) / _DEG)
+    inv[:, [0, _DEG]] *= 0.5
+    inv[[0, _DEG]] *= 0.5
+    return inv
 
 
 @functools.lru_cache(maxsize=8)
 def _build_table(nu: float | None, base: str) -> LayerTable:
+    # Lobatto points include the cell edges: two neighbouring cells interpolate the same
+    # values on their common edge, so the table is continuous across cells (to round-off).
+    # With interior (Gauss-Chebyshev) points it jumped by ~1e-11 there, and the default
+    # method's finest elements next to a stick edge on a cell edge (c = 0.5 h) turned that
+    # jump into k errors of 2e-4 (n = 1024) and 2e-3 (n = 2048).
     x = _chebyshev_nodes()
     pts = ((np.arange(_N_CELLS)[:, None] + 0.5) * _CELL + 0.5 * _CELL * x[None, :]).ravel()
-    k = np.arange(_DEG + 1)
-    inv = (2.0 / (_DEG + 1)) * np.cos(np.outer(k, np.arccos(x)))  # values -> coefficients
-    inv[0] *= 0.5
+    inv = _lobatto_inverse()
     nu_eff = 0.3 if nu is None else nu
     coef = {}
     for kind in ("pressure", "shear"):
@@ -423,6 +443,35 @@ def _chebyshev_basis(z: Arr) -> Arr:
     return tz
 
 
+_PARITY_MAX = 0.05  # rho below which u takes the odd part of its interpolant in rho ...
+_PARITY_FULL = 0.03  # ... wholly below this, blended (C^2) between
+
+
+def _parity_weight(rho: Arr) -> Arr:
+    """The odd part's share in u: 1 below _PARITY_FULL, 0 from _PARITY_MAX, quintic between."""
+    x = np.clip((rho - _PARITY_FULL) / (_PARITY_MAX - _PARITY_FULL), 0.0, 1.0)
+    return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)
+
+
+def _odd_basis(rho: Arr) -> Arr:
+    """(_DEG + 1, n): the part of T_k(4 rho - 1) odd in rho (rho in the first cell).
+
+    T_k(-1 + d) = sum_m M[k, m] d^m with d = 4 rho (:func:`_axis_powers`); the
+    odd powers. u (a J1 transform) is odd in rho; the interpolant's even part
+    (~1e-12 at rho = 0) is its error, which near the axis, where u ~ rho, would
+    be a relative error of 1e-12/rho in the stick zone's rows.
+    """
+    d = 4.0 * rho
+    return _ODD_POWERS @ (d[None, :] ** np.arange(1, _DEG + 1, 2)[:, None])
+
+
+def _u_near_axis(coef: NDArray[np.float64], rho: Arr, cell_j: NDArray[np.intp],
+                 ty: Arr) -> Arr:
+    """u at scattered points (rho_n in the first rho cell, sigma cell cell_j[n], T(y) ty)."""
+    cu = coef[cell_j, _DEG + 1:2 * (_DEG + 1), :]  # (n, l, k): u's rows of cell (0, j)
+    return np.einsum("nlk,kn,ln->n", cu, _odd_basis(rho), ty, optimize=True)
+
+
 def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
     """(3, n) values of the tabulated functions at (rho, sigma) in the table range.
 
@@ -461,19 +510,39 @@ def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
     return out
 
 
+def _series_weight(z: Arr) -> Arr:
+    """The series' share b(z): 1 below _SERIES_MAX - _BLEND, 0 from _SERIES_MAX, C^2 between.
+
+    A point takes b(rho) b(sigma) of the series and the rest of the table: a product, so
+    that the grid and integrated evaluations keep their tensor structure, and no jump (the
+    table's ~1e-12 error against the series at the switch was one: the default method's
+    finest elements next to a stick edge there turned it into k errors of ~1e-5).
+    """
+    x = np.clip((np.asarray(z, dtype=float) - (_SERIES_MAX - _BLEND)) / _BLEND, 0.0, 1.0)
+    return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)
+
+
 def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
     """(3, n) remainder functions of ``kind`` at 1-d (rho, sigma), chunk by chunk."""
     out = np.empty((3, rho.size))
     for a in range(0, rho.size, _CHUNK):
         sl = slice(a, a + _CHUNK)
         r, g = rho[sl], sigma[sl]
-        small = np.maximum(r, g) < _SERIES_MAX
-        if small.all():
+        m = np.maximum(r, g)
+        if np.all(m < _SERIES_MAX - _BLEND):
             out[:, sl] = _series_eval(tab.series[kind], r, g)
             continue
         val = _chebyshev_eval(tab.coef[kind], r, g)
+        near = np.flatnonzero(r < _PARITY_MAX)
+        if near.size:  # u: the odd part of the interpolant in rho
+            j, y = _cells(g[near])
+            odd = _u_near_axis(tab.coef[kind], r[near], j, _chebyshev_basis(y))
+            val[1, near] += _parity_weight(r[near]) * (odd - val[1, near])
+        small = m < _SERIES_MAX
         if small.any():
-            val[:, small] = _series_eval(tab.series[kind], r[small], g[small])
+            b = _series_weight(r[small]) * _series_weight(g[small])
+            ser = _series_eval(tab.series[kind], r[small], g[small])
+            val[:, small] += b * (ser - val[:, small])
         out[:, sl] = val
     return out
 
@@ -520,11 +589,21 @@ def _remainders_grid(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
                 out[:, rows, cols] = block
             else:
                 out[:, np.arange(rho.size)[rows][:, None], np.arange(sigma.size)[cols]] = block
+    near = np.flatnonzero(rho < _PARITY_MAX)
+    if near.size:  # u: the odd part of the interpolant in rho
+        todd = _odd_basis(rho[near]).T  # (i, k)
+        for b, cols in col_groups:
+            cu = coef[b, _DEG + 1:2 * (_DEG + 1), :]  # (l, k): u's rows of cell (0, b)
+            idx = (1, near[:, None], np.arange(sigma.size)[cols])
+            out[idx] += _parity_weight(rho[near])[:, None] * ((todd @ cu.T) @ ty[:, cols]
+                                                              - out[idx])
     small_r = np.flatnonzero(rho < _SERIES_MAX)
     small_s = np.flatnonzero(sigma < _SERIES_MAX)
     if small_r.size and small_s.size:
-        out[:, small_r[:, None], small_s[None, :]] = _series_grid(
-            tab.series[kind], rho[small_r], sigma[small_s])
+        idx = (slice(None), small_r[:, None], small_s[None, :])
+        b = _series_weight(rho[small_r])[:, None] * _series_weight(sigma[small_s])[None, :]
+        ser = _series_grid(tab.series[kind], rho[small_r], sigma[small_s])
+        out[idx] += b * (ser - out[idx])
     return out
 
 
@@ -543,7 +622,6 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
     contracted with the Chebyshev polynomials in sigma first, so the cost is
     ~10 (rho.size) (n_out) a function and cell instead of rho.size sigma.size.
     """
-    out = np.zeros((3, rho.size, n_out))
     ci, x = _cells(rho)
     cj, y = _cells(sigma)
     tx = _chebyshev_basis(x)  # (k, i)
@@ -551,33 +629,150 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
     coef = tab.coef[kind]
     small_r = rho < _SERIES_MAX
     n_small = int(np.searchsorted(sigma, _SERIES_MAX))  # sigma[:n_small] < _SERIES_MAX
+    b_r = _series_weight(rho)  # the series' share b(rho) b(sigma) (_series_weight)
+    wb = weights[:n_small] * _series_weight(sigma[:n_small])
+    tywb = tyw[:, :n_small] * _series_weight(sigma[:n_small])
     used = np.unique(cj)
-    # left[b, i] = the coefficients of cell (cell of rho_i, b) summed against T(x_i): (f l)
-    left = np.empty((used.size, rho.size, 3 * (_DEG + 1)))
+    nl = _DEG + 1
+    # left[u] (f i, l): the coefficients of cell (cell of rho_i, used[u]) summed against
+    # T(x_i); one matrix product a rho cell (all sigma cells at once)
+    left = np.empty((used.size, 3, rho.size, nl))
+    span = slice(int(used[0]), int(used[-1]) + 1) \
+        if used[-1] - used[0] + 1 == used.size else used  # a view where the cells are a run
     for a, rows in _groups(ci):
-        cells = coef[a * _N_CELLS + used]  # (b, f l, k)
-        left[:, rows, :] = np.einsum("ki,bjk->bij", tx[:, rows], cells, optimize=True)
-    slot = {int(b): i for i, b in enumerate(used.tolist())}
-    bounds = np.flatnonzero(np.r_[True, cj[1:] != cj[:-1], True])
-    for c0, c1 in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
-        lb = left[slot[int(cj[c0])]].reshape(-1, _DEG + 1)  # (i f, l)
-        for lo, hi, series_cols in ((c0, min(c1, n_small), True), (max(c0, n_small), c1, False)):
-            if lo >= hi:
-                continue
-            starts, cols = _segments(owner[lo:hi])
-            ib = np.add.reduceat(tyw[:, lo:hi], starts, axis=1)  # (l, segments)
-            block = (lb @ ib).reshape(rho.size, 3, -1).transpose(1, 0, 2)
-            if series_cols:  # rows in the series' range take the series there
-                block = block * ~small_r[None, :, None]
-            out[:, :, int(cols[0]):int(cols[-1]) + 1] += block  # a run's owners are consecutive
+        prod = coef[a * _N_CELLS:(a + 1) * _N_CELLS][span].reshape(-1, nl) @ tx[:, rows]
+        left[:, :, rows, :] = prod.reshape(used.size, 3, nl, -1).transpose(0, 1, 3, 2)
+    near = np.flatnonzero(rho < _PARITY_MAX)
+    if near.size:  # u: the odd part of the interpolant in rho
+        cu = coef[used, nl:2 * nl, :]  # (u, l, k): u's rows of the cells (0, used)
+        odd = np.matmul(cu, _odd_basis(rho[near])).transpose(0, 2, 1)  # (u, i, l)
+        left[:, 1, near, :] += _parity_weight(rho[near])[None, :, None] * (
+            odd - left[:, 1, near, :])
+    left = left.reshape(used.size, 3 * rho.size, nl)
+    # runs of q in one sigma cell, of one owner, on one side of n_small; their sums of T(y) w
+    cut = np.r_[True, (cj[1:] != cj[:-1]) | (owner[1:] != owner[:-1])]
+    if 0 < n_small < sigma.size:
+        cut[n_small] = True
+    starts = np.flatnonzero(cut)
+    ib = np.add.reduceat(tyw, starts, axis=1)  # (l, runs)
+    k_small = int(np.searchsorted(starts, n_small))  # runs [0, k_small): sigma < _SERIES_MAX
+    if k_small:  # the table's share 1 - b(rho) b(sigma) there: b(rho) b(sigma) T subtracted
+        ibb = np.add.reduceat(tywb, starts[:k_small], axis=1)
+        b_fi = np.tile(b_r, 3)[:, None]
+    run_cell = np.searchsorted(used, cj[starts])
+    per_run = np.empty((3 * rho.size, starts.size))  # (f i, run)
+    bounds = np.flatnonzero(np.r_[True, run_cell[1:] != run_cell[:-1], True])
+    for r0, r1 in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
+        lf = left[run_cell[r0]]  # (f i, l)
+        per_run[:, r0:r1] = lf @ ib[:, r0:r1]
+        if r0 < k_small:
+            r2 = min(r1, k_small)
+            per_run[:, r0:r2] -= (lf @ ibb[:, r0:r2]) * b_fi
+    # each owner's runs into its column: the first run of each, then the rest (an element
+    # across a cell edge)
+    per_run = per_run.reshape(3, rho.size, starts.size)
+    run_owner = owner[starts]
+    first = np.r_[True, run_owner[1:] != run_owner[:-1]]
+    rest = np.flatnonzero(~first)
+    owners = run_owner[first]
+    if owners.size == n_out and owners[-1] == n_out - 1:  # every owner 0 ... n_out - 1
+        out = per_run if rest.size == 0 else per_run[:, :, np.flatnonzero(first)]
+    else:
+        out = np.zeros((3, rho.size, n_out))
+        out[:, :, owners] = per_run[:, :, first]
+    if rest.size:
+        extra = run_owner[rest]
+        if np.all(np.diff(extra) > 0):  # no owner twice among them
+            out[:, :, extra] += per_run[:, :, rest]
+        else:
+            np.add.at(out, (slice(None), slice(None), extra), per_run[:, :, rest])
     rs = np.flatnonzero(small_r)
     if rs.size and n_small:
         starts, cols = _segments(owner[:n_small])
         for f, (pref, amat, rv) in enumerate(_series_factors(tab.series[kind], rho[rs],
                                                              sigma[:n_small])):
-            bmat = np.add.reduceat(amat * (pref * weights[:n_small])[:, None], starts, axis=0)
-            out[f, rs[:, None], cols[None, :]] += rv @ bmat.T
+            bmat = np.add.reduceat(amat * (pref * wb)[:, None], starts, axis=0)
+            out[f, rs[:, None], cols[None, :]] += (rv * b_r[rs, None]) @ bmat.T
     return out
+
+
+AXIS_RHO_MAX = _SERIES_MAX - _BLEND  # r/h below which remainder_axis_w applies (series share 1)
+
+
+def _axis_powers() -> Arr:
+    """(k, m): T_k(-1 + d) = sum_m [k, m] d^m, m = 0 ... _DEG.
+
+    T_k(1 - d) = k sum_m (-2)^m (k + m - 1)! / ((k - m)! (2m)!) d^m (k >= 1), and
+    T_k(-1 + d) = (-1)^k T_k(1 - d).
+    """
+    out = np.zeros((_DEG + 1, _DEG + 1))
+    out[0, 0] = 1.0
+    for k in range(1, _DEG + 1):
+        for m in range(k + 1):
+            out[k, m] = (-1.0) ** k * k * (-2.0) ** m * factorial(k + m - 1) / (
+                factorial(k - m) * factorial(2 * m))
+    return out
+
+
+_AXIS_POWERS = _axis_powers()[:, 2::2]  # the even powers from d^2 (differences from the axis)
+_ODD_POWERS = _axis_powers()[:, 1::2]  # the odd powers
+
+
+def remainder_axis_w(kind: str, r: ArrayLike, s: ArrayLike, nu: float, h: float,
+                     base: str) -> Arr:
+    """w(r; s) - w(0; s) of the layer's smooth remainder, without cancellation.
+
+    Parameters
+    ----------
+    kind : {"pressure", "shear"}
+        The basic load (unit pressure, or shear q = r, on the disc of radius s).
+    r, s : array_like
+        Surface points and disc radii (broadcast; ``s <= 0`` gives 0), with
+        ``r/h <= AXIS_RHO_MAX`` (0.2) and ``max(r, s)/h <= RATIO_MAX``.
+    nu, h, base :
+        As :func:`pressure_disc` (``h`` finite).
+
+    Returns
+    -------
+    ndarray
+        The difference (units of w), O(r^2) near the axis, with the relative
+        accuracy of the remainder's second derivative: the table's Chebyshev
+        sum in rho is differenced term by term as polynomials in d = 4 rho,
+        keeping the even powers (the function is even in rho; the odd powers
+        are interpolation error, ~2e-11 rho, which would swamp r^2 near the
+        axis), and the power series drops its rho^0 term; nothing is
+        subtracted.
+        Added to the half-space's :func:`contactlib.kernels.disc.axis_w_disc`
+        it gives the layer's axis-referenced rows of the default method.
+    """
+    if kind not in _SPECS:
+        raise ValueError(f"kind must be 'pressure' or 'shear', got {kind!r}")
+    nu, h, base = _check_layer(nu, h, base)
+    rb, sb = np.broadcast_arrays(np.abs(np.asarray(r, dtype=float)),
+                                 np.asarray(s, dtype=float))
+    shape = rb.shape
+    rho, sigma, pos = _scaled_rho_sigma(rb.ravel(), sb.ravel(), h)
+    if rho.size and rho.max() > AXIS_RHO_MAX:
+        raise ValueError(f"remainder_axis_w needs r/h <= {AXIS_RHO_MAX}, got {rho.max():.3g}")
+    tab = layer_table(nu, base)
+    nl = _DEG + 1
+    # table: cell (0, j); w's coefficients c[l, k] of T_k(4 rho - 1) T_l(y), each T_k as a
+    # polynomial in d = 4 rho with its even powers only (the remainder is even in rho; the
+    # odd ones are the interpolant's error, which would dominate as rho -> 0)
+    j, y = _cells(sigma)
+    d = 4.0 * rho
+    dk = _AXIS_POWERS @ (d[None, :] ** np.arange(2, nl, 2)[:, None])  # (k, n)
+    coef = tab.coef[kind][j, :nl, :]  # (n, l, k): the w rows of cell (0, j)
+    table = np.einsum("nlk,kn,ln->n", coef, dk, _chebyshev_basis(y), optimize=True)
+    out = table
+    small = sigma < _SERIES_MAX
+    if small.any():  # the series' share b(sigma) (b(rho) = 1 here), its rho^0 term dropped
+        pref, amat, rv = next(_series_factors(tab.series[kind], rho[small], sigma[small]))
+        series = pref * np.einsum("nl,nl->n", amat[:, 1:], rv[:, 1:])
+        b = _series_weight(sigma[small])
+        out[small] += b * (series - out[small])
+    out = np.where(pos, out, 0.0) * _scales(kind, h)[0]
+    return out.reshape(shape)
 
 
 def _grid_axes(r: Arr, s: Arr) -> bool:

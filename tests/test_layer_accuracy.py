@@ -1,0 +1,189 @@
+"""Accuracy on a layer: the ring table's continuity, convergence of k beyond n = 512,
+tolerance plans and convergence studies that honour the base.
+
+Truths: convergence under refinement (successive differences of k shrinking at the
+method's order 2), the solution refined fourfold, and the table's own Lobatto nodes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import contactlib
+from contactlib import accuracy, convergence, io
+from contactlib.kernels import layer
+from contactlib.model import contact
+
+
+@pytest.mark.parametrize("base", ["smooth", "bonded"])
+def test_ring_table_is_continuous_across_cells(base):
+    """Neighbouring cells agree on their common edge to round-off (Lobatto nodes).
+
+    With interior Chebyshev nodes the table jumped by up to ~1e-11 of scale there.
+    """
+    tab = layer.layer_table(0.3, base)
+    edges = np.arange(1, 40) * 0.5  # cell edges in rho (and sigma)
+    rng = np.random.default_rng(3)
+    other = rng.uniform(0.3, 19.7, edges.size)
+    for kind in ("pressure", "shear"):
+        for rho, sigma in ((edges, other), (other, edges)):
+            lo = layer._remainders(kind, np.nextafter(rho, 0) if rho is edges else rho,
+                                   np.nextafter(sigma, 0) if sigma is edges else sigma, tab)
+            hi = layer._remainders(kind, rho, sigma, tab)
+            scale = np.maximum(1.0, np.maximum(rho, sigma)) ** 2
+            assert np.max(np.abs(hi - lo) / scale) < 1e-13, kind
+
+
+@pytest.mark.parametrize("base", ["smooth", "bonded"])
+def test_series_hands_over_to_the_table_without_a_jump(base):
+    """At max(rho, sigma) = 0.25 the power series gave way to the table abruptly (a jump of
+    the table's ~1e-12 error); now the series' share falls smoothly to 0 there."""
+    tab = layer.layer_table(0.3, base)
+    sig = np.linspace(0.0, 0.25, 11)
+    rho = np.full_like(sig, 0.25)
+    for kind in ("pressure", "shear"):
+        for r, s in ((rho, sig), (sig, rho)):
+            below = layer._remainders(kind, np.nextafter(r, 0), np.nextafter(s, 0), tab)
+            assert np.max(np.abs(layer._remainders(kind, r, s, tab) - below)) < 1e-14
+
+
+@pytest.mark.parametrize("stick_ratio", [0.5, 0.25])
+def test_k_converges_beyond_n_512_on_a_layer(stick_ratio):
+    """Sphere, bonded, a/h = 1; the stick edge on a table cell edge (c/a = 1/2) or where
+    the series hands over to the table (c/a = 1/4).
+
+    Measured k at c/a = 1/2: 0.0649514706, 0.0649471967, 0.0649460433, 0.0649457498 at
+    n = 256 ... 2048 (order 1.9, 2.0); with the earlier table (jumps of ~1e-11 at cell
+    edges) 0.0649498 -> 0.0649670 -> 0.0651117 from n = 512 (estimate 2.2e-3 at 2048).
+    At c/a = 1/4: differences -2.72e-6, -7.25e-7 from n = 256 (order 1.9); with the abrupt
+    switch to the series -2.59e-6, +5.4e-7.
+    """
+    ks = [contactlib.solve("sphere", 0.3, stick_ratio=stick_ratio, n=n, slab_ratio=1.0,
+                           base="bonded", energy=False).friction_coefficient
+          for n in (256, 512, 1024)]
+    d1, d2 = ks[0] - ks[1], ks[1] - ks[2]
+    assert d1 * d2 > 0
+    assert 1.6 < np.log2(d1 / d2) < 2.4
+
+
+def test_planned_body():
+    assert accuracy.planned_body(contact("sphere", 0.3))
+    assert accuracy.planned_body(contact("cylinder", 0.3, 0.05))  # the paper's slab
+    assert not accuracy.planned_body(contact("cylinder", 0.3, 0.05, base="bonded"))
+    assert not accuracy.planned_body(contact("cylinder", 0.3, 1.0))
+    assert not accuracy.planned_body(contact("sphere", 0.3, 0.5))
+
+
+def test_plan_on_a_layer_takes_the_default_method_alone():
+    """The extrapolated method's error model was measured on the half-space only."""
+    half = contact("sphere", 0.3)
+    lay = contact("sphere", 0.3, 1.0, base="bonded")
+    methods = accuracy.PLANNED_METHODS
+    assert accuracy.plan(half, [0.5], 1e-6, methods=methods)[0] == "extrapolated"
+    assert accuracy.plan(lay, [0.5], 1e-6, methods=methods)[0] == "default"
+    with pytest.raises(ValueError, match="on this layer only the default method"):
+        accuracy.plan(lay, [0.5], 1e-7, methods=methods)
+
+
+def test_tolerance_on_a_layer_is_met_against_the_refined_solution():
+    """Sphere, bonded base, a/h = 1, c/a = 1/2, tolerance 1e-3: the k returned is
+    within it of the solution refined fourfold, and its estimate covers that."""
+    kw = dict(stick_ratio=0.5, slab_ratio=1.0, base="bonded", energy=False)
+    sol = contactlib.solve("sphere", 0.3, tolerance=1e-3, **kw)
+    assert sol.method == "default" and sol.resolved
+    ref = contactlib.solve("sphere", 0.3, n=4 * sol.n, **kw)
+    err = abs(sol.friction_coefficient / ref.friction_coefficient - 1.0)
+    assert err <= 1e-3
+    assert sol.error_estimate >= 0.8 * err
+
+
+def test_convergence_study_honours_the_base():
+    args = ("sphere", 0.3, "default", [16, 32, 64], [0.5])
+    smooth = convergence.study(*args, slab_ratio=1.0)
+    bonded = convergence.study(*args, slab_ratio=1.0, base="bonded")
+    k = smooth.values[0, -1, 0], bonded.values[0, -1, 0]
+    direct = contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=64, slab_ratio=1.0,
+                              base="bonded", energy=False).friction_coefficient
+    assert k[1] == pytest.approx(direct, rel=1e-12) and abs(k[0] / k[1] - 1) > 1e-2
+    ds = io.study_to_dataset(bonded)
+    assert ds.attrs["base"] == "bonded" and "base" not in io.study_to_dataset(smooth).attrs
+    assert io.study_from_dataset(ds).base == "bonded"
+    with pytest.raises(ValueError, match="base"):
+        convergence.study(*args, slab_ratio=1.0, reference=bonded)
+
+
+def _j0_minus_1(x):
+    """J0(x) - 1 by its power series (no cancellation; x <= 5 here)."""
+    x2 = (x / 2.0) ** 2
+    term, out = np.ones_like(x), np.zeros_like(x)
+    for m in range(1, 40):
+        term = term * (-x2) / (m * m)
+        out = out + term
+    return out
+
+
+def _axis_difference_by_transform(kind, r, s, nu, base):
+    """w(r) - w(0) of the remainder (h = 1) from its Hankel integral with J0 - 1 summed as
+    a series: written here from docs/theory.md, independent of the table."""
+    from scipy import special
+    t, w = np.polynomial.legendre.leggauss(30)
+    edges = np.arange(0.0, 30.0 + 1e-9, 0.1)
+    lo, hi = edges[:-1, None], edges[1:, None]
+    tt, ww = (0.5 * (hi - lo) * t + 0.5 * (hi + lo)).ravel(), (0.5 * (hi - lo) * w).ravel()
+    rww, rwu, _ = layer.remainder_transfer(tt, nu, base)
+    s = np.asarray(s)[:, None]
+    if kind == "pressure":
+        return 2 * s[:, 0] * ((rww * special.j1(s * tt) * _j0_minus_1(r * tt) / tt) @ ww)
+    return -2 * s[:, 0] ** 2 * ((rwu * special.jv(2, s * tt) * _j0_minus_1(r * tt) / tt) @ ww)
+
+
+@pytest.mark.parametrize("base,nu", [("smooth", 0.3), ("bonded", 0.3), ("bonded", 0.5)])
+def test_remainder_axis_difference_keeps_its_digits(base, nu):
+    """remainder_axis_w against the transform with J0 - 1 as a series, r/h = 1e-7 ... 0.15.
+
+    Measured: <= 9.5e-7 relative for r/h <= 0.01 (the interpolant's second derivative),
+    <= 1e-5 at 0.15; subtracting two table values instead loses everything at 1e-7
+    (their round-off is 1e-16 of w, the difference 1e-14 of it)."""
+    rng = np.random.default_rng(0)
+    s = np.concatenate([rng.uniform(0.0, 0.3, 12), rng.uniform(0.3, 19.0, 12)])
+    for r, tol in ((1e-7, 2e-6), (1e-4, 2e-6), (1e-2, 2e-6), (0.15, 3e-5)):
+        for kind in ("pressure", "shear"):
+            got = layer.remainder_axis_w(kind, r, s, nu, 1.0, base)
+            ref = _axis_difference_by_transform(kind, r, s, nu, base)
+            assert np.max(np.abs(got - ref) / np.abs(ref)) < tol, (r, kind)
+
+
+def test_u_near_the_axis_is_odd_in_r():
+    """u of the remainder near the axis (r/h down to 1e-8) to 3e-9 relative in all three
+    evaluations; the interpolant's even part (~1e-12 at r = 0) would be 1e-4 of u there."""
+    tab = layer.layer_table(0.3, "bonded")
+    rho = np.array([1e-8, 1e-6, 1e-3, 0.03, 0.049])
+    sig = np.array([0.5, 3.0, 7.3, 12.0, 19.0])
+    for kind in ("pressure", "shear"):
+        ref = layer._remainder_quadrature(kind, rho, sig, 0.3, "bonded")[1]
+        grid = layer._remainders_grid(kind, rho, sig, tab)[1]
+        rr, ss = np.meshgrid(rho, sig, indexing="ij")
+        scattered = layer._remainders(kind, rr.ravel(), ss.ravel(), tab)[1].reshape(rr.shape)
+        summed = layer._remainders_integrated(kind, rho, sig, np.ones(sig.size),
+                                              np.arange(sig.size), sig.size, tab)[1]
+        for got in (grid, scattered, summed):
+            assert np.max(np.abs(got / ref - 1.0)) < 3e-9, kind
+
+
+def test_tiny_stick_zone_on_a_layer():
+    """Sphere, bonded, a/h = 1, c/a = 1e-6 (axis-referenced rows on the layer now).
+
+    Measured k: 0.007915432, 0.007915942, 0.007915840 at n = 64, 128, 256 (the last
+    within 2e-8 of k with the remainder's element integrals from the quadrature itself,
+    a one-off check; estimate 1.8e-5);
+    with the plain rows and the interpolant's even part in u near the axis, n = 256 gave
+    0.007916426 (7e-5 off) and n = 512 0.007919238. The estimate at n = 64 covers the
+    difference to n = 256."""
+    kw = dict(stick_ratio=1e-6, slab_ratio=1.0, base="bonded", energy=False)
+    coarse = contactlib.solve("sphere", 0.3, n=64, **kw)
+    fine = contactlib.solve("sphere", 0.3, n=256, **kw)
+    assert coarse.resolved and fine.resolved
+    diff = abs(coarse.friction_coefficient / fine.friction_coefficient - 1.0)
+    assert diff <= coarse.error_estimate
+    assert fine.error_estimate < 3e-5

@@ -107,12 +107,16 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     dict
         Default method: ``stick_ratios`` (K,), ``sizes`` (K,) the element
         count N_i of each case's mesh (it grows toward c/a = 0 and 1, see
-        :func:`~contactlib.elements.graded_mesh`), ``nodes`` (K, N+1) and
-        ``ops`` (K, 3, N+1, N+1), N = max N_i, NaN-padded beyond N_i + 1: the
-        w, u, du/dx at the nodes of nodal tractions.
+        :func:`~contactlib.elements.graded_mesh`), ``nodes`` (K, N+1),
+        N = max N_i, NaN-padded beyond N_i + 1, and ``ops``, the meshes'
+        operators (3, N_i+1, N_i+1) (the w, u, du/dx at the nodes of nodal
+        tractions) raveled and concatenated in the order of ``sizes``
+        (unpadded: the default config's 28 meshes of n = 256 take 73 MB a
+        part instead of the 166 MB of a (K, 3, N+1, N+1) block, written
+        and read again by the workflow).
         Paper methods: ``nodes`` (n+1,) and ``ops`` (3, n+2, n) at
         :func:`~contactlib.paper_method.collocation_points`. Memory:
-        24 (N+1)^2 bytes a mesh and part (1.6 MB at N = 256, 25 MB at 1024).
+        24 (N_i+1)^2 bytes a mesh and part (1.6 MB at N_i = 256, 25 MB at 1024).
     """
     if part not in PARTS:
         raise ValueError(f"part must be one of {', '.join(PARTS)}, got {part!r}")
@@ -122,15 +126,22 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
         sizes = np.array([mesh.n for mesh in meshes])
         size = int(sizes.max()) + 1  # the mesh's element count depends on c: NaN-padded
         nodes = np.full((len(meshes), size), np.nan)
-        ops = np.full((len(meshes), 3, size, size), np.nan)
+        starts = _op_starts(sizes)
+        ops = np.empty(starts[-1])
         cache = StickBlocks()  # this call's: the stick blocks shared across its c/a
         for i, mesh in enumerate(meshes):
             m = mesh.n + 1
             nodes[i, :m] = mesh.nodes
-            ops[i, :, :m, :m] = nodal_operator_part(geometry, mesh, part, cache=cache)
+            ops[starts[i]:starts[i + 1]] = nodal_operator_part(geometry, mesh, part,
+                                                               cache=cache).ravel()
         return {"stick_ratios": cs, "sizes": sizes, "nodes": nodes, "ops": ops}
     r = uniform_mesh(n, 0).nodes
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}
+
+
+def _op_starts(sizes: np.ndarray) -> np.ndarray:
+    """Where each mesh's operator (3, N_i+1, N_i+1) starts in a default set's ``ops``, and the end."""
+    return np.concatenate([[0], np.cumsum(3 * (np.asarray(sizes, dtype=np.int64) + 1) ** 2)])
 
 
 def _meshes(cache: StickBlocks | None) -> MeshStore | None:
@@ -151,7 +162,10 @@ def _lookup(table: dict[str, np.ndarray] | None, method: str, c: float,
     m = int(table["sizes"][hit[0]]) + 1 if hit.size else 0
     if hit.size == 0 or not np.array_equal(table["nodes"][hit[0], :m], nodes):
         raise ValueError(f"influence matrices hold no mesh for stick ratio {c!r}")
-    return table["ops"][hit[0], :, :m, :m]
+    if table["ops"].ndim == 4:  # a set written before the unpadded layout: (K, 3, N+1, N+1)
+        return table["ops"][hit[0], :, :m, :m]
+    starts = _op_starts(table["sizes"])
+    return table["ops"][starts[hit[0]]:starts[hit[0] + 1]].reshape(3, m, m)
 
 
 # ----------------------------------------------------------------------------- solve

@@ -2,7 +2,8 @@
 
 contactlib's public entry points (:func:`contactlib.solve`,
 :func:`contactlib.sweep`, :func:`contactlib.history` and the functions of
-:mod:`contactlib.pipeline`, hence the command line and the workflow) run
+:mod:`contactlib.pipeline` but ``check``, which calls no BLAS, hence the
+command line and the workflow) run
 their numerics inside :func:`single_blas_thread`, which limits every BLAS /
 LAPACK / OpenMP pool loaded in the process (OpenBLAS, MKL, BLIS, libgomp:
 whatever :mod:`threadpoolctl` finds) to one thread, and restores the caller's

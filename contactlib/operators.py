@@ -43,7 +43,7 @@ Examples
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -55,7 +55,7 @@ from .kernels.disc import gauss_tiers
 if TYPE_CHECKING:
     from .model import Contact
 
-__all__ = ["PARTS", "step_operator", "operator_part", "operators", "nodal_operator_part",
+__all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators", "nodal_operator_part",
            "StickBlocks", "smooth_integrals", "restrict_nested", "axis_w_rows",
            "u_difference_rows"]
 
@@ -64,6 +64,18 @@ _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
 _SMOOTH_PANEL = 0.5  # longest panel, in layer thicknesses
 
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
+
+
+def parts_needed(geometry: Contact, stick_ratios: Sequence[float]) -> tuple[str, ...]:
+    """The influence parts a set of cases needs: no shear when frictionless or nu = 0.5.
+
+    Here rather than in :mod:`contactlib.stages` (which imports it) so that a scene's
+    parts are known without importing the solvers (and scipy.linalg with them): the
+    workflow asks for them in Snakemake's own process while it builds the DAG.
+    """
+    if geometry.decoupled or all(float(c) == 0.0 for c in stick_ratios):
+        return ("normal",)
+    return PARTS
 
 
 def _kernel(model: Contact, part: str, with_w: bool = True, with_du: bool = True) -> Kernel:

@@ -36,8 +36,12 @@ from typing import Any, Mapping
 from . import accuracy, materials, validate
 from .geometry import Geometry
 from .indenter import indenter
+from .operators import parts_needed
 from .result import short_repr
-from .stages import OUTPUTS, parts_needed
+from .validate import OUTPUTS
+
+# No solver module (stages, and scipy with it) is imported here: the workflow imports
+# this module in Snakemake's own process, which builds the DAG before any job starts.
 
 __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_scenes",
            "config_hash", "material_pair_scenes", "scene_mapping"]

@@ -33,7 +33,7 @@ import numpy as np
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
-from .operators import StickBlocks, restrict_nested
+from .operators import PARTS, StickBlocks, parts_needed, restrict_nested
 from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
@@ -45,7 +45,6 @@ __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter
            "check_case", "work_case", "profiles", "to_solution", "decoupled_message", "solve_one",
            "case_record", "estimate_case", "QUADRATURE_FLOOR_H"]
 
-PARTS = ("normal", "shear")
 # Elements shorter than this (in a) next to c are never reported as resolved: below them
 # k is not known to converge under refinement. Both floors were the round-off of O(1)
 # displacements amplified in the stick-edge condition, not the element quadrature: a
@@ -58,7 +57,7 @@ PARTS = ("normal", "shear")
 # every n for both. The floors were 5e-11 (stick) and 5e-9 (annulus); they are now the
 # smallest elements measured (n = 512: 2.25e-13 a at c/a = 1e-8, 2.3e-10 a at 1 - 1e-5).
 QUADRATURE_FLOOR_H = {"stick": 2e-13, "annulus": 2e-10}
-OUTPUTS = ("k_curve", "stresses", "displacements", "energy")
+OUTPUTS = validate.OUTPUTS
 NODAL_METHODS = ("default", "extrapolated")  # nodal tractions on the graded mesh at c
 
 
@@ -73,13 +72,6 @@ def decoupled_message(geometry: Contact | None = None) -> str:
 
 def _decoupled(geometry: Contact) -> bool:
     return geometry.decoupled
-
-
-def parts_needed(geometry: Contact, stick_ratios: Sequence[float]) -> tuple[str, ...]:
-    """The influence parts a set of cases needs: no shear when frictionless or nu = 0.5."""
-    if _decoupled(geometry) or all(float(c) == 0.0 for c in stick_ratios):
-        return ("normal",)
-    return PARTS
 
 
 def _solved_ratio(geometry: Contact, c: float) -> float:

@@ -38,7 +38,7 @@ __all__ = [
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
     "MIN_TOLERANCE", "MAX_TOLERANCE", "MIN_PLANNED_TOLERANCE", "planned_tolerance",
     "indenter_modulus", "indenter_nu", "indenter_material",
-    "indenter_mapping", "BASES", "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base",
+    "indenter_mapping", "BASES", "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
 ]
 
 # ----------------------------------------------------------------------------- limits
@@ -48,6 +48,9 @@ GEOMETRIES: tuple[str, ...] = ("sphere", "cylinder")
 METHODS: tuple[str, ...] = ("default", "paper", "paper-literal", "extrapolated")
 """Self-similar methods: ours, the paper's scheme, the paper's scheme as printed, and ours
 on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
+
+OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy")
+"""What a self-similar scene may ask for (``outputs``), in the order the stages run them."""
 
 BASES: tuple[str, ...] = ("smooth", "bonded")
 """Rigid bases under a layer: frictionless (the paper's slab) or bonded."""

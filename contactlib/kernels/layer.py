@@ -120,7 +120,6 @@ from math import factorial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy import special
 
 from . import disc
 from ..theory import beta_of_nu
@@ -232,6 +231,9 @@ def _gauss_panels(t_max: float) -> tuple[Arr, Arr]:
 
 
 def _rho_function(name: str, x: Arr) -> Arr:
+    # here, not at import: contactlib.scene imports this module (Snakemake's own process)
+    from scipy import special
+
     if name == "J0":
         return special.j0(x)
     if name == "J1":
@@ -256,6 +258,9 @@ def _remainder_quadrature(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float
     fw, fu, fdu : ndarray, shape (rho.size, sigma.size)
         ``(Pw, Pu, Pd)`` or ``(Sw, Su, Sd)`` of the module notes.
     """
+    # here, not at import: contactlib.scene imports this module (Snakemake's own process)
+    from scipy import special
+
     t, wt = _gauss_panels(_T_MAX)
     rem = dict(zip(("ww", "wu", "uu"), remainder_transfer(t, nu, base)))
     rho = np.atleast_1d(np.asarray(rho, dtype=float))

@@ -82,7 +82,7 @@ def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | No
 
 # ----------------------------------------------------------------------------- inverse problem
 SMALLEST_STICK_RATIO = 1e-8  # the inverse's floor: the smallest c/a resolved at the default n
-LARGEST_STICK_RATIO = 1.0 - 1e-7  # its ceiling (1 - 1e-5 is resolved; beyond, flagged)
+LARGEST_STICK_RATIO = 1.0 - 1e-5  # its ceiling: the largest c/a resolved at the default n
 
 
 def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
@@ -134,7 +134,7 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     gam = np.linspace(1e-4, 1 - 1e-9, 4001)
     k_unc = geometry.uncoupled_friction(gam)
     c0 = float(np.interp(friction, k_unc, gam))
-    lo, hi = max(c0 * 0.8, 1e-3), min(c0 + 0.2 * (1 - c0), 1 - 1e-6)
+    lo, hi = max(c0 * 0.8, 1e-3), min(c0 + 0.2 * (1 - c0), LARGEST_STICK_RATIO)
     flo = f(lo)
     while flo > 0 and lo > SMALLEST_STICK_RATIO:
         hi, lo = lo, max(lo * 0.03, SMALLEST_STICK_RATIO)
@@ -153,8 +153,8 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
                          "contact slips; use friction 0 for Hertz")
     if fhi < 0:
         raise ValueError(f"friction {friction!r} is too large: the stick zone covers more than "
-                         f"{hi:.7f} of the contact (k = {fhi + friction:.4g} there); use "
-                         "stick_ratio 1 (full adhesion)")
+                         f"{hi:.5f} of the contact, the largest resolved (k = "
+                         f"{fhi + friction:.4g} there); use stick_ratio 1 (full adhesion)")
     from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
 
     c = optimize.brentq(f, lo, hi, xtol=xtol)

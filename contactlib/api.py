@@ -93,7 +93,7 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     is bracketed from the uncoupled estimate and refined by Brent's method,
     warm-starting Newton on k from the last solve. Near full stick k(c)
     grows without bound as c/a approaches a limit c* that is below 1 where
-    the coupling is strong (sphere nu = -0.99: c* = 0.951; nu = 0: 0.9990;
+    the coupling is strong (sphere nu = -0.99: c* = 0.952; nu = 0: 0.9990;
     docs/accuracy.md, "Near full stick"); beyond c* there is no
     single-zone solution (the root found there slips outward with tensile
     pressure, and ``solve_default`` reports k as NaN), so a failed solve

@@ -112,3 +112,10 @@ def test_history_solver_reaches_the_same_stick_ratio():
         state = res.state[-1][res.state[-1] > 0]
         first_slip = int(np.argmax(state != 1))
         assert np.all(state[:first_slip] == 1) and np.all(state[first_slip:] == 2)
+
+
+def test_large_friction_beyond_the_resolved_stick_zone_is_refused():
+    """nu = 0.3, k = 10: the stick zone would leave 1 - c/a ~ exp(-pi k / beta) (uncoupled),
+    far below 1 - 1e-5, the largest resolved; refused, not a flagged c/a = 1 - 7.6e-7."""
+    with pytest.raises(ValueError, match="too large"):
+        solve("sphere", 0.3, friction=10.0, n=64, energy=False)

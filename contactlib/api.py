@@ -81,48 +81,88 @@ def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | No
 
 
 # ----------------------------------------------------------------------------- inverse problem
+SMALLEST_STICK_RATIO = 1e-8  # the inverse's floor: the smallest c/a resolved at the default n
+LARGEST_STICK_RATIO = 1.0 - 1e-5  # its ceiling: the largest c/a resolved at the default n
+
+
 def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
                              xtol: float = 1e-10) -> tuple[float, DiscreteSolution]:
     """Stick ratio c/a that a friction coefficient k produces (default method).
 
-    k(c) increases monotonically from 0 (c = 0) to infinity (c -> 1); the root
-    of k(c) = friction is bracketed from the uncoupled estimate and refined by
-    Brent's method, warm-starting Newton on k from the last solve.
+    k(c) increases monotonically from 0 (c = 0); the root of k(c) = friction
+    is bracketed from the uncoupled estimate and refined by Brent's method,
+    warm-starting Newton on k from the last solve. Near full stick k(c)
+    grows without bound as c/a approaches a limit c* that is below 1 where
+    the coupling is strong (sphere nu = -0.99: c* = 0.952; nu = 0: 0.9990;
+    docs/accuracy.md, "Near full stick"); beyond c* there is no
+    single-zone solution (the root found there slips outward with tensile
+    pressure, and ``solve_default`` reports k as NaN), so a failed solve
+    above c/a = 1/2, or a root there that slips the other way than the first
+    one found or fails the checks at the nodes (beyond c* Newton also finds
+    inconsistent inward roots, e.g. k = 5 at c/a = 1 - 3e-6 for the sphere at
+    nu = -0.99), is taken as lying past the root (k above any friction), and
+    a failed solve below c/a = 1/2 as lying under it (a stick zone too small
+    to resolve).
+
+    Raises
+    ------
+    ValueError
+        When the stick zone lies outside [SMALLEST_STICK_RATIO,
+        LARGEST_STICK_RATIO] (the message gives the small-k estimate
+        c/a ~ 4 exp(-A/k), A = k ln(4 a/c) at the floor), or when no
+        converged root is found (the message names where the solutions end).
     """
     cache: dict[float, DiscreteSolution] = {}
     blocks = StickBlocks()  # this search's store of stick blocks, shared by its solves
-    last = {"k": None}
+    last: dict[str, float | None] = {"k": None, "way": None}
 
     def f(c: float) -> float:
         d = solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
         cache[c] = d
-        if not np.isfinite(d.k):  # no self-similar solution found here (k is NaN)
-            return -friction  # ... taken as no positive k, so the search goes on past it
+        if not (d.converged and np.isfinite(d.k)):  # no self-similar solution found here:
+            return friction if c > 0.5 else -friction  # past c* above, unresolved below
+        slip = np.arange(d.mesh.stick_index, d.mesh.n)
+        j = slip[np.argmax(np.abs(d.p[slip]))]
+        way = float(np.sign(d.traction[j] * d.p[j]))  # sign of the root's k: its slip direction
+        if last["way"] is None:
+            last["way"] = way  # the branch of the first (smallest) stick ratio tried
+        elif c > 0.5 and (way != last["way"] or not d.node_flags()["consistent"]):
+            return friction  # the root came back through k = inf, or is no solution: past c*
         last["k"] = d.k
         return d.k - friction
 
     gam = np.linspace(1e-4, 1 - 1e-9, 4001)
     k_unc = geometry.uncoupled_friction(gam)
     c0 = float(np.interp(friction, k_unc, gam))
-    lo, hi = max(c0 * 0.8, 1e-3), min(c0 + 0.2 * (1 - c0), 1 - 1e-6)
+    lo, hi = max(c0 * 0.8, 1e-3), min(c0 + 0.2 * (1 - c0), LARGEST_STICK_RATIO)
     flo = f(lo)
-    while flo > 0 and lo > 1e-6:
-        hi, lo = lo, lo * 0.3
+    while flo > 0 and lo > SMALLEST_STICK_RATIO:
+        hi, lo = lo, max(lo * 0.03, SMALLEST_STICK_RATIO)
         flo = f(lo)
     fhi = f(hi)
-    while fhi < 0 and hi < 1 - 1e-7:
-        lo, hi = hi, 1 - (1 - hi) * 0.1
+    while fhi < 0 and hi < LARGEST_STICK_RATIO:
+        lo, hi = hi, min(1 - (1 - hi) * 0.1, LARGEST_STICK_RATIO)
         fhi = f(hi)
     if flo > 0:
-        raise ValueError(f"friction {friction!r} is below the smallest resolvable k "
-                         f"({flo + friction:.3g} at c/a = {lo:.3g}); use friction 0 for Hertz")
+        k_floor = flo + friction
+        amp = k_floor * np.log(4.0 / lo)  # k ~ A / ln(4 a/c) for small stick zones
+        log10_c = (np.log(4.0) - amp / friction) / np.log(10.0)
+        raise ValueError(f"friction {friction!r} gives a stick zone below c/a = {lo:.3g}, the "
+                         f"smallest resolved (k = {k_floor:.4g} there); by the small-k law "
+                         f"k ~ {amp:.3g}/ln(4 a/c) it is c/a ~ 1e{log10_c:.0f}: nearly the whole "
+                         "contact slips; use friction 0 for Hertz")
     if fhi < 0:
         raise ValueError(f"friction {friction!r} is too large: the stick zone covers more than "
-                         f"{hi:.7f} of the contact; use stick_ratio 1 (full adhesion)")
+                         f"{hi:.5f} of the contact, the largest resolved (k = "
+                         f"{fhi + friction:.4g} there); use stick_ratio 1 (full adhesion)")
     from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
 
     c = optimize.brentq(f, lo, hi, xtol=xtol)
     d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
+    if not (d.converged and np.isfinite(d.k)
+            and abs(d.k - friction) <= 1e-3 * friction):  # else a jump, not a root
+        raise ValueError(f"friction {friction!r}: no converged stick ratio found; the solutions "
+                         f"end at c/a = {c:.7f} ({d.message or 'k = ' + format(d.k, '.4g')})")
     return c, d
 
 

@@ -702,7 +702,8 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     msg = "" if converged else f"Newton on k did not converge in {max_iter} iterations"
     nodal_u, nodal_du = pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi
     reversed_ok = False
-    if np.isfinite(k) and k * sigma < 0.0:  # the root slips against sign(beta)
+    tensile = bool(np.min(p[m:nn]) <= 0.0)  # no pressure in the slip zone: past c* (below)
+    if np.isfinite(k) and k * sigma < 0.0 and not tensile:  # the root slips against sign(beta)
         # physical when consistent at every node (e.g. a thin or nearly incompressible
         # slab, whose surface moves outward under a rigid indenter)
         reversed_ok = _node_flags(mesh, system.shape * phi, p, k, nodal_u,
@@ -711,7 +712,15 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     k = abs(k) if reversed_ok else sigma * k  # report k >= 0
     if not (np.isfinite(k) and k > 0.0):  # never a negative (or non-finite) k as if good
         converged = False
-        if np.isfinite(k):
+        if np.isfinite(k) and tensile:
+            msg = (f"c/a = {stick_ratio:.7g} lies beyond the largest stick ratio c* < 1 that one "
+                   f"slip zone reaches at this coupling (beta = {geometry.beta:.3g}): k grows "
+                   "without bound as c/a approaches c*, and past it the root slips the other way "
+                   f"({way}, |k| = {abs(k):.4g}) with tensile pressure at the stick edge; no "
+                   "friction coefficient gives this stick ratio (the full-stick solution itself "
+                   "has tensile pressure at the edge; docs/accuracy.md, 'Near full stick'); "
+                   "not a solution, k is reported as NaN")
+        elif np.isfinite(k):
             msg = (f"Newton on k ended at a root with slip {way} (|k| = {abs(k):.4g}), against "
                    f"the sign of beta ({geometry.beta:.3g}), where the slip does not oppose the "
                    f"shear: either a stick zone of c/a = {stick_ratio:.3g} below what n = {n} "

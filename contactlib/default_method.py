@@ -136,6 +136,21 @@ class DiscreteSolution(SelfSimilarSolution):
         """The nodal shear coefficient (``traction``)."""
         return self.traction
 
+    @property
+    def oriented_k(self) -> float:
+        """k relative to sign(beta): ``-k`` when the slip runs against it, else ``k``.
+
+        The reported k is >= 0 whatever the slip direction. On a layer whose
+        slip runs against sign(beta) (outward under a rigid indenter) Newton on
+        a finer mesh must start on that side: from +k it took 4-5 steps to
+        cross zero (sphere, a/h = 20, n = 256 and 1024). The direction is that
+        of the shear at the first slip node (q = sign(k) p there).
+        """
+        m = self.mesh.stick_index
+        lead = self.phi[m] if 0 < m < self.mesh.n else np.nan
+        reversed_slip = bool(np.isfinite(lead) and lead * self.geometry.slip_sign < 0.0)
+        return -self.k if reversed_slip else self.k
+
     def load(self) -> float:
         """Total load of the piecewise-linear pressure (:meth:`Contact.load`)."""
         return self.geometry.load(self.mesh.nodes, self.p)
@@ -509,7 +524,7 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
 def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
             k_guess: float | None = None, edge: float | None = None,
             cache: StickBlocks | None = None) -> float:
-    """Newton's starting k >= 0: the caller's guess, else a cheap estimate.
+    """Newton's starting k relative to sign(beta): the caller's guess, else a cheap estimate.
 
     For n > 128 the Richardson extrapolation of the n = 64 and n = 128
     solutions (error O(h^2)) puts Newton within 1e-5 ... 3e-5 of the answer,
@@ -517,17 +532,19 @@ def start_k(geometry: Contact, stick_ratio: float, n: int, power: float,
     solution is added and k + A n^-2 + B n^-3 fitted through the three
     (within ~1e-6: one refined step is then final, see REFINED_FINAL_STEP); for smaller n the uncoupled closed
     form (with |beta|) at the stick-edge node ``edge`` (default c/a). The
-    solver multiplies it by sign(beta).
+    solver multiplies it by sign(beta); it is negative when the coarse
+    solutions slip against sign(beta) (see :attr:`DiscreteSolution.oriented_k`).
     """
     if k_guess is not None:
         return float(k_guess)
     if n > 128:
-        k64 = solve_default(geometry, stick_ratio, 64, power=power, cache=cache).k
+        k64 = solve_default(geometry, stick_ratio, 64, power=power, cache=cache).oriented_k
         k128 = solve_default(geometry, stick_ratio, 128, power=power,
-                             k_guess=k64 if np.isfinite(k64) else None, cache=cache).k
+                             k_guess=k64 if np.isfinite(k64) else None,
+                             cache=cache).oriented_k
         if n >= _THREE_LEVEL_START_FROM_N and np.isfinite(k64) and np.isfinite(k128):
             k256 = solve_default(geometry, stick_ratio, 256, power=power,
-                                 k_guess=k128 + (k128 - k64) / 3.0, cache=cache).k
+                                 k_guess=k128 + (k128 - k64) / 3.0, cache=cache).oriented_k
             if np.isfinite(k256):  # k + A n^-2 + B n^-3 through the three levels
                 return (32.0 * k256 - 12.0 * k128 + k64) / 21.0
         if np.isfinite(k64) and np.isfinite(k128):  # (a failed coarse solve reports NaN)

@@ -364,14 +364,14 @@ def _solve_from(geometry: Contact, method: str, n: int, c: float, guess: float |
         coarse = _coarse_solves(geometry, n, c, guess, ops, cache)
         half, quarter = coarse.get(n // 2), coarse.get(n // 4)
         if half is not None and half.converged and guess is None:
-            guess = half.k  # (a continuation guess is closer: ~1e-6 in a sweep)
+            guess = half.oriented_k  # (a continuation guess is closer: ~1e-6 in a sweep)
             if quarter is not None and quarter.converged:
-                guess = half.k + (half.k - quarter.k) / 3.0  # Richardson, n^-2
+                guess = half.oriented_k + (half.oriented_k - quarter.oriented_k) / 3.0  # n^-2
     d = solve_one(geometry, method, n, c, normal, shear, guess, ops=ops, cache=cache,
                   level_offsets=level_offsets if guess is not None else None)
     if method in NODAL_METHODS and not d.converged and guess is not None and 0.0 < c < 1.0:
         half = coarse.get(n // 2)
-        retry = half.k if half is not None and half.converged else None
+        retry = half.oriented_k if half is not None and half.converged else None
         d = solve_one(geometry, method, n, c, normal, shear, retry, ops=ops, cache=cache)
     return d, coarse, ops
 
@@ -457,7 +457,7 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
                                   pw_odd[2] @ d.p + qw_odd[2] @ d.phi)
         out[m] = d
         if d.converged and d.k > 0.0:
-            guess = d.k
+            guess = d.oriented_k  # (negative when the slip runs against sign(beta))
     return out
 
 

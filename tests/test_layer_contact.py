@@ -294,3 +294,23 @@ def test_layer_study_dataset_table_and_figure(tmp_path):
     rows = summary.layer_rows(back)
     assert len(rows) == 4 and rows[1]["k at c/a = 0.5"] == "" and rows[0]["k at c/a = 0.5"]
     assert len(plot.fig_layers(back).axes) == 6
+
+
+# ----------------------------------------------------------------------------- Newton's start
+def test_reversed_slip_on_a_layer_starts_newton_on_its_own_side():
+    """On a layer whose slip runs outward (against sign(beta)) the finer levels start
+    from the coarse levels' signed k: the fine Newton then needs the steps a half-space
+    needs (it took 4-5 from +k), and the root is the same as from a cold start."""
+    from contactlib.default_method import solve_default
+
+    layer = contact("sphere", NU, slab_ratio=20.0)
+    coarse = solve_default(layer, 0.5, 64)
+    assert coarse.converged and coarse.k > 0.0
+    assert coarse.oriented_k == -coarse.k  # the slip runs outward on this layer
+    assert np.all(coarse.phi[coarse.mesh.stick_index:-1] < 0.0)  # q = -k p in the slip zone
+    half = solve_default(contact("sphere", NU), 0.5, 64)
+    assert half.oriented_k == half.k > 0.0  # inward on the half-space
+    fine = solve_default(layer, 0.5, 256)  # started from n = 64 and 128
+    cold = solve_default(layer, 0.5, 256, k_guess=-fine.k * 1.5)  # from far on the same side
+    assert fine.converged and fine.iterations <= 2
+    assert abs(fine.k / cold.k - 1.0) < 1e-9

@@ -732,7 +732,10 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
             f"the stick zone needs |q| > k p somewhere (violation "
             f"{fl.get('stick_violation', float('nan')):.1e}): either one self-similar stick "
             "zone cannot hold at this c/a or n is too coarse to show that it does (a larger "
-            "n tells which), so k is not resolved")) if x)
+            "n tells which), so k is not resolved"
+            + ("; next to full stick, no friction reaches a c/a beyond the largest stick "
+               "ratio c* < 1 of this coupling (docs/accuracy.md, 'Near full stick')"
+               if rec.stick_ratio > 0.5 else ""))) if x)
     msg = "; ".join(x for x in (message, rec.message, reversal) if x)
     return Solution(
         geometry=geometry.indenter.name, nu=geometry.body.nu, method=method, n=n,

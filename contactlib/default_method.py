@@ -730,13 +730,16 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     if not (np.isfinite(k) and k > 0.0):  # never a negative (or non-finite) k as if good
         converged = False
         if np.isfinite(k) and tensile:
-            msg = (f"c/a = {stick_ratio:.7g} lies beyond the largest stick ratio c* < 1 that one "
-                   f"slip zone reaches at this coupling (beta = {geometry.beta:.3g}): k grows "
-                   "without bound as c/a approaches c*, and past it the root slips the other way "
-                   f"({way}, |k| = {abs(k):.4g}) with tensile pressure at the stick edge; no "
-                   "friction coefficient gives this stick ratio (the full-stick solution itself "
-                   "has tensile pressure at the edge; docs/accuracy.md, 'Near full stick'); "
-                   "not a solution, k is reported as NaN")
+            msg = (f"Newton on k ended at a root that slips the other way ({way}, |k| = "
+                   f"{abs(k):.4g}) with tensile pressure at the stick edge: c/a = "
+                   f"{stick_ratio:.7g} most likely lies beyond the largest stick ratio c* < 1 "
+                   f"that one slip zone reaches at this coupling (beta = {geometry.beta:.3g}; k "
+                   "grows without bound as c/a approaches c*, the roots past it are of this "
+                   "kind, and no friction coefficient gives such a stick ratio: the full-stick "
+                   "solution itself has tensile pressure at the edge; docs/accuracy.md, 'Near "
+                   "full stick'), unless Newton started far from a root just below c* (a "
+                   "larger n, or a sweep from smaller c/a, tells which); not a solution, k is "
+                   "reported as NaN")
         elif np.isfinite(k):
             msg = (f"Newton on k ended at a root with slip {way} (|k| = {abs(k):.4g}), against "
                    f"the sign of beta ({geometry.beta:.3g}), where the slip does not oppose the "

@@ -319,6 +319,32 @@ def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
     return float(geometry.uncoupled_friction(mesh.nodes[mesh.stick_index]))
 
 
+def _retry_failed_levels(geometry: Contact, c: float, ns, meshes, opss, odds, sols) -> None:
+    """Solve again, from the next coarser good level, a coarse level that failed.
+
+    Without a guess the first level starts from the uncoupled closed form. Next to
+    full stick at strong coupling that start can be far from the root and Newton
+    lands on another one (sphere, nu = 0, c/a = 0.998, k = 4.85: the level n = 64
+    from k = 1.10 ended on a tensile reversed root while n = 32 and 16 converged).
+    The coarser level's k, continued by the n^-2 trend of the two below it, starts
+    such a level anew. Levels that converged are not touched.
+    """
+    for j in range(1, len(sols) - 1):
+        if _good(sols[j]) or not _good(sols[j - 1]):
+            continue
+        below = sols[j - 1].oriented_k
+        k0 = below + (below - sols[j - 2].oriented_k) / 4.0 if j > 1 and _good(sols[j - 2]) \
+            else below
+        d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
+                   rows=difference_rows(geometry, meshes[j]))
+        if _good(d):
+            if odds[j] is not None:  # as for every level: u, du/dx inside its elements
+                x, po, qo = odds[j]
+                d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi,
+                                      po[2] @ d.p + qo[2] @ d.phi)
+            sols[j] = d
+
+
 def _work(geometry: Contact, d: DiscreteSolution) -> float:
     xs, ws, q, s = d.slip_samples()
     return float(energy.frictional_work(xs, ws, q, s, geometry.work_factor,
@@ -391,6 +417,8 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     sols: list[DiscreteSolution | None] = [None] * LEVELS
     for i in _level_order(ns, k_guess is not None):
         if i == LEVELS - 1:  # the finest root predicted from the coarse levels' expansion
+            if k_guess is None:
+                _retry_failed_levels(geometry, c, ns, meshes, opss, odds, sols)
             k0 = _predict([s.k for s in sols[:-1]])
         elif k_guess is not None and level_offsets is not None:  # continuation: each
             # coarse level from the neighbour's offset, corrected by the ratio the coarser

@@ -196,6 +196,19 @@ def test_no_negative_extrapolated_k():
         assert np.isfinite(s.k) or not s.error_estimate < 1.0  # NaN is flagged
 
 
+def test_a_level_that_fails_from_the_closed_form_is_solved_again():
+    """Sphere, nu = 0, c/a = 0.998 (k = 4.85, just below c* = 0.99900): the first
+    level (n = 64) from the uncoupled closed form (k = 1.10) lands on a tensile reversed
+    root; it is solved again from the coarser levels and the case is resolved, in
+    agreement with the default method at n = 512 within their estimates."""
+    s = api.solve("sphere", 0.0, stick_ratio=0.998, n=128, method="extrapolated",
+                  energy=False)
+    ref = api.solve("sphere", 0.0, stick_ratio=0.998, n=512, energy=False)
+    assert s.resolved and ref.resolved
+    gap = abs(s.friction_coefficient / ref.friction_coefficient - 1.0)
+    assert gap <= 3.0 * (s.error_estimate + ref.error_estimate), gap
+
+
 @pytest.mark.parametrize("geometry, nu, c", [("cylinder", 0.3, 0.1945),
                                                ("sphere", -0.5, 0.3691)])
 def test_a_vanishing_n2_term_is_no_reason_to_stop_extrapolating(geometry, nu, c):

@@ -49,3 +49,12 @@ rule all:
     input:
         all_targets(),
     default_target: True
+
+
+# ends the process as soon as the run is over (cancel_rate_limiter_timer, common.smk)
+onsuccess:
+    cancel_rate_limiter_timer()
+
+
+onerror:
+    cancel_rate_limiter_timer()

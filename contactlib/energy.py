@@ -72,9 +72,11 @@ Units as for :func:`step_work`.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-__all__ = ["slip_points", "frictional_work", "step_work", "dot", "step_external_work",
+__all__ = ["slip_points", "frictional_work", "record_work", "step_work", "dot", "step_external_work",
            "mean_traction", "stored_energy", "decay_integrals",
            "viscous_step_work"]
 
@@ -93,6 +95,20 @@ def frictional_work(x: np.ndarray, weights: np.ndarray, q: np.ndarray, s: np.nda
                     factor: float, power: int) -> float:
     """V in the scaling of docs/conventions.md: factor * sum w x^power q (-s)."""
     return float(factor * np.sum(weights * x**power * q * (-s)))
+
+
+def record_work(record: Any, factor: float, power: int) -> float:
+    """V of one self-similar case from its stored slip samples (0 without slip).
+
+    ``record`` is a :class:`contactlib.result.CaseRecord` (its ``slip_x``,
+    ``slip_w``, ``slip_q``, ``slip_s``); ``factor`` and ``power`` are the
+    indenter's ``work_factor`` and ``work_weight_power``. Nothing slips
+    without friction (k = 0), in full adhesion or at nu = 0.5.
+    """
+    if record.slip_x.size == 0:
+        return 0.0
+    return frictional_work(record.slip_x, record.slip_w, record.slip_q, record.slip_s,
+                           factor, power)
 
 
 def step_work(q_old: np.ndarray, q_new: np.ndarray, du: np.ndarray, shear_area: np.ndarray,

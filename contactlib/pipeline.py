@@ -81,13 +81,19 @@ def check(records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
     return out
 
 
-@blas_single_threaded
 def energy(scene: Scene, records: Sequence[CaseRecord]) -> dict[str, np.ndarray]:
-    """Frictional work of the loading half-cycle, one value a case (docs/conventions.md)."""
-    from . import stages
+    """Frictional work of the loading half-cycle, one value a case (docs/conventions.md).
+
+    A weighted sum over the records' slip samples (``energy.record_work``,
+    what ``stages.work_case`` computes), no BLAS or LAPACK call: neither the
+    solvers' imports nor :func:`~contactlib.threads.single_blas_thread`,
+    whose set-up imports scipy.linalg (most of the rule's CPU time).
+    """
+    from .energy import record_work
 
     geom = scene.geometry_object
-    return {"frictional_work": np.array([stages.work_case(geom, r) for r in records])}
+    return {"frictional_work": np.array([record_work(r, geom.work_factor, geom.work_weight_power)
+                                         for r in records])}
 
 
 @blas_single_threaded

@@ -687,10 +687,7 @@ def check_case(rec: CaseRecord) -> dict[str, Any]:
 
 def work_case(geometry: Contact, rec: CaseRecord) -> float:
     """Frictional work of the loading half-cycle (docs/conventions.md scaling; 0 without slip)."""
-    if rec.slip_x.size == 0:
-        return 0.0  # frictionless (k = 0), full adhesion, or nu = 0.5: nothing slips
-    return energy.frictional_work(rec.slip_x, rec.slip_w, rec.slip_q, rec.slip_s,
-                                  geometry.work_factor, geometry.work_weight_power)
+    return energy.record_work(rec, geometry.work_factor, geometry.work_weight_power)
 
 
 def profiles(geometry: Contact, rec: CaseRecord, xi: np.ndarray, *, stresses: bool = True,

@@ -125,7 +125,7 @@ def test_materials_target_is_separate_from_the_main_job(tmp_path):
     counts = job_counts(wd, "materials")
     pairs = 6  # config/config.yaml
     assert counts["materials_figure"] == counts["materials"] == 1
-    assert counts["solve"] == counts["history_run"] == counts["history_assemble"] == pairs
+    assert counts["solve"] == counts["history_run"] == pairs
     assert "energy" not in counts and "key_numbers" not in counts
     assert counts["materials_key_numbers"] == 1  # the pairs' own key-numbers table
 

@@ -218,3 +218,30 @@ def test_package_imports_no_solver_and_history_stays_the_function():
     proc = subprocess.run([sys.executable, "-c", code], env=env_with_threads(1),
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
+
+
+def test_workflow_check_and_energy_stages_need_no_solver_imports():
+    """The check and energy jobs are elementwise work on stored samples: their
+    process imports neither scipy nor the solvers (most of a job's time), and
+    the work equals stages.work_case, the library's own per-case work."""
+    code = ("import sys\n"
+            "import numpy as np\n"
+            "from contactlib import pipeline\n"
+            "from contactlib.scene import parse_scene\n"
+            "scene = parse_scene('s', {'geometry': 'sphere', 'nu': 0.3, 'n': 32,\n"
+            "                          'stick_ratios': [0.3, 0.7], 'outputs': ['k_curve', 'energy']})\n"
+            "import contactlib.stages as stages\n"
+            "records = stages.solve_cases(scene.geometry_object, 'default', 32, [0.3, 0.7])\n"
+            "want = [stages.work_case(scene.geometry_object, r) for r in records]\n"
+            "for name in [m for m in sys.modules if m.startswith(('scipy', 'contactlib.'))]:\n"
+            "    del sys.modules[name]\n"
+            "from contactlib import pipeline\n"
+            "work = pipeline.energy(scene, records)['frictional_work']\n"
+            "flags = pipeline.check(records)\n"
+            "assert np.array_equal(work, want) and min(want) > 0, (work, want)\n"
+            "loaded = sorted(m for m in sys.modules if m.startswith('scipy')\n"
+            "                or m in ('contactlib.stages', 'contactlib.default_method'))\n"
+            "assert not loaded, loaded\n")
+    proc = subprocess.run([sys.executable, "-c", code], env=env_with_threads(1),
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr

@@ -55,7 +55,7 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
     # a history scene is one job (its runs, one a friction coefficient, in parallel)
     assert counts == {"influence": n_scenes, "solve": n_scenes, "check": n_scenes,
                       "displacements": n_scenes, "energy": n_scenes, "assemble": n_scenes,
-                      "history_run": len(histories), "history_assemble": len(histories),
+                      "history_run": len(histories),
                       # one job a family of figures (paper, history), its figures in parallel
                       "figures_paper": 1, "figures_history": 1,
                       "key_numbers": 1, "all": 1}

@@ -1,11 +1,12 @@
 # Scenes of kind `history`: one incremental run a friction coefficient, in
-# parallel worker processes of one job a scene (results/history/<scene>/k<i>.nc),
-# then stacked along `friction_coefficient` into the scene's dataset.
+# parallel worker processes of one job a scene, stacked along
+# `friction_coefficient` into the scene's dataset by the same job (a separate
+# stacking job cost a process start and a netCDF round trip a run).
 
 
 rule history_run:
     output:
-        directory("results/history/{hscene}"),
+        "results/datasets/{hscene}.nc",
     params:
         run=history_params,
         version=VERSION,
@@ -22,26 +23,3 @@ rule history_run:
         runtime=runtime_history,
     script:
         "../scripts/history_run.py"
-
-
-rule history_assemble:
-    input:
-        "results/history/{hscene}",
-    output:
-        "results/datasets/{hscene}.nc",
-    params:
-        scene=lambda wildcards: HISTORIES[wildcards.hscene].name,
-        hash=lambda wildcards: HISTORIES[wildcards.hscene].hash,
-        runs=lambda wildcards: len(HISTORIES[wildcards.hscene].frictions),
-        version=VERSION,
-    log:
-        "results/logs/assemble/{hscene}.log",
-    conda:
-        "../envs/contactlib.yaml"
-    threads: 1
-    priority: PRIORITY["history_assemble"]
-    resources:
-        mem_mb=800,
-        runtime=5,
-    script:
-        "../scripts/history_assemble.py"

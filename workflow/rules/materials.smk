@@ -1,7 +1,7 @@
 # The `materials` target: named material pairs (config `materials:`), an elastic
 # indenter on a half-space. Each pair's self-similar scene (k against c/a) and
 # history scene (frictional work of the load cycle) are built by the usual rules
-# (influence, solve, check, assemble; history_run, history_assemble); these stages
+# (influence, solve, check, assemble; history_run); these stages
 # draw them in one figure and sum them up in a key-numbers table (with the
 # indenter's E1/E2, nu1 and the pair's beta). Not part of `all`: run `snakemake --cores 2 materials`.
 

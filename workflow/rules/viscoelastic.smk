@@ -1,6 +1,6 @@
 # The `viscoelastic` target: one load cycle on a viscoelastic body (config
 # `viscoelastic:`) for each cycle duration T, each a history scene visco-T<T>
-# built by the usual history rules (history_run, history_assemble); this stage
+# built by the usual history rule (history_run); this stage
 # draws the dissipation per cycle against T/tau, split into viscous and frictional
 # work, and the load-indentation loops at three durations. Not part of `all`:
 # run `snakemake --cores 2 viscoelastic`.

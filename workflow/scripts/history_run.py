@@ -1,8 +1,7 @@
-"""Rule history_run: a history scene's load path, one run a friction coefficient
--> results/history/<scene>/k<i>.nc, the runs in parallel worker processes (threads)."""
+"""Rule history_run: a history scene's load path, one run a friction coefficient (in
+parallel worker processes, threads), stacked along k -> results/datasets/<scene>.nc."""
 
 import sys
-from pathlib import Path
 
 sys.stderr = sys.stdout = open(snakemake.log[0], "w")  # noqa: F821 (snakemake object)
 
@@ -11,11 +10,9 @@ from contactlib.threads import map_cases  # noqa: E402
 
 params = snakemake.params.run  # noqa: F821
 scene, config_hash = params["scene"], params["hash"]
-folder = Path(snakemake.output[0])  # noqa: F821
-folder.mkdir(parents=True, exist_ok=True)
 
 
-def run(index: int) -> None:
+def run(index: int):
     spec = dict(params["runs"][index])
     k = spec["friction"]
 
@@ -24,10 +21,12 @@ def run(index: int) -> None:
             print(f"{scene} k = {k:g}: step {i}/{n}", flush=True)
 
     res = history(progress=progress, **spec)
-    ds = io.set_provenance(io.history_to_dataset(res), scene, config_hash)
     if res.message:
         print(f"{scene} k = {k:g}: {res.message}", flush=True)
-    io.write_dataset(ds, folder / f"k{index}.nc")
+    return io.set_provenance(io.history_to_dataset(res), scene, config_hash)
 
 
-map_cases(run, range(len(params["runs"])), snakemake.threads)  # noqa: F821
+ds = io.stack_histories(map_cases(run, range(len(params["runs"])), snakemake.threads))  # noqa: F821
+io.set_provenance(ds, scene, config_hash)
+io.write_dataset(ds, snakemake.output[0])  # noqa: F821
+print(f"{scene}: {ds.sizes['friction_coefficient']} histories written", flush=True)

@@ -58,8 +58,8 @@ from .discrete import SelfSimilarSolution
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
-from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_part,
-                        operators, u_difference_rows)
+from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators,
+                        operator_part, operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "start_k",
            "newton_on_k", "REFINED_FINAL_STEP", "PartialSlipSystem", "NewtonResult",
@@ -203,8 +203,7 @@ class DiscreteSolution(SelfSimilarSolution):
 
     def radial_displacement(self, x: np.ndarray) -> np.ndarray:
         """u at points x alone (cheapest: no w, no du/dx)."""
-        pw = operator_part(self.geometry, self.mesh.nodes, x, "normal", with_w=False)
-        qw = operator_part(self.geometry, self.mesh.nodes, x, "shear", with_du=False)
+        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False, with_du=False)
         return pw[1] @ self.p + qw[1] @ self.phi
 
 
@@ -560,8 +559,10 @@ def _nodal_operators(geometry: Contact, mesh: Mesh,
     """(P, Q) nodal operators on ``mesh``: given (checked, copied where edited) or built."""
     nn, m = mesh.n, mesh.stick_index
     if ops is None:
-        pw = nodal_operator_part(geometry, mesh, "normal", cache=cache)
-        qw = nodal_operator_part(geometry, mesh, "shear", cache=cache) if m > 0 else None
+        if m > 0:
+            pw, qw = nodal_operators(geometry, mesh, cache=cache)
+        else:
+            pw, qw = nodal_operator_part(geometry, mesh, "normal", cache=cache), None
     else:
         copy = geometry.indenter.odd_shear  # the axis row is edited below
         pw = np.array(ops[0], dtype=float, copy=copy)

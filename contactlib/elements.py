@@ -115,6 +115,9 @@ class Store:
             self.hits += 1
         return found
 
+    def __contains__(self, key: tuple) -> bool:
+        return key in self._values
+
     def clear(self) -> None:
         """Forget every value."""
         self._values.clear()

@@ -145,9 +145,9 @@ class _Packer:
                 for v in self.kernel(self.ws.x[:self.fill], self.ws.s[:self.fill])]
         with np.errstate(invalid="ignore"):  # inf * weight - inf of a log-infinite du
             for lo, a, b, w, length, put in self.pending:
-                res = np.empty((3, b - a))
+                res = np.empty((len(vals), b - a))
                 hi = lo + (b - a) * w.size
-                for k_out in range(3):
+                for k_out in range(len(vals)):
                     np.dot(w, vals[k_out][lo:hi].reshape(w.size, b - a), out=res[k_out])
                 res *= length[a:b]
                 put(a, b, res)
@@ -175,7 +175,7 @@ def _sink(flat: list, pos: np.ndarray, add: bool = False):
     """``put`` for the packer: write (or add) piece results at flat positions ``pos``."""
     def put(a, b, res):
         sel = pos[a:b]
-        for k_out in range(3):
+        for k_out in range(res.shape[0]):
             if add:
                 flat[k_out][sel] += res[k_out]
             else:
@@ -184,7 +184,8 @@ def _sink(flat: list, pos: np.ndarray, add: bool = False):
 
 
 def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
-                      chunk: int = 2_000_000, ref: float | None = None) -> np.ndarray:
+                      chunk: int = 2_000_000, ref: float | None = None,
+                      outputs: int = 3) -> np.ndarray:
     """Integrals of a kernel over every element for every evaluation point.
 
     Parameters
@@ -202,22 +203,28 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
         A node where the kernel is singular as well as at ``x`` (a kernel
         difference K(x; s) - K(ref; s)): the elements are classified by
         their distance to the nearer of ``x`` and ``ref``.
+    outputs : int
+        The number of outputs ``kernel`` returns (3: w, u, du/dx). Several
+        kernels on the same points share one classification and one set of
+        quadrature points when called as one kernel returning all their
+        outputs (6: a pressure's and a shear's); each output is integrated
+        exactly as it would be alone, bit for bit.
 
     Returns
     -------
-    ndarray, shape (3, m, N)
+    ndarray, shape (outputs, m, N)
         ``G[k, i, j] = int_{nodes[j]}^{nodes[j+1]} K_k(x_i; s) ds`` for
-        k = 0 (w), 1 (u), 2 (du/dx).
+        k = 0 (w), 1 (u), 2 (du/dx) (and so on for further kernels).
     """
     x = np.ascontiguousarray(x, dtype=float).reshape(-1)
     nodes = np.asarray(nodes, dtype=float)
     lo_e, hi_e = nodes[:-1], nodes[1:]
     length = hi_e - lo_e
     m, n = x.size, lo_e.size
-    out = np.empty((3, m, n))
+    out = np.empty((outputs, m, n))
     if m == 0 or n == 0:
         return out
-    flat = [out[k].reshape(-1) for k in range(3)]
+    flat = [out[k].reshape(-1) for k in range(outputs)]
     with np.errstate(divide="ignore"):
         inv_len = 1.0 / length
     dist_ref = None
@@ -272,7 +279,7 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
             lo, hi = lo_e.take(jj), hi_e.take(jj)
             cut = np.clip(xs_near, lo, hi)
             pos = idx + base
-            for k_out in range(3):
+            for k_out in range(outputs):
                 flat[k_out][pos] = 0.0  # the pieces on either side of x add up here
             near = (pos, ((cut, hi), (lo, cut)))
         # above x first (inside the disc), then below; near pieces last on each side

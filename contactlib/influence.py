@@ -109,8 +109,8 @@ class _Packer:
     ``_CALL_POINTS`` points, laid out point-major (rule point, piece).
     """
 
-    def __init__(self, kernel: Kernel) -> None:
-        self.kernel = kernel
+    def __init__(self, kernels: tuple[Kernel, ...]) -> None:
+        self.kernels = kernels
         self.ws = _SCRATCH
         self.fill = 0
         self.pending: list = []
@@ -139,18 +139,21 @@ class _Packer:
             a = b
 
     def flush(self) -> None:
+        """Evaluate the kernels (one after the other: one output block alive at a time)."""
         if not self.fill:
             return
-        vals = [np.asarray(v, dtype=float).reshape(-1)
-                for v in self.kernel(self.ws.x[:self.fill], self.ws.s[:self.fill])]
-        with np.errstate(invalid="ignore"):  # inf * weight - inf of a log-infinite du
-            for lo, a, b, w, length, put in self.pending:
-                res = np.empty((len(vals), b - a))
-                hi = lo + (b - a) * w.size
-                for k_out in range(len(vals)):
-                    np.dot(w, vals[k_out][lo:hi].reshape(w.size, b - a), out=res[k_out])
-                res *= length[a:b]
-                put(a, b, res)
+        x, s = self.ws.x[:self.fill], self.ws.s[:self.fill]
+        for first, kernel in zip(range(0, 3 * len(self.kernels), 3), self.kernels):
+            vals = [np.asarray(v, dtype=float).reshape(-1) for v in kernel(x, s)]
+            with np.errstate(invalid="ignore"):  # inf * weight - inf of a log-infinite du
+                for lo, a, b, w, length, put in self.pending:
+                    res = np.empty((len(vals), b - a))
+                    hi = lo + (b - a) * w.size
+                    for k_out in range(len(vals)):
+                        np.dot(w, vals[k_out][lo:hi].reshape(w.size, b - a), out=res[k_out])
+                    res *= length[a:b]
+                    put(a, b, res, first)
+            del vals
         self.pending = []
         self.fill = 0
 
@@ -173,26 +176,28 @@ def _off_the_point(s: np.ndarray, xs: np.ndarray, start: np.ndarray) -> None:
 
 def _sink(flat: list, pos: np.ndarray, add: bool = False):
     """``put`` for the packer: write (or add) piece results at flat positions ``pos``."""
-    def put(a, b, res):
+    def put(a, b, res, first=0):
         sel = pos[a:b]
         for k_out in range(res.shape[0]):
             if add:
-                flat[k_out][sel] += res[k_out]
+                flat[first + k_out][sel] += res[k_out]
             else:
-                flat[k_out][sel] = res[k_out]
+                flat[first + k_out][sel] = res[k_out]
     return put
 
 
-def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
-                      chunk: int = 2_000_000, ref: float | None = None,
-                      outputs: int = 3) -> np.ndarray:
+def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes: np.ndarray,
+                      chunk: int = 2_000_000, ref: float | None = None) -> np.ndarray:
     """Integrals of a kernel over every element for every evaluation point.
 
     Parameters
     ----------
-    kernel : callable
+    kernel : callable or tuple of callables
         ``kernel(x, s) -> (w, u, dudx)``, vectorized, for a unit basic load of
-        radius (half-width) ``s``.
+        radius (half-width) ``s``. Several kernels (a tuple: a pressure's and a
+        shear's) share one classification of the (point, element) pairs and one
+        set of quadrature points, evaluated by each kernel in turn; each output is
+        integrated exactly as it would be alone, bit for bit.
     x : ndarray, shape (m,)
         Evaluation points (>= 0).
     nodes : ndarray, shape (N + 1,)
@@ -203,19 +208,15 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
         A node where the kernel is singular as well as at ``x`` (a kernel
         difference K(x; s) - K(ref; s)): the elements are classified by
         their distance to the nearer of ``x`` and ``ref``.
-    outputs : int
-        The number of outputs ``kernel`` returns (3: w, u, du/dx). Several
-        kernels on the same points share one classification and one set of
-        quadrature points when called as one kernel returning all their
-        outputs (6: a pressure's and a shear's); each output is integrated
-        exactly as it would be alone, bit for bit.
 
     Returns
     -------
-    ndarray, shape (outputs, m, N)
+    ndarray, shape (3 K, m, N) for K kernels
         ``G[k, i, j] = int_{nodes[j]}^{nodes[j+1]} K_k(x_i; s) ds`` for
-        k = 0 (w), 1 (u), 2 (du/dx) (and so on for further kernels).
+        k = 0 (w), 1 (u), 2 (du/dx) (3, 4, 5 those of a second kernel, ...).
     """
+    kernels = tuple(kernel) if isinstance(kernel, tuple) else (kernel,)
+    outputs = 3 * len(kernels)
     x = np.ascontiguousarray(x, dtype=float).reshape(-1)
     nodes = np.asarray(nodes, dtype=float)
     lo_e, hi_e = nodes[:-1], nodes[1:]
@@ -233,7 +234,7 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
             dist_ref = np.maximum(np.maximum(lo_e - ref, ref - hi_e), 0.0) * inv_len
     rows = max(1, min(int(chunk), _BLOCK_PAIRS) // n)
     ws = _SCRATCH
-    packer = _Packer(kernel)
+    packer = _Packer(kernels)
     for r0 in range(0, m, rows):
         xr = x[r0:r0 + rows]
         mb = xr.size
@@ -302,18 +303,22 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
     return out
 
 
-def apply_difference(g: np.ndarray, nodes: np.ndarray) -> np.ndarray:
+def apply_difference(g: np.ndarray, nodes: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
     """Element integrals (per unit sigma) -> operators on nodal values of phi.
 
     ``sigma_j = (phi_j - phi_{j+1}) / h_j``, so column l of the result is
     g[..., l] / h_l - g[..., l-1] / h_{l-1}; O(size) work, no dense product.
+    ``out`` (shape ``g.shape[:-1] + (N + 1,)``) receives the result; ``g`` may be
+    its first N columns (``out[..., :N]``): a block of rows is read whole before
+    it is written, so no second array of the operator's size is needed.
     """
     h = np.diff(np.asarray(nodes, dtype=float))
     g = np.asarray(g)
     n = h.size
     if n == 0:
         return np.zeros(g.shape[:-1] + (1,))
-    out = np.empty(g.shape[:-1] + (n + 1,))
+    if out is None:
+        out = np.empty(g.shape[:-1] + (n + 1,))
     g2 = g.reshape(-1, n)
     o2 = out.reshape(-1, n + 1)
     step = max(1, 16384 // max(n, 1))  # rows at a time: small temporaries

@@ -175,20 +175,16 @@ def operator_part(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
         return apply_difference(g, nodes)
 
 
-def _joint_kernel(model: Contact, with_w: bool = True, with_du: bool = True) -> Kernel:
-    """The pressure's and the shear's kernels as one kernel of six outputs on the same points.
+def _joint_kernel(model: Contact, with_w: bool = True,
+                  with_du: bool = True) -> tuple[Kernel, Kernel]:
+    """The pressure's and the shear's kernels, integrated together on the same points.
 
     :func:`~contactlib.influence.element_integrals` then classifies the (point, element)
     pairs and places the quadrature points once for both parts; each kernel is evaluated
     on exactly the points it would see alone, so each part's integrals are bit for bit
     those of its own call.
     """
-    normal = _kernel(model, "normal", with_w)
-    shear = _kernel(model, "shear", with_du=with_du)
-
-    def kernel(xx: np.ndarray, ss: np.ndarray):
-        return (*normal(xx, ss), *shear(xx, ss))
-    return kernel
+    return _kernel(model, "normal", with_w), _kernel(model, "shear", with_du=with_du)
 
 
 def _split_kernels(model: Contact) -> bool:
@@ -213,7 +209,7 @@ def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
     if _split_kernels(model):  # a layer: each part with its smooth remainder
         return (operator_part(model, nodes, x, "normal", with_w),
                 operator_part(model, nodes, x, "shear", with_du=with_du))
-    g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes, outputs=6)
+    g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes)
     with np.errstate(invalid="ignore"):  # see operator_part: du/dx on a strip axis
         both = apply_difference(g, nodes)
     return both[:3], both[3:]
@@ -311,7 +307,7 @@ def nodal_operators(model: Contact, mesh: Mesh,
     keys = [(model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
             for part in PARTS]
     if cache is None or not any(key in cache for key in keys):
-        both = element_integrals(joint, ref_nodes, ref_nodes, outputs=6)
+        both = element_integrals(joint, ref_nodes, ref_nodes)
         blocks = [both[:3], both[3:]]
         if cache is not None:
             for key, block in zip(keys, blocks):
@@ -321,12 +317,14 @@ def nodal_operators(model: Contact, mesh: Mesh,
         blocks = [cache.get(key, lambda part=part: element_integrals(
             _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
     scale = np.concatenate([c ** d for d in degrees])
-    g = np.empty((6, n + 1, n))
-    g[:3, :m + 1, :m] = blocks[0] * scale[:3, None, None]
-    g[3:, :m + 1, :m] = blocks[1] * scale[3:, None, None]
-    g[:, :m + 1, m:] = element_integrals(joint, nodes[:m + 1], nodes[m:], outputs=6)
-    g[:, m + 1:, :] = element_integrals(joint, nodes[m + 1:], nodes, outputs=6)
-    both = apply_difference(g, nodes)
+    both = np.empty((6, n + 1, n + 1))
+    g = both[:, :, :n]  # the element integrals, turned into the operators in place
+    np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
+    np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
+    del blocks
+    g[:, :m + 1, m:] = element_integrals(joint, nodes[:m + 1], nodes[m:])
+    g[:, m + 1:, :] = element_integrals(joint, nodes[m + 1:], nodes)
+    apply_difference(g, nodes, out=both)
     return both[:3], both[3:]
 
 

@@ -465,15 +465,19 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     """
     sysm = system
     slip, nn, j = sysm.slip_nodes, sysm.nn, sysm.stick_edge
+    if slip.size and np.array_equal(slip, np.arange(slip[0], slip[0] + slip.size)):
+        block = slice(int(slip[0]), int(slip[0]) + slip.size)  # (assemble's: M ... N-1)
+    else:
+        block = slip  # the same columns, by index (slower)
     a0s = sysm.a0.copy()
-    a0s[:, slip] += k * sysm.a1b
+    a0s[:, block] += k * sysm.a1b
     rs = 1.0 / np.max(np.abs(a0s), axis=1)
     a0s *= rs[:, None]
     cs = 1.0 / np.max(np.abs(a0s), axis=0)
     a0s = sysm.a0 * rs[:, None]
     a0s *= cs
     a1s = sysm.a1b * rs[:, None]
-    a1s *= cs[slip]
+    a1s *= cs[block]
     bs = sysm.b * rs
     shape = sysm.shape
     converged, it, stagnated = False, 0, 0.0
@@ -482,7 +486,7 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     extended = None
     for it in range(1, max_iter + 1):
         ak = a0s.copy()
-        ak[:, slip] += k * a1s
+        ak[:, block] += k * a1s
         lu = linalg.lu_factor(ak, overwrite_a=True, check_finite=False)
         if refine and extended is None and bs.size <= _EXTENDED_COPY_UP_TO:
             extended = (a0s.astype(_EXTENDED), a1s.astype(_EXTENDED))

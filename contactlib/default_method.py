@@ -197,14 +197,15 @@ class DiscreteSolution(SelfSimilarSolution):
 
     def tangential(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(u, du/dx) at points x, without the normal displacement (cheaper)."""
-        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False)
+        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False, rows=(1, 2))
         with np.errstate(invalid="ignore"):  # see operators(): du/dx on a strip axis
-            return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in (1, 2))
+            return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in (0, 1))
 
     def radial_displacement(self, x: np.ndarray) -> np.ndarray:
         """u at points x alone (cheapest: no w, no du/dx)."""
-        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False, with_du=False)
-        return pw[1] @ self.p + qw[1] @ self.phi
+        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False, with_du=False,
+                           rows=(1,))
+        return pw[0] @ self.p + qw[0] @ self.phi
 
 
 def _slip_samples(sol: "DiscreteSolution", order: int | None = None):

@@ -195,24 +195,28 @@ def _split_kernels(model: Contact) -> bool:
 
 
 def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
-              with_w: bool = True, with_du: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
+              with_w: bool = True, with_du: bool = True,
+              rows: tuple[int, ...] = (0, 1, 2)) -> tuple[np.ndarray, np.ndarray]:
+    """Displacement operators on nodal values, each of shape (len(rows), len(x), N + 1).
 
     Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
     w (k = 0), u (1) and du/dx (2) at the points ``x``. ``with_w=False``
     leaves the pressure's w row unreliable (zeros for the sphere), which
     saves the elliptic integrals when only tangential displacements are needed;
     ``with_du=False`` leaves the shear's du/dx row NaN where that is cheaper (the
-    disc). Equal bit for bit to the two :func:`operator_part` calls; both parts
+    disc). ``rows``: only these rows, in this order (the others' integrals are not
+    formed). Equal bit for bit to the two :func:`operator_part` calls; both parts
     share one classification of the element pairs (one pass).
     """
+    rows = tuple(rows)
     if _split_kernels(model):  # a layer: each part with its smooth remainder
-        return (operator_part(model, nodes, x, "normal", with_w),
-                operator_part(model, nodes, x, "shear", with_du=with_du))
-    g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes)
+        return (operator_part(model, nodes, x, "normal", with_w)[list(rows)],
+                operator_part(model, nodes, x, "shear", with_du=with_du)[list(rows)])
+    g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes,
+                          outputs=rows + tuple(3 + k for k in rows))
     with np.errstate(invalid="ignore"):  # see operator_part: du/dx on a strip axis
         both = apply_difference(g, nodes)
-    return both[:3], both[3:]
+    return both[:len(rows)], both[len(rows):]
 
 
 class StickBlocks(Store):

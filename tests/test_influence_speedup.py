@@ -279,3 +279,8 @@ def test_both_parts_in_one_pass_equal_each_alone_bit_for_bit(kind):
                                                                 with_w=with_w))
             np.testing.assert_array_equal(qw, ops.operator_part(model, mesh.nodes, x, "shear",
                                                                 with_du=with_du))
+            for rows in ((1, 2), (1,), (2, 0)):  # only some rows: the same bits
+                pr, qr = ops.operators(model, mesh.nodes, x, with_w=with_w, with_du=with_du,
+                                       rows=rows)
+                np.testing.assert_array_equal(pr, pw[list(rows)])
+                np.testing.assert_array_equal(qr, qw[list(rows)])

@@ -371,7 +371,7 @@ def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
         return model.axis_w_kernel(xx, ss, part, ref)
 
     g = element_integrals(kernel, np.asarray(x, dtype=float), nodes,
-                          ref=ref if ref > 0.0 else None)[:1]
+                          ref=ref if ref > 0.0 else None, outputs=(0,))
     return apply_difference(g, nodes)[0]
 
 
@@ -414,5 +414,5 @@ def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: st
         zero = np.zeros(xx.shape)
         return out, zero, zero
 
-    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes, ref=ref)[:1]
+    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes, ref=ref, outputs=(0,))
     return apply_difference(g, nodes)[0]

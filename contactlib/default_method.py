@@ -58,8 +58,8 @@ from .discrete import SelfSimilarSolution
 from .elements import Mesh, graded_mesh
 from .energy import slip_points
 from .model import Contact
-from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, operator_part,
-                        operators, u_difference_rows)
+from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators,
+                        operator_part, operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "start_k",
            "newton_on_k", "REFINED_FINAL_STEP", "PartialSlipSystem", "NewtonResult",
@@ -197,15 +197,15 @@ class DiscreteSolution(SelfSimilarSolution):
 
     def tangential(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(u, du/dx) at points x, without the normal displacement (cheaper)."""
-        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False)
+        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False, rows=(1, 2))
         with np.errstate(invalid="ignore"):  # see operators(): du/dx on a strip axis
-            return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in (1, 2))
+            return tuple(pw[i] @ self.p + qw[i] @ self.phi for i in (0, 1))
 
     def radial_displacement(self, x: np.ndarray) -> np.ndarray:
         """u at points x alone (cheapest: no w, no du/dx)."""
-        pw = operator_part(self.geometry, self.mesh.nodes, x, "normal", with_w=False)
-        qw = operator_part(self.geometry, self.mesh.nodes, x, "shear", with_du=False)
-        return pw[1] @ self.p + qw[1] @ self.phi
+        pw, qw = operators(self.geometry, self.mesh.nodes, x, with_w=False, with_du=False,
+                           rows=(1,))
+        return pw[0] @ self.p + qw[0] @ self.phi
 
 
 def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
@@ -466,15 +466,19 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     """
     sysm = system
     slip, nn, j = sysm.slip_nodes, sysm.nn, sysm.stick_edge
+    if slip.size and np.array_equal(slip, np.arange(slip[0], slip[0] + slip.size)):
+        block = slice(int(slip[0]), int(slip[0]) + slip.size)  # (assemble's: M ... N-1)
+    else:
+        block = slip  # the same columns, by index (slower)
     a0s = sysm.a0.copy()
-    a0s[:, slip] += k * sysm.a1b
+    a0s[:, block] += k * sysm.a1b
     rs = 1.0 / np.max(np.abs(a0s), axis=1)
     a0s *= rs[:, None]
     cs = 1.0 / np.max(np.abs(a0s), axis=0)
     a0s = sysm.a0 * rs[:, None]
     a0s *= cs
     a1s = sysm.a1b * rs[:, None]
-    a1s *= cs[slip]
+    a1s *= cs[block]
     bs = sysm.b * rs
     shape = sysm.shape
     converged, it, stagnated = False, 0, 0.0
@@ -483,7 +487,7 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     extended = None
     for it in range(1, max_iter + 1):
         ak = a0s.copy()
-        ak[:, slip] += k * a1s
+        ak[:, block] += k * a1s
         lu = linalg.lu_factor(ak, overwrite_a=True, check_finite=False)
         if refine and extended is None and bs.size <= _EXTENDED_COPY_UP_TO:
             extended = (a0s.astype(_EXTENDED), a1s.astype(_EXTENDED))
@@ -560,8 +564,10 @@ def _nodal_operators(geometry: Contact, mesh: Mesh,
     """(P, Q) nodal operators on ``mesh``: given (checked, copied where edited) or built."""
     nn, m = mesh.n, mesh.stick_index
     if ops is None:
-        pw = nodal_operator_part(geometry, mesh, "normal", cache=cache)
-        qw = nodal_operator_part(geometry, mesh, "shear", cache=cache) if m > 0 else None
+        if m > 0:
+            pw, qw = nodal_operators(geometry, mesh, cache=cache)
+        else:
+            pw, qw = nodal_operator_part(geometry, mesh, "normal", cache=cache), None
     else:
         copy = geometry.indenter.odd_shear  # the axis row is edited below
         pw = np.array(ops[0], dtype=float, copy=copy)

@@ -76,15 +76,36 @@ def _side_counts(c: float) -> tuple[Callable, Callable]:
 
 
 def _invert(count: Callable, targets: np.ndarray, span: float) -> np.ndarray:
-    """Distances d in [0, span] with count(d) = targets (monotone count; bisection in sqrt d)."""
-    lo = np.zeros_like(targets)
-    hi = np.full_like(targets, np.sqrt(span))
-    for _ in range(110):  # 2^-110 of sqrt(span): below round-off of every node
+    """Distances d in [0, span] with count(d) = targets (monotone count; bisection in sqrt d).
+
+    110 halvings (2^-110 of sqrt(span): below round-off of every node). A point
+    whose bracket a halving leaves unchanged (the midpoint rounds onto an end)
+    keeps it through every later one, so it drops out there: the same nodes bit for
+    bit, in about half the work. A zero target (count(d) >= 0 is never below it)
+    halves its upper end each time: sqrt(span) 2^-110 after all of them.
+    """
+    steps = 110
+    out_lo = np.zeros_like(targets)
+    out_hi = np.full_like(targets, np.sqrt(span))
+    zero = targets == 0.0
+    out_hi[zero] *= 2.0 ** -steps
+    idx = np.flatnonzero(~zero)  # the points still moving, and their brackets
+    lo, hi, tg = out_lo[idx], out_hi[idx], targets[idx]
+    for _ in range(steps):
+        if idx.size == 0:
+            break
         mid = 0.5 * (lo + hi)
-        below = count(mid * mid) < targets
-        lo = np.where(below, mid, lo)
-        hi = np.where(below, hi, mid)
-    return (0.5 * (lo + hi)) ** 2
+        below = count(mid * mid) < tg
+        new_lo = np.where(below, mid, lo)
+        new_hi = np.where(below, hi, mid)
+        moved = (new_lo != lo) | (new_hi != hi)
+        lo, hi = new_lo, new_hi
+        if not moved.all():
+            done = ~moved
+            out_lo[idx[done]], out_hi[idx[done]] = lo[done], hi[done]
+            idx, lo, hi, tg = idx[moved], lo[moved], hi[moved], tg[moved]
+    out_lo[idx], out_hi[idx] = lo, hi
+    return (0.5 * (out_lo + out_hi)) ** 2
 
 
 class Store:
@@ -114,6 +135,9 @@ class Store:
         else:
             self.hits += 1
         return found
+
+    def __contains__(self, key: tuple) -> bool:
+        return key in self._values
 
     def clear(self) -> None:
         """Forget every value."""

@@ -61,7 +61,7 @@ from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, REFINED_FINAL_STE
                              solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
-from .operators import StickBlocks, nodal_operator_part, restrict_nested
+from .operators import StickBlocks, nodal_operators, restrict_nested
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "N_MULTIPLE", "resolving_n", "work_error",
@@ -227,8 +227,7 @@ def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | Non
 def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None):
     if ops is not None:
         return ops
-    return (nodal_operator_part(geometry, mesh, "normal", cache=cache),
-            nodal_operator_part(geometry, mesh, "shear", cache=cache))
+    return nodal_operators(geometry, mesh, cache=cache)
 
 
 def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
@@ -370,7 +369,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     k_guess : float, optional
         Newton's start on the coarsest mesh (default: the solver's warm start).
     ops : (P, Q), optional
-        The finest mesh's nodal operators (``nodal_operator_part``).
+        The finest mesh's nodal operators (``nodal_operators``).
     cache : StickBlocks, optional
         The caller's store of stick blocks.
     level_offsets : tuple of float, optional

@@ -109,8 +109,9 @@ class _Packer:
     ``_CALL_POINTS`` points, laid out point-major (rule point, piece).
     """
 
-    def __init__(self, kernel: Kernel) -> None:
-        self.kernel = kernel
+    def __init__(self, kernels: tuple[Kernel, ...], dest: list) -> None:
+        self.kernels = kernels
+        self.dest = dest  # per kernel: (its output, row of the result) of the rows wanted
         self.ws = _SCRATCH
         self.fill = 0
         self.pending: list = []
@@ -139,18 +140,24 @@ class _Packer:
             a = b
 
     def flush(self) -> None:
+        """Evaluate the kernels (one after the other: one output block alive at a time)."""
         if not self.fill:
             return
-        vals = [np.asarray(v, dtype=float).reshape(-1)
-                for v in self.kernel(self.ws.x[:self.fill], self.ws.s[:self.fill])]
-        with np.errstate(invalid="ignore"):  # inf * weight - inf of a log-infinite du
-            for lo, a, b, w, length, put in self.pending:
-                res = np.empty((3, b - a))
-                hi = lo + (b - a) * w.size
-                for k_out in range(3):
-                    np.dot(w, vals[k_out][lo:hi].reshape(w.size, b - a), out=res[k_out])
-                res *= length[a:b]
-                put(a, b, res)
+        x, s = self.ws.x[:self.fill], self.ws.s[:self.fill]
+        for kernel, pairs in zip(self.kernels, self.dest):
+            if not pairs:
+                continue
+            vals = [np.asarray(v, dtype=float).reshape(-1) for v in kernel(x, s)]
+            rows = [row for _, row in pairs]
+            with np.errstate(invalid="ignore"):  # inf * weight - inf of a log-infinite du
+                for lo, a, b, w, length, put in self.pending:
+                    res = np.empty((len(pairs), b - a))
+                    hi = lo + (b - a) * w.size
+                    for i, (k_out, _) in enumerate(pairs):
+                        np.dot(w, vals[k_out][lo:hi].reshape(w.size, b - a), out=res[i])
+                    res *= length[a:b]
+                    put(a, b, res, rows)
+            del vals
         self.pending = []
         self.fill = 0
 
@@ -173,25 +180,29 @@ def _off_the_point(s: np.ndarray, xs: np.ndarray, start: np.ndarray) -> None:
 
 def _sink(flat: list, pos: np.ndarray, add: bool = False):
     """``put`` for the packer: write (or add) piece results at flat positions ``pos``."""
-    def put(a, b, res):
+    def put(a, b, res, rows):
         sel = pos[a:b]
-        for k_out in range(3):
+        for i, row in enumerate(rows):
             if add:
-                flat[k_out][sel] += res[k_out]
+                flat[row][sel] += res[i]
             else:
-                flat[k_out][sel] = res[k_out]
+                flat[row][sel] = res[i]
     return put
 
 
-def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
-                      chunk: int = 2_000_000, ref: float | None = None) -> np.ndarray:
+def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes: np.ndarray,
+                      chunk: int = 2_000_000, ref: float | None = None,
+                      outputs: tuple[int, ...] | None = None) -> np.ndarray:
     """Integrals of a kernel over every element for every evaluation point.
 
     Parameters
     ----------
-    kernel : callable
+    kernel : callable or tuple of callables
         ``kernel(x, s) -> (w, u, dudx)``, vectorized, for a unit basic load of
-        radius (half-width) ``s``.
+        radius (half-width) ``s``. Several kernels (a tuple: a pressure's and a
+        shear's) share one classification of the (point, element) pairs and one
+        set of quadrature points, evaluated by each kernel in turn; each output is
+        integrated exactly as it would be alone, bit for bit.
     x : ndarray, shape (m,)
         Evaluation points (>= 0).
     nodes : ndarray, shape (N + 1,)
@@ -202,22 +213,32 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
         A node where the kernel is singular as well as at ``x`` (a kernel
         difference K(x; s) - K(ref; s)): the elements are classified by
         their distance to the nearer of ``x`` and ``ref``.
+    outputs : tuple of int, optional
+        The kernel outputs to integrate (0, 1, 2 the first kernel's w, u, du/dx,
+        3, 4, 5 the second's, ...), in the order of the result's rows; default all.
+        The others are not integrated (a kernel none of whose outputs is asked
+        for is not evaluated); those asked for are the same bits either way.
 
     Returns
     -------
-    ndarray, shape (3, m, N)
+    ndarray, shape (3 K, m, N) for K kernels (or (len(outputs), m, N))
         ``G[k, i, j] = int_{nodes[j]}^{nodes[j+1]} K_k(x_i; s) ds`` for
-        k = 0 (w), 1 (u), 2 (du/dx).
+        k = 0 (w), 1 (u), 2 (du/dx) (3, 4, 5 those of a second kernel, ...).
     """
+    kernels = tuple(kernel) if isinstance(kernel, tuple) else (kernel,)
+    wanted = tuple(range(3 * len(kernels))) if outputs is None else tuple(outputs)
+    dest = [[(k % 3, row) for row, k in enumerate(wanted) if k // 3 == i]
+            for i in range(len(kernels))]
+    count = len(wanted)
     x = np.ascontiguousarray(x, dtype=float).reshape(-1)
     nodes = np.asarray(nodes, dtype=float)
     lo_e, hi_e = nodes[:-1], nodes[1:]
     length = hi_e - lo_e
     m, n = x.size, lo_e.size
-    out = np.empty((3, m, n))
+    out = np.empty((count, m, n))
     if m == 0 or n == 0:
         return out
-    flat = [out[k].reshape(-1) for k in range(3)]
+    flat = [out[k].reshape(-1) for k in range(count)]
     with np.errstate(divide="ignore"):
         inv_len = 1.0 / length
     dist_ref = None
@@ -226,7 +247,7 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
             dist_ref = np.maximum(np.maximum(lo_e - ref, ref - hi_e), 0.0) * inv_len
     rows = max(1, min(int(chunk), _BLOCK_PAIRS) // n)
     ws = _SCRATCH
-    packer = _Packer(kernel)
+    packer = _Packer(kernels, dest)
     for r0 in range(0, m, rows):
         xr = x[r0:r0 + rows]
         mb = xr.size
@@ -272,7 +293,7 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
             lo, hi = lo_e.take(jj), hi_e.take(jj)
             cut = np.clip(xs_near, lo, hi)
             pos = idx + base
-            for k_out in range(3):
+            for k_out in range(count):
                 flat[k_out][pos] = 0.0  # the pieces on either side of x add up here
             near = (pos, ((cut, hi), (lo, cut)))
         # above x first (inside the disc), then below; near pieces last on each side
@@ -295,18 +316,22 @@ def element_integrals(kernel: Kernel, x: np.ndarray, nodes: np.ndarray,
     return out
 
 
-def apply_difference(g: np.ndarray, nodes: np.ndarray) -> np.ndarray:
+def apply_difference(g: np.ndarray, nodes: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
     """Element integrals (per unit sigma) -> operators on nodal values of phi.
 
     ``sigma_j = (phi_j - phi_{j+1}) / h_j``, so column l of the result is
     g[..., l] / h_l - g[..., l-1] / h_{l-1}; O(size) work, no dense product.
+    ``out`` (shape ``g.shape[:-1] + (N + 1,)``) receives the result; ``g`` may be
+    its first N columns (``out[..., :N]``): a block of rows is read whole before
+    it is written, so no second array of the operator's size is needed.
     """
     h = np.diff(np.asarray(nodes, dtype=float))
     g = np.asarray(g)
     n = h.size
     if n == 0:
         return np.zeros(g.shape[:-1] + (1,))
-    out = np.empty(g.shape[:-1] + (n + 1,))
+    if out is None:
+        out = np.empty(g.shape[:-1] + (n + 1,))
     g2 = g.reshape(-1, n)
     o2 = out.reshape(-1, n + 1)
     step = max(1, 16384 // max(n, 1))  # rows at a time: small temporaries

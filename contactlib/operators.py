@@ -56,6 +56,7 @@ if TYPE_CHECKING:
     from .model import Contact
 
 __all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators", "nodal_operator_part",
+           "nodal_operators",
            "StickBlocks", "smooth_integrals", "restrict_nested", "axis_w_rows",
            "u_difference_rows"]
 
@@ -174,17 +175,48 @@ def operator_part(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
         return apply_difference(g, nodes)
 
 
+def _joint_kernel(model: Contact, with_w: bool = True,
+                  with_du: bool = True) -> tuple[Kernel, Kernel]:
+    """The pressure's and the shear's kernels, integrated together on the same points.
+
+    :func:`~contactlib.influence.element_integrals` then classifies the (point, element)
+    pairs and places the quadrature points once for both parts; each kernel is evaluated
+    on exactly the points it would see alone, so each part's integrals are bit for bit
+    those of its own call.
+    """
+    return _kernel(model, "normal", with_w), _kernel(model, "shear", with_du=with_du)
+
+
+def _split_kernels(model: Contact) -> bool:
+    """Whether a part's kernels are split into the half-space's and a smooth remainder."""
+    empty = np.empty(0)
+    return bool(np.isfinite(model.body.thickness)) and any(
+        model.smooth_remainder(part, empty, empty) is not None for part in PARTS)
+
+
 def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
-              with_w: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """Displacement operators on nodal values, each of shape (3, len(x), N + 1).
+              with_w: bool = True, with_du: bool = True,
+              rows: tuple[int, ...] = (0, 1, 2)) -> tuple[np.ndarray, np.ndarray]:
+    """Displacement operators on nodal values, each of shape (len(rows), len(x), N + 1).
 
     Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
     w (k = 0), u (1) and du/dx (2) at the points ``x``. ``with_w=False``
     leaves the pressure's w row unreliable (zeros for the sphere), which
-    saves the elliptic integrals when only tangential displacements are needed.
+    saves the elliptic integrals when only tangential displacements are needed;
+    ``with_du=False`` leaves the shear's du/dx row NaN where that is cheaper (the
+    disc). ``rows``: only these rows, in this order (the others' integrals are not
+    formed). Equal bit for bit to the two :func:`operator_part` calls; both parts
+    share one classification of the element pairs (one pass).
     """
-    return (operator_part(model, nodes, x, "normal", with_w),
-            operator_part(model, nodes, x, "shear"))
+    rows = tuple(rows)
+    if _split_kernels(model):  # a layer: each part with its smooth remainder
+        return (operator_part(model, nodes, x, "normal", with_w)[list(rows)],
+                operator_part(model, nodes, x, "shear", with_du=with_du)[list(rows)])
+    g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes,
+                          outputs=rows + tuple(3 + k for k in rows))
+    with np.errstate(invalid="ignore"):  # see operator_part: du/dx on a strip axis
+        both = apply_difference(g, nodes)
+    return both[:len(rows)], both[len(rows):]
 
 
 class StickBlocks(Store):
@@ -257,6 +289,49 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
     return apply_difference(g, nodes)
 
 
+def nodal_operators(model: Contact, mesh: Mesh,
+                    cache: StickBlocks | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Both parts of :func:`nodal_operator_part`, ``(P, Q)``, in one pass over each block.
+
+    Equal bit for bit to ``nodal_operator_part(model, mesh, "normal", cache)`` and
+    ``(..., "shear", cache)`` called in turn (the same stick blocks in ``cache``): the
+    two parts' kernels are integrated on the same points, classified once
+    (:func:`_joint_kernel`): the classification and packing of the element pairs are
+    done once instead of twice.
+    """
+    nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
+    degrees = [model.length_degrees(part) for part in PARTS]
+    if not 0 < m < n:
+        return operators(model, nodes, nodes)
+    if any(d is None for d in degrees):
+        return tuple(nodal_operator_part(model, mesh, part, cache) for part in PARTS)
+    c = float(nodes[m])
+    joint = _joint_kernel(model)
+    ref_nodes = nodes[:m + 1] / c  # (see nodal_operator_part: the key and the block)
+    keys = [(model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
+            for part in PARTS]
+    if cache is None or not any(key in cache for key in keys):
+        both = element_integrals(joint, ref_nodes, ref_nodes)
+        blocks = [both[:3], both[3:]]
+        if cache is not None:
+            for key, block in zip(keys, blocks):
+                cache.get(key, lambda block=block: block)
+            cache.misses -= 1  # (one computation for the two entries)
+    else:  # one part stored already: the other alone, as nodal_operator_part would
+        blocks = [cache.get(key, lambda part=part: element_integrals(
+            _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
+    scale = np.concatenate([c ** d for d in degrees])
+    both = np.empty((6, n + 1, n + 1))
+    g = both[:, :, :n]  # the element integrals, turned into the operators in place
+    np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
+    np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
+    del blocks
+    g[:, :m + 1, m:] = element_integrals(joint, nodes[:m + 1], nodes[m:])
+    g[:, m + 1:, :] = element_integrals(joint, nodes[m + 1:], nodes)
+    apply_difference(g, nodes, out=both)
+    return both[:3], both[3:]
+
+
 def restrict_nested(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]:
     """A nodal operator of the nested mesh with every other node, from the fine one.
 
@@ -296,7 +371,7 @@ def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
         return model.axis_w_kernel(xx, ss, part, ref)
 
     g = element_integrals(kernel, np.asarray(x, dtype=float), nodes,
-                          ref=ref if ref > 0.0 else None)[:1]
+                          ref=ref if ref > 0.0 else None, outputs=(0,))
     return apply_difference(g, nodes)[0]
 
 
@@ -339,5 +414,5 @@ def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: st
         zero = np.zeros(xx.shape)
         return out, zero, zero
 
-    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes, ref=ref)[:1]
+    g = element_integrals(kernel, np.asarray(x, dtype=float), nodes, ref=ref, outputs=(0,))
     return apply_difference(g, nodes)[0]

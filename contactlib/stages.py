@@ -33,7 +33,7 @@ import numpy as np
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
-from .operators import PARTS, StickBlocks, parts_needed, restrict_nested
+from .operators import PARTS, StickBlocks, nodal_operators, parts_needed, restrict_nested
 from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
@@ -417,6 +417,8 @@ def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
     mesh = graded_mesh(n, c, store=_meshes(cache))
     pw = _lookup(normal, "default", c, mesh.nodes)
     qw = _lookup(shear, "default", c, mesh.nodes)
+    if pw is None and qw is None:
+        return nodal_operators(geometry, mesh, cache=cache)
     if pw is None:
         pw = nodal_operator_part(geometry, mesh, "normal", cache=cache)
     if qw is None:

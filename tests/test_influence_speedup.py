@@ -246,3 +246,41 @@ def test_apply_difference_matches_its_definition():
     ref[..., 1:] -= g / h
     np.testing.assert_array_equal(influence.apply_difference(g, nodes), ref)
     np.testing.assert_array_equal(influence.apply_difference(g[0, 0], nodes), ref[0, 0])
+
+
+@pytest.mark.parametrize("kind", ["sphere", "cylinder", "sphere elastic indenter",
+                                  "cylinder layer", "sphere layer"])
+def test_both_parts_in_one_pass_equal_each_alone_bit_for_bit(kind):
+    """operators.nodal_operators / operators (the two parts' kernels integrated on one
+    classification of the element pairs) give each part exactly the bits of its own
+    call; with a shared store of stick blocks, in either order of filling it."""
+    from contactlib import operators as ops
+    from contactlib.model import contact
+
+    geometry = kind.split()[0]
+    kw = {"indenter_modulus": 2.0, "indenter_nu": 0.2} if "elastic" in kind else {}
+    model = contact(geometry, 0.3, slab_ratio=0.5 if "layer" in kind else 0.0, **kw)
+    for c in (0.0, 0.37, 1.0):
+        mesh = graded_mesh(64, c)
+        alone = [ops.nodal_operator_part(model, mesh, part) for part in ops.PARTS]
+        together = ops.nodal_operators(model, mesh)
+        for a, b in zip(alone, together):
+            np.testing.assert_array_equal(a, b)
+        store = ops.StickBlocks()
+        ops.nodal_operator_part(model, mesh, "shear", cache=store)  # one part stored first
+        for a, b in zip(alone, ops.nodal_operators(model, mesh, cache=store)):
+            np.testing.assert_array_equal(a, b)
+        for a, b in zip(alone, ops.nodal_operators(model, mesh, cache=store)):  # both stored
+            np.testing.assert_array_equal(a, b)
+        x = np.linspace(0.0, 1.3, 37)
+        for with_w, with_du in ((True, True), (False, True), (False, False)):
+            pw, qw = ops.operators(model, mesh.nodes, x, with_w=with_w, with_du=with_du)
+            np.testing.assert_array_equal(pw, ops.operator_part(model, mesh.nodes, x, "normal",
+                                                                with_w=with_w))
+            np.testing.assert_array_equal(qw, ops.operator_part(model, mesh.nodes, x, "shear",
+                                                                with_du=with_du))
+            for rows in ((1, 2), (1,), (2, 0)):  # only some rows: the same bits
+                pr, qr = ops.operators(model, mesh.nodes, x, with_w=with_w, with_du=with_du,
+                                       rows=rows)
+                np.testing.assert_array_equal(pr, pw[list(rows)])
+                np.testing.assert_array_equal(qr, qw[list(rows)])

@@ -205,3 +205,24 @@ def test_stick_blocks_do_not_make_results_depend_on_earlier_calls():
 
 def test_history_mesh_extent_is_the_one_validate_bounds_the_layer_with():
     assert validate.HISTORY_MESH_EXTENT == hs.MESH_EXTENT
+
+
+def test_graded_mesh_nodes_are_those_of_all_110_bisection_steps():
+    """elements._invert drops a point once a halving leaves its bracket unchanged: the
+    nodes must be bit for bit those of the plain 110-step bisection (written out here)."""
+    from contactlib import elements
+
+    def plain(count, targets, span):
+        lo, hi = np.zeros_like(targets), np.full_like(targets, np.sqrt(span))
+        for _ in range(110):
+            mid = 0.5 * (lo + hi)
+            below = count(mid * mid) < targets
+            lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+        return (0.5 * (lo + hi)) ** 2
+
+    for c in (1e-8, 1e-4, 0.02, 0.3, 0.5, 0.77, 0.98, 0.9999, 1 - 1e-5):
+        stick, slip = elements._side_counts(c)
+        for count, span in ((stick, c), (slip, 1.0 - c)):
+            targets = float(count(span)) * np.linspace(0.0, 1.0, 97)
+            got = elements._invert(count, targets, span)
+            np.testing.assert_array_equal(got, plain(count, targets, span))

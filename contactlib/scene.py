@@ -165,14 +165,17 @@ class Scene:
 
     @property
     def stages(self) -> tuple[str, ...]:
-        """Post-processing stages beyond solve and assemble, in DAG order."""
+        """Post-processing stages beyond solve and assemble, in DAG order.
+
+        The displacement profiles a scene may ask for are computed by the
+        assemble stage itself (:func:`contactlib.pipeline.displacements`),
+        not by a stage of their own.
+        """
         out = []
         if "k_curve" in self.outputs:
             out.append("check")
         if "energy" in self.outputs:
             out.append("energy")
-        if "displacements" in self.outputs:
-            out.append("displacements")
         return tuple(out)
 
     def influence_spec(self) -> dict[str, Any]:

@@ -176,7 +176,7 @@ def _rule_blocks() -> dict[str, str]:
 
 def test_every_rule_declares_threads_memory_and_runtime():
     blocks = _rule_blocks()
-    assert len(blocks) >= 8  # influence, solve, displacements, check, energy, assemble, ...
+    assert len(blocks) >= 8  # influence, solve, check, energy, assemble, history_run, ...
     for name, body in blocks.items():
         if not re.search(r"^\s*(script|shell|run|wrapper|notebook):", body, flags=re.M):
             continue  # a target that only collects inputs: runs locally, nothing to size

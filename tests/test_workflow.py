@@ -54,7 +54,7 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
     # one influence job a set (every default scene has its own, normal and shear parts);
     # a history scene is one job (its runs, one a friction coefficient, in parallel)
     assert counts == {"influence": n_scenes, "solve": n_scenes, "check": n_scenes,
-                      "displacements": n_scenes, "energy": n_scenes, "assemble": n_scenes,
+                      "energy": n_scenes, "assemble": n_scenes,
                       "history_run": len(histories),
                       # one job a family of figures (paper, history), its figures in parallel
                       "figures_paper": 1, "figures_history": 1,
@@ -87,7 +87,7 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     assert counts["solve"] == 5 and counts["assemble"] == 5
     assert counts["check"] == 2  # hertz, curve
     assert counts["energy"] == 1  # curve-again
-    assert counts["displacements"] == 1  # paper-b
+    assert "displacements" not in counts  # paper-b's profiles: its assemble job
     assert not any(rule.startswith("figure") for rule in counts)
     from contactlib.scene import parse_scenes
     scenes = parse_scenes(cfg["scenes"])

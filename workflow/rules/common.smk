@@ -271,7 +271,7 @@ def figure_threads(family, n):
 
 
 # Job priorities: the length of the chain of jobs still to come after a job (quiet
-# 2-core machine, seconds: influence 3.4 + solve 2.1 + profiles 1.2 + assemble 1 +
+# 2-core machine, seconds: influence 3.4 + solve 2.1 + assemble (with the profiles) 2 +
 # figures 3.3 + table 1 for a default scene; a history run 1 - 5, its dataset 1,
 # the history figures 5), so that the long chains start first and the short jobs
 # fill the cores beside them; without this the scheduler (which prefers big
@@ -280,7 +280,7 @@ def figure_threads(family, n):
 PRIORITY = {
     "influence": 3, "history_run": 3,
     "solve": 2, "figures_history": 2,
-    "displacements": 1, "check": 1, "energy": 1, "assemble": 1,
+    "check": 1, "energy": 1, "assemble": 1,
     "figures_paper": 0, "key_numbers": 0,
 }
 
@@ -299,7 +299,7 @@ def stage_files(wildcards):
     """The post-processing results a scene's dataset is assembled from."""
     s = SCENES[wildcards.scene]
     files = {"solutions": f"results/solutions/{s.name}.npz"}
-    folders = {"check": "checks", "energy": "energy", "displacements": "profiles"}
+    folders = {"check": "checks", "energy": "energy"}
     for stage in s.stages:
         files[stage] = f"results/{folders[stage]}/{s.name}.npz"
     return files

@@ -1,4 +1,5 @@
-"""Rule assemble: the scene's dataset -> results/datasets/<scene>.nc (atomic)."""
+"""Rule assemble: the scene's dataset (with its displacement profiles, if asked for)
+-> results/datasets/<scene>.nc (atomic)."""
 
 import sys
 
@@ -16,7 +17,8 @@ ds = pipeline.assemble(
     records,
     checks=io.read_arrays(inp.check) if "check" in inp.keys() else None,
     work=io.read_arrays(inp.energy) if "energy" in inp.keys() else None,
-    profiles=io.read_arrays(inp.displacements) if "displacements" in inp.keys() else None,
+    profiles=(pipeline.displacements(scene, records) if "displacements" in scene.outputs
+              else None),
 )
 io.write_dataset(ds, snakemake.output[0])  # noqa: F821
 print(f"{name}: {ds.sizes['stick_ratio']} cases written", flush=True)

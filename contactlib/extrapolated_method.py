@@ -232,7 +232,7 @@ def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None):
 
 def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
            k0: float, one_step: bool, rows: tuple = (None, None),
-           refine: bool = True) -> DiscreteSolution:
+           refine: bool = True, reversed_side: bool = False) -> DiscreteSolution:
     """One level: Newton on k from k0, the last step with extended-precision refinement.
 
     ``one_step``: k0 is within a few 1e-6 of the root (the finest level), and
@@ -244,6 +244,10 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
     (the default method's own; (None, None): the plain rows). The ordinary case (a root
     with the slip against the shear, converged) is finished here; anything else is
     handed to :func:`solve_default` on the same operators, which says what went wrong.
+    ``reversed_side``: k0 is relative to sign(beta) (``DiscreteSolution.oriented_k``),
+    negative because the levels already solved slip against it (outward on a layer);
+    a root found on that side is then handed over as :func:`solve_default`'s start,
+    which judges it (the reversed-slip checks and message live there) in one step.
     """
     system = assemble(geometry, mesh, pw, qw, *rows)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0
@@ -264,7 +268,10 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
         newton.iterations += iterations
     k = newton.k
     if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
-        return solve_default(geometry, c, n, ops=(pw, qw), k_guess=abs(k0))
+        guess = abs(k0)
+        if reversed_side:  # (never on a half-space: its levels slip along sign(beta))
+            guess = sigma * k if newton.converged and np.isfinite(k) else k0
+        return solve_default(geometry, c, n, ops=(pw, qw), k_guess=guess)
     nn, m = mesh.n, mesh.stick_index
     x = newton.x
     p = np.append(x[:nn], 0.0)
@@ -306,13 +313,17 @@ def _level_order(ns, guess: bool) -> list[int]:
 
 def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
     """Newton's start on level i without a guess: from the finer levels solved, else the
-    uncoupled closed form at the stick edge."""
-    finer = [s.k for s in sols[i + 1:-1] if _good(s)]
+    uncoupled closed form at the stick edge.
+
+    Relative to sign(beta) (``DiscreteSolution.oriented_k``): negative when the levels
+    solved slip against it (outward on a layer; on a half-space it is their k).
+    """
+    finer = [s.oriented_k for s in sols[i + 1:-1] if _good(s)]
     if len(finer) >= 2:  # the n^-2 trend of the two next finer levels, continued one level
         return finer[0] + 4.0 * (finer[0] - finer[1])
     if finer:
         return finer[0]
-    done = [s.k for s in sols[:i] if _good(s)]
+    done = [s.oriented_k for s in sols[:i] if _good(s)]
     if done:
         return done[-1]
     return float(geometry.uncoupled_friction(mesh.nodes[mesh.stick_index]))
@@ -335,7 +346,7 @@ def _retry_failed_levels(geometry: Contact, c: float, ns, meshes, opss, odds, so
         k0 = below + (below - sols[j - 2].oriented_k) / 4.0 if j > 1 and _good(sols[j - 2]) \
             else below
         d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
-                   rows=difference_rows(geometry, meshes[j]))
+                   rows=difference_rows(geometry, meshes[j]), reversed_side=below < 0.0)
         if _good(d):
             if odds[j] is not None:  # as for every level: u, du/dx inside its elements
                 x, po, qo = odds[j]
@@ -414,27 +425,36 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     meshes, opss, odds = meshes[::-1], opss[::-1], odds[::-1]  # coarsest first
     ns = [n // 2 ** i for i in range(LEVELS - 1, -1, -1)]
     sols: list[DiscreteSolution | None] = [None] * LEVELS
-    for i in _level_order(ns, k_guess is not None):
+    # the side of zero of k relative to sign(beta) (DiscreteSolution.oriented_k): -1 where
+    # the slip runs against it (outward on some layers), then every level starts there;
+    # the starts below are built from |k| and take this sign (+1 on a half-space)
+    side = -1.0 if k_guess is not None and k_guess < 0.0 else 1.0
+    guess = None if k_guess is None else abs(k_guess)
+    for i in _level_order(ns, guess is not None):
         if i == LEVELS - 1:  # the finest root predicted from the coarse levels' expansion
-            if k_guess is None:
+            if guess is None:
                 _retry_failed_levels(geometry, c, ns, meshes, opss, odds, sols)
-            k0 = _predict([s.k for s in sols[:-1]])
-        elif k_guess is not None and level_offsets is not None:  # continuation: each
+            k0 = side * _predict([s.k for s in sols[:-1]])
+        elif guess is not None and level_offsets is not None:  # continuation: each
             # coarse level from the neighbour's offset, corrected by the ratio the coarser
             # level found to its own guess (the guess's error is common to the levels)
-            k0 = k_guess * (1.0 + level_offsets[i])
+            k0 = guess * (1.0 + level_offsets[i])
             if i and _good(sols[i - 1]):
-                k0 *= sols[i - 1].k / (k_guess * (1.0 + level_offsets[i - 1]))
-        elif k_guess is not None:
-            k0 = sols[i - 1].k if i and _good(sols[i - 1]) else k_guess
+                k0 *= sols[i - 1].k / (guess * (1.0 + level_offsets[i - 1]))
+            k0 *= side
+        elif guess is not None:
+            k0 = side * (sols[i - 1].k if i and _good(sols[i - 1]) else guess)
         else:
             k0 = _start(geometry, c, meshes[i], sols, i)
-        near = i == LEVELS - 1 or (level_offsets is not None and k_guess is not None and i > 0)
+        near = i == LEVELS - 1 or (level_offsets is not None and guess is not None and i > 0)
         rows = difference_rows(geometry, meshes[i])  # as the default method's, if any
         if i == LEVELS - 1:  # the noise of the finest level's rows (see quadrature_noise)
             difference = rows != (None, None) and (c <= AXIS_ROWS_BELOW
                                                    or 1.0 - c <= EDGE_ROWS_BELOW)
-        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=near, rows=rows)
+        d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=near, rows=rows,
+                   reversed_side=side < 0.0)
+        if _good(d) and d.oriented_k < 0.0:  # the levels after it start on its side
+            side = -1.0
         if odds[i] is not None:
             x, po, qo = odds[i]
             d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)

@@ -303,7 +303,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
     ``resolved``: converged, and the estimated relative error of k at most
     ``max_error``.
     """
-    known: list[tuple[float, float]] = []  # (c, k / k_uncoupled) of converged cases
+    known: list[tuple[float, float]] = []  # (c, oriented k / k_uncoupled) of converged cases
     offsets = None  # the extrapolated method's coarse levels, from the last case
     cache = StickBlocks()  # this sweep's store of stick blocks (see nodal_operator_part)
     for c in stick_ratios:
@@ -325,7 +325,7 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
                                    or _suspect(d, None)):
                 d, coarse = lone, lone_coarse
         if method in NODAL_METHODS and d.converged and 0.0 < solved < 1.0 and d.k > 0.0:
-            known.append((solved, d.k / float(geometry.uncoupled_friction(solved))))
+            known.append((solved, d.oriented_k / float(geometry.uncoupled_friction(solved))))
             offsets = getattr(d, "level_offsets", None) or None
         extra, note = {}, ""
         if tolerance is not None:
@@ -381,13 +381,14 @@ def _suspect(d, guess: float | None) -> bool:
 
     Not converged; inconsistent at the nodes (:meth:`DiscreteSolution.node_flags`);
     or, with ``guess``, more than 50 % away from it (a sweep's guesses are
-    within about 1e-6, and a few per cent where its points are far apart).
+    within about 1e-6, and a few per cent where its points are far apart; both
+    relative to sign(beta), :attr:`DiscreteSolution.oriented_k`).
     """
     if not isinstance(d, DiscreteSolution) or not 0.0 < d.stick_ratio < 1.0:
         return False
     if not d.converged or not np.isfinite(d.k):
         return True
-    if guess is not None and abs(d.k / guess - 1.0) > 0.5:
+    if guess is not None and abs(d.oriented_k / guess - 1.0) > 0.5:
         return True
     return not d.node_flags()["consistent"]
 
@@ -623,6 +624,13 @@ def _continuation_guess(geometry: Contact, c: float,
     within about 1e-6 and Newton converges in one or two steps. None (the
     solver's own warm start) when fewer than two are known, or when the
     ratio comes out beyond half the smallest or twice the largest known one.
+
+    The ratios and the guess are relative to sign(beta)
+    (:attr:`DiscreteSolution.oriented_k`): negative on a layer whose slip runs
+    outward, so that Newton starts on the root's side of zero (from the
+    reported |k| it crossed zero first: 4 iterations instead of 2 at n = 256,
+    sphere on a smooth layer, a/h = 20, nu = 0.3; 9 instead of 2 at nu = 0.45).
+    None where the known cases lie on both sides.
     """
     if not 0.0 < c < 1.0 or len(known) < 2:
         return None
@@ -636,12 +644,13 @@ def _continuation_guess(geometry: Contact, c: float,
     for i in range(cs.size):
         others = np.delete(cs, i)
         ratio += rs[i] * float(np.prod((c - others) / (cs[i] - others)))
-    if not 0.5 * np.min(rs) <= ratio <= 2.0 * np.max(rs):
+    side = 1.0 if np.all(rs > 0.0) else -1.0 if np.all(rs < 0.0) else 0.0
+    if not (side and 0.5 * np.min(side * rs) <= side * ratio <= 2.0 * np.max(side * rs)):
         return None  # an extrapolation far beyond the points (quadratic from 1e-8, 1e-6,
         # 1e-4 to 1e-2 amplifies their differences 1e4 times): not a guess
     k_unc = float(geometry.uncoupled_friction(c))
     guess = ratio * k_unc
-    return guess if np.isfinite(guess) and guess > 0.0 else None
+    return guess if np.isfinite(guess) and side * guess > 0.0 else None
 
 
 def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteSolution,
@@ -662,7 +671,8 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
         return d, {"elements": n, "error_estimate": 0.0}, ""
     if method == "extrapolated":  # its own estimate; n doubled while it falls short
         while d.error_estimate > tolerance and 2 * n <= MAX_N and d.converged:
-            finer = extrapolated_method.solve_extrapolated(geometry, c, 2 * n, k_guess=d.k,
+            finer = extrapolated_method.solve_extrapolated(geometry, c, 2 * n,
+                                                           k_guess=d.oriented_k,
                                                            cache=cache, work=False)
             if finer.error_estimate >= d.error_estimate:  # the quadrature noise grows
                 break

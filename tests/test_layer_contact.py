@@ -314,3 +314,78 @@ def test_reversed_slip_on_a_layer_starts_newton_on_its_own_side():
     cold = solve_default(layer, 0.5, 256, k_guess=-fine.k * 1.5)  # from far on the same side
     assert fine.converged and fine.iterations <= 2
     assert abs(fine.k / cold.k - 1.0) < 1e-9
+
+
+# sphere, a/h = 20: the cases whose slip runs outward (the bonded base at nu = 0.3 is
+# near the balance of the two effects, its k ~ -0.002, and is left out)
+OUTWARD = [("smooth", 0.3), ("smooth", 0.45), ("bonded", 0.45)]
+SWEEP = (0.4, 0.42, 0.44, 0.46, 0.48, 0.5)
+
+
+def _factorizations(monkeypatch):
+    """A counter of the LU factorizations (one per Newton iteration and level)."""
+    from contactlib import default_method
+
+    count = [0]
+    lu_factor = default_method.linalg.lu_factor
+
+    def counted(*args, **kwargs):
+        count[0] += 1
+        return lu_factor(*args, **kwargs)
+
+    monkeypatch.setattr(default_method.linalg, "lu_factor", counted)
+    return count
+
+
+@pytest.mark.parametrize("base, nu", OUTWARD)
+def test_a_sweep_on_a_layer_with_outward_slip_continues_on_its_side(base, nu, monkeypatch):
+    """A sweep's continuation guess is relative to sign(beta) (oriented k): on these
+    layers it is negative and Newton starts on the root's side. The roots are those of
+    each case solved alone, to Newton's tolerance (it stops after a relative step of
+    1e-6: two such iterates differ by at most 2e-6, the extrapolated method's k by at most
+    2.43 times that, the sum of |Richardson weights| of its four levels); the continued
+    cases take 2 Newton iterations (4-9 from the reported k >= 0) and the extrapolated
+    method's cases at most 13 factorizations for all four levels (33-79 before)."""
+    from contactlib import stages
+    from contactlib.default_method import solve_default
+    from contactlib.extrapolated_method import solve_extrapolated
+
+    layer = contact("sphere", nu, slab_ratio=20.0, base=base)
+    assert solve_default(layer, SWEEP[0], 64).oriented_k < 0.0  # outward on this layer
+    recs = list(stages.iter_cases(layer, "default", 256, SWEEP))
+    assert all(r.converged for r in recs)
+    assert [r.iterations for r in recs[2:]] == [2] * (len(SWEEP) - 2)
+    for r in recs[2::3]:
+        alone = solve_default(layer, r.stick_ratio, 256)
+        assert abs(r.k / alone.k - 1.0) < 2e-6
+    count = _factorizations(monkeypatch)
+    per_case = []
+    for r in stages.iter_cases(layer, "extrapolated", 256, SWEEP, estimate=False):
+        per_case.append((r, count[0]))
+        count[0] = 0
+    assert all(r.converged for r, _ in per_case)
+    assert max(m for _, m in per_case[2:]) <= 13
+    for r, _ in per_case[2::3]:
+        alone = solve_extrapolated(layer, r.stick_ratio, 256)
+        assert abs(r.k / alone.k - 1.0) < 5e-6
+
+
+@pytest.mark.parametrize("base, nu", OUTWARD)
+def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, monkeypatch):
+    """Without a guess the extrapolated method's first level starts from the uncoupled
+    closed form (> 0) and lands on the outward root; the other levels start from its
+    oriented k (< 0): at most 25 factorizations for the four levels (35-77 from |k|).
+    The result is the same k as the default method's levels extrapolated independently
+    (Richardson with the orders 2, 3, 4 of the default method's own n/8 ... n solves),
+    to the Newton tolerance of the levels (2.43 x 2e-6)."""
+    from contactlib.default_method import solve_default
+    from contactlib.extrapolated_method import extrapolate, solve_extrapolated
+
+    layer = contact("sphere", nu, slab_ratio=20.0, base=base)
+    count = _factorizations(monkeypatch)
+    d = solve_extrapolated(layer, 0.5, 256)
+    assert d.converged and count[0] <= 25
+    assert all(lk > 0.0 for lk in d.level_k) and d.oriented_k < 0.0
+    ks = [solve_default(layer, 0.5, m).k for m in (32, 64, 128, 256)]
+    np.testing.assert_allclose(d.level_k, ks, rtol=2e-6)
+    assert abs(d.k / extrapolate(ks)[0] - 1.0) < 5e-6

@@ -450,31 +450,51 @@ def _chebyshev_basis(z: Arr) -> Arr:
 
 _PARITY_MAX = 0.05  # rho below which u takes the odd part of its interpolant in rho ...
 _PARITY_FULL = 0.03  # ... wholly below this, blended (C^2) between
+_EVEN_MAX, _EVEN_FULL = 0.005, 0.003  # the same for the even part of w and du/dr: the
+# interpolant's even part extrapolates the cell to rho < 0, whose error grows like rho^2
+# (w: 1e-15, 1.4e-13, 2.3e-12 at rho = 1e-3, 1e-2, 4e-2, against ~1e-11 rho for its odd
+# part; du/dr about 5 times both; bonded, nu = 0.3, sigma = 0.3 ... 1)
 
 
-def _parity_weight(rho: Arr) -> Arr:
-    """The odd part's share in u: 1 below _PARITY_FULL, 0 from _PARITY_MAX, quintic between."""
-    x = np.clip((rho - _PARITY_FULL) / (_PARITY_MAX - _PARITY_FULL), 0.0, 1.0)
+def _blend(z: Arr, full: float, width: float) -> Arr:
+    """1 below ``full``, 0 from ``full + width``, quintic (C^2) between."""
+    x = np.clip((np.asarray(z, dtype=float) - full) / width, 0.0, 1.0)
     return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)
 
 
-def _odd_basis(rho: Arr) -> Arr:
-    """(_DEG + 1, n): the part of T_k(4 rho - 1) odd in rho (rho in the first cell).
+def _parity_weight(rho: Arr) -> Arr:
+    """(3, n): the share of the parity part in w, u, du/dr (:func:`_parity_bases`)."""
+    even = _blend(rho, _EVEN_FULL, _EVEN_MAX - _EVEN_FULL)
+    return np.stack([even, _blend(rho, _PARITY_FULL, _PARITY_MAX - _PARITY_FULL), even])
 
-    T_k(-1 + d) = sum_m M[k, m] d^m with d = 4 rho (:func:`_axis_powers`); the
-    odd powers. u (a J1 transform) is odd in rho; the interpolant's even part
-    (~1e-12 at rho = 0) is its error, which near the axis, where u ~ rho, would
-    be a relative error of 1e-12/rho in the stick zone's rows.
+
+def _parity_bases(rho: Arr) -> tuple[Arr, Arr, Arr]:
+    """(_DEG + 1, n) each: the parts of T_k(4 rho - 1) of the parity of w, u, du/dr in rho
+    (w and du/dr are even, J0 and J1' transforms; u is odd, J1).
+
+    T_k(-1 + d) = sum_m M[k, m] d^m with d = 4 rho (:func:`_axis_powers`): the even
+    powers for w and du/dr, the odd ones for u (rho in the first cell). The interpolant's
+    part of the other parity is its error: near the axis, where u ~ rho, the even part
+    of u (~1e-12 at rho = 0) would be a relative error of 1e-12/rho in the stick zone's
+    rows; the odd part of w (~1e-11 rho) is a cone in w that, at c/a = 1e-6 on a layer of
+    a/h = 1, is 1e-4 of the gap c^2 between the slip-zone rows next to c and moved k by
+    2.3e-5 at n = 512 (``docs/theory.md``, near the axis).
     """
     d = 4.0 * rho
-    return _ODD_POWERS @ (d[None, :] ** np.arange(1, _DEG + 1, 2)[:, None])
+    powers = d[None, :] ** np.arange(_DEG + 1)[:, None]  # (m, n)
+    full = _ALL_POWERS
+    even = full[:, 0::2] @ powers[0::2]
+    return even, full[:, 1::2] @ powers[1::2], even
 
 
-def _u_near_axis(coef: NDArray[np.float64], rho: Arr, cell_j: NDArray[np.intp],
-                 ty: Arr) -> Arr:
-    """u at scattered points (rho_n in the first rho cell, sigma cell cell_j[n], T(y) ty)."""
-    cu = coef[cell_j, _DEG + 1:2 * (_DEG + 1), :]  # (n, l, k): u's rows of cell (0, j)
-    return np.einsum("nlk,kn,ln->n", cu, _odd_basis(rho), ty, optimize=True)
+def _near_axis(coef: NDArray[np.float64], rho: Arr, cell_j: NDArray[np.intp],
+               ty: Arr) -> Arr:
+    """(3, n) w, u, du/dr at scattered points from their parity parts (rho_n in the first
+    rho cell, sigma cell cell_j[n], T(y) ty)."""
+    nl = _DEG + 1
+    return np.stack([np.einsum("nlk,kn,ln->n", coef[cell_j, f * nl:(f + 1) * nl, :], base, ty,
+                               optimize=True)
+                     for f, base in enumerate(_parity_bases(rho))])
 
 
 def _chebyshev_eval(coef: NDArray[np.float64], rho: Arr, sigma: Arr) -> Arr:
@@ -523,8 +543,7 @@ def _series_weight(z: Arr) -> Arr:
     table's ~1e-12 error against the series at the switch was one: the default method's
     finest elements next to a stick edge there turned it into k errors of ~1e-5).
     """
-    x = np.clip((np.asarray(z, dtype=float) - (_SERIES_MAX - _BLEND)) / _BLEND, 0.0, 1.0)
-    return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)
+    return _blend(z, _SERIES_MAX - _BLEND, _BLEND)
 
 
 def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
@@ -539,10 +558,11 @@ def _remainders(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
             continue
         val = _chebyshev_eval(tab.coef[kind], r, g)
         near = np.flatnonzero(r < _PARITY_MAX)
-        if near.size:  # u: the odd part of the interpolant in rho
+        if near.size:  # each function: the part of the interpolant of its parity in rho
             j, y = _cells(g[near])
-            odd = _u_near_axis(tab.coef[kind], r[near], j, _chebyshev_basis(y))
-            val[1, near] += _parity_weight(r[near]) * (odd - val[1, near])
+            par = _near_axis(tab.coef[kind], r[near], j, _chebyshev_basis(y))
+            share = _parity_weight(r[near])  # (1 - b) v + b p: exactly p where b = 1
+            val[:, near] = (1.0 - share) * val[:, near] + share * par
         small = m < _SERIES_MAX
         if small.any():
             b = _series_weight(r[small]) * _series_weight(g[small])
@@ -595,13 +615,16 @@ def _remainders_grid(kind: str, rho: Arr, sigma: Arr, tab: LayerTable) -> Arr:
             else:
                 out[:, np.arange(rho.size)[rows][:, None], np.arange(sigma.size)[cols]] = block
     near = np.flatnonzero(rho < _PARITY_MAX)
-    if near.size:  # u: the odd part of the interpolant in rho
-        todd = _odd_basis(rho[near]).T  # (i, k)
+    if near.size:  # each function: the part of the interpolant of its parity in rho
+        bases = [base.T for base in _parity_bases(rho[near])]  # (i, k) each
+        share = _parity_weight(rho[near])[:, :, None]
+        nl = _DEG + 1
         for b, cols in col_groups:
-            cu = coef[b, _DEG + 1:2 * (_DEG + 1), :]  # (l, k): u's rows of cell (0, b)
-            idx = (1, near[:, None], np.arange(sigma.size)[cols])
-            out[idx] += _parity_weight(rho[near])[:, None] * ((todd @ cu.T) @ ty[:, cols]
-                                                              - out[idx])
+            for f, base in enumerate(bases):
+                cf = coef[b, f * nl:(f + 1) * nl, :]  # (l, k): rows of f of cell (0, b)
+                idx = (f, near[:, None], np.arange(sigma.size)[cols])
+                out[idx] = ((1.0 - share[f]) * out[idx]
+                            + share[f] * ((base @ cf.T) @ ty[:, cols]))
     small_r = np.flatnonzero(rho < _SERIES_MAX)
     small_s = np.flatnonzero(sigma < _SERIES_MAX)
     if small_r.size and small_s.size:
@@ -648,11 +671,12 @@ def _remainders_integrated(kind: str, rho: Arr, sigma: Arr, weights: Arr,
         prod = coef[a * _N_CELLS:(a + 1) * _N_CELLS][span].reshape(-1, nl) @ tx[:, rows]
         left[:, :, rows, :] = prod.reshape(used.size, 3, nl, -1).transpose(0, 1, 3, 2)
     near = np.flatnonzero(rho < _PARITY_MAX)
-    if near.size:  # u: the odd part of the interpolant in rho
-        cu = coef[used, nl:2 * nl, :]  # (u, l, k): u's rows of the cells (0, used)
-        odd = np.matmul(cu, _odd_basis(rho[near])).transpose(0, 2, 1)  # (u, i, l)
-        left[:, 1, near, :] += _parity_weight(rho[near])[None, :, None] * (
-            odd - left[:, 1, near, :])
+    if near.size:  # each function: the part of the interpolant of its parity in rho
+        share = _parity_weight(rho[near])[:, None, :, None]
+        for f, base in enumerate(_parity_bases(rho[near])):
+            cf = coef[used, f * nl:(f + 1) * nl, :]  # (u, l, k): rows of f of cells (0, used)
+            par = np.matmul(cf, base).transpose(0, 2, 1)  # (u, i, l)
+            left[:, f, near, :] = (1.0 - share[f]) * left[:, f, near, :] + share[f] * par
     left = left.reshape(used.size, 3 * rho.size, nl)
     # runs of q in one sigma cell, of one owner, on one side of n_small; their sums of T(y) w
     cut = np.r_[True, (cj[1:] != cj[:-1]) | (owner[1:] != owner[:-1])]
@@ -720,7 +744,7 @@ def _axis_powers() -> Arr:
 
 
 _AXIS_POWERS = _axis_powers()[:, 2::2]  # the even powers from d^2 (differences from the axis)
-_ODD_POWERS = _axis_powers()[:, 1::2]  # the odd powers
+_ALL_POWERS = _axis_powers()  # (k, m), every power (the parity parts near the axis)
 
 
 def remainder_axis_w(kind: str, r: ArrayLike, s: ArrayLike, nu: float, h: float,

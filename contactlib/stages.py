@@ -407,8 +407,11 @@ def estimate_case(geometry: Contact, method: str, n: int, rec: CaseRecord, *,
                                                                  samples))
     c = _solved_ratio(geometry, float(rec.stick_ratio))
     cache = StickBlocks()
-    coarse = (_coarse_solves(geometry, n, c, float(rec.k), cache=cache)
-              if method == "default" and 0.0 < c < 1.0 else {})
+    coarse = {}
+    if method == "default" and 0.0 < c < 1.0:
+        # the coarse Newton starts on the root's side: k relative to sign(beta)
+        d = solution if isinstance(solution, DiscreteSolution) else _rebuild(geometry, rec)
+        coarse = _coarse_solves(geometry, n, c, d.oriented_k, cache=cache)
     return _embedded_estimate(geometry, method, n, rec, coarse, samples, max_error, cache)
 
 

@@ -389,3 +389,20 @@ def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, monkeypatc
     ks = [solve_default(layer, 0.5, m).k for m in (32, 64, 128, 256)]
     np.testing.assert_allclose(d.level_k, ks, rtol=2e-6)
     assert abs(d.k / extrapolate(ks)[0] - 1.0) < 5e-6
+
+
+def test_the_inverse_problem_estimate_starts_its_coarse_solves_on_the_roots_side(monkeypatch):
+    """k given on a layer whose slip runs outward: the error estimate's coarse solves
+    (n/2, n/4) start from the case's signed k: 4 factorizations for both levels, 12 from
+    the reported k >= 0 (10 Newton steps at n = 64), the same roots either way."""
+    from contactlib import stages
+    from contactlib.default_method import solve_default
+
+    layer = contact("sphere", 0.45, slab_ratio=20.0)
+    d = solve_default(layer, 0.45, 128)
+    assert d.converged and d.oriented_k < 0.0  # outward on this layer
+    rec = stages.case_record(layer, d, samples=True)
+    count = _factorizations(monkeypatch)
+    out = stages.estimate_case(layer, "default", 128, rec, solution=d)
+    assert count[0] <= 6  # two levels, at most 3 iterations each (10 or more from +k)
+    assert np.isfinite(out.error_estimate) and out.error_estimate < 1e-3

@@ -76,8 +76,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["slip_points", "frictional_work", "record_work", "step_work", "dot", "step_external_work",
-           "mean_traction", "stored_energy", "decay_integrals",
+__all__ = ["slip_points", "frictional_work", "record_work", "step_work", "dot",
+           "step_external_work", "mean_traction", "stored_energy", "decay_integrals",
            "viscous_step_work"]
 
 

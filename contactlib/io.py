@@ -773,6 +773,10 @@ def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
     (a/h) and ``stick_ratio``; variables ``load_ratio`` (frictionless
     P/P_Hertz) and ``load_error_estimate`` on the first four,
     ``friction_coefficient``, ``error_estimate`` and ``resolved`` on all five.
+    With the study's load cycles, also ``cycle_work``,
+    ``cycle_work_error_estimate`` and ``cycle_work_resolved`` on the first
+    four (``slab_ratio`` is a_max/h for them) and the attributes
+    ``history_friction``, ``history_elements`` and ``history_steps``.
     Global attributes ``elements``, ``method`` (default), ``Conventions`` and
     ``contactlib_version``.
     """
@@ -780,7 +784,20 @@ def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
 
     dims4 = ("geometry", "base", "poisson_ratio", "slab_ratio")
     dims5 = dims4 + ("stick_ratio",)
-    return xr.Dataset(
+    cycles = {}
+    if st.history_friction is not None and st.cycle_work is not None:
+        cycles = {
+            "cycle_work": (dims4, st.cycle_work, cf_attrs(
+                "frictional work of the load cycle 0 -> 1 -> 0",
+                comment="V R^2/(E* a_max^5) (sphere), per unit length V R^2/(E* a_max^4) "
+                        "(cylinder); incremental history, a/h = a_max/h")),
+            "cycle_work_error_estimate": (dims4, st.cycle_work_error_estimate, cf_attrs(
+                "estimated relative error of cycle_work")),
+            "cycle_work_resolved": (dims4, np.asarray(st.cycle_resolved, dtype=bool), cf_attrs(
+                "every step converged and cycle_work_error_estimate within 1e-2",
+                **_BOOL_FLAGS)),
+        }
+    ds = xr.Dataset(
         data_vars={
             "load_ratio": (dims4, st.load_ratio, cf_attrs(
                 "frictionless load over the Hertz load at the same contact radius")),
@@ -793,6 +810,7 @@ def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
             "resolved": (dims5, st.resolved.astype(bool), cf_attrs(
                 "converged, consistent and error_estimate at most 1e-3",
                 comment="thin bonded layers whose slip reverses are not", **_BOOL_FLAGS)),
+            **cycles,
         },
         coords={"geometry": ("geometry", list(st.geometries), {"long_name": "indenter"}),
                 "base": ("base", list(st.bases), {"long_name": "rigid base under the layer"}),
@@ -805,6 +823,10 @@ def layer_study_to_dataset(st: LayerStudy) -> xr.Dataset:
         attrs={"title": "contactlib: layers, k and frictionless load against a/h",
                "elements": int(st.n), "method": "default", "Conventions": CONVENTIONS,
                "contactlib_version": version()})
+    if cycles:
+        ds.attrs.update(history_friction=float(st.history_friction),
+                        history_elements=int(st.history_n), history_steps=int(st.history_steps))
+    return ds
 
 
 # ----------------------------------------------------------------------------- files

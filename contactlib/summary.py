@@ -321,10 +321,14 @@ def layer_rows(ds: xr.Dataset) -> list[dict[str, object]]:
     and k at each stick ratio of the dataset (of
     :func:`contactlib.io.layer_study_to_dataset`), blank where the case is
     not resolved (the slip reverses on thin bonded layers, or the error
-    estimate exceeds 1e-3).
+    estimate exceeds 1e-3). With the study's load cycles also the work of a
+    cycle (a/h then a_max/h), its estimated relative error and whether it is
+    resolved to 1e-2: given even where it is not, since the error comes
+    with it.
     """
     rows: list[dict[str, object]] = []
     cs = [float(c) for c in ds["stick_ratio"].values]
+    cycles = "cycle_work" in ds.variables
     for g, geometry in enumerate(ds["geometry"].values):
         for b, base in enumerate(ds["base"].values):
             for v, nu in enumerate(ds["poisson_ratio"].values):
@@ -337,5 +341,11 @@ def layer_rows(ds: xr.Dataset) -> list[dict[str, object]]:
                         ok = bool(ds["resolved"].values[g, b, v, r, i])
                         k = float(ds["friction_coefficient"].values[g, b, v, r, i])
                         row[f"k at c/a = {c:g}"] = f"{k:.6g}" if ok else ""
+                    if cycles:
+                        at = (g, b, v, r)
+                        row["work per cycle"] = f"{float(ds['cycle_work'].values[at]):.4g}"
+                        row["work error estimate"] = (
+                            f"{float(ds['cycle_work_error_estimate'].values[at]):.2g}")
+                        row["work resolved"] = bool(ds["cycle_work_resolved"].values[at])
                     rows.append(row)
     return rows

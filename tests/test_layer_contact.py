@@ -285,15 +285,43 @@ def test_layer_study_dataset_table_and_figure(tmp_path):
     from contactlib.layer_study import layer_study
 
     st = layer_study(geometries=("sphere", "cylinder"), bases=("bonded",), nus=(0.3,),
-                     ratios=(0.0, 5.0), stick_ratios=(0.5,), n=64)
+                     ratios=(0.0, 5.0), stick_ratios=(0.5,), n=64, history_n=60,
+                     history_steps=20)
     # a/h = 5 on a bonded base at nu = 0.3: the slip reverses (docs/validation.md)
     assert st.resolved[:, 0, 0, 0, 0].all() and not st.resolved[:, 0, 0, 1, 0].any()
     np.testing.assert_allclose(st.load_ratio[:, 0, 0, 0], 1.0, atol=1e-3)  # Hertz
     back = io.read_dataset(io.write_dataset(io.layer_study_to_dataset(st), tmp_path / "l.nc"))
     np.testing.assert_array_equal(back["friction_coefficient"].values, st.friction)
+    np.testing.assert_array_equal(back["cycle_work"].values, st.cycle_work)
+    assert back.attrs["history_elements"] == 60 and back.attrs["history_steps"] == 20
     rows = summary.layer_rows(back)
     assert len(rows) == 4 and rows[1]["k at c/a = 0.5"] == "" and rows[0]["k at c/a = 0.5"]
-    assert len(plot.fig_layers(back).axes) == 6
+    assert rows[0]["work per cycle"] and rows[0]["work error estimate"]
+    assert len(plot.fig_layers(back).axes) == 9  # three panels a geometry, three holders
+    # without the load cycles: no work variables, two panels a geometry
+    bare = layer_study(geometries=("sphere",), bases=("bonded",), nus=(0.3,), ratios=(0.0,),
+                       stick_ratios=(0.5,), n=32, history_friction=None)
+    ds = io.layer_study_to_dataset(bare)
+    assert "cycle_work" not in ds and "history_friction" not in ds.attrs
+    assert len(plot.fig_layers(ds).axes) == 4
+
+
+def test_layer_study_cycle_work_tends_to_the_half_space_as_the_layer_thickens():
+    """An independent limit: at a_max/h = 1e-3 the load cycle's work on either base is
+    the half-space's (the layer's remainder kernels vanish like h^-1), within the
+    histories' own error estimates, and a/h = 0 is the plain half-space history."""
+    from contactlib import history
+    from contactlib.layer_study import layer_study
+
+    st = layer_study(geometries=("sphere",), bases=("smooth", "bonded"), nus=(0.3,),
+                     ratios=(0.0, 1e-3), stick_ratios=(0.5,), n=32, history_n=60,
+                     history_steps=20)
+    half = history("sphere", 0.3, 0.2, [0.0, 1.0, 0.0], 20, n=60)
+    w = st.cycle_work[0, :, 0, :]
+    np.testing.assert_array_equal(w[:, 0], half.frictional_work[-1])
+    est = st.cycle_work_error_estimate[0, :, 0, 1]
+    assert np.all(np.abs(w[:, 1] / w[:, 0] - 1.0) < np.maximum(est, 1e-3))
+    assert np.all(np.abs(w[:, 1] / w[:, 0] - 1.0) < 5e-3)
 
 
 # ----------------------------------------------------------------------------- Newton's start

@@ -55,10 +55,9 @@ from .kernels.disc import gauss_tiers
 if TYPE_CHECKING:
     from .model import Contact
 
-__all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators", "nodal_operator_part",
-           "nodal_operators",
-           "StickBlocks", "smooth_integrals", "restrict_nested", "axis_w_rows",
-           "u_difference_rows"]
+__all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators",
+           "nodal_operator_part", "nodal_operators", "StickBlocks", "smooth_integrals",
+           "restrict_nested", "axis_w_rows", "u_difference_rows"]
 
 PARTS = ("normal", "shear")
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder

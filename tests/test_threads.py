@@ -206,6 +206,13 @@ def test_map_cases_raises_a_case_error_and_refuses_a_bad_count():
 
 
 # ----------------------------------------------------------------------------- lazy package
+def _run_python(code: str) -> None:
+    """Run ``code`` in a fresh interpreter (one BLAS thread); its assertions must hold."""
+    proc = subprocess.run([sys.executable, "-c", code], env=env_with_threads(1),
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+
+
 def test_package_imports_no_solver_and_history_stays_the_function():
     code = ("import sys, contactlib\n"
             "assert 'contactlib.api' not in sys.modules and 'scipy.linalg' not in sys.modules\n"
@@ -215,9 +222,7 @@ def test_package_imports_no_solver_and_history_stays_the_function():
             "assert contactlib.history.__module__ == 'contactlib.history_api'\n"
             "assert contactlib.solve.__module__ == 'contactlib.api'\n"
             "assert contactlib.Solution.__name__ == 'Solution'\n")
-    proc = subprocess.run([sys.executable, "-c", code], env=env_with_threads(1),
-                          capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr
+    _run_python(code)
 
 
 def test_workflow_check_and_energy_stages_need_no_solver_imports():
@@ -226,7 +231,6 @@ def test_workflow_check_and_energy_stages_need_no_solver_imports():
     the work equals stages.work_case, the library's own per-case work."""
     code = ("import sys\n"
             "import numpy as np\n"
-            "from contactlib import pipeline\n"
             "from contactlib.scene import parse_scene\n"
             "scene = parse_scene('s', {'geometry': 'sphere', 'nu': 0.3, 'n': 32,\n"
             "                          'stick_ratios': [0.3, 0.7],\n"
@@ -238,11 +242,9 @@ def test_workflow_check_and_energy_stages_need_no_solver_imports():
             "    del sys.modules[name]\n"
             "from contactlib import pipeline\n"
             "work = pipeline.energy(scene, records)['frictional_work']\n"
-            "flags = pipeline.check(records)\n"
+            "pipeline.check(records)\n"
             "assert np.array_equal(work, want) and min(want) > 0, (work, want)\n"
             "loaded = sorted(m for m in sys.modules if m.startswith('scipy')\n"
             "                or m in ('contactlib.stages', 'contactlib.default_method'))\n"
             "assert not loaded, loaded\n")
-    proc = subprocess.run([sys.executable, "-c", code], env=env_with_threads(1),
-                          capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr
+    _run_python(code)

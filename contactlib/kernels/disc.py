@@ -531,17 +531,173 @@ def gauss_tiers(gap: np.ndarray, length: np.ndarray):
         yield mask, t, w
 
 
+# The complete elliptic integrals E(m) and K(m) as scipy.special evaluates them
+# (``ellipe(m)``, ``ellipkm1(1 - m)``): the Cephes forms of S. L. Moshier (ellpe.c,
+# ellpk.c), P(x) - ln(x) x Q(x) and P(x) - ln(x) Q(x) in x = 1 - m, with their
+# coefficients (highest degree first), evaluated here on whole arrays. numpy's logarithm
+# may differ from the C library's by one ulp, so the values agree with scipy to a few ulp
+# (bit for bit at almost every point).
+_ELLPE_P = (1.53552577301013293365e-4, 2.50888492163602060990e-3, 8.68786816565889628429e-3,
+            1.07350949056076193403e-2, 7.77395492516787092951e-3, 7.58395289413514708519e-3,
+            1.15688436810574127319e-2, 2.18317996015557253103e-2, 5.68051945617860553470e-2,
+            4.43147180560990850618e-1, 1.00000000000000000299e0)
+_ELLPE_Q = (3.27954898576485872656e-5, 1.00962792679356715133e-3, 6.50609489976927491433e-3,
+            1.68862163993311317300e-2, 2.61769742454493659583e-2, 3.34833904888224918614e-2,
+            4.27180926518931511717e-2, 5.85936634471101055642e-2, 9.37499997197644278445e-2,
+            2.49999999999888314361e-1)
+_ELLPK_P = (1.37982864606273237150e-4, 2.28025724005875567385e-3, 7.97404013220415179367e-3,
+            9.85821379021226008714e-3, 6.87489687449949877925e-3, 6.18901033637687613229e-3,
+            8.79078273952743772254e-3, 1.49380448916805252718e-2, 3.08851465246711995998e-2,
+            9.65735902811690126535e-2, 1.38629436111989062502e0)
+_ELLPK_Q = (2.94078955048598507511e-5, 9.14184723865917226571e-4, 5.94058303753167793257e-3,
+            1.54850516649762399335e-2, 2.39089602715924892727e-2, 3.01204715227604046988e-2,
+            3.73774314173823228969e-2, 4.88280347570998239232e-2, 7.03124996963957469739e-2,
+            1.24999999999870820058e-1, 4.99999999999999999821e-1)
+_ELLPK_LOG4 = 1.3862943611198906188e0  # K ~ ln 4 - ln(x)/2 for x <= _MACHEP
+_MACHEP = 2.0**-53
+# E - K in one: P_E - P_K and x Q_E - Q_K, both in x = m1 (degree 10: one Horner pass for the
+# two rows and one logarithm, half the work of E and K apart). Each coefficient is the exact
+# difference of the double coefficients above, rounded once (tests/test_kernels_disc.py
+# recomputes them). Against mpmath on 0 < m1 <= 1 (2000 points): within 1 ulp of K and
+# 6e-14 of E - K itself (scipy's ellipe(1 - m1) - ellipkm1(m1): 2 ulp of K, 5e-13; its E
+# sees 1 - (1 - m1) instead of m1).
+_E_MINUS_K = np.array([
+    (1.5569712694740056e-05, 0.0002286276815772646, 0.0007138280334547439,
+     0.0008768811153953594, 0.0008990580506683717, 0.0013949425577582707, 0.0027780609415299744,
+     0.006893754709875199, 0.025920048037114857, 0.3465735902798218, -0.3862943611198906),
+    (3.387594352788736e-06, 9.54432029276499e-05, 0.0005655118622375976,
+     0.0014011647343548927, 0.0022680139738568764, 0.0033629189660620874, 0.005340661234510824,
+     0.009765628690010277, 0.023437500023368682, 0.12500000000001749, -0.5),
+]).T[:, :, None].copy()  # (11, 2, 1): rows (P, Q) of E - K = P(x) - ln(x) Q(x)
+_ELL_CHUNK = 16384  # points a pass of _dwdr_pressure
+
+
+def _polevl(coef: tuple[float, ...], x: np.ndarray) -> np.ndarray:
+    """sum_j coef[j] x^(n - j) by Horner's rule, as Cephes' polevl orders the operations."""
+    out = coef[0] * x + coef[1]
+    for c in coef[2:]:
+        out *= x
+        out += c
+    return out
+
+
+def _ellipe(m) -> np.ndarray:
+    """E(m), complete elliptic integral of the second kind: ``scipy.special.ellipe(m)``.
+
+    m <= 1 (NaN above); m < 0 by E(m) = E(1 - 1/x) sqrt(x), x = 1 - m, as Cephes.
+    """
+    x = 1.0 - np.asarray(m, dtype=float)
+    out = np.full(x.shape, np.nan)
+    out[x == 0.0] = 1.0
+    mid = (x > 0.0) & (x <= 1.0)
+    if mid.any():
+        xm = x[mid]
+        out[mid] = _polevl(_ELLPE_P, xm) - np.log(xm) * (xm * _polevl(_ELLPE_Q, xm))
+    big = x > 1.0
+    if big.any():
+        xb = x[big]
+        out[big] = _ellipe(1.0 - 1.0 / xb) * np.sqrt(xb)
+    return out
+
+
+def _ellipkm1(p) -> np.ndarray:
+    """K(1 - p), complete elliptic integral of the first kind: ``scipy.special.ellipkm1(p)``.
+
+    p >= 0 (NaN below); inf at p = 0, ln 4 - ln(p)/2 for p <= 2^-53, K(1 - 1/p)/sqrt(p)
+    for p > 1 (0 at p = inf), as Cephes.
+    """
+    x = np.asarray(p, dtype=float)
+    out = np.full(x.shape, np.nan)
+    out[x == 0.0] = np.inf
+    tiny = (x > 0.0) & (x <= _MACHEP)
+    if tiny.any():
+        out[tiny] = _ELLPK_LOG4 - 0.5 * np.log(x[tiny])
+    mid = (x > _MACHEP) & (x <= 1.0)
+    if mid.any():
+        xm = x[mid]
+        out[mid] = _polevl(_ELLPK_P, xm) - np.log(xm) * _polevl(_ELLPK_Q, xm)
+    big = x > 1.0
+    if big.any():
+        xb = x[big]
+        with np.errstate(divide="ignore", invalid="ignore"):  # (inf / inf at p = inf)
+            out[big] = np.where(np.isinf(xb), 0.0, _ellipkm1(1.0 / xb) / np.sqrt(xb))
+    return out
+
+
+def _e_minus_k(m1: np.ndarray, out: np.ndarray, f: np.ndarray) -> np.ndarray:
+    """E(1 - m1) - K(1 - m1) into ``out`` (1-d, at most _ELL_CHUNK points), without the
+    cancellation of near-equal E and K beyond that of their Cephes forms.
+
+    ``P(m1) - ln(m1) Q(m1)`` with the Cephes coefficients combined (:data:`_E_MINUS_K`),
+    one Horner pass over scratch rows f[0:3] (shape (3, _ELL_CHUNK)); points outside
+    Cephes' main branch (m1 <= 2^-53, m1 > 1, NaN) are taken from :func:`_ellipe` and
+    :func:`_ellipkm1`.
+    """
+    k = m1.size
+    rows, lg = f[0:2, :k], f[2, :k]
+    np.multiply(_E_MINUS_K[0], m1, out=rows)
+    rows += _E_MINUS_K[1]
+    for c in _E_MINUS_K[2:]:
+        rows *= m1
+        rows += c
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.log(m1, out=lg)
+        lg *= rows[1]
+        np.subtract(rows[0], lg, out=out)
+    if k and not (m1.min() > _MACHEP and m1.max() <= 1.0):
+        odd = ~((m1 > _MACHEP) & (m1 <= 1.0))
+        mo = m1[odd]
+        with np.errstate(invalid="ignore"):
+            out[odd] = _ellipe(1.0 - mo) - _ellipkm1(mo)
+    return out
+
+
+class _EllScratch(threading.local):
+    """Per-thread scratch of :func:`_dwdr_pressure` (rows of _ELL_CHUNK doubles)."""
+
+    def __init__(self) -> None:
+        self.f = np.empty((9, _ELL_CHUNK))
+        self.lt = np.empty(_ELL_CHUNK, dtype=bool)
+
+
+_ELL_SCRATCH = _EllScratch()
+
+
 def _dwdr_pressure(t: np.ndarray, s: np.ndarray) -> np.ndarray:
     """dw/dr of the unit pressure disc: (4/pi)(s/r)(E(m) - K(m)) inside, (4/pi)(E(m') - K(m'))
-    outside (m = r^2/s^2, m' = s^2/r^2), with 1 - m formed without cancellation."""
-    from scipy import special  # local: only the difference rows need it
+    outside (m = r^2/s^2, m' = s^2/r^2), with 1 - m formed without cancellation.
 
-    big = np.maximum(t, s)
-    small = np.minimum(t, s)
-    q = small / big
-    m1 = (big - small) / big * (1.0 + q)
-    diff = special.ellipe(1.0 - m1) - special.ellipkm1(m1)
-    return _C_W * np.where(t < s, s / np.where(t > 0.0, t, 1.0), 1.0) * diff
+    ``t`` and ``s`` broadcast to at most two dimensions; evaluated in passes of
+    _ELL_CHUNK points over per-thread scratch rows, E - K by :func:`_e_minus_k`.
+    """
+    t, s = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(s, dtype=float))
+    out = np.empty(t.shape)
+    t2, s2, o2 = (a.reshape(-1, a.shape[-1]) if a.ndim else a.reshape(1, 1)
+                  for a in (t, s, out))
+    ws = _ELL_SCRATCH
+    for i in range(t2.shape[0]):
+        for a in range(0, t2.shape[1], _ELL_CHUNK):
+            tt, ss = t2[i, a:a + _ELL_CHUNK], s2[i, a:a + _ELL_CHUNK]
+            k = tt.size
+            big, small, q, m1, diff, fac = ws.f[3:9, :k]
+            np.maximum(tt, ss, out=big)
+            np.minimum(tt, ss, out=small)
+            np.divide(small, big, out=q)
+            np.subtract(big, small, out=m1)
+            m1 /= big
+            q += 1.0
+            m1 *= q  # (1 - q)(1 + q)
+            _e_minus_k(m1, diff, ws.f)
+            lt = np.less(tt, ss, out=ws.lt[:k])
+            fac.fill(1.0)  # s/r inside (s where r = 0), 1 outside
+            with np.errstate(divide="ignore", invalid="ignore"):
+                np.divide(ss, tt, out=fac, where=lt)
+            if k and not tt.min() > 0.0:
+                at0 = lt & ~(tt > 0.0)
+                fac[at0] = ss[at0]
+            fac *= _C_W
+            np.multiply(fac, diff, out=o2[i, a:a + k])
+    return out
 
 
 def w_difference_disc(r, r0: float, s, nu: float,

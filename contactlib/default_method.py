@@ -252,6 +252,23 @@ def _tie_columns(geometry: Contact, q_ops: np.ndarray) -> np.ndarray:
     return cols
 
 
+def _put_shear(tie: bool, q: np.ndarray, m: int, nn: int, shape: np.ndarray,
+               stick: np.ndarray, slip: np.ndarray) -> None:
+    """Write rows of a shear operator (columns phi_0..phi_N) into the system, in place.
+
+    ``stick[:] = `` the columns of phi_1..phi_{M-1} and ``slip[:] = `` those of
+    phi_M..phi_{N-1} divided by the shear shape (phi_i = k p_i / shape_i there), the
+    column of phi_1 tied to phi_0 when ``tie`` (:func:`_tie_columns`: the same bits,
+    without a tied copy of the whole operator).
+    """
+    stick[...] = q[:, 1:m]
+    np.divide(q[:, m:nn], shape[m:nn], out=slip)
+    if tie and m > 1:
+        stick[:, 0] += q[:, 0]
+    elif tie:  # M = 1: phi_1 is the first slip node
+        slip[:, 0] = (q[:, 1] + q[:, 0]) / shape[1]
+
+
 def _expand_phi(geometry: Contact, f: np.ndarray) -> np.ndarray:
     """Nodal phi (N + 1 values) from phi_1..phi_{N-1}."""
     first = 0.0 if geometry.indenter.odd_shear else f[0]
@@ -359,24 +376,24 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
     """
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
-    qx = _tie_columns(geometry, qw)  # (3, N+1, N-1): phi_1..phi_{N-1}
+    tie = not geometry.indenter.odd_shear  # phi_0 = phi_1 (see _tie_columns)
     shape = geometry.shear_shape(r)
     stick_rows = np.arange(1, m + 1)
-    stick_cols = slice(0, m - 1)  # phi_1..phi_{M-1} in qx columns
+    stick_cols = slice(0, m - 1)  # phi_1..phi_{M-1} in tied columns
     slip_nodes = np.arange(m, nn)
     slip_cols = slip_nodes - 1
     size = nn + 1 + (m - 1) + 1
-    a0 = np.zeros((size, size))
+    a0 = np.empty((size, size))  # every entry written below (blocks, zeros, constants)
     a1b = np.empty((size, slip_nodes.size))
     nr = nn + 1
     a0[:nr, :nn] = pw[0][:, :-1]
     a0[:nr, nn] = -1.0
-    a0[:nr, nn + 1:nn + m] = qx[0][:, stick_cols]
-    a1b[:nr] = qx[0][:, slip_cols] / shape[slip_nodes]
-    a0[nr:, :nn] = pw[1][stick_rows, :-1]
-    a0[nr:, nn + 1:nn + m] = qx[1][stick_rows][:, stick_cols]
+    _put_shear(tie, qw[0], m, nn, shape, a0[:nr, nn + 1:nn + m], a1b[:nr])
+    a0[:nr, nn + m] = 0.0
+    a0[nr:, :nn] = pw[1][1:m + 1, :-1]
+    a0[nr:, nn] = 0.0
+    _put_shear(tie, qw[1][1:m + 1], m, nn, shape, a0[nr:, nn + 1:nn + m], a1b[nr:])
     a0[nr:, nn + m] = -(r[stick_rows] ** 2)
-    a1b[nr:] = qx[1][stick_rows][:, slip_cols] / shape[slip_nodes]
     b = np.concatenate([-0.5 * r**2, np.zeros(m)])
     if axis is not None:  # rows 0 ... M: w(0) - w(r_{M+1}), w(r_i) - w(0) (i = 1 ... M)
         dqx = _tie_columns(geometry, axis[1])
@@ -390,19 +407,15 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
         b[0] = 0.5 * r[m + 1] ** 2  # w(0) - w(r_{M+1}); -r_i^2/2 for the others as before
     if edge is not None:  # rows i0+1 ... N: w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2
         i0, dp, dq, up, uq = edge
-        dqx = _tie_columns(geometry, dq)
-        rows = np.arange(i0 + 1, i0 + 1 + dp.shape[0])
+        rows = slice(i0 + 1, i0 + 1 + dp.shape[0])
         a0[rows, :nn] = dp[:, :-1]
         a0[rows, nn] = 0.0
-        a0[rows, nn + 1:nn + m] = dqx[:, stick_cols]
-        a1b[rows] = dqx[:, slip_cols] / shape[slip_nodes]
+        _put_shear(tie, dq, m, nn, shape, a0[rows, nn + 1:nn + m], a1b[rows])
         b[rows] = -0.5 * (r[rows] - r[i0]) * (r[rows] + r[i0])
-        uqx = _tie_columns(geometry, uq)
-        srows = nr + np.arange(i0, m)  # stick rows of the nodes i0 + 1 ... M
+        srows = slice(nr + i0, nr + m)  # stick rows of the nodes i0 + 1 ... M
         a0[srows, :nn] = up[:m - i0, :-1]
-        a0[srows, nn + 1:nn + m] = uqx[:m - i0, stick_cols]
+        _put_shear(tie, uq[:m - i0], m, nn, shape, a0[srows, nn + 1:nn + m], a1b[srows])
         a0[srows, nn + m] = -(r[i0 + 1:m + 1] - r[i0]) * (r[i0 + 1:m + 1] + r[i0])
-        a1b[srows] = uqx[:m - i0, slip_cols] / shape[slip_nodes]
     return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
 
@@ -442,6 +455,30 @@ def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray
     return y + linalg.lu_solve(lu, res, check_finite=False)
 
 
+def _equilibration(a0: np.ndarray, a1b: np.ndarray, block, k: float,
+                   rows: int = 64) -> tuple[np.ndarray, np.ndarray]:
+    """Row and column scales of A(k) = a0 + k a1 (a1's columns ``block`` = a1b).
+
+    rs = 1 / max_j |A_ij|, then cs = 1 / max_i |rs_i A_ij|: formed a block of ``rows``
+    rows at a time in scratch (the same operations on each entry, and maxima are exact:
+    the same bits as on the whole matrix, without its copies).
+    """
+    size = a0.shape[0]
+    rs = np.empty(size)
+    colmax = np.zeros(a0.shape[1])
+    buf = np.empty((min(rows, size), a0.shape[1]))
+    for r0 in range(0, size, rows):
+        blk = buf[:min(rows, size - r0)]
+        blk[...] = a0[r0:r0 + rows]
+        blk[:, block] += k * a1b[r0:r0 + rows]
+        np.abs(blk, out=blk)
+        top = np.max(blk, axis=1)
+        np.divide(1.0, top, out=rs[r0:r0 + blk.shape[0]])
+        blk *= rs[r0:r0 + blk.shape[0], None]
+        np.maximum(colmax, np.max(blk, axis=0), out=colmax)
+    return rs, 1.0 / colmax
+
+
 def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
                 refine: bool = False, refine_derivative: bool = True,
                 final_step: float = 0.0) -> NewtonResult:
@@ -470,11 +507,7 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
         block = slice(int(slip[0]), int(slip[0]) + slip.size)  # (assemble's: M ... N-1)
     else:
         block = slip  # the same columns, by index (slower)
-    a0s = sysm.a0.copy()
-    a0s[:, block] += k * sysm.a1b
-    rs = 1.0 / np.max(np.abs(a0s), axis=1)
-    a0s *= rs[:, None]
-    cs = 1.0 / np.max(np.abs(a0s), axis=0)
+    rs, cs = _equilibration(sysm.a0, sysm.a1b, block, k)
     a0s = sysm.a0 * rs[:, None]
     a0s *= cs
     a1s = sysm.a1b * rs[:, None]

@@ -178,6 +178,14 @@ def _off_the_point(s: np.ndarray, xs: np.ndarray, start: np.ndarray) -> None:
                               np.broadcast_to(toward, s.shape)[hit])
 
 
+def _positions(idx: np.ndarray, r0: int, n: int, stride: int) -> np.ndarray:
+    """Flat positions in the output of the pairs ``idx`` (row-major over n elements) of the
+    row block starting at row ``r0``; rows lie ``stride`` apart in memory."""
+    if stride == n:
+        return idx + r0 * n
+    return idx + (idx // n) * (stride - n) + r0 * stride
+
+
 def _sink(flat: list, pos: np.ndarray, add: bool = False):
     """``put`` for the packer: write (or add) piece results at flat positions ``pos``."""
     def put(a, b, res, rows):
@@ -192,7 +200,8 @@ def _sink(flat: list, pos: np.ndarray, add: bool = False):
 
 def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes: np.ndarray,
                       chunk: int = 2_000_000, ref: float | None = None,
-                      outputs: tuple[int, ...] | None = None) -> np.ndarray:
+                      outputs: tuple[int, ...] | None = None,
+                      out: np.ndarray | None = None) -> np.ndarray:
     """Integrals of a kernel over every element for every evaluation point.
 
     Parameters
@@ -218,6 +227,10 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
         3, 4, 5 the second's, ...), in the order of the result's rows; default all.
         The others are not integrated (a kernel none of whose outputs is asked
         for is not evaluated); those asked for are the same bits either way.
+    out : ndarray, optional
+        Where to write the result (float, shape as returned, its last axis
+        contiguous; e.g. a block of columns of a larger array): the same bits,
+        without a fresh array and a copy.
 
     Returns
     -------
@@ -235,10 +248,20 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
     lo_e, hi_e = nodes[:-1], nodes[1:]
     length = hi_e - lo_e
     m, n = x.size, lo_e.size
-    out = np.empty((count, m, n))
+    if out is None:
+        out = np.empty((count, m, n))
+    elif (out.shape != (count, m, n) or out.dtype != np.float64
+          or (n > 1 and out.strides[2] != out.itemsize) or not out.flags.writeable
+          or (m > 1 and out.strides[1] < n * out.itemsize)):
+        raise ValueError(f"out must be a writeable float array of shape {(count, m, n)} "
+                         "with a contiguous last axis")
     if m == 0 or n == 0:
         return out
-    flat = [out[k].reshape(-1) for k in range(count)]
+    # each output as one flat run of memory: pair (i, j) at i * stride + j (stride = n
+    # unless ``out`` is a column block of a wider array, whose gaps are never written)
+    stride = out.strides[1] // out.itemsize if m > 1 else n
+    flat = [np.lib.stride_tricks.as_strided(out[k], shape=((m - 1) * stride + n,),
+                                            strides=(out.itemsize,)) for k in range(count)]
     with np.errstate(divide="ignore"):
         inv_len = 1.0 / length
     dist_ref = None
@@ -252,7 +275,6 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
         xr = x[r0:r0 + rows]
         mb = xr.size
         k = mb * n
-        base = r0 * n
         small = k <= _BLOCK_PAIRS
         # classify: distance to the element in element lengths, side of x
         dist = ws.dist[:k].reshape(mb, n) if small else np.empty((mb, n))
@@ -292,7 +314,7 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
             xs_near, jj = x_of.take(idx), j_of.take(idx)
             lo, hi = lo_e.take(jj), hi_e.take(jj)
             cut = np.clip(xs_near, lo, hi)
-            pos = idx + base
+            pos = _positions(idx, r0, n, stride)
             for k_out in range(count):
                 flat[k_out][pos] = 0.0  # the pieces on either side of x add up here
             near = (pos, ((cut, hi), (lo, cut)))
@@ -303,7 +325,7 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
                 if idx.size:
                     jj = j_of.take(idx)
                     packer.add(x_of.take(idx), lo_e.take(jj), length.take(jj), _RULES[cls - 1],
-                               _sink(flat, idx + base))
+                               _sink(flat, _positions(idx, r0, n, stride)))
             if near is None:
                 continue
             a_end, b_end = near[1][1 - sd]

@@ -281,11 +281,12 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
         return element_integrals(kernel, ref_nodes, ref_nodes)
 
     ref = compute() if cache is None else cache.get(key, compute)
-    g = np.empty((3, n + 1, n))
-    g[:, :m + 1, :m] = ref * (c ** degrees)[:, None, None]
-    g[:, :m + 1, m:] = element_integrals(kernel, nodes[:m + 1], nodes[m:])
-    g[:, m + 1:, :] = element_integrals(kernel, nodes[m + 1:], nodes)
-    return apply_difference(g, nodes)
+    op = np.empty((3, n + 1, n + 1))
+    g = op[:, :, :n]  # the element integrals, turned into the operator in place
+    np.multiply(ref, (c ** degrees)[:, None, None], out=g[:, :m + 1, :m])
+    element_integrals(kernel, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:])
+    element_integrals(kernel, nodes[m + 1:], nodes, out=g[:, m + 1:, :])
+    return apply_difference(g, nodes, out=op)
 
 
 def nodal_operators(model: Contact, mesh: Mesh,
@@ -325,8 +326,8 @@ def nodal_operators(model: Contact, mesh: Mesh,
     np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
     np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
     del blocks
-    g[:, :m + 1, m:] = element_integrals(joint, nodes[:m + 1], nodes[m:])
-    g[:, m + 1:, :] = element_integrals(joint, nodes[m + 1:], nodes)
+    element_integrals(joint, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:])
+    element_integrals(joint, nodes[m + 1:], nodes, out=g[:, m + 1:, :])
     apply_difference(g, nodes, out=both)
     return both[:3], both[3:]
 

@@ -284,3 +284,27 @@ def test_both_parts_in_one_pass_equal_each_alone_bit_for_bit(kind):
                                        rows=rows)
                 np.testing.assert_array_equal(pr, pw[list(rows)])
                 np.testing.assert_array_equal(qr, qw[list(rows)])
+
+
+def test_element_integrals_into_a_column_block_give_the_same_bits():
+    """``out=``: a block of columns of a wider array (as nodal_operators fills its
+    operators) receives exactly the bits of a fresh result; the other columns are
+    untouched; a wrong shape or layout is refused."""
+    g = Geometry("sphere", 0.3)
+    nodes = graded_mesh(48, 0.4).nodes
+    x = np.concatenate([nodes, np.linspace(0.0, 1.2, 23)])
+    kernels = (g.pressure_kernel, g.shear_kernel)
+    fresh = influence.element_integrals(kernels, x, nodes[10:], chunk=300)
+    wide = np.full((6, x.size, nodes.size - 11 + 7), -7.0)
+    got = influence.element_integrals(kernels, x, nodes[10:], chunk=300, out=wide[:, :, 3:-4])
+    assert got.base is not None and np.shares_memory(got, wide)
+    np.testing.assert_array_equal(wide[:, :, 3:-4], fresh)
+    assert (wide[:, :, :3] == -7.0).all() and (wide[:, :, -4:] == -7.0).all()
+    rows = np.empty((2, x.size, nodes.size - 11))
+    influence.element_integrals(kernels, x, nodes[10:], chunk=300, outputs=(2, 4), out=rows)
+    np.testing.assert_array_equal(rows, fresh[[2, 4]])
+    wrong_shape = np.empty((6, x.size, nodes.size))
+    strided = np.empty((6, x.size, 2 * (nodes.size - 11)))[:, :, ::2]
+    for bad in (wrong_shape, strided):
+        with pytest.raises(ValueError, match="out"):
+            influence.element_integrals(kernels, x, nodes[10:], out=bad)

@@ -855,7 +855,8 @@ def test_dwdr_pressure_against_mpmath():
             r, a = mpmath.mpf(float(t[i])), mpmath.mpf(float(s[i]))
             if r < a:
                 m = (r / a) ** 2
-                ref = 4 / mpmath.pi * (a / r if r > 0 else a) * (mpmath.ellipe(m) - mpmath.ellipk(m))
+                scale = a / r if r > 0 else a
+                ref = 4 / mpmath.pi * scale * (mpmath.ellipe(m) - mpmath.ellipk(m))
             else:
                 m = (a / r) ** 2
                 ref = 4 / mpmath.pi * (mpmath.ellipe(m) - mpmath.ellipk(m))

@@ -193,3 +193,63 @@ def test_high_n_one_refined_step_lands_on_the_full_newton_root():
                        refine=True)
     assert d.converged and d.iterations == 1
     assert abs(d.k / full.k - 1.0) < 1e-9, (d.k, full.k)
+
+
+@pytest.mark.parametrize("geometry, c, n", [("sphere", 0.5, 128), ("cylinder", 0.3, 96),
+                                            ("sphere", 0.9999, 64), ("cylinder", 1e-5, 64)])
+def test_assembled_system_and_scales_as_the_whole_matrix_formulas(geometry, c, n):
+    """assemble writes the tied shear columns and the slip block in place: the same bits as
+    the columns of the tied operator (phi_0 = phi_1 on rings) taken whole; Newton's row and
+    column scales, formed a block of rows at a time, are those of the whole A(k)."""
+    from contactlib import default_method as dm
+    from contactlib.elements import graded_mesh
+    from contactlib.model import contact
+    from contactlib.operators import nodal_operators
+
+    model = contact(geometry, 0.3)
+    mesh = graded_mesh(n, c)
+    pw, qw = nodal_operators(model, mesh)
+    if model.indenter.odd_shear:
+        pw[2][0] = qw[2][0] = 0.0
+    axis, edge = dm.difference_rows(model, mesh)
+    sysm = dm.assemble(model, mesh, pw, qw, axis, edge)
+    r, nn, m = mesh.nodes, mesh.n, mesh.stick_index
+    qx = qw[..., 1:-1].copy()  # the tied columns phi_1 ... phi_{N-1}, whole
+    if not model.indenter.odd_shear:
+        qx[..., 0] += qw[..., 0]
+    shape = model.shear_shape(r)
+    want = np.zeros_like(sysm.a0)
+    want[:nn + 1, :nn] = pw[0][:, :-1]
+    want[:nn + 1, nn] = -1.0
+    want[:nn + 1, nn + 1:nn + m] = qx[0][:, :m - 1]
+    want[nn + 1:, :nn] = pw[1][1:m + 1, :-1]
+    want[nn + 1:, nn + 1:nn + m] = qx[1][1:m + 1, :m - 1]
+    want[nn + 1:, nn + m] = -(r[1:m + 1] ** 2)
+    want_a1 = np.concatenate([qx[0][:, m - 1:], qx[1][1:m + 1, m - 1:]]) / shape[m:nn]
+    plain = axis is None and edge is None
+    if plain:
+        np.testing.assert_array_equal(sysm.a0, want)
+        np.testing.assert_array_equal(sysm.a1b, want_a1)
+    else:  # the rows the difference rows replace aside, the same
+        same = ~np.isin(np.arange(want.shape[0]), _replaced_rows(axis, edge, nn, m))
+        np.testing.assert_array_equal(sysm.a0[same], want[same])
+        np.testing.assert_array_equal(sysm.a1b[same], want_a1[same])
+    k = 0.3
+    whole = sysm.a0.copy()
+    whole[:, m:nn] += k * sysm.a1b
+    rs = 1.0 / np.max(np.abs(whole), axis=1)
+    whole *= rs[:, None]
+    cs = 1.0 / np.max(np.abs(whole), axis=0)
+    got_rs, got_cs = dm._equilibration(sysm.a0, sysm.a1b, slice(m, nn), k, rows=7)
+    np.testing.assert_array_equal(got_rs, rs)
+    np.testing.assert_array_equal(got_cs, cs)
+
+
+def _replaced_rows(axis, edge, nn, m):
+    rows = []
+    if axis is not None:
+        rows += list(range(m + 1))
+    if edge is not None:
+        i0, dp = edge[0], edge[1]
+        rows += list(range(i0 + 1, i0 + 1 + dp.shape[0])) + list(range(nn + 1 + i0, nn + 1 + m))
+    return rows

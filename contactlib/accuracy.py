@@ -118,11 +118,21 @@ def predicted_method_error(method: str, geometry: str, stick_ratio: float, n: in
     c = float(stick_ratio)
     if c <= 0.0 or c >= 1.0:
         return 0.0
-    from .elements import graded_mesh
-    from .extrapolated_method import quadrature_noise
+    return _extrapolated_truncation(np.array([c]), n) + _extrapolated_noise(c, n)
 
-    at256 = float(np.interp(c, _X_TABLE, EXTRAPOLATED_ERROR_AT_256))
-    return float(at256 * (256.0 / n) ** 3 + quadrature_noise(graded_mesh(n, c)))
+
+def _extrapolated_truncation(stick_ratios: np.ndarray, n: int) -> float:
+    """The largest truncation part of the extrapolated method's model over ``stick_ratios``."""
+    at256 = np.interp(stick_ratios, _X_TABLE, EXTRAPOLATED_ERROR_AT_256)
+    return float(np.max(at256) * (256.0 / n) ** 3)
+
+
+def _extrapolated_noise(stick_ratio: float, n: int) -> float:
+    """The quadrature-noise part of the extrapolated method's model at one stick ratio."""
+    from .elements import graded_mesh
+    from .extrapolated_method import BAND_FROM_N, quadrature_noise
+
+    return float(quadrature_noise(graded_mesh(n, stick_ratio), band=n >= BAND_FROM_N))
 
 
 def relative_cost(method: str, n: int) -> float:
@@ -136,12 +146,20 @@ def _cheapest_n(method: str, geometry: str, stick_ratios: Sequence[float],
                 tolerance: float) -> int | None:
     """The smallest admissible n whose predicted error is within tolerance / safety."""
     step = validate.EXTRAPOLATED_N_MULTIPLE if method == "extrapolated" else 64
-    inside = [float(c) for c in stick_ratios if 0.0 < float(c) < 1.0]
-    if method == "extrapolated" and inside:  # the noise is largest at the extreme c/a, the
-        stick_ratios = {min(inside), max(inside)}  # rest of the model is the same for all
+    inside = np.array([float(c) for c in stick_ratios if 0.0 < float(c) < 1.0])
+    limit = tolerance / PLAN_SAFETY[method]
     for n in range(max(step, MIN_N), MAX_N + 1, step):
-        if all(predicted_method_error(method, geometry, c, n) <= tolerance / PLAN_SAFETY[method]
-               for c in stick_ratios):
+        if method == "extrapolated":  # c/a = 0 and 1 are exact
+            # the truncation part is largest where its table is (mid c/a), the noise at the
+            # extreme c/a on either side (the smallest elements): each bounded by its largest
+            meets = inside.size == 0 or (
+                _extrapolated_truncation(inside, n)
+                + max(_extrapolated_noise(c, n) for c in {inside.min(), inside.max()})
+                <= limit)
+        else:
+            meets = all(predicted_method_error(method, geometry, c, n) <= limit
+                        for c in stick_ratios)
+        if meets:
             return n
     return None
 

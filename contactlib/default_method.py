@@ -647,14 +647,18 @@ def _full_adhesion(geometry: Contact, mesh: Mesh, pw: np.ndarray,
                             "", pw[1] @ p + qw[1] @ phi, pw[2] @ p + qw[2] @ phi)
 
 
-def difference_rows(geometry: Contact, mesh: Mesh) -> tuple[tuple | None, tuple | None]:
+def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
+                    width: float = NEAR_ROWS_WIDTH) -> tuple[tuple | None, tuple | None]:
     """The rows :func:`assemble` writes as differences on ``mesh``: (axis, edge), each or None.
 
     ``axis`` for a tiny stick zone (c/a <= :data:`AXIS_ROWS_BELOW`), ``edge`` for a
     thin slip annulus (1 - c/a <= :data:`EDGE_ROWS_BELOW`) or, at high resolution,
-    the band around c (elements next to c below :data:`NEAR_ROWS_BELOW` min(c, a - c));
-    None where the plain rows are kept, or the indenter has no kernel differences.
-    Their kernels are evaluated here (only in those three cases).
+    the band around c (elements next to c below :data:`NEAR_ROWS_BELOW` min(c, a - c);
+    ``band=True`` asks for the band at any resolution, ``False`` never: the extrapolated
+    method writes every level's rows alike; ``width``: the band's half-width in units of
+    min(c, a - c)); None where the plain rows are kept, or the
+    indenter has no kernel differences. Their kernels are evaluated here (only in those
+    three cases).
     """
     r, m = mesh.nodes, mesh.stick_index
     axis = None
@@ -675,8 +679,9 @@ def difference_rows(geometry: Contact, mesh: Mesh) -> tuple[tuple | None, tuple 
                 for part in ("normal", "shear"))
         except NotImplementedError:
             edge = None
-    elif axis is None and _near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m]):
-        width = NEAR_ROWS_WIDTH * min(r[m], 1.0 - r[m])
+    elif axis is None and (_near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m])
+                           if band is None else band):
+        width = width * min(r[m], 1.0 - r[m])
         i0 = int(np.searchsorted(r, r[m] - width))
         i1 = int(np.searchsorted(r, r[m] + width))
         try:

@@ -66,7 +66,8 @@ from .operators import StickBlocks, nodal_operators, restrict_nested
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "N_MULTIPLE", "resolving_n", "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
-           "DIFFERENCE_NOISE_POWER"]
+           "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
+           "BAND_NOISE_POWER"]
 
 ORDERS = (2.0, 3.0, 4.0)
 """The orders of the default method's error expansion that are eliminated."""
@@ -108,6 +109,39 @@ NOISE_POWER = 1.5
 # the annulus points lay within 0.64 of theirs.
 DIFFERENCE_NOISE = {"stick": 6e-11, "annulus": 7.2e-10}
 DIFFERENCE_NOISE_POWER = 0.5
+
+BAND_FROM_N = 512
+"""From this finest n on, every level writes the band of rows around c as differences
+(:func:`~contactlib.default_method.difference_rows` with ``band=True``, half-width
+:data:`BAND_WIDTH`), not only the levels whose elements next to c are small enough for
+the default method's rule (n >~ 1500). Mixed rows broke the levels' expansion in n at
+the band's 1e-8-level change of k: at nu = 0.49999 against the closed form
+(c/a = 0.02 ... 0.98), the largest errors were 1.8e-7 at n = 1024 (sphere, c/a = 0.98,
+plain rows on every level) and 8.7e-8 at n = 2048 (c/a = 0.95, the band on the finest
+level only); with the band on every level (c/a = 0.001 ... 0.999, both geometries) they
+are 9e-9 ... 7.1e-8 at n = 512 (the truncation of the expansion), 1.3e-9 ... 8.7e-9 at
+n = 1024 and 1.3e-10 ... 1.4e-9 at n = 2048 for c/a <= 0.95 (up to 4.7e-9 at 0.98 and
+0.99, 6.8e-9 at 0.998, 2.2e-8 at 0.999). Below n = 512 the plain rows are kept (bit for
+bit as before)."""
+BAND_WIDTH = 0.001
+"""Half-width of the band, in units of min(c, a - c) (the default method's is
+:data:`~contactlib.default_method.NEAR_ROWS_WIDTH` = 0.1). Rows are equivalent in exact
+arithmetic whatever the width; in floating point the narrow band was better at n = 2048
+(nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98, largest error): sphere 8.7e-8
+(width 0.1, at c/a = 0.95), 2.6e-8 (0.03), 4.5e-9 (0.01), 1.5e-9 (0.003), 1.4e-9
+(0.001); half-plane 8.8e-8 (0.1), 1.4e-9 (0.01), 2.9e-9 (0.003), 3.9e-9 (0.001, at
+c/a = 0.98; 1.3e-9 at c/a <= 0.95); at
+c/a = 0.999 (half-plane) 8.2e-8 (0.003), 2.2e-8 (0.001), 3.1e-8 (0.0003). At nu = 0.3 the
+widths 0.001, 0.003 and 0.01 give k within 1.5e-9 of each other (n = 2048)."""
+# The noise of k with the band on every level, interior c/a (neither the axis nor the edge
+# rows): BAND_NOISE[side] * h_min^-BAND_NOISE_POWER. Fitted against the closed form at
+# nu = 0.49999 (sphere and half-plane, c/a = 0.001 ... 0.999, n = 1024 and 2048, width
+# 0.001): the part of |error| the truncation estimate leaves, times h_min^0.5, was at most
+# 8.1e-13 at c/a < 0.5 ("stick") and 1.64e-12 at c/a >= 0.5 ("annulus"), both at n = 1024
+# (at n = 2048: 1.5e-13 and 9.9e-13). The bound at n = 2048 is 2.3e-9 (c/a = 0.5) ...
+# 1.2e-8 (c/a = 0.98), above the errors there: the estimate overstates at n = 2048.
+BAND_NOISE = {"stick": 1e-12, "annulus": 2e-12}
+BAND_NOISE_POWER = 0.5
 
 
 @dataclass(repr=False)
@@ -196,15 +230,18 @@ def _predict(coarse_k, orders=ORDERS) -> float:
     return float(coef[0] + sum(coef[1:]))  # at h = 1
 
 
-def quadrature_noise(mesh: Mesh, difference: bool | None = None) -> float:
+def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = False) -> float:
     """Measured bound of the relative k noise from the kernels' quadrature on ``mesh``.
 
     ``NOISE[side] * h_min^-1.5`` with the plain rows, ``DIFFERENCE_NOISE[side] *
-    h_min^-0.5`` with the difference rows (see :data:`NOISE`, :data:`DIFFERENCE_NOISE`):
-    negligible (< 2e-9) at c/a = 0.02 ... 0.98 up to n = 512, the dominant error at
-    c/a <= 1e-4 and >= 0.999. ``difference``: whether the rows were differences
+    h_min^-0.5`` with the axis or edge difference rows, ``BAND_NOISE[side] *
+    h_min^-0.5`` with the band around c on every level (see :data:`NOISE`,
+    :data:`DIFFERENCE_NOISE`, :data:`BAND_NOISE`): negligible (< 2e-9) at c/a = 0.02
+    ... 0.98 up to n = 256, about 1e-8 at n = 2048, the dominant error at c/a <= 1e-4
+    and >= 0.999. ``difference``: whether the rows were the axis or edge differences
     (default: where :func:`~contactlib.default_method.difference_rows` writes them on a
-    half-space, by c/a).
+    half-space, by c/a); ``band``: whether every level wrote the band around c (a solve at
+    n >= :data:`BAND_FROM_N`; it applies where neither the axis nor the edge rows do).
     """
     c = float(mesh.nodes[mesh.stick_index])
     h_min = float(np.min(np.diff(mesh.nodes)))
@@ -213,6 +250,8 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None) -> float:
         difference = c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW
     if difference:
         return DIFFERENCE_NOISE[side] * h_min ** -DIFFERENCE_NOISE_POWER
+    if band:
+        return BAND_NOISE[side] * h_min ** -BAND_NOISE_POWER
     return NOISE[side] * h_min ** -NOISE_POWER
 
 
@@ -298,6 +337,11 @@ finer coarse levels follow from it, then the coarser ones. No kernel is evaluate
 this start: every level's operators are restricted from the finest mesh's."""
 
 
+def _band(n: int) -> bool | None:
+    """``difference_rows``'s ``band`` for every level of a solve at finest ``n``."""
+    return True if n >= BAND_FROM_N else None
+
+
 def _good(d: DiscreteSolution | None) -> bool:
     return d is not None and d.converged and bool(np.isfinite(d.k)) and d.k > 0.0
 
@@ -346,7 +390,9 @@ def _retry_failed_levels(geometry: Contact, c: float, ns, meshes, opss, odds, so
         k0 = below + (below - sols[j - 2].oriented_k) / 4.0 if j > 1 and _good(sols[j - 2]) \
             else below
         d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
-                   rows=difference_rows(geometry, meshes[j]), reversed_side=below < 0.0)
+                   rows=difference_rows(geometry, meshes[j], band=_band(ns[-1]),
+                                        width=BAND_WIDTH),
+                   reversed_side=below < 0.0)
         if _good(d):
             if odds[j] is not None:  # as for every level: u, du/dx inside its elements
                 x, po, qo = odds[j]
@@ -447,10 +493,11 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         else:
             k0 = _start(geometry, c, meshes[i], sols, i)
         near = i == LEVELS - 1 or (level_offsets is not None and guess is not None and i > 0)
-        rows = difference_rows(geometry, meshes[i])  # as the default method's, if any
+        rows = difference_rows(geometry, meshes[i], band=_band(n), width=BAND_WIDTH)  # alike
         if i == LEVELS - 1:  # the noise of the finest level's rows (see quadrature_noise)
             difference = rows != (None, None) and (c <= AXIS_ROWS_BELOW
                                                    or 1.0 - c <= EDGE_ROWS_BELOW)
+            band = rows[1] is not None and not difference
         d = _level(geometry, c, ns[i], meshes[i], *opss[i], k0, one_step=near, rows=rows,
                    reversed_side=side < 0.0)
         if _good(d) and d.oriented_k < 0.0:  # the levels after it start on its side
@@ -494,7 +541,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     # the levels' Newton round-off floors (refined: ~1e-10) and the quadrature noise of
     # the smallest elements add to the estimate
     out.error_estimate += (2.0 * max(s.round_off for s in sols)
-                           + quadrature_noise(top.mesh, difference=difference))
+                           + quadrature_noise(top.mesh, difference=difference, band=band))
     out.level_offsets = tuple(float(s.k) / out.k - 1.0 for s in sols[:-1])
     if work:
         out.level_work = tuple(_work(geometry, s) for s in sols)

@@ -97,10 +97,11 @@ MIN_TOLERANCE = 1e-8
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""
 
-MIN_PLANNED_TOLERANCE = 1e-7
+MIN_PLANNED_TOLERANCE = 1e-8
 """Smallest ``tolerance`` of solve/sweep (library and command line): the extrapolated
-method's measured floor (k to 7.7e-8 at n = 512, c/a = 0.1 ... 0.9; the kernels'
-quadrature noise grows beyond)."""
+method's measured reach (nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98: k to
+2.0e-9 ... 8.7e-9 at n = 1024 and 4e-10 ... 2.9e-9 at n = 2048; its quadrature-noise bound,
+2.3e-9 ... 1.2e-8 at n = 2048, keeps the plan from 1e-8 at the extreme c/a)."""
 
 
 class InputError(ValueError):
@@ -389,7 +390,7 @@ def tolerance(value: Any) -> float:
 
 
 def planned_tolerance(value: Any) -> float:
-    """The ``tolerance`` of solve/sweep: a relative error of k in [1e-7, 0.1]."""
+    """The ``tolerance`` of solve/sweep: a relative error of k in [1e-8, 0.1]."""
     return number("tolerance", value, MIN_PLANNED_TOLERANCE, MAX_TOLERANCE)
 
 

@@ -221,6 +221,56 @@ def test_a_vanishing_n2_term_is_no_reason_to_stop_extrapolating(geometry, nu, c)
     assert s.error_estimate < 1e-6 and err <= 3.0 * s.error_estimate + fine.error_estimate
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_band_on_every_level_at_n1024(geometry):
+    """n = 1024, nu = 0.49999 against the closed form (a truth to ~1e-9 there): with the band
+    rows around c on every level, k to 1.5e-8 at c/a = 0.02 ... 0.98 (measured at most
+    8.7e-9; with the band on no level, the sphere's c/a = 0.98 was 1.8e-7 off and the
+    half-plane's c/a = 0.02 2.0e-8 with an estimate of 1.2e-9), and the estimate covers the
+    error."""
+    model = contact(geometry, 0.49999)
+    for c in (0.02, 0.1, 0.5, 0.9, 0.98):
+        s = solve_extrapolated(model, c, 1024)
+        err = abs(s.k / float(uncoupled_friction(geometry, 0.49999, c)) - 1.0)
+        assert err <= 1.5e-8, (c, err)
+        assert err <= s.error_estimate <= 3e-8, (c, err, s.error_estimate)
+
+
+@pytest.mark.slow
+def test_band_at_n2048_mid_and_thin_annulus():
+    """n = 2048, half-plane, nu = 0.49999 against the closed form: k to 3e-9 at c/a = 0.5
+    (measured 1.1e-9), and at
+    c/a = 0.999 the estimate covers the error (2.2e-8 against 4.3e-8; the band of width
+    0.003 was 8.2e-8 off with an estimate of 4.5e-8)."""
+    model = contact("cylinder", 0.49999)
+    for c, most in ((0.5, 3e-9), (0.999, 4e-8)):
+        s = solve_extrapolated(model, c, 2048)
+        err = abs(s.k / float(uncoupled_friction("cylinder", 0.49999, c)) - 1.0)
+        assert err <= most and err <= s.error_estimate, (c, err, s.error_estimate)
+
+
+def test_band_rows_from_n512_only():
+    """The band rows are written on every level from n = 512 on; below, the plain rows
+    (n = 256: bit for bit the default discretization's, as before)."""
+    from contactlib.default_method import difference_rows
+    from contactlib.elements import graded_mesh
+    from contactlib.extrapolated_method import BAND_FROM_N
+
+    model = contact("sphere", 0.3)
+    mesh = graded_mesh(64, 0.5)
+    assert BAND_FROM_N == 512
+    assert difference_rows(model, mesh) == (None, None)
+    axis, band = difference_rows(model, mesh, band=True)
+    assert axis is None and band is not None
+    s = solve_extrapolated(model, 0.5, 512)
+    assert s.error_estimate < 1e-7
+    # c/a = 0.98 at n = 512, nu = 0.49999: 2.3e-8 off the closed form (7.7e-8 with the
+    # plain rows on every level)
+    t = solve_extrapolated(contact("sphere", 0.49999), 0.98, 512)
+    assert abs(t.k / float(uncoupled_friction("sphere", 0.49999, 0.98)) - 1.0) < 4e-8
+
+
 def test_noise_model_follows_the_rows():
     """Difference rows (c/a <= 1e-4, 1 - c/a <= 5e-4) get their own, smaller noise bound."""
     from contactlib.elements import graded_mesh
@@ -230,6 +280,9 @@ def test_noise_model_follows_the_rows():
     assert quadrature_noise(tiny) < 0.2 * quadrature_noise(tiny, difference=False)
     assert quadrature_noise(thin) < 1e-2 * quadrature_noise(thin, difference=False)
     assert quadrature_noise(mid) == quadrature_noise(mid, difference=False) < 1e-9
+    # the band on every level (n >= 512): its own bound, 2.3e-9 at c/a = 0.5, n = 2048
+    fine = graded_mesh(2048, 0.5)
+    assert 1e-9 < quadrature_noise(fine, band=True) < 0.2 * quadrature_noise(fine)
 
 
 # ----------------------------------------------------------------------------- tolerance
@@ -250,6 +303,38 @@ def test_plan_picks_the_cheapest_method_that_meets_the_tolerance():
             accuracy.plan(model, [0.9999], 1e-6, methods=accuracy.PLANNED_METHODS)
 
 
+def test_plan_covers_every_requested_stick_ratio():
+    # the extrapolated model's truncation is largest at mid c/a and its noise at the extreme
+    # c/a: a sweep over both plans at least the n of each alone (before, only the extreme
+    # c/a were checked and [0.02, 0.5, 0.98] got the n of [0.02, 0.98], too small for 0.5)
+    from contactlib import accuracy
+
+    for geometry in ("sphere", "cylinder"):
+        model = contact(geometry, 0.3)
+        for tol in (1e-6, 1e-7, 5e-8, 2e-8):
+            def n(ratios):
+                return accuracy.plan(model, ratios, tol, methods=accuracy.PLANNED_METHODS)[1]
+
+            both = n([0.02, 0.5, 0.98])
+            assert both >= n([0.5]) and both >= n([0.02, 0.98])
+            for c in (0.02, 0.5, 0.98):
+                assert accuracy.predicted_method_error("extrapolated", geometry, c, both) \
+                    <= tol / accuracy.PLAN_SAFETY["extrapolated"]
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_tolerance_1e8_is_met_against_the_closed_form(geometry):
+    # nu = 0.49999: the closed form is a truth to ~1e-9 (the coupling's correction is
+    # O(beta^2) = 1e-10); 1e-8 plans the extrapolated method at n = 1280 (the band of
+    # difference rows on every level)
+    nu = 0.49999
+    s, = api.sweep(geometry, nu, [0.5], tolerance=1e-8)
+    err = abs(s.friction_coefficient / float(uncoupled_friction(geometry, nu, 0.5)) - 1.0)
+    assert s.method == "extrapolated" and 1024 <= s.n <= 2048 and s.resolved
+    assert err <= s.error_estimate <= 1e-8
+    assert err <= 5e-9
+
+
 def test_sweep_with_a_tolerance_meets_it_against_the_reference():
     ratios = [0.1, 0.5, 0.9]
     sols = api.sweep("sphere", 0.3, ratios, tolerance=1e-6)
@@ -262,7 +347,7 @@ def test_sweep_with_a_tolerance_meets_it_against_the_reference():
 
 
 @pytest.mark.parametrize("extra, word", [
-    (["--tolerance", "1e-9"], "--tolerance"),  # below the supported range [1e-7, 0.1]
+    (["--tolerance", "1e-9"], "--tolerance"),  # below the supported range [1e-8, 0.1]
     (["--tolerance", "0.5"], "--tolerance"),
     (["--tolerance", "nan"], "--tolerance"),
     (["--tolerance", "1e-6", "--n", "256"], "--tolerance"),

@@ -95,9 +95,18 @@ EDGE_REF_WIDTHS = 4.0
 # Sphere, nu = 0.3, c/a = 0.5, (k(n) - k_inf) n^2 / k_inf with the plain rows: 0.83, 0.83,
 # 0.83 at n = 1024, 1536, 2048, then 0.95, 1.86, 0.12, 3.05 at 2560 ... 4096 (k(4096)
 # 1.3e-7 off the n^-2 trend); with these rows 0.80, 0.75, 0.73, 0.69, 0.82 at 2048 ... 4096
-# (Richardson from 2048/4096 within 2.2e-9 of the plain 512/1024/2048 one).
+# (Richardson from 2048/4096 within 2.2e-9 of the plain 512/1024/2048 one). The width
+# was 0.1; 0.001 (the extrapolated method's, measured there against the closed forms)
+# halves the solve at n = 2048 (sphere, nu = 0.49999, c/a = 0.5: 2.9 -> 1.6 s) and moves
+# k by at most 5e-8 (c/a = 0.02 ... 0.98, n = 2048; the method's own error there is
+# 1.1e-7 ... 4.1e-7). nu = 0.49999 against the closed form, (k(n) - k_inf) n^2 / k_inf:
+# sphere c/a = 0.5 at 2048, 3072, 4096: 1.036, 1.085, 1.730 (width 0.1), 1.023, 1.040,
+# 1.045 (0.001); c/a = 0.95 (0.89 ... 1.01 at n = 256 ... 1280, plain rows): 0.77, 1.18,
+# 1.43 and 1.00, 1.46, 2.06; half-plane c/a = 0.1 (-0.11 ... -0.06): -0.031, -0.110,
+# 0.020 and -0.047, -0.043, -0.092. Neither width keeps the n^-2 trend to 4096 at every
+# c/a; the differences, <= 3.6e-8 relative, are below the method's error there.
 NEAR_ROWS_BELOW = 2e-6
-NEAR_ROWS_WIDTH = 0.1
+NEAR_ROWS_WIDTH = 0.001
 
 
 def _near_c_h(r: np.ndarray, m: int) -> float:

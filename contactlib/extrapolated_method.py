@@ -124,8 +124,8 @@ n = 1024 and 1.3e-10 ... 1.4e-9 at n = 2048 for c/a <= 0.95 (up to 4.7e-9 at 0.9
 0.99, 6.8e-9 at 0.998, 2.2e-8 at 0.999). Below n = 512 the plain rows are kept (bit for
 bit as before)."""
 BAND_WIDTH = 0.001
-"""Half-width of the band, in units of min(c, a - c) (the default method's is
-:data:`~contactlib.default_method.NEAR_ROWS_WIDTH` = 0.1). Rows are equivalent in exact
+"""Half-width of the band, in units of min(c, a - c) (the default method's
+:data:`~contactlib.default_method.NEAR_ROWS_WIDTH` was 0.1, now the same). Rows are equivalent in exact
 arithmetic whatever the width; in floating point the narrow band was better at n = 2048
 (nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98, largest error): sphere 8.7e-8
 (width 0.1, at c/a = 0.95), 2.6e-8 (0.03), 4.5e-9 (0.01), 1.5e-9 (0.003), 1.4e-9

@@ -253,3 +253,19 @@ def _replaced_rows(axis, edge, nn, m):
         i0, dp = edge[0], edge[1]
         rows += list(range(i0 + 1, i0 + 1 + dp.shape[0])) + list(range(nn + 1 + i0, nn + 1 + m))
     return rows
+
+
+@pytest.mark.slow
+def test_band_rows_keep_the_n2_trend_at_n2048():
+    """nu = 0.49999 against the closed form (a truth to ~1e-9), sphere, c/a = 0.95: the
+    default method's (k(n) - k_inf) n^2 / k_inf is 0.89 ... 1.01 at n = 256 ... 1280 (plain
+    rows); at n = 2048 the band of difference rows around c (NEAR_ROWS_WIDTH = 0.001) gives
+    1.00, on the trend (the band of width 0.1 gave 0.77: k 5.4e-8 off it)."""
+    from contactlib.default_method import NEAR_ROWS_WIDTH
+    from contactlib.model import contact
+
+    model = contact("sphere", 0.49999)
+    k_inf = float(uncoupled_friction("sphere", 0.49999, 0.95))
+    scaled = [(solve_default(model, 0.95, n).k / k_inf - 1.0) * n * n for n in (1024, 2048)]
+    assert NEAR_ROWS_WIDTH == 0.001
+    assert 0.85 < scaled[0] < 1.1 and abs(scaled[1] - scaled[0]) < 0.1, scaled

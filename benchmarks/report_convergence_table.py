@@ -9,10 +9,9 @@ config's largest n) with :func:`contactlib.convergence.study`, and prints
 per study and n: the median wall time of one :func:`contactlib.solve`
 (kernels, Newton, profiles, flags, work and the error estimates), the median
 relative k error over the stick ratios and the peak memory. The reference
-is the Richardson value of the three finest n (as ``snakemake convergence``
-uses); where those three do not converge monotonically (the study's order
-is NaN) the finest triple that does (order in [1, 3]) is used instead, and
-the table says which. The k values themselves go to stderr. Runs the same
+is the Richardson value of the finest triple whose observed order lies in
+[1, 3] (:func:`contactlib.convergence.converged_richardson`; ``snakemake
+convergence`` takes order >= 1 with no upper bound), and the table says which. The k values themselves go to stderr. Runs the same
 solves as the workflow's default studies, without the workflow; about 10 min
 on an idle core.
 """
@@ -30,7 +29,7 @@ import sys
 import numpy as np
 import yaml
 
-from contactlib.convergence import richardson, study
+from contactlib.convergence import converged_richardson, study
 
 CONFIG = pathlib.Path(__file__).resolve().parents[1] / "config" / "config.yaml"
 STUDIES = ("sphere-default", "cylinder-default")
@@ -39,11 +38,8 @@ STUDIES = ("sphere-default", "cylinder-default")
 def reference(k: np.ndarray, ns: list[int]) -> tuple[float, int]:
     """Richardson value of the finest triple (ending at ns[i]) that converges at order
     1 ... 3, and that triple's finest n (NaN, 0 when none does)."""
-    for end in range(len(ns), 2, -1):
-        ref, order = richardson(k[:end])
-        if 1.0 <= order <= 3.0:
-            return ref, ns[end - 1]
-    return float("nan"), 0
+    ref, order, end = converged_richardson(k, 1.0, 3.0)
+    return (ref, ns[end]) if np.isfinite(order) else (float("nan"), 0)
 
 
 def main() -> None:

@@ -77,3 +77,21 @@ def test_trade_table_time_per_digit_follows_from_order_and_cost():
     for r in rows[1:]:
         assert r["time_per_digit"] == pytest.approx(10 ** 1.5, rel=1e-12)
     assert rows[2]["median_error"] == pytest.approx(1e-2 / 16)
+
+
+def test_converged_richardson_skips_a_floor():
+    # a power law of order 2 that reaches a floor at the finest value: the last triple's
+    # differences shrink by only 1.01 (order 0.014: its extrapolation would run away), so
+    # the finest triple that converges is used
+    from contactlib.convergence import converged_richardson
+
+    n = np.array([64, 128, 256, 512, 1024])
+    v = 0.7 + 3.0 / n**2.0
+    v[-1] = v[-2] + 0.99 * (v[-2] - v[-3])
+    assert 0.0 < richardson(v)[1] < 0.1  # what the last triple alone gives
+    limit, order, end = converged_richardson(v)
+    assert end == 3 and order == pytest.approx(2.0, rel=1e-9)
+    assert limit == pytest.approx(0.7, abs=1e-13)
+    # no triple in range: the finest value, NaN
+    flat = converged_richardson(np.array([1.0, 0.9, 0.85, 0.84]), min_order=3.0)
+    assert math.isnan(flat[1]) and flat[0] == 0.84 and flat[2] == 3

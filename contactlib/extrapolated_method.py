@@ -125,8 +125,9 @@ n = 1024 and 1.3e-10 ... 1.4e-9 at n = 2048 for c/a <= 0.95 (up to 4.7e-9 at 0.9
 bit as before)."""
 BAND_WIDTH = 0.001
 """Half-width of the band, in units of min(c, a - c) (the default method's
-:data:`~contactlib.default_method.NEAR_ROWS_WIDTH` was 0.1, now the same). Rows are equivalent in exact
-arithmetic whatever the width; in floating point the narrow band was better at n = 2048
+:data:`~contactlib.default_method.NEAR_ROWS_WIDTH` was 0.1, now the same). Rows are
+equivalent in exact arithmetic whatever the width; in floating point the narrow band was
+better at n = 2048
 (nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98, largest error): sphere 8.7e-8
 (width 0.1, at c/a = 0.95), 2.6e-8 (0.03), 4.5e-9 (0.01), 1.5e-9 (0.003), 1.4e-9
 (0.001); half-plane 8.8e-8 (0.1), 1.4e-9 (0.01), 2.9e-9 (0.003), 3.9e-9 (0.001, at
@@ -237,7 +238,7 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
     h_min^-0.5`` with the axis or edge difference rows, ``BAND_NOISE[side] *
     h_min^-0.5`` with the band around c on every level (see :data:`NOISE`,
     :data:`DIFFERENCE_NOISE`, :data:`BAND_NOISE`): negligible (< 2e-9) at c/a = 0.02
-    ... 0.98 up to n = 256, about 1e-8 at n = 2048, the dominant error at c/a <= 1e-4
+    ... 0.98 up to n = 256, 2.3e-9 ... 1.2e-8 at n = 2048, the dominant error at c/a <= 1e-4
     and >= 0.999. ``difference``: whether the rows were the axis or edge differences
     (default: where :func:`~contactlib.default_method.difference_rows` writes them on a
     half-space, by c/a); ``band``: whether every level wrote the band around c (a solve at

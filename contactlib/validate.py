@@ -100,8 +100,8 @@ MAX_TOLERANCE = 0.1
 MIN_PLANNED_TOLERANCE = 1e-8
 """Smallest ``tolerance`` of solve/sweep (library and command line): the extrapolated
 method's measured reach (nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98: k to
-2.0e-9 ... 8.7e-9 at n = 1024 and 4e-10 ... 2.9e-9 at n = 2048; its quadrature-noise bound,
-2.3e-9 ... 1.2e-8 at n = 2048, keeps the plan from 1e-8 at the extreme c/a)."""
+1.3e-9 ... 8.7e-9 at n = 1024 and 1.3e-10 ... 3.9e-9 at n = 2048; its quadrature-noise
+bound, 2.3e-9 ... 1.2e-8 at n = 2048, keeps the plan above 1e-8 at the extreme c/a)."""
 
 
 class InputError(ValueError):

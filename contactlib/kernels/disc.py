@@ -635,11 +635,7 @@ def _e_minus_k(m1: np.ndarray, out: np.ndarray, f: np.ndarray) -> np.ndarray:
     """
     k = m1.size
     rows, lg = f[0:2, :k], f[2, :k]
-    np.multiply(_E_MINUS_K[0], m1, out=rows)
-    rows += _E_MINUS_K[1]
-    for c in _E_MINUS_K[2:]:
-        rows *= m1
-        rows += c
+    _horner(_E_MINUS_K, m1, rows)
     with np.errstate(divide="ignore", invalid="ignore"):
         np.log(m1, out=lg)
         lg *= rows[1]

@@ -107,6 +107,21 @@ EDGE_REF_WIDTHS = 4.0
 # c/a; the differences, <= 3.6e-8 relative, are below the method's error there.
 NEAR_ROWS_BELOW = 2e-6
 NEAR_ROWS_WIDTH = 0.001
+NEAR_ROWS_FROM_N = 512
+"""From this n on the band of difference rows around c is written at every c/a (as well
+as where the elements next to c are below :data:`NEAR_ROWS_BELOW` min(c, a - c), which
+first happens near n = 1500). Near full stick the plain rows' round-off grew with n
+before the elements' rule switched the band on: nu = 0.49999 against the closed form,
+relative k error at n = 512, 768, 1024, 1536 with the plain rows: sphere c/a = 0.999
+6.2e-6, -3.6e-5, -1.3e-4, 6.4e-4; half-plane c/a = 0.999 -1.8e-6, -1.7e-5, -7.7e-5,
+-1.6e-4; c/a = 0.98 ... 0.995 up to 1.1e-5 (the a-posteriori estimate fell up to 5x
+short of these). With the band from n = 512: 1.7e-6, 7.6e-7, 4.3e-7, 2.0e-7 and 1.4e-6,
+6.4e-7, 3.6e-7, 1.7e-7, the method's n^-2 (c/a = 0.02 ... 0.999, both geometries: at
+most 6.4e-6 at n = 512 and 7.0e-7 at n = 1536). At nu = 0.3 and c/a = 0.02 ... 0.95 the
+band moves k by at most 1.7e-7 at n <= 1536 (the plain rows' round-off). The
+extrapolated method writes it on every level from the same n
+(:data:`~contactlib.extrapolated_method.BAND_FROM_N`). Below n = 512 the plain rows
+are kept: the default n = 256 is bit for bit as before."""
 
 
 def _near_c_h(r: np.ndarray, m: int) -> float:
@@ -122,6 +137,11 @@ within ~1e-6 (one factorization fewer a solve, where one costs most)."""
 _THREE_LEVEL_START_FROM_N = 1024  # start_k from n = 64, 128, 256 (orders 2 and 3) instead
 # of 64 and 128 (order 2): within ~1e-6 of the root instead of 1e-5 ... 3e-5, so that
 # one refined step is final (REFINED_FINAL_STEP) where a factorization costs most
+_PLAIN_DERIVATIVE_WITH_ONE_STEP = True  # with one refined step final (n >= 1024), dx/dk
+# from the plain LU solve (refine_derivative=False, as the extrapolated method's levels):
+# its round-off only scales a step below 3e-5; k moved by at most 1.6e-14 (c/a = 0.02 ...
+# 0.999, both geometries, nu = 0.3 and 0.49999, n = 1024 and 2048), and it saves one of
+# the two extended-precision residuals (0.17 LU(3201) at n = 2048)
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256) ...
 # ... and whenever Newton's steps stop shrinking on the round-off floor: then the
 # iteration goes on with the refinement (nu = 0.3, c/a = 0.99 at n = 128 and 0.9999
@@ -662,7 +682,8 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
 
     ``axis`` for a tiny stick zone (c/a <= :data:`AXIS_ROWS_BELOW`), ``edge`` for a
     thin slip annulus (1 - c/a <= :data:`EDGE_ROWS_BELOW`) or, at high resolution,
-    the band around c (elements next to c below :data:`NEAR_ROWS_BELOW` min(c, a - c);
+    the band around c (n >= :data:`NEAR_ROWS_FROM_N`, or elements next to c below
+    :data:`NEAR_ROWS_BELOW` min(c, a - c);
     ``band=True`` asks for the band at any resolution, ``False`` never: the extrapolated
     method writes every level's rows alike; ``width``: the band's half-width in units of
     min(c, a - c)); None where the plain rows are kept, or the
@@ -688,7 +709,8 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
                 for part in ("normal", "shear"))
         except NotImplementedError:
             edge = None
-    elif axis is None and (_near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m])
+    elif axis is None and ((mesh.n >= NEAR_ROWS_FROM_N
+                            or _near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m]))
                            if band is None else band):
         width = width * min(r[m], 1.0 - r[m])
         i0 = int(np.searchsorted(r, r[m] - width))
@@ -760,9 +782,10 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     system = assemble(geometry, mesh, pw, qw, axis, edge)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
+    one_step = n >= _THREE_LEVEL_START_FROM_N
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N,
-                         final_step=(REFINED_FINAL_STEP if n >= _THREE_LEVEL_START_FROM_N
-                                     else 0.0))
+                         final_step=REFINED_FINAL_STEP if one_step else 0.0,
+                         refine_derivative=not (one_step and _PLAIN_DERIVATIVE_WITH_ONE_STEP))
     x, k = newton.x, newton.k  # signed: q = k p in the slip zone
     res = system.residual(x, k)
     p = np.append(x[:nn], 0.0)

@@ -56,9 +56,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import energy, validate
-from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, REFINED_FINAL_STEP,
-                             DiscreteSolution, assemble, difference_rows, newton_on_k,
-                             solve_default)
+from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
+                             REFINED_FINAL_STEP, DiscreteSolution, assemble, difference_rows,
+                             newton_on_k, solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
 from .operators import StickBlocks, nodal_operators, restrict_nested
@@ -110,11 +110,12 @@ NOISE_POWER = 1.5
 DIFFERENCE_NOISE = {"stick": 6e-11, "annulus": 7.2e-10}
 DIFFERENCE_NOISE_POWER = 0.5
 
-BAND_FROM_N = 512
+BAND_FROM_N = NEAR_ROWS_FROM_N  # 512, the default method's (one place)
 """From this finest n on, every level writes the band of rows around c as differences
 (:func:`~contactlib.default_method.difference_rows` with ``band=True``, half-width
-:data:`BAND_WIDTH`), not only the levels whose elements next to c are small enough for
-the default method's rule (n >~ 1500). Mixed rows broke the levels' expansion in n at
+:data:`BAND_WIDTH`), the coarse levels below n = 512 included (the default method
+writes the band from the same n, :data:`~contactlib.default_method.NEAR_ROWS_FROM_N`;
+it used to start near n = 1500, where the elements next to c became small). Mixed rows broke the levels' expansion in n at
 the band's 1e-8-level change of k: at nu = 0.49999 against the closed form
 (c/a = 0.02 ... 0.98), the largest errors were 1.8e-7 at n = 1024 (sphere, c/a = 0.98,
 plain rows on every level) and 8.7e-8 at n = 2048 (c/a = 0.95, the band on the finest

@@ -77,6 +77,25 @@ def test_closed_form_at_default_resolution(geometry, c):
     assert sol.error_estimate < 1e-3
 
 
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_near_full_stick_keeps_converging_at_high_n(geometry):
+    """nu = 0.49999 (beta^2 = 1e-10: the closed form is a truth to ~1.5e-9), c/a = 0.999,
+    n = 1024: k within 1e-6 of the closed form, and the estimate covers the error.
+
+    Before the band of difference rows was written from n = 512
+    (default_method.NEAR_ROWS_FROM_N), the plain rows' round-off grew with n here: k was
+    off by 1.3e-4 (sphere) and 7.7e-5 (half-plane) at n = 1024, 6.4e-4 at 1536, against
+    1.7e-6 at n = 512; now 4.3e-7 and 3.6e-7, error / estimate 0.95 and 0.92.
+    """
+    nu, c = 0.49999, 0.999
+    sol = solve(geometry, nu, stick_ratio=c, n=1024, energy=False)
+    truth = float(uncoupled_friction(geometry, nu, c))
+    err = abs(sol.friction_coefficient / truth - 1.0)
+    assert sol.resolved
+    assert err < 1e-6
+    assert err <= 1.5 * sol.error_estimate <= 15.0 * err
+
+
 FOURFOLD = [("cylinder", 0.9), pytest.param("sphere", 0.3, marks=pytest.mark.slow),
             pytest.param("sphere", 0.5, marks=pytest.mark.slow),
             pytest.param("sphere", 0.9, marks=pytest.mark.slow),

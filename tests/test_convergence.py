@@ -95,3 +95,24 @@ def test_converged_richardson_skips_a_floor():
     # no triple in range: the finest value, NaN
     flat = converged_richardson(np.array([1.0, 0.9, 0.85, 0.84]), min_order=3.0)
     assert math.isnan(flat[1]) and flat[0] == 0.84 and flat[2] == 3
+
+
+def test_trade_table_leaves_time_per_digit_empty_at_a_floor():
+    """An error that falls by less than MIN_DIGIT_FALL a doubling (a floor) buys no digit:
+    empty, not (t ratio) ** (1 / log2(1.03)) = 3.8e42 as the formula gives."""
+    import xarray as xr
+
+    from contactlib.convergence import MIN_DIGIT_FALL, trade_table
+
+    ns = np.array([64, 128, 256])
+    med = np.array([1e-6, 8.37e-8, 8.15e-8])
+    ds = xr.Dataset(
+        {"error": (("quantity", "n", "stick_ratio"), (med[:, None] * np.ones((1, 2)))[None]),
+         "wall_time": (("n", "stick_ratio"), np.array([[1.0], [3.0], [10.0]]) * np.ones((1, 2))),
+         "peak_memory": (("n", "stick_ratio"), np.ones((3, 2)))},
+        coords={"quantity": ["friction_coefficient"], "n": ns, "stick_ratio": [0.3, 0.5]},
+        attrs={"geometry": "sphere", "method": "default"})
+    rows = trade_table([ds])
+    assert MIN_DIGIT_FALL > 8.37 / 8.15
+    assert rows[1]["time_per_digit"] == pytest.approx(3.0 ** (1.0 / np.log10(1e-6 / 8.37e-8)))
+    assert np.isnan(rows[2]["time_per_digit"])

@@ -38,7 +38,7 @@ from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import CaseRecord, Solution
-from .accuracy import MAX_N, estimate, resolving_n
+from .accuracy import MAX_N, default_noise, estimate, resolving_n
 from . import extrapolated_method
 
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases",
@@ -507,7 +507,8 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     Default method: k, the load and (with samples) the work of the same case
     on the nested meshes n/4 and n/2 give the estimates (:func:`_relative`);
     where Newton stopped on the round-off floor, twice its last step is added
-    to the k estimate. A mesh with elements below :data:`QUADRATURE_FLOOR_H`
+    to the k estimate, and from n = 512 the quadrature-noise bound
+    (:func:`contactlib.accuracy.default_noise`). A mesh with elements below :data:`QUADRATURE_FLOOR_H`
     is never resolved (a limit of the method; the message says so).
     Frictionless, full adhesion and nu = 0.5 are exact in k (estimate 0) and
     carry the estimate of the load. The paper's scheme is measured against
@@ -567,9 +568,10 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
             out["work_error_estimate"] = 0.0
         limit = _below_floor(rec, solved, notes)
         # Newton stopped on the round-off floor: its iterates scatter by about the
-        # last step, twice which is added to the discretization estimate
+        # last step, twice which is added to the discretization estimate; from n = 512
+        # the kernels' quadrature noise, which the nested levels do not see
         out["error_estimate"] = float(out["error_estimate"]) + 2.0 * float(
-            rec.round_off)
+            rec.round_off) + default_noise(geometry, solved, n)
     est = float(out.get("error_estimate", rec.error_estimate))
     good = bool(rec.converged) and np.isfinite(est) and est <= max_error and not limit
     out["resolved"] = good
@@ -690,7 +692,9 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
         sols[m] = solve_default(geometry, c, m, cache=cache)
         return sols[m].k
 
-    used, est, msg = accuracy.solve_to_tolerance(solve_k, n, tolerance, known={n: d.k})
+    used, est, msg = accuracy.solve_to_tolerance(
+        solve_k, n, tolerance, known={n: d.k},
+        noise=lambda m: default_noise(geometry, c, m))
     return sols[used], {"elements": used, "error_estimate": est}, msg
 
 

@@ -26,7 +26,9 @@ a. **k to 1e-6 in a sweep.** ``contactlib.sweep`` (the public API: solve,
 b. **Solve cost at n = 2048.** ``solve_default`` and ``solve_extrapolated`` at
    c/a = 0.5 with their operators built inside, in units of one LU of the
    partial-slip system's own size (target: at most 3), and with the
-   operators given (Newton alone).
+   operators given (Newton alone). Best of 3 for each, as for the LU, with the
+   share of system time (page faults on fresh memory) of that run: one run's
+   system time swung from 0.03 to 0.6 s for the same solve.
 c. **The floor.** The peak memory of an extrapolated solve at n = 1024 and
    2048 (a child process, its maximum resident set), its k error against the
    closed form at nu = 0.49999 and what its own estimate says: the kernels'
@@ -59,7 +61,7 @@ from contactlib.default_method import REFINED_FINAL_STEP, difference_rows, solve
 from contactlib.elements import graded_mesh
 from contactlib.extrapolated_method import BAND_FROM_N, quadrature_noise, solve_extrapolated
 from contactlib.model import contact
-from contactlib.operators import nodal_operator_part
+from contactlib.operators import nodal_operator_part, nodal_operators
 
 REPEAT = 3
 RATIOS = list(np.round(np.linspace(0.02, 0.98, 12), 4))
@@ -85,6 +87,28 @@ def ratio(f, size: int, repeat: int = 1) -> tuple[float, float]:
     t = best(f, repeat)
     lu = min(lu0, lu_time(size))
     return t, t / lu
+
+
+def split_ratio(f, size: int, repeat: int = REPEAT) -> tuple[float, float, float]:
+    """(CPU time of f, that over one LU of ``size``, system share of that time): best of
+    ``repeat``, as the LU (timed before and after) is.
+
+    The system time is the kernel's: page faults on fresh memory, zeroed and, with
+    transparent huge pages, sometimes compacted first. It swung from 0.03 to 0.6 s for the
+    same solve at n = 2048 in one process (the user time within 10 %), so one run is not
+    a measurement of the solve; the best of 3 is, as for the LU.
+    """
+    lu0 = lu_time(size)
+    runs = []
+    for _ in range(repeat):
+        t0 = os.times()
+        f()
+        t1 = os.times()
+        user, system = t1.user - t0.user, t1.system - t0.system
+        runs.append((user + system, system))
+    t, system = min(runs)
+    lu = min(lu0, lu_time(size))
+    return t, t / lu, system / t if t > 0 else 0.0
 
 
 def system_size(n: int, c: float) -> int:
@@ -124,8 +148,7 @@ def part_b() -> None:
     n, c = 2048, 0.5
     size = system_size(n, c)
     mesh = graded_mesh(n, c)
-    t_ops, _ = ratio(lambda: (nodal_operator_part(model, mesh, "normal"),
-                              nodal_operator_part(model, mesh, "shear")), size)
+    t_ops, r_ops, _ = split_ratio(lambda: nodal_operators(model, mesh), size)
     ops = (nodal_operator_part(model, mesh, "normal"), nodal_operator_part(model, mesh, "shear"))
     k = solve_default(model, c, n, ops=ops).k
     for name, f in (("default, all", lambda: solve_default(model, c, n)),
@@ -135,20 +158,22 @@ def part_b() -> None:
                     ("extrapolated, all", lambda: solve_extrapolated(model, c, n)),
                     ("extrapolated, ops given", lambda: solve_extrapolated(model, c, n,
                                                                            ops=ops))):
-        t, r = ratio(f, size)
-        print(f"   {name:26s} {t:6.2f} s = {r:5.2f} LU({size})")
-    # one refined step final (REFINED_FINAL_STEP) against Newton run to its ordinary rule
-    # (two factorizations, as before), alternating in this process
-    one, two = [], []
+        t, r, sys_share = split_ratio(f, size)
+        print(f"   {name:26s} {t:6.2f} s = {r:5.2f} LU({size})  (system time {sys_share:.0%})")
+    # one refined step final (REFINED_FINAL_STEP) against Newton run to its ordinary rule,
+    # alternating in this process; the factorizations each took (Newton's iterations)
+    one, two, its = [], [], []
     for _ in range(REPEAT):
-        one.append(ratio(lambda: solve_default(model, c, n, ops=ops), size)[1])
+        one.append(ratio(lambda: its.append(solve_default(model, c, n, ops=ops).iterations),
+                         size)[1])
         default_method.REFINED_FINAL_STEP = 0.0
-        two.append(ratio(lambda: solve_default(model, c, n, ops=ops), size)[1])
+        two.append(ratio(lambda: its.append(solve_default(model, c, n, ops=ops).iterations),
+                         size)[1])
         default_method.REFINED_FINAL_STEP = REFINED_FINAL_STEP
-    print(f"   default, ops given: one factorization {min(one):.2f} LU, two (Newton run on) "
-          f"{min(two):.2f} LU")
-    _, r_rows = ratio(lambda: difference_rows(model, mesh), size)
-    print(f"   (building the operators alone: {t_ops:.2f} s = {t_ops / lu_time(size):.2f} "
+    print(f"   default, ops given: one refined step final {min(one):.2f} LU ({its[0]} "
+          f"factorization(s)), Newton run to its ordinary rule {min(two):.2f} LU ({its[1]})")
+    _, r_rows, _ = split_ratio(lambda: difference_rows(model, mesh), size)
+    print(f"   (building the operators alone: {t_ops:.2f} s = {r_ops:.2f} "
           f"LU; the default method's difference rows around c: {r_rows:.2f} LU)")
 
 

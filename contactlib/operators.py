@@ -310,22 +310,24 @@ def nodal_operators(model: Contact, mesh: Mesh,
     ref_nodes = nodes[:m + 1] / c  # (see nodal_operator_part: the key and the block)
     keys = [(model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
             for part in PARTS]
-    if cache is None or not any(key in cache for key in keys):
-        both = element_integrals(joint, ref_nodes, ref_nodes)
-        blocks = [both[:3], both[3:]]
-        if cache is not None:
-            for key, block in zip(keys, blocks):
-                cache.get(key, lambda block=block: block)
-            cache.misses -= 1  # (one computation for the two entries)
-    else:  # one part stored already: the other alone, as nodal_operator_part would
-        blocks = [cache.get(key, lambda part=part: element_integrals(
-            _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
     scale = np.concatenate([c ** d for d in degrees])
     both = np.empty((6, n + 1, n + 1))
     g = both[:, :, :n]  # the element integrals, turned into the operators in place
-    np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
-    np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
-    del blocks
+    if cache is None:  # the reference block written in place, then scaled (the same bits)
+        element_integrals(joint, ref_nodes, ref_nodes, out=g[:, :m + 1, :m])
+        g[:, :m + 1, :m] *= scale[:, None, None]
+    else:
+        if not any(key in cache for key in keys):
+            ref = element_integrals(joint, ref_nodes, ref_nodes)
+            for key, block in zip(keys, (ref[:3], ref[3:])):
+                cache.get(key, lambda block=block: block)
+            cache.misses -= 1  # (one computation for the two entries)
+        # (one part stored already: the other alone, as nodal_operator_part would)
+        blocks = [cache.get(key, lambda part=part: element_integrals(
+            _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
+        np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
+        np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
+        del blocks
     element_integrals(joint, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:])
     element_integrals(joint, nodes[m + 1:], nodes, out=g[:, m + 1:, :])
     apply_difference(g, nodes, out=both)

@@ -195,6 +195,43 @@ def test_high_n_one_refined_step_lands_on_the_full_newton_root():
     assert abs(d.k / full.k - 1.0) < 1e-9, (d.k, full.k)
 
 
+@pytest.mark.parametrize("geometry, c", [("sphere", 0.3), ("cylinder", 0.9)])
+def test_newton_in_place_equilibration_is_the_copy_one(geometry, c):
+    """overwrite=True (the default method from n = 1024) scales the system in place: the
+    same root, the system's residual still that of A(k) x = b, and a second call on the
+    scaled system is refused by name. The scaled matrices are the same bits; dx/dk's
+    right-hand side is rounded differently (R a1 x from the scaled block), so the Newton
+    paths differ in the last bits of each step and the roots by up to Newton's own final
+    error (a last step below 1e-6 leaves ~1e3 step^2 = 1e-9; measured 7.5e-13 here)."""
+    from contactlib.default_method import assemble, difference_rows, newton_on_k
+    from contactlib.elements import graded_mesh
+    from contactlib.model import contact
+    from contactlib.operators import nodal_operators
+
+    model, n = contact(geometry, 0.3), 128
+    mesh = graded_mesh(n, c)
+    ops = nodal_operators(model, mesh)
+    rows = difference_rows(model, mesh)
+    plain = assemble(model, mesh, *ops, *rows)
+    a0, a1b = plain.a0.copy(), plain.a1b.copy()
+    k0 = float(model.uncoupled_friction(c))
+    ref = newton_on_k(plain, k0, refine=True)
+    inplace = assemble(model, mesh, *ops, *rows)
+    got = newton_on_k(inplace, k0, refine=True, overwrite=True)
+    assert np.array_equal(plain.a0, a0) and np.array_equal(plain.a1b, a1b)  # copy: untouched
+    assert inplace.scales is not None and not np.array_equal(inplace.a0, a0)
+    assert abs(got.k / ref.k - 1.0) < 1e-9
+    np.testing.assert_allclose(got.x, ref.x, rtol=0, atol=1e-9 * np.max(np.abs(ref.x)))
+    r_ref, r_got = plain.residual(ref.x, ref.k), inplace.residual(got.x, got.k)
+    assert r_got < 1e-12 and abs(r_got - r_ref) < 1e-13
+    # the residual of a wrong x is the whole matrix's, not the scaled one's
+    bad = ref.x.copy()
+    bad[0] += 1e-3
+    assert inplace.residual(bad, ref.k) == pytest.approx(plain.residual(bad, ref.k), rel=1e-9)
+    with pytest.raises(ValueError, match="equilibrated in place"):
+        newton_on_k(inplace, k0, overwrite=True)
+
+
 @pytest.mark.parametrize("geometry, c, n", [("sphere", 0.5, 128), ("cylinder", 0.3, 96),
                                             ("sphere", 0.9999, 64), ("cylinder", 1e-5, 64)])
 def test_assembled_system_and_scales_as_the_whole_matrix_formulas(geometry, c, n):

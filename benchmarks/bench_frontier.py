@@ -24,7 +24,7 @@ a. **k to 1e-6 in a sweep.** ``contactlib.sweep`` (the public API: solve,
    error model needs for 1e-6 (one case, c/a = 0.5; the sweep costs that per
    case at least).
 b. **Solve cost at n = 2048.** ``solve_default`` and ``solve_extrapolated`` at
-   c/a = 0.5 with their operators built inside, in units of one LU of the
+   c/a = 0.5 (sphere; the cylinder's whole solves too) with their operators built inside, in units of one LU of the
    partial-slip system's own size (target: at most 3), and with the
    operators given (Newton alone). Best of 3 for each, as for the LU, with the
    share of system time (page faults on fresh memory) of that run: one run's
@@ -142,8 +142,8 @@ def part_a() -> None:
 
 
 def part_b() -> None:
-    print("b. solve at n = 2048, c/a = 0.5, sphere nu = 0.3: time / one LU of its own size "
-          "(target <= 3)")
+    print("b. solve at n = 2048, c/a = 0.5, sphere (and cylinder) nu = 0.3: time / one LU of "
+          "its own size (target <= 3)")
     model = contact("sphere", 0.3)
     n, c = 2048, 0.5
     size = system_size(n, c)
@@ -158,6 +158,11 @@ def part_b() -> None:
                     ("extrapolated, all", lambda: solve_extrapolated(model, c, n)),
                     ("extrapolated, ops given", lambda: solve_extrapolated(model, c, n,
                                                                            ops=ops))):
+        t, r, sys_share = split_ratio(f, size)
+        print(f"   {name:26s} {t:6.2f} s = {r:5.2f} LU({size})  (system time {sys_share:.0%})")
+    cylinder = contact("cylinder", 0.3)
+    for name, f in (("cylinder: default, all", lambda: solve_default(cylinder, c, n)),
+                    ("cylinder: extrapolated, all", lambda: solve_extrapolated(cylinder, c, n))):
         t, r, sys_share = split_ratio(f, size)
         print(f"   {name:26s} {t:6.2f} s = {r:5.2f} LU({size})  (system time {sys_share:.0%})")
     # one refined step final (REFINED_FINAL_STEP) against Newton run to its ordinary rule,

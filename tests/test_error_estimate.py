@@ -391,3 +391,25 @@ def test_estimate_rules():
     assert estimate(k + 2.5e-4, k + 1e-4, k)[0] == pytest.approx(1.5e-4, rel=1e-9)
     r4 = [estimate(k + (4.0 + e) * 1e-4 + 1e-4, k + 1e-4, k)[0] for e in (-1e-9, 1e-9)]
     assert r4[0] == pytest.approx(r4[1], rel=1e-6)  # continuous at r = 4
+
+
+def test_tolerance_refinement_stops_where_the_noise_alone_exceeds_it():
+    """solve_to_tolerance doubles n until the estimate meets the tolerance, but a noise
+    bound that alone exceeds it and grows with n cannot be refined away: it stops at once
+    and says so, without solving at 2n. A noise below the tolerance does not stop it."""
+    from contactlib.accuracy import solve_to_tolerance
+
+    calls = []
+
+    def solve_k(m):
+        calls.append(m)
+        return 1.0 + 1e-6 * (128.0 / m) ** 2  # converged levels, error ~n^-2
+
+    used, est, msg = solve_to_tolerance(solve_k, 512, 5e-6,
+                                        noise=lambda m: 1e-5 * (m / 512.0) ** 0.5)
+    assert used == 512 and sorted(calls) == [128, 256, 512]
+    assert est > 1e-5 and "noise" in msg and "not met" in msg
+    calls.clear()
+    used, est, msg = solve_to_tolerance(solve_k, 128, 2e-8,
+                                        noise=lambda m: 1e-9 * (m / 512.0) ** 0.5)
+    assert msg == "" and used > 128 and est <= 2e-8

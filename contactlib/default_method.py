@@ -305,24 +305,40 @@ def _expand_phi(geometry: Contact, f: np.ndarray) -> np.ndarray:
 
 
 def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k: float,
-                       y: np.ndarray, rhs: np.ndarray,
-                       extended: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
-    """rhs - (a0 + k a1) y in extended precision.
+                       y: np.ndarray, rhs: np.ndarray, block: int = 256,
+                       extended: tuple[np.ndarray, np.ndarray] | None = None,
+                       fused: bool = False) -> np.ndarray:
+    """rhs - (a0 + k a1) y in extended precision, a block of rows at a time.
 
-    ``a1`` is given by its nonzero columns ``cols`` only. The products are formed by
-    ``einsum`` with y in long double: numpy converts the double rows in its own small
-    buffers (no extended copy of the matrix; 39 ms for 3201 x 3201 against 52 ms for
-    converting blocks of rows and multiplying them, the route taken before). ``extended``
-    = (a0, a1_cols) already in long double (the same numbers: the conversion is exact)
-    reuses a caller's copy across solves.
+    ``a1`` is given by its nonzero columns ``cols`` only. Memory: two blocks
+    of rows in long double (27 MB at n = 4096), never a full extended copy,
+    unless the caller gives ``extended``, (a0, a1_cols) already in long double
+    (the same numbers: the conversion is exact), to reuse across solves.
+    ``fused``: the products by ``einsum`` with y in long double over the whole
+    matrix instead (numpy converts the double rows in its own small buffers): 39
+    instead of 52 ms at 3201 x 3201, the same precision but another order of
+    summation, so the last bits of k differ; used from n = 1024
+    (:func:`newton_on_k` with ``overwrite``), the block route below (bit for bit
+    as before).
     """
     ye = y.astype(_EXTENDED)
     yc = ye[cols]
     ke = _EXTENDED(k)
-    e0, e1 = (a0, a1_cols) if extended is None else extended
-    acc = np.einsum("ij,j->i", e0, ye)
-    acc += ke * np.einsum("ij,j->i", e1, yc)
-    return (rhs.astype(_EXTENDED) - acc).astype(float)
+    if fused:
+        e0, e1 = (a0, a1_cols) if extended is None else extended
+        acc = np.einsum("ij,j->i", e0, ye)
+        acc += ke * np.einsum("ij,j->i", e1, yc)
+        return (rhs.astype(_EXTENDED) - acc).astype(float)
+    out = np.empty(rhs.size)
+    for r0 in range(0, rhs.size, block):
+        rows = slice(r0, r0 + block)
+        if extended is None:
+            e0, e1 = a0[rows].astype(_EXTENDED), a1_cols[rows].astype(_EXTENDED)
+        else:
+            e0, e1 = extended[0][rows], extended[1][rows]
+        acc = e0 @ ye + ke * (e1 @ yc)
+        out[rows] = (rhs[rows].astype(_EXTENDED) - acc).astype(float)
+    return out
 
 
 # systems up to this size keep their long-double copy through one Newton iteration
@@ -482,13 +498,17 @@ class NewtonResult:
 def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray, k: float,
                    rhs: np.ndarray, refine: bool,
                    extended: tuple[np.ndarray, np.ndarray] | None = None,
-                   trans: int = 0) -> np.ndarray:
-    """Solve with the LU of A(k) (``trans=1``: ``lu`` factors A(k)^T), plus one step of
-    extended-precision refinement if asked."""
+                   in_place: bool = False) -> np.ndarray:
+    """Solve with the LU of A(k), plus one step of extended-precision refinement if asked.
+
+    ``in_place`` (:func:`newton_on_k` with ``overwrite``): ``lu`` factors A(k)^T (the
+    solves transpose back) and the residual is the fused one of :func:`_extended_residual`.
+    """
+    trans = 1 if in_place else 0
     y = linalg.lu_solve(lu, rhs, trans=trans, check_finite=False)
     if not refine:
         return y
-    res = _extended_residual(a0s, a1s, cols, k, y, rhs, extended=extended)
+    res = _extended_residual(a0s, a1s, cols, k, y, rhs, extended=extended, fused=in_place)
     return y + linalg.lu_solve(lu, res, trans=trans, check_finite=False)
 
 
@@ -568,7 +588,6 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     x = xk = None
     step, prev_step = 0.0, np.inf
     extended = None
-    trans = 1 if overwrite else 0
     for it in range(1, max_iter + 1):
         ak = a0s.copy()
         ak[:, block] += k * a1s
@@ -579,11 +598,11 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
                               check_finite=False)
         if refine and extended is None and bs.size <= _EXTENDED_COPY_UP_TO:
             extended = (a0s.astype(_EXTENDED), a1s.astype(_EXTENDED))
-        x = cs * _refined_solve(lu, a0s, a1s, slip, k, bs, refine, extended, trans)
+        x = cs * _refined_solve(lu, a0s, a1s, slip, k, bs, refine, extended, overwrite)
         g = shape[j] * x[nn + j] - k * x[j]
         a1x = a1s @ (x[slip] / cs[block]) if overwrite else rs * (sysm.a1b @ x[slip])
         xk = -cs * _refined_solve(lu, a0s, a1s, slip, k, a1x,
-                                  refine and refine_derivative, extended, trans)
+                                  refine and refine_derivative, extended, overwrite)
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg
         k -= step

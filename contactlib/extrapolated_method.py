@@ -115,8 +115,8 @@ BAND_FROM_N = NEAR_ROWS_FROM_N  # 512, the default method's (one place)
 (:func:`~contactlib.default_method.difference_rows` with ``band=True``, half-width
 :data:`BAND_WIDTH`), the coarse levels below n = 512 included (the default method
 writes the band from the same n, :data:`~contactlib.default_method.NEAR_ROWS_FROM_N`;
-it used to start near n = 1500, where the elements next to c became small). Mixed rows broke the levels' expansion in n at
-the band's 1e-8-level change of k: at nu = 0.49999 against the closed form
+it used to start near n = 1500, where the elements next to c became small). Mixed
+rows broke the levels' expansion in n at the band's 1e-8-level change of k: at nu = 0.49999 against the closed form
 (c/a = 0.02 ... 0.98), the largest errors were 1.8e-7 at n = 1024 (sphere, c/a = 0.98,
 plain rows on every level) and 8.7e-8 at n = 2048 (c/a = 0.95, the band on the finest
 level only); with the band on every level (c/a = 0.001 ... 0.999, both geometries) they

@@ -319,12 +319,13 @@ def nodal_operators(model: Contact, mesh: Mesh,
     else:
         if not any(key in cache for key in keys):
             ref = element_integrals(joint, ref_nodes, ref_nodes)
-            for key, block in zip(keys, (ref[:3], ref[3:])):
+            blocks = [ref[:3], ref[3:]]
+            for key, block in zip(keys, blocks):
                 cache.get(key, lambda block=block: block)
             cache.misses -= 1  # (one computation for the two entries)
-        # (one part stored already: the other alone, as nodal_operator_part would)
-        blocks = [cache.get(key, lambda part=part: element_integrals(
-            _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
+        else:  # one part stored already: the other alone, as nodal_operator_part would
+            blocks = [cache.get(key, lambda part=part: element_integrals(
+                _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
         np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
         np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
         del blocks

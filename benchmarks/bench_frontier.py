@@ -24,8 +24,8 @@ a. **k to 1e-6 in a sweep.** ``contactlib.sweep`` (the public API: solve,
    error model needs for 1e-6 (one case, c/a = 0.5; the sweep costs that per
    case at least).
 b. **Solve cost at n = 2048.** ``solve_default`` and ``solve_extrapolated`` at
-   c/a = 0.5 (sphere; the cylinder's whole solves too) with their operators built inside, in units of one LU of the
-   partial-slip system's own size (target: at most 3), and with the
+   c/a = 0.5 (sphere; the cylinder's whole solves too) with their operators
+   built inside, in units of one LU of the partial-slip system's own size (target: at most 3), and with the
    operators given (Newton alone). Best of 3 for each, as for the LU, with the
    share of system time (page faults on fresh memory) of that run: one run's
    system time swung from 0.03 to 0.6 s for the same solve.

@@ -11,7 +11,8 @@ per study and n: the median wall time of one :func:`contactlib.solve`
 relative k error over the stick ratios and the peak memory. The reference
 is the Richardson value of the finest triple whose observed order lies in
 [1, 3] (:func:`contactlib.convergence.converged_richardson`; ``snakemake
-convergence`` takes order >= 1 with no upper bound), and the table says which. The k values themselves go to stderr. Runs the same
+convergence`` takes order >= 1 with no upper bound), and the table says which.
+The k values themselves go to stderr. Runs the same
 solves as the workflow's default studies, without the workflow; about 10 min
 on an idle core.
 """

@@ -153,13 +153,11 @@ def default_noise(geometry: Contact, stick_ratio: float, n: int) -> float:
     docs/accuracy.md), at c/a = 0 and 1 (k exact) and on a layer (not measured).
     """
     from .default_method import NEAR_ROWS_FROM_N
-    from .elements import graded_mesh
-    from .extrapolated_method import quadrature_noise
 
     c = float(stick_ratio)
     if n < NEAR_ROWS_FROM_N or not 0.0 < c < 1.0 or not geometry.body.is_half_space:
         return 0.0
-    return float(quadrature_noise(graded_mesh(n, c), band=True))
+    return _extrapolated_noise(c, n)  # the same mesh and rows (the band from n = 512)
 
 
 def relative_cost(method: str, n: int) -> float:

@@ -137,11 +137,6 @@ within ~1e-6 (one factorization fewer a solve, where one costs most)."""
 _THREE_LEVEL_START_FROM_N = 1024  # start_k from n = 64, 128, 256 (orders 2 and 3) instead
 # of 64 and 128 (order 2): within ~1e-6 of the root instead of 1e-5 ... 3e-5, so that
 # one refined step is final (REFINED_FINAL_STEP) where a factorization costs most
-_PLAIN_DERIVATIVE_WITH_ONE_STEP = True  # with one refined step final (n >= 1024), dx/dk
-# from the plain LU solve (refine_derivative=False, as the extrapolated method's levels):
-# its round-off only scales a step below 3e-5; k moved by at most 1.6e-14 (c/a = 0.02 ...
-# 0.999, both geometries, nu = 0.3 and 0.49999, n = 1024 and 2048), and it saves one of
-# the two extended-precision residuals (0.17 LU(3201) at n = 2048)
 _REFINE_FROM_N = 384  # below, the round-off in k is < 1e-7 relative (4e-8 at n = 256) ...
 # ... and whenever Newton's steps stop shrinking on the round-off floor: then the
 # iteration goes on with the refinement (nu = 0.3, c/a = 0.99 at n = 128 and 0.9999
@@ -828,11 +823,15 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     system = assemble(geometry, mesh, pw, qw, axis, edge)
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0  # q = sigma k p in the slip zone
     k0 = sigma * start_k(geometry, stick_ratio, n, power, k_guess, edge=r[m], cache=cache)
+    # with one refined step final (n >= 1024): dx/dk from the plain LU solve (as the
+    # extrapolated method's levels; its round-off only scales a step below 3e-5: k moved by
+    # at most 1.6e-14 over c/a = 0.02 ... 0.999, both geometries, nu = 0.3 and 0.49999,
+    # n = 1024 and 2048; one extended-precision residual fewer, 0.17 LU(3201) at n = 2048),
+    # and the system equilibrated in place (it is not used again but for the residual)
     one_step = n >= _THREE_LEVEL_START_FROM_N
     newton = newton_on_k(system, k0, max_iter=max_iter, refine=nn >= _REFINE_FROM_N,
                          final_step=REFINED_FINAL_STEP if one_step else 0.0,
-                         refine_derivative=not (one_step and _PLAIN_DERIVATIVE_WITH_ONE_STEP),
-                         overwrite=one_step)  # (the system is not used again but for residual)
+                         refine_derivative=not one_step, overwrite=one_step)
     x, k = newton.x, newton.k  # signed: q = k p in the slip zone
     res = system.residual(x, k)
     p = np.append(x[:nn], 0.0)

@@ -57,8 +57,8 @@ import numpy as np
 
 from . import energy, validate
 from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
-                             REFINED_FINAL_STEP, DiscreteSolution, assemble, difference_rows,
-                             newton_on_k, solve_default)
+                             NEAR_ROWS_WIDTH, REFINED_FINAL_STEP, DiscreteSolution, assemble,
+                             difference_rows, newton_on_k, solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
 from .operators import StickBlocks, nodal_operators, restrict_nested
@@ -116,15 +116,15 @@ BAND_FROM_N = NEAR_ROWS_FROM_N  # 512, the default method's (one place)
 :data:`BAND_WIDTH`), the coarse levels below n = 512 included (the default method
 writes the band from the same n, :data:`~contactlib.default_method.NEAR_ROWS_FROM_N`;
 it used to start near n = 1500, where the elements next to c became small). Mixed
-rows broke the levels' expansion in n at the band's 1e-8-level change of k: at nu = 0.49999 against the closed form
-(c/a = 0.02 ... 0.98), the largest errors were 1.8e-7 at n = 1024 (sphere, c/a = 0.98,
-plain rows on every level) and 8.7e-8 at n = 2048 (c/a = 0.95, the band on the finest
-level only); with the band on every level (c/a = 0.001 ... 0.999, both geometries) they
+rows broke the levels' expansion in n at the band's 1e-8-level change of k: at
+nu = 0.49999 against the closed form (c/a = 0.02 ... 0.98), the largest errors were
+1.8e-7 at n = 1024 (sphere, c/a = 0.98, plain rows on every level) and 8.7e-8 at
+n = 2048 (c/a = 0.95, the band on the finest level only); with the band on every level (c/a = 0.001 ... 0.999, both geometries) they
 are 9e-9 ... 7.1e-8 at n = 512 (the truncation of the expansion), 1.3e-9 ... 8.7e-9 at
 n = 1024 and 1.3e-10 ... 1.4e-9 at n = 2048 for c/a <= 0.95 (up to 4.7e-9 at 0.98 and
 0.99, 6.8e-9 at 0.998, 2.2e-8 at 0.999). Below n = 512 the plain rows are kept (bit for
 bit as before)."""
-BAND_WIDTH = 0.001
+BAND_WIDTH = NEAR_ROWS_WIDTH  # 0.001, the default method's (one place)
 """Half-width of the band, in units of min(c, a - c) (the default method's
 :data:`~contactlib.default_method.NEAR_ROWS_WIDTH` was 0.1, now the same). Rows are
 equivalent in exact arithmetic whatever the width; in floating point the narrow band was

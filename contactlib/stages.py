@@ -508,8 +508,8 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     on the nested meshes n/4 and n/2 give the estimates (:func:`_relative`);
     where Newton stopped on the round-off floor, twice its last step is added
     to the k estimate, and from n = 512 the quadrature-noise bound
-    (:func:`contactlib.accuracy.default_noise`). A mesh with elements below :data:`QUADRATURE_FLOOR_H`
-    is never resolved (a limit of the method; the message says so).
+    (:func:`contactlib.accuracy.default_noise`). A mesh with elements below
+    :data:`QUADRATURE_FLOOR_H` is never resolved (a limit of the method; the message says so).
     Frictionless, full adhesion and nu = 0.5 are exact in k (estimate 0) and
     carry the estimate of the load. The paper's scheme is measured against
     the default method at n = 64 (its own k does not converge to the

@@ -83,6 +83,16 @@ ONE_STEP = REFINED_FINAL_STEP
 method's :data:`~contactlib.default_method.REFINED_FINAL_STEP`: the error after a refined
 step is about 0.4 step^2, under 4e-10 here)."""
 
+PREDICTED_FROM_N = 1024
+"""A coarse level with at least this many elements (the level n/2 of a solve at n >= 2048)
+starts, without a caller's guess, from the n^-2 trend of the two coarser levels, k(n/4) +
+(k(n/4) - k(n/8)) / 4, and is solved as the finest is: refined steps, one final below
+:data:`ONE_STEP`, on a system equilibrated in place. The trend is within a few 1e-7 of the
+level's root (sphere, nu = 0.3, c/a = 0.5, n = 2048: 4e-7), so one factorization of the
+level suffices where it took three (two plain Newton steps from k(n/4), then a refined
+one); from the same n on, the finest level's system is also equilibrated in place (as the
+default method's from n = 1024)."""
+
 # The kernels' quadrature error (about 1e-11) and the round-off of O(1) displacements,
 # amplified by the smallest elements next to c, put noise into each level's k that no
 # expansion in n describes. Measured against the closed form at nu = 0.49999 (sharp there:
@@ -276,8 +286,11 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
            refine: bool = True, reversed_side: bool = False) -> DiscreteSolution:
     """One level: Newton on k from k0, the last step with extended-precision refinement.
 
-    ``one_step``: k0 is within a few 1e-6 of the root (the finest level), and
-    one refined step is final when it moves k by at most :data:`ONE_STEP`.
+    ``one_step``: k0 is within a few 1e-6 of the root (the finest level, and the
+    level n/2 started from the trend: :data:`PREDICTED_FROM_N`), and one refined step
+    is final when it moves k by at most :data:`ONE_STEP` (from
+    :data:`PREDICTED_FROM_N` elements in one Newton call, the system equilibrated in
+    place).
     Otherwise Newton runs plainly (refining only where it stagnates) and one
     refined step follows (``refine``; without it the round-off of a coarse
     level reached 2.7e-6 in k at nu = -0.5, c/a = 0.98, n = 256, k = 13.6). ``rows``:
@@ -294,19 +307,27 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
     sigma = -1.0 if geometry.slip_sign < 0 else 1.0
     k_start = sigma * k0
     iterations = 0
-    if not one_step:
-        newton = newton_on_k(system, k_start, refine=False)
-        iterations = newton.iterations
-        if newton.converged:
-            k_start = newton.k
-    if one_step or (newton.converged and refine):
-        newton = newton_on_k(system, k_start, max_iter=1, refine=True, refine_derivative=False)
-        if not newton.converged:
-            if abs(newton.k - k_start) <= ONE_STEP * abs(newton.k):
-                newton.converged = True
-            else:
-                newton = newton_on_k(system, newton.k, refine=True, refine_derivative=False)
-        newton.iterations += iterations
+    if one_step and mesh.n >= PREDICTED_FROM_N:  # one call: the system equilibrated in
+        # place (no scaled copies; it is not used again but for the residual), refined
+        # steps, the first below ONE_STEP final (the default method's one-step solve)
+        newton = newton_on_k(system, k_start, refine=True, refine_derivative=False,
+                             final_step=ONE_STEP, overwrite=True)
+    else:
+        if not one_step:
+            newton = newton_on_k(system, k_start, refine=False)
+            iterations = newton.iterations
+            if newton.converged:
+                k_start = newton.k
+        if one_step or (newton.converged and refine):
+            newton = newton_on_k(system, k_start, max_iter=1, refine=True,
+                                 refine_derivative=False)
+            if not newton.converged:
+                if abs(newton.k - k_start) <= ONE_STEP * abs(newton.k):
+                    newton.converged = True
+                else:
+                    newton = newton_on_k(system, newton.k, refine=True,
+                                         refine_derivative=False)
+            newton.iterations += iterations
     k = newton.k
     if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
         guess = abs(k0)
@@ -342,6 +363,13 @@ this start: every level's operators are restricted from the finest mesh's."""
 def _band(n: int) -> bool | None:
     """``difference_rows``'s ``band`` for every level of a solve at finest ``n``."""
     return True if n >= BAND_FROM_N else None
+
+
+def _trend_start(ns, sols, i: int) -> bool:
+    """Whether coarse level i starts from the two coarser levels' trend (one refined step,
+    :data:`PREDICTED_FROM_N`): large enough, and both coarser levels solved well."""
+    return (i < len(ns) - 1 and ns[i] >= PREDICTED_FROM_N and i >= 2
+            and _good(sols[i - 1]) and _good(sols[i - 2]))
 
 
 def _good(d: DiscreteSolution | None) -> bool:
@@ -492,9 +520,12 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
             k0 *= side
         elif guess is not None:
             k0 = side * (sols[i - 1].k if i and _good(sols[i - 1]) else guess)
+        elif _trend_start(ns, sols, i):  # the n^-2 trend of the two coarser levels
+            k0 = sols[i - 1].oriented_k + (sols[i - 1].oriented_k - sols[i - 2].oriented_k) / 4.0
         else:
             k0 = _start(geometry, c, meshes[i], sols, i)
-        near = i == LEVELS - 1 or (level_offsets is not None and guess is not None and i > 0)
+        near = (i == LEVELS - 1 or (level_offsets is not None and guess is not None and i > 0)
+                or (guess is None and _trend_start(ns, sols, i)))
         rows = difference_rows(geometry, meshes[i], band=_band(n), width=BAND_WIDTH)  # alike
         if i == LEVELS - 1:  # the noise of the finest level's rows (see quadrature_noise)
             difference = rows != (None, None) and (c <= AXIS_ROWS_BELOW

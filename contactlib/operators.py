@@ -62,6 +62,7 @@ __all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators
 PARTS = ("normal", "shear")
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
 _SMOOTH_PANEL = 0.5  # longest panel, in layer thicknesses
+_RESTRICT_BLOCK = 1 << 16  # entries of restrict_nested's scratch (512 kB)
 
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
@@ -346,12 +347,22 @@ def restrict_nested(op: np.ndarray, fine: Mesh) -> tuple[np.ndarray, np.ndarray]
     fine nodes. Returns ``(at_nodes, at_odd)``; no kernel is evaluated.
     """
     x = fine.nodes
-    out = op[:, :, ::2].copy()
     left = (x[2::2] - x[1::2]) / (x[2::2] - x[:-1:2])  # weight of node 2j at 2j+1
-    odd = op[:, :, 1::2]
+    right = 1.0 - left
+    even, odd = op[..., ::2], op[..., 1::2]
+    out = np.empty(even.shape)
+    flat_out, flat_even, flat_odd = (a.reshape(-1, a.shape[-1]) for a in (out, even, odd))
+    step = max(1, _RESTRICT_BLOCK // max(odd.shape[-1], 1))  # rows a block: small scratch
+    tmp = np.empty((min(step, flat_odd.shape[0]), odd.shape[-1]))
     with np.errstate(invalid="ignore"):  # du/dx on a strip axis is NaN (see operators)
-        out[:, :, :-1] += odd * left
-        out[:, :, 1:] += odd * (1.0 - left)
+        for r0 in range(0, flat_out.shape[0], step):  # the same operations, bit for bit,
+            o = flat_out[r0:r0 + step]  # as on the whole array, without its temporaries
+            t = tmp[:o.shape[0]]
+            o[...] = flat_even[r0:r0 + step]
+            np.multiply(flat_odd[r0:r0 + step], left, out=t)
+            o[:, :-1] += t
+            np.multiply(flat_odd[r0:r0 + step], right, out=t)
+            o[:, 1:] += t
     return out[:, ::2, :], out[:, 1::2, :]
 
 def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,

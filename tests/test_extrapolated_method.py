@@ -250,6 +250,46 @@ def test_band_at_n2048_mid_and_thin_annulus():
         assert err <= most and err <= s.error_estimate, (c, err, s.error_estimate)
 
 
+@pytest.mark.slow
+def test_level_from_the_trend_takes_one_factorization(monkeypatch):
+    """From n = 2048 the level n/2 starts from the n^-2 trend of n/8 and n/4 and takes one
+    refined step (PREDICTED_FROM_N), where Newton from k(n/4) took two plain steps and a
+    refined one: the same roots (within the refined solutions' noise, measured <= 5e-12
+    on every level; the closed form at nu = 0.49999 within 3e-9), two factorizations
+    fewer."""
+    from contactlib import extrapolated_method as em
+
+    model = contact("sphere", 0.49999)
+    new = solve_extrapolated(model, 0.5, 2048, work=False)
+    monkeypatch.setattr(em, "PREDICTED_FROM_N", 10**6)  # the old path: plain Newton, copies
+    old = solve_extrapolated(model, 0.5, 2048, work=False)
+    for a, b in zip(new.level_k, old.level_k):
+        assert abs(a / b - 1.0) <= 1e-10, (new.level_k, old.level_k)
+    assert new.iterations <= old.iterations - 2, (new.iterations, old.iterations)
+    assert abs(new.k / float(uncoupled_friction("sphere", 0.49999, 0.5)) - 1.0) <= 3e-9
+
+
+def test_restriction_in_row_blocks_is_bit_for_bit(monkeypatch):
+    """restrict_nested works in small row blocks (no temporaries of the operator's size):
+    the same bits as the whole-array formula, also across block boundaries."""
+    from contactlib import operators
+    from contactlib.elements import graded_mesh
+
+    mesh = graded_mesh(64, 0.5)
+    ops = operators.nodal_operators(contact("cylinder", 0.3), mesh)  # NaN du/dx on its axis
+    x = mesh.nodes
+    left = (x[2::2] - x[1::2]) / (x[2::2] - x[:-1:2])
+    for op in ops:
+        want = op[:, :, ::2].copy()
+        with np.errstate(invalid="ignore"):
+            want[:, :, :-1] += op[:, :, 1::2] * left
+            want[:, :, 1:] += op[:, :, 1::2] * (1.0 - left)
+        monkeypatch.setattr(operators, "_RESTRICT_BLOCK", 100)  # 3 rows a block
+        got = operators.restrict_nested(op, mesh)
+        assert np.array_equal(got[0], want[:, ::2, :], equal_nan=True)
+        assert np.array_equal(got[1], want[:, 1::2, :], equal_nan=True)
+
+
 def test_band_rows_from_n512_only():
     """The band rows are written on every level from n = 512 on; below, the plain rows
     (n = 256: bit for bit the default discretization's, as before)."""

@@ -411,7 +411,11 @@ def _retry_failed_levels(geometry: Contact, c: float, ns, meshes, opss, odds, so
     lands on another one (sphere, nu = 0, c/a = 0.998, k = 4.85: the level n = 64
     from k = 1.10 ended on a tensile reversed root while n = 32 and 16 converged).
     The coarser level's k, continued by the n^-2 trend of the two below it, starts
-    such a level anew. Levels that converged are not touched.
+    such a level anew. Then a level still failed whose next finer level is good starts
+    from the finer levels (:func:`_start`): the coarsest level solved first has no
+    coarser one (sphere, nu = -0.5, c/a = 0.98, n = 1024: the level n = 128 from the
+    closed form failed while n = 256 and 512 converged, and k was not extrapolated).
+    Levels that converged are not touched.
     """
     for j in range(1, len(sols) - 1):
         if _good(sols[j]) or not _good(sols[j - 1]):
@@ -419,16 +423,24 @@ def _retry_failed_levels(geometry: Contact, c: float, ns, meshes, opss, odds, so
         below = sols[j - 1].oriented_k
         k0 = below + (below - sols[j - 2].oriented_k) / 4.0 if j > 1 and _good(sols[j - 2]) \
             else below
-        d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
-                   rows=difference_rows(geometry, meshes[j], band=_band(ns[-1]),
-                                        width=BAND_WIDTH),
-                   reversed_side=below < 0.0)
-        if _good(d):
-            if odds[j] is not None:  # as for every level: u, du/dx inside its elements
-                x, po, qo = odds[j]
-                d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi,
-                                      po[2] @ d.p + qo[2] @ d.phi)
-            sols[j] = d
+        _retry(geometry, c, ns, meshes, opss, odds, sols, j, k0)
+    for j in range(len(sols) - 3, -1, -1):  # from the finer levels, finest first
+        if not _good(sols[j]) and _good(sols[j + 1]):
+            _retry(geometry, c, ns, meshes, opss, odds, sols, j,
+                   _start(geometry, c, meshes[j], sols, j))
+
+
+def _retry(geometry: Contact, c: float, ns, meshes, opss, odds, sols, j: int,
+           k0: float) -> None:
+    """Level j solved again from k0 (relative to sign(beta)); kept where it is good."""
+    d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
+               rows=difference_rows(geometry, meshes[j], band=_band(ns[-1]), width=BAND_WIDTH),
+               reversed_side=k0 < 0.0)
+    if _good(d):
+        if odds[j] is not None:  # as for every level: u, du/dx inside its elements
+            x, po, qo = odds[j]
+            d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)
+        sols[j] = d
 
 
 def _work(geometry: Contact, d: DiscreteSolution) -> float:
@@ -510,6 +522,14 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         if i == LEVELS - 1:  # the finest root predicted from the coarse levels' expansion
             if guess is None:
                 _retry_failed_levels(geometry, c, ns, meshes, opss, odds, sols)
+            if not all(s.converged for s in sols[:-1]):  # k cannot be extrapolated: the
+                # finest level only for its own answer and diagnosis, by the default method
+                # at once (a level's own Newton first repeated its failure: cylinder,
+                # nu = -0.5, c/a = 0.98, beyond c*: 175 factorizations, 38 s at n = 1024)
+                good = [s.oriented_k for s in sols[:-1] if _good(s)]
+                sols[i] = solve_default(geometry, c, n, ops=opss[i], cache=cache,
+                                        k_guess=good[-1] if good else None)
+                continue
             k0 = side * _predict([s.k for s in sols[:-1]])
         elif guess is not None and level_offsets is not None:  # continuation: each
             # coarse level from the neighbour's offset, corrected by the ratio the coarser

@@ -209,6 +209,29 @@ def test_a_level_that_fails_from_the_closed_form_is_solved_again():
     assert gap <= 3.0 * (s.error_estimate + ref.error_estimate), gap
 
 
+def test_the_coarsest_level_is_solved_again_from_the_finer_ones():
+    """Sphere, nu = -0.5, c/a = 0.98 (k = 13.57), n = 1024: the coarsest level (n = 128)
+    from the uncoupled closed form failed while n = 256 and 512 converged, and k was not
+    extrapolated. Solved again from the finer levels' trend it converges; k agrees with
+    the default method's Richardson value from n = 1024 and 2048 (a truth to ~1e-8 here:
+    the two Richardson pairs 512/1024 and 1024/2048 differ by 7e-9)."""
+    s = solve_extrapolated(contact("sphere", -0.5), 0.98, 1024, work=False)
+    assert s.converged and s.error_estimate < 1e-7, s.message
+    truth = 13.56607071153009  # (4 k(2048) - k(1024)) / 3, solve_default
+    assert abs(s.k / truth - 1.0) <= 3.0 * s.error_estimate + 1e-8
+
+
+def test_beyond_c_star_the_default_method_says_why_at_once():
+    """Cylinder, nu = -0.5, c/a = 0.98 lies beyond c*: every level fails. The finest is then
+    solved once by the default method, whose diagnosis (a tensile reversed root, beyond
+    c*) the result carries, instead of a level's own Newton repeating the failure first
+    (175 factorizations, 38 s at n = 1024, with 'Newton on k diverged' as the reason)."""
+    s = solve_extrapolated(contact("cylinder", -0.5), 0.98, 256, work=False)
+    assert not s.converged and not np.isfinite(s.k)
+    assert "beyond the largest stick ratio c*" in s.message, s.message
+    assert "did not converge" in s.message
+
+
 @pytest.mark.parametrize("geometry, nu, c", [("cylinder", 0.3, 0.1945),
                                                ("sphere", -0.5, 0.3691)])
 def test_a_vanishing_n2_term_is_no_reason_to_stop_extrapolating(geometry, nu, c):

@@ -64,7 +64,7 @@ from .model import Contact
 from .operators import StickBlocks, nodal_operators, restrict_nested
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
-           "ONE_STEP", "N_MULTIPLE", "resolving_n", "work_error",
+           "ONE_STEP", "PREDICTED_FROM_N", "N_MULTIPLE", "resolving_n", "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
            "BAND_NOISE_POWER"]

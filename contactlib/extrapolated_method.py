@@ -95,10 +95,14 @@ to 4096, ratios 4.7, 0.9, -2.4 where the half-space's approach 4; the extrapolat
 n = 512 and 1024 differed by 8e-7 relative with estimates of 5e-8 each, and at n = 1024
 and 2048 by 2.7e-6 (estimates 5e-8, 2e-7). On the smooth slab the extrapolated k at n =
 1024 and 2048 differed by 4.1e-8 ... 3.5e-7 (estimates 4e-9 ... 3e-8), on the sphere's
-bonded layer a/h = 1 by 1.6e-7 ... 4.4e-7 (estimates 2e-8 ... 2e-7). The source is not
-found (the band rows' slab remainder is a plain difference of tabulated values; the
-sphere's layers keep the plain rows). Below n = 512 the levels agreed within their
-estimates where checked (smooth slab, c/a = 0.5 and 0.7: n = 256 against 512)."""
+bonded layer a/h = 1 by 1.6e-7 ... 4.4e-7 (estimates 2e-8 ... 2e-7). It lives in the
+slab kernels' element integrals: a finer rule (:mod:`contactlib.influence`'s classes with
+4 ... 12 points out to 300 lengths, 40 smoothstep points) moved the default method's k at
+c/a = 0.9, n = 512, 1024, 2048 by 1.9e-7, 3.4e-7, 1.3e-6 (bonded slab) and 5.7e-9,
+4.3e-9, 9.7e-8 (smooth slab), the half-plane's by at most 6e-11; with it the bonded
+slab's k(n) still did not fall like n^-2 (the band rows are not the source either: the
+plain rows gave the same ratios). Below n = 512 the levels agreed within their estimates
+where checked (smooth slab, c/a = 0.5 and 0.7: n = 256 against 512)."""
 
 PREDICTED_FROM_N = 1024
 """A coarse level with at least this many elements (the level n/2 of a solve at n >= 2048)

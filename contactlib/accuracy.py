@@ -219,12 +219,9 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     some n, the one of least :func:`relative_cost` (the extrapolated method
     from about 1e-5 down: 1e-6 costs it n = 256, the default n = 2048).
 
-    On a layer only the default method is planned: on a layer the models were not
-    measured on (:func:`planned_body`) its n^-2 model gives the starting n and the a
-    posteriori check after the solve decides the n used; on the paper's slab (where
-    they were) the extrapolated method's levels carry a noise its model does not
-    describe (1e-7 ... 1e-6 of k from n = 512: :data:`~contactlib.extrapolated_method.
-    LAYER_FLOOR_FROM_N`), and a tolerance of 1e-8 was planned there and missed.
+    On a layer the models were not measured on (:func:`planned_body`) only
+    the default method is planned, its n^-2 model giving the starting n; the
+    a posteriori check after the solve decides the n used.
 
     Raises
     ------
@@ -238,11 +235,6 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
         methods = ("default",)
         layer_note = (" (on this layer only the default method is planned: the error models "
                       "were measured on the half-space)")
-    elif not geometry.body.is_half_space:  # the paper's slab: its default model alone
-        methods = ("default",)
-        layer_note = (" (on a layer only the default method is planned: the extrapolated "
-                      "method's levels carry a noise there that its error model does not "
-                      "describe, see extrapolated_method.LAYER_FLOOR_FROM_N)")
     if tuple(methods) != ("default",):
         options = []
         for method in methods:

@@ -85,24 +85,18 @@ method's :data:`~contactlib.default_method.REFINED_FINAL_STEP`: the error after 
 step is about 0.4 step^2, under 4e-10 here)."""
 
 LAYER_FLOOR_FROM_N = 512
-"""From this finest n on, on a layer (any body but the half-space), the estimate is at
-least the finest level's own (the default method's estimate from the levels n/4, n/2, n):
-there the levels carry a noise that no expansion in n describes and that the half-space's
-noise bound (:func:`quadrature_noise`) does not cover. Measured (nu = 0.3, c/a = 0.1, 0.5,
-0.7, 0.9): the default method's k(n) on the cylinder's slab a/h = 1/20 with a bonded base
-at c/a = 0.9 fell 3.78e-6, 7.97e-7, 8.63e-7, -3.66e-7 (absolute, k = 0.4177) from n = 256
-to 4096, ratios 4.7, 0.9, -2.4 where the half-space's approach 4; the extrapolated k at
-n = 512 and 1024 differed by 8e-7 relative with estimates of 5e-8 each, and at n = 1024
-and 2048 by 2.7e-6 (estimates 5e-8, 2e-7). On the smooth slab the extrapolated k at n =
-1024 and 2048 differed by 4.1e-8 ... 3.5e-7 (estimates 4e-9 ... 3e-8), on the sphere's
-bonded layer a/h = 1 by 1.6e-7 ... 4.4e-7 (estimates 2e-8 ... 2e-7). It lives in the
-slab kernels' element integrals: a finer rule (:mod:`contactlib.influence`'s classes with
-4 ... 12 points out to 300 lengths, 40 smoothstep points) moved the default method's k at
-c/a = 0.9, n = 512, 1024, 2048 by 1.9e-7, 3.4e-7, 1.3e-6 (bonded slab) and 5.7e-9,
-4.3e-9, 9.7e-8 (smooth slab), the half-plane's by at most 6e-11; with it the bonded
-slab's k(n) still did not fall like n^-2 (the band rows are not the source either: the
-plain rows gave the same ratios). Below n = 512 the levels agreed within their estimates
-where checked (smooth slab, c/a = 0.5 and 0.7: n = 256 against 512)."""
+"""From this finest n on, on a layer whose rows stay plain (the sphere's: ring kernels on a
+layer have no cancellation-free w(x) - w(ref) away from the axis, so no band around c),
+the estimate is at least the finest level's own (the default method's estimate from the
+levels n/4, n/2, n): there the levels carry a noise the expansion in n does not describe
+and the half-space's noise bound (:func:`quadrature_noise`) does not cover. Measured
+(nu = 0.3, c/a = 0.1, 0.5, 0.7, 0.9, extrapolated k at n = 512, 1024, 2048): the
+sphere's smooth layer a/h = 1/20 at c/a = 0.1, k(1024) 6.1e-8 from k(2048) with
+estimates of 3e-9 and 4e-9; its bonded layer a/h = 1, 1.6e-7 ... 4.4e-7 apart with
+estimates 2e-8 ... 2e-7. The cylinder's slab (band rows) is not concerned: with its
+kernels' local coordinate fixed (:mod:`contactlib.kernels.strip`, a noise of 1e-13 that
+had put up to 1e-6 into k at n = 2048) its levels agree within their own estimates
+(a/h = 1/20 and 1, smooth and bonded base, c/a = 0.3 ... 0.9)."""
 
 PREDICTED_FROM_N = 1024
 """A coarse level with at least this many elements (the level n/2 of a solve at n >= 2048)
@@ -616,7 +610,8 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     # the smallest elements add to the estimate
     out.error_estimate += (2.0 * max(s.round_off for s in sols)
                            + quadrature_noise(top.mesh, difference=difference, band=band))
-    if not geometry.body.is_half_space and n >= LAYER_FLOOR_FROM_N:  # see LAYER_FLOOR_FROM_N
+    if (not geometry.body.is_half_space and not (band or difference)
+            and n >= LAYER_FLOOR_FROM_N):  # plain rows on a layer: see LAYER_FLOOR_FROM_N
         out.error_estimate = max(out.error_estimate, _finest_level_error(out.level_k))
     out.level_offsets = tuple(float(s.k) / out.k - 1.0 for s in sols[:-1])
     if work:

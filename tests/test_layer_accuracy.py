@@ -118,6 +118,24 @@ def test_slab_kernels_are_smooth_to_round_off():
                 assert np.std(rest) <= 3e-15 * np.max(np.abs(v)), (base, kernel.__name__)
 
 
+@pytest.mark.parametrize("base", ["smooth", "bonded"])
+def test_slab_axis_difference_keeps_its_digits(base):
+    """w(x) - w(0) on the slab: the remainder's part is O(x^2 / h), so over x^2 it is the
+    same at x = 1e-8 as at 1e-6 (to 1e-3: the slope's round-off); formed as the
+    difference of the remainders at x and 0 (each O(s)) it was all round-off at 1e-8
+    (the slab's c/a = 1e-8 then left the stability grid's estimates)."""
+    from contactlib.kernels import strip
+
+    s = np.array([0.3, 0.7, 1.0])
+    ratio = []
+    for x in (1e-8, 1e-6):
+        xs = np.full(s.shape, x)
+        rem = (strip.axis_w_strip(xs, s, 0.3, "normal", 20.0, base)[0]
+               - strip.axis_w_strip(xs, s, 0.3, "normal")[0])
+        ratio.append(rem / x**2)
+    assert np.all(np.abs(ratio[0] / ratio[1] - 1.0) <= 1e-3), ratio
+
+
 def test_tolerance_on_a_layer_is_met_against_the_refined_solution():
     """Sphere, bonded base, a/h = 1, c/a = 1/2, tolerance 1e-3: the k returned is
     within it of the solution refined fourfold, and its estimate covers that."""

@@ -912,8 +912,12 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
     Half-plane, pressure: (2/pi) s [-(1+t) ln(1+t) + (t-1) ln|t-1|], t = |x|/s,
     in the forms of ``_hp_axis_w_pressure`` (relative error ~1e-16); shear:
     2 beta min(|x|, s) exactly. A slab adds the difference of its remainder
-    (the slab minus the half-plane) at x and at 0, formed directly: that part
-    keeps the absolute round-off of the remainder (~1e-16 s).
+    (the slab minus the half-plane) at x and at 0: for x <= 1e-3 h as the
+    integral of the remainder's slope over [0, x] (:func:`_remainder_axis_w`;
+    relative accuracy ~1e-4 of that part at x = 1e-8, which is itself ~1e-3 of
+    w(x) - w(0) there), beyond formed directly (its absolute round-off, ~1e-16
+    s, is then small against the difference). Formed directly everywhere, as
+    before, the slab's c/a = 1e-8 lost the whole remainder part.
 
     Examples
     --------
@@ -936,11 +940,67 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
     dw = np.where(sa > 0.0, dw, 0.0)
     if np.isfinite(h):
         kind = "pressure" if part == "normal" else "shear"
-        rem_x = _evaluate(kind, xa, sa, nu, h, base)[0] - _evaluate(kind, xa, sa, nu, np.inf)[0]
-        zx = np.zeros(xa.shape)
-        rem_0 = _evaluate(kind, zx, sa, nu, h, base)[0] - _evaluate(kind, zx, sa, nu, np.inf)[0]
-        dw = dw + (rem_x - rem_0)
+        h = _validate(sa, nu, h, base)
+        near = (xa <= _AXIS_SLOPE_UP_TO * h) & (sa > 0.0)
+        if near.any():  # the remainder's difference as the integral of its slope
+            tab = _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
+            dw = dw.copy()
+            dw[near] += _remainder_axis_w(kind, xa[near], sa[near], h, tab)
+        rest = ~near
+        if rest.any():  # formed directly: its absolute round-off (~1e-16 s) stays
+            xr, sr = xa[rest], sa[rest]
+            rem_x = _evaluate(kind, xr, sr, nu, h, base)[0] - _evaluate(kind, xr, sr, nu, np.inf)[0]
+            zx = np.zeros(xr.shape)
+            rem_0 = _evaluate(kind, zx, sr, nu, h, base)[0] - _evaluate(kind, zx, sr, nu, np.inf)[0]
+            dw = dw.copy()
+            dw[rest] += rem_x - rem_0
     return dw, zero, zero.copy()
+
+
+_AXIS_SLOPE_UP_TO = 1e-3  # x/h below which axis_w_strip integrates the remainder's slope
+_AXIS_SLOPE_POINTS = 8  # Gauss points on [0, x] (the slope is smooth on the scale h)
+
+
+def _pair_slopes(kind: str, eta: Arr, tab: _SlabTable) -> tuple[Arr, Arr]:
+    """d/d(eta) of both packed functions (F1, B1) at eta: (A or C, B), table or far field."""
+    coef = tab.pres if kind == "pressure" else tab.shear
+    pieces = tab.n_pieces
+    v = eta * _INV_DELTA
+    far = (v < -pieces) | (v > pieces)
+    cell = np.clip(np.floor(v), -pieces, pieces - 1.0)
+    u = v - cell
+    idx = cell.astype(np.intp) + pieces
+    d = 5.0 * coef[5].take(idx)
+    for k in (4, 3, 2, 1):
+        d = d * u + k * coef[k].take(idx)
+    d *= _INV_DELTA
+    if far.any():
+        _, _, f, b = _far_pair(kind, eta[far], tab)
+        d[far] = f + 1j * b
+    return d.real, d.imag
+
+
+def _remainder_axis_w(kind: str, x: Arr, s: Arr, h: float, tab: _SlabTable) -> Arr:
+    """w_R(x) - w_R(0) of the slab's remainder, as the integral of its slope over [0, x].
+
+    Pressure: w_R = h (A1(e+) - A1(e-)) + const, e+- = (x +- s)/h, slope A(e+) - A(e-);
+    shear: w_R = h (B1(e+) + B1(e-) - 2 B1(x/h)), slope B(e+) + B(e-) - 2 B(x/h). The
+    slope vanishes at x = 0 and is smooth on the scale h, so an 8-point Gauss rule on
+    [0, x] (x <= 1e-3 h) keeps the relative accuracy of O(x^2 / h) that the difference of
+    the remainders at x and 0 (each O(s)) loses to round-off as x -> 0.
+    """
+    t, w = np.polynomial.legendre.leggauss(_AXIS_SLOPE_POINTS)
+    pts = 0.5 * (t[:, None] + 1.0) * x[None, :]  # (points, cases)
+    ss = np.broadcast_to(s, pts.shape)
+    inv_h = 1.0 / h
+    if kind == "pressure":
+        slope = (_pair_slopes(kind, ((pts + ss) * inv_h).ravel(), tab)[0]
+                 - _pair_slopes(kind, ((pts - ss) * inv_h).ravel(), tab)[0])
+    else:
+        slope = (_pair_slopes(kind, ((pts + ss) * inv_h).ravel(), tab)[1]
+                 + _pair_slopes(kind, ((pts - ss) * inv_h).ravel(), tab)[1]
+                 - 2.0 * _pair_slopes(kind, (pts * inv_h).ravel(), tab)[1])
+    return 0.5 * x * (w @ slope.reshape(pts.shape))
 
 
 def _f_difference(a: Arr, b: Arr, d: Arr) -> Arr:

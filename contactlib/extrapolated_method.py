@@ -380,6 +380,11 @@ def _band(n: int) -> bool | None:
     return True if n >= BAND_FROM_N else None
 
 
+def _next_on_trend(k: float, k_coarser: float) -> float:
+    """k on the next finer level from the n^-2 trend of a level and the one below it."""
+    return k + (k - k_coarser) / 4.0
+
+
 def _trend_start(ns, sols, i: int) -> bool:
     """Whether coarse level i starts from the two coarser levels' trend (one refined step,
     :data:`PREDICTED_FROM_N`): large enough, and both coarser levels solved well."""
@@ -436,7 +441,7 @@ def _retry_failed_levels(geometry: Contact, c: float, ns, meshes, opss, odds, so
         if _good(sols[j]) or not _good(sols[j - 1]):
             continue
         below = sols[j - 1].oriented_k
-        k0 = below + (below - sols[j - 2].oriented_k) / 4.0 if j > 1 and _good(sols[j - 2]) \
+        k0 = _next_on_trend(below, sols[j - 2].oriented_k) if j > 1 and _good(sols[j - 2]) \
             else below
         _retry(geometry, c, ns, meshes, opss, odds, sols, j, k0)
     for j in range(len(sols) - 3, -1, -1):  # from the finer levels, finest first
@@ -555,8 +560,8 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
             k0 *= side
         elif guess is not None:
             k0 = side * (sols[i - 1].k if i and _good(sols[i - 1]) else guess)
-        elif _trend_start(ns, sols, i):  # the n^-2 trend of the two coarser levels
-            k0 = sols[i - 1].oriented_k + (sols[i - 1].oriented_k - sols[i - 2].oriented_k) / 4.0
+        elif _trend_start(ns, sols, i):
+            k0 = _next_on_trend(sols[i - 1].oriented_k, sols[i - 2].oriented_k)
         else:
             k0 = _start(geometry, c, meshes[i], sols, i)
         near = (i == LEVELS - 1 or (level_offsets is not None and guess is not None and i > 0)

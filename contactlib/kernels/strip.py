@@ -510,6 +510,26 @@ def _far_pair(kind: str, eta: NDArray[np.float64], tab: _SlabTable) -> tuple[Arr
     return f1, b1, f, b
 
 
+def _locate(eta: Arr, pieces: int) -> tuple[NDArray[np.intp], Arr, NDArray[np.bool_]]:
+    """(piece index, local coordinate in [0, 1], beyond the table) of each eta.
+
+    The position in pieces from eta = 0 and within its piece: v - floor(v) is exact
+    (Sterbenz) where |v| >= 1 and within 1e-16 below. (It was v + pieces with its integer
+    part then removed: the offset of 1000 (2400 bonded) cost the local coordinate ~10
+    bits, a noise of 1e-13 in the slab kernels that the smallest elements turned into k
+    noise of up to 1e-6 at n = 2048.) Beyond the table the coordinate is 0 (the callers
+    use the far-field forms there).
+    """
+    v = eta * _INV_DELTA
+    far = (v < -pieces) | (v > pieces)
+    cell = np.clip(np.floor(v), -pieces, pieces - 1.0)
+    u = v - cell
+    u[far] = 0.0
+    idx = cell.astype(np.intp)
+    idx += pieces
+    return idx, u, far
+
+
 def _pair(kind: str, eta: Arr, tab: _SlabTable) -> tuple[NDArray[np.complex128], Arr, NDArray[np.bool_]]:
     """Packed values (F1, B1) and one derivative at eta (1-D, contiguous).
 
@@ -520,19 +540,7 @@ def _pair(kind: str, eta: Arr, tab: _SlabTable) -> tuple[NDArray[np.complex128],
     pressure = kind == "pressure"
     coef = tab.pres if pressure else tab.shear
     comp = 1 if pressure else 0  # component whose derivative is needed
-    pieces = tab.n_pieces
-    # the position in pieces from eta = 0, and within its piece: v - floor(v) is exact
-    # (Sterbenz) where |v| >= 1 and within 1e-16 below. (It was v + pieces then its
-    # integer part removed: the offset of 1000 (2400 bonded) cost the local coordinate
-    # ~10 bits, noise of 1e-13 in the slab kernels that the smallest elements turned into
-    # k noise of up to 1e-6 at n = 2048.)
-    v = eta * _INV_DELTA
-    far = (v < -pieces) | (v > pieces)
-    cell = np.clip(np.floor(v), -pieces, pieces - 1.0)
-    vc = v - cell
-    vc[far] = 0.0  # (values from the far-field forms below)
-    idx = cell.astype(np.intp)
-    idx += pieces
+    idx, vc, far = _locate(eta, tab.n_pieces)
     u2 = np.empty(2 * vc.size)
     u2[0::2] = vc
     u2[1::2] = vc
@@ -941,10 +949,9 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
     if np.isfinite(h):
         kind = "pressure" if part == "normal" else "shear"
         h = _validate(sa, nu, h, base)
-        near = (xa <= _AXIS_SLOPE_UP_TO * h) & (sa > 0.0)
+        near = (xa <= _AXIS_SLOPE_UP_TO * h) & (sa > 0.0)  # (dw is a fresh array)
         if near.any():  # the remainder's difference as the integral of its slope
             tab = _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
-            dw = dw.copy()
             dw[near] += _remainder_axis_w(kind, xa[near], sa[near], h, tab)
         rest = ~near
         if rest.any():  # formed directly: its absolute round-off (~1e-16 s) stays
@@ -952,7 +959,6 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
             rem_x = _evaluate(kind, xr, sr, nu, h, base)[0] - _evaluate(kind, xr, sr, nu, np.inf)[0]
             zx = np.zeros(xr.shape)
             rem_0 = _evaluate(kind, zx, sr, nu, h, base)[0] - _evaluate(kind, zx, sr, nu, np.inf)[0]
-            dw = dw.copy()
             dw[rest] += rem_x - rem_0
     return dw, zero, zero.copy()
 
@@ -964,12 +970,7 @@ _AXIS_SLOPE_POINTS = 8  # Gauss points on [0, x] (the slope is smooth on the sca
 def _pair_slopes(kind: str, eta: Arr, tab: _SlabTable) -> tuple[Arr, Arr]:
     """d/d(eta) of both packed functions (F1, B1) at eta: (A or C, B), table or far field."""
     coef = tab.pres if kind == "pressure" else tab.shear
-    pieces = tab.n_pieces
-    v = eta * _INV_DELTA
-    far = (v < -pieces) | (v > pieces)
-    cell = np.clip(np.floor(v), -pieces, pieces - 1.0)
-    u = v - cell
-    idx = cell.astype(np.intp) + pieces
+    idx, u, far = _locate(eta, tab.n_pieces)
     d = 5.0 * coef[5].take(idx)
     for k in (4, 3, 2, 1):
         d = d * u + k * coef[k].take(idx)

@@ -5,6 +5,7 @@
     python benchmarks/bench_frontier.py --lead    # (e) only: a lead, not a method
     python benchmarks/bench_frontier.py --b       # (b) only: the solve cost at n = 2048
     python benchmarks/bench_frontier.py --c       # (c) only: the floor (k error, memory)
+    python benchmarks/bench_frontier.py --d       # (d) only: error against time (README table)
 
 This machine is shared and noisy: every printed cost is a ratio of two times
 measured moments apart in the same process (the reference LU is timed again
@@ -275,6 +276,9 @@ def main() -> None:
         return
     if "--c" in sys.argv:
         part_c()
+        return
+    if "--d" in sys.argv:
+        part_d()
         return
     part_a()
     if "--quick" in sys.argv:

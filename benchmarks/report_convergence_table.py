@@ -44,9 +44,15 @@ def reference(k: np.ndarray, ns: list[int]) -> tuple[float, int]:
 
 
 def main() -> None:
-    n_min = int(sys.argv[1]) if len(sys.argv) > 1 else 64
-    names = sys.argv[2:] or list(STUDIES)
+    args = sys.argv[1:]
+    n_min = int(args.pop(0)) if args and args[0].isdigit() else 64
+    names = args or list(STUDIES)
     conf = yaml.safe_load(CONFIG.read_text())["convergence"]
+    unknown = [x for x in names if x not in conf["studies"]]
+    if unknown:
+        sys.exit(f"unknown study {unknown[0]!r}: the studies of config/config.yaml are "
+                 + ", ".join(conf["studies"]) + " (usage: python "
+                 "benchmarks/report_convergence_table.py [n_min] [study ...])")
     for name in names:
         spec = dict(conf["studies"][name])
         ns = [n for n in spec.pop("n") if n >= n_min]

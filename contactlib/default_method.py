@@ -718,7 +718,8 @@ def _full_adhesion(geometry: Contact, mesh: Mesh, pw: np.ndarray,
 
 
 def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
-                    width: float = NEAR_ROWS_WIDTH) -> tuple[tuple | None, tuple | None]:
+                    width: float = NEAR_ROWS_WIDTH,
+                    quadrature: str = "standard") -> tuple[tuple | None, tuple | None]:
     """The rows :func:`assemble` writes as differences on ``mesh``: (axis, edge), each or None.
 
     ``axis`` for a tiny stick zone (c/a <= :data:`AXIS_ROWS_BELOW`), ``edge`` for a
@@ -729,13 +730,14 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
     method writes every level's rows alike; ``width``: the band's half-width in units of
     min(c, a - c)); None where the plain rows are kept, or the
     indenter has no kernel differences. Their kernels are evaluated here (only in those
-    three cases).
+    three cases), with the element rules ``quadrature``
+    (:data:`contactlib.influence.QUADRATURES`).
     """
     r, m = mesh.nodes, mesh.stick_index
     axis = None
     if r[m] <= AXIS_ROWS_BELOW:  # tiny stick zone: its normal rows relative to the axis
         try:
-            axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part)
+            axis = tuple(axis_w_rows(geometry, r, r[1:m + 2], part, quadrature=quadrature)
                          for part in ("normal", "shear"))
         except NotImplementedError:  # an indenter without w(x) - w(0): the plain rows
             axis = None
@@ -744,9 +746,10 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
         i0 = int(np.searchsorted(r, 1.0 - EDGE_REF_WIDTHS * (1.0 - r[m])))
         try:
             ref = float(r[i0])
-            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:], part, ref=ref)
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:], part, ref=ref,
+                                             quadrature=quadrature)
                                  for part in ("normal", "shear")) + tuple(
-                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref, quadrature)
                 for part in ("normal", "shear"))
         except NotImplementedError:
             edge = None
@@ -758,9 +761,10 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
         i1 = int(np.searchsorted(r, r[m] + width))
         try:
             ref = float(r[i0])
-            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:i1 + 1], part, ref=ref)
+            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:i1 + 1], part, ref=ref,
+                                             quadrature=quadrature)
                                  for part in ("normal", "shear")) + tuple(
-                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref)
+                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref, quadrature)
                 for part in ("normal", "shear"))
         except NotImplementedError:
             edge = None

@@ -292,28 +292,32 @@ def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | Non
 
 
 FINE_QUADRATURE_FROM_N = 2048
-"""From this finest n on, the operators and the difference rows of every level are
-integrated with :mod:`contactlib.influence`'s ``"fine"`` rules (:func:`quadrature_for`).
-The standard rules' bias (1.9e-11 of a row's scale at most, in the shear's du/dx) is
-amplified into k near full stick, where it then dominates the method's error. Against
-the closed form at nu = 0.4999999, n = 2048, the largest k error over c/a = 0.02 ... 0.98
-(sphere and cylinder) fell from 4.8e-9 to 1.1e-9 (cylinder, c/a = 0.95, 0.98: 1.4e-9,
-4.8e-9 -> 7.6e-10, 1.1e-10; 0.99, 0.995: 5.7e-9, 2.1e-8 -> 1.4e-9, 2.1e-9; the sphere
-within 1e-10 of before up to c/a = 0.99); the kernels cost about 1.35x. It does not
-lower the noise bound of the estimate (:func:`quadrature_noise`): at n = 3072 the
-round-off of the smallest elements gave 2.9e-9 (sphere) and 5.5e-9 (cylinder) at
-c/a = 0.98 with either rule. Below n = 2048 the standard rules (bit for bit as before)."""
+"""From this finest n on, the difference rows of every level (the band around c, and the
+axis or edge rows) are integrated with :mod:`contactlib.influence`'s ``"fine"`` rules
+(:func:`quadrature_for`); the operators keep the standard ones. A difference row is small
+(w(x) - w(ref) is O(|x - ref|)) while the standard classes' bias is a fraction of the
+kernels' own scale (up to 1e-10 of a row's largest entry on elements beyond 100 lengths),
+so relative to the row it is larger, and near full stick k amplifies it: against the
+closed form at nu = 0.4999999, n = 2048, cylinder, c/a = 0.95, 0.98, 0.99, 0.995, the k
+error was 1.4e-9, 4.8e-9, -5.7e-9, -2.1e-8 and is 7.6e-10, 1.1e-10, 1.4e-9, 2.1e-9 (the
+same with the fine rules on the operators too, and back to the first values with the
+fine rules on the operators alone). Over c/a = 0.02 ... 0.98 (sphere and cylinder) the
+largest error at n = 2048 fell from 4.8e-9 to 1.1e-9; the sphere moved by at most 1e-10
+up to c/a = 0.99 (0.995: 3.0e-9 -> 9.2e-10). The estimate is unchanged: at n = 3072 and
+4096 the errors at c/a = 0.98 are 1.2e-9 ... 5.5e-9 with either rule (the noise of
+:func:`quadrature_noise`). Below n = 2048 the standard rules (bit for bit as before)."""
 
 
 def quadrature_for(n: int) -> str:
-    """The element rules of a solve at finest ``n`` (:data:`FINE_QUADRATURE_FROM_N`)."""
+    """The element rules of the difference rows of a solve at finest ``n``
+    (:data:`FINE_QUADRATURE_FROM_N`)."""
     return "fine" if n >= FINE_QUADRATURE_FROM_N else "standard"
 
 
-def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None, quadrature: str):
+def _fine_ops(geometry: Contact, mesh: Mesh, ops, cache: StickBlocks | None):
     if ops is not None:
         return ops
-    return nodal_operators(geometry, mesh, cache=cache, quadrature=quadrature)
+    return nodal_operators(geometry, mesh, cache=cache)
 
 
 def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
@@ -509,8 +513,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     k_guess : float, optional
         Newton's start on the coarsest mesh (default: the solver's warm start).
     ops : (P, Q), optional
-        The finest mesh's nodal operators (``nodal_operators``, with the rules
-        :func:`quadrature_for` names for ``n``).
+        The finest mesh's nodal operators (``nodal_operators``).
     cache : StickBlocks, optional
         The caller's store of stick blocks.
     level_offsets : tuple of float, optional
@@ -536,7 +539,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         raise ValueError(f"n must be a multiple of {N_MULTIPLE}, got {n}")
     fine = graded_mesh(n, c, store=None if cache is None else cache.meshes)
     quadrature = quadrature_for(n)
-    pw, qw = _fine_ops(geometry, fine, ops, cache, quadrature)
+    pw, qw = _fine_ops(geometry, fine, ops, cache)
     meshes, opss, odds = [fine], [(pw, qw)], [None]
     nested = True
     for _ in range(LEVELS - 1):  # restrict level by level: n/2 from n, n/4 from n/2
@@ -548,7 +551,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         else:  # a mesh scaled back to MAX_ELEMENTS: its own operators, not nested
             nested = False
             sub = graded_mesh(n // 2 ** len(meshes), c)
-            pc, qc = _fine_ops(geometry, sub, None, cache, quadrature)
+            pc, qc = _fine_ops(geometry, sub, None, cache)
             odd = None
         meshes.append(sub)
         opss.append((pc, qc))

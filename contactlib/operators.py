@@ -153,24 +153,20 @@ def smooth_integrals(model: Contact, x: np.ndarray, nodes: np.ndarray,
 
 
 def operator_part(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
-                  with_w: bool = True, with_du: bool = True,
-                  quadrature: str = "standard") -> np.ndarray:
+                  with_w: bool = True, with_du: bool = True) -> np.ndarray:
     """One displacement operator on nodal values, shape (3, len(x), N + 1).
 
     ``part="normal"``: of the nodal pressures p; ``part="shear"``: of the
     nodal shear coefficients phi. Row k = 0, 1, 2 gives w, u and du/dx at the
     points ``x`` (units E* = a = R = 1). ``with_w=False`` (normal) and
     ``with_du=False`` (shear) let the kernels skip an output they can skip
-    cheaply (w as zeros, du/dx as NaN). ``quadrature``: the element rules
-    (:data:`contactlib.influence.QUADRATURES`; a layer's smooth remainder keeps its own).
+    cheaply (w as zeros, du/dx as NaN).
     """
     smooth = smooth_integrals(model, x, nodes, part)
     if smooth is None:
-        g = element_integrals(_kernel(model, part, with_w, with_du), x, nodes,
-                              quadrature=quadrature)
+        g = element_integrals(_kernel(model, part, with_w, with_du), x, nodes)
     else:  # a layer: the half-space's singular kernels, plus the smooth remainder
-        g = element_integrals(_kernel(model.half_space_twin, part, with_w, with_du), x, nodes,
-                              quadrature=quadrature)
+        g = element_integrals(_kernel(model.half_space_twin, part, with_w, with_du), x, nodes)
         g += smooth
     # du/dx of an odd strip shear is log-infinite on the axis for every element
     # (the infinities cancel for a traction with q(0) = 0); it is never used
@@ -200,8 +196,7 @@ def _split_kernels(model: Contact) -> bool:
 
 def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
               with_w: bool = True, with_du: bool = True,
-              rows: tuple[int, ...] = (0, 1, 2),
-              quadrature: str = "standard") -> tuple[np.ndarray, np.ndarray]:
+              rows: tuple[int, ...] = (0, 1, 2)) -> tuple[np.ndarray, np.ndarray]:
     """Displacement operators on nodal values, each of shape (len(rows), len(x), N + 1).
 
     Returns ``(P, Q)`` with ``P[k] @ p`` and ``Q[k] @ phi`` the contributions to
@@ -211,17 +206,14 @@ def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
     ``with_du=False`` leaves the shear's du/dx row NaN where that is cheaper (the
     disc). ``rows``: only these rows, in this order (the others' integrals are not
     formed). Equal bit for bit to the two :func:`operator_part` calls; both parts
-    share one classification of the element pairs (one pass). ``quadrature``: as
-    :func:`operator_part`.
+    share one classification of the element pairs (one pass).
     """
     rows = tuple(rows)
     if _split_kernels(model):  # a layer: each part with its smooth remainder
-        return (operator_part(model, nodes, x, "normal", with_w,
-                              quadrature=quadrature)[list(rows)],
-                operator_part(model, nodes, x, "shear", with_du=with_du,
-                              quadrature=quadrature)[list(rows)])
+        return (operator_part(model, nodes, x, "normal", with_w)[list(rows)],
+                operator_part(model, nodes, x, "shear", with_du=with_du)[list(rows)])
     g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes,
-                          outputs=rows + tuple(3 + k for k in rows), quadrature=quadrature)
+                          outputs=rows + tuple(3 + k for k in rows))
     with np.errstate(invalid="ignore"):  # see operator_part: du/dx on a strip axis
         both = apply_difference(g, nodes)
     return both[:len(rows)], both[len(rows):]
@@ -249,8 +241,7 @@ class StickBlocks(Store):
 
 
 def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
-                        cache: StickBlocks | None = None,
-                        quadrature: str = "standard") -> np.ndarray:
+                        cache: StickBlocks | None = None) -> np.ndarray:
     """:func:`operator_part` at the mesh's own nodes, reusing the stick block across c.
 
     On the graded mesh the stick-zone nodes are c t_i with t_i fixed by
@@ -273,14 +264,11 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
         bit for bit across c), so within one store the last bits follow the
         order of the cases (k to ~1e-10); a call that owns its store gives
         the same bits whatever was computed before it in the process.
-    quadrature : {"standard", "fine"}
-        The element rules (:data:`contactlib.influence.QUADRATURES`; part of the
-        store's key).
     """
     nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
     degrees = model.length_degrees(part) if part in PARTS else None
     if degrees is None or not 0 < m < n:
-        return operator_part(model, nodes, nodes, part, quadrature=quadrature)
+        return operator_part(model, nodes, nodes, part)
     c = float(nodes[m])
     kernel = _kernel(model, part)
     # nodes / c equals the generator's t_i to round-off, not bit for bit across c: the
@@ -288,67 +276,62 @@ def nodal_operator_part(model: Contact, mesh: Mesh, part: str,
     # needs it (rounding the nodes themselves would move the elements of ~1e-11 a next to
     # c by a relative 1e-3)
     ref_nodes = nodes[:m + 1] / c
-    key = (model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes(), quadrature)
+    key = (model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
 
     def compute() -> np.ndarray:
-        return element_integrals(kernel, ref_nodes, ref_nodes, quadrature=quadrature)
+        return element_integrals(kernel, ref_nodes, ref_nodes)
 
     ref = compute() if cache is None else cache.get(key, compute)
     op = np.empty((3, n + 1, n + 1))
     g = op[:, :, :n]  # the element integrals, turned into the operator in place
     np.multiply(ref, (c ** degrees)[:, None, None], out=g[:, :m + 1, :m])
-    element_integrals(kernel, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:],
-                      quadrature=quadrature)
-    element_integrals(kernel, nodes[m + 1:], nodes, out=g[:, m + 1:, :], quadrature=quadrature)
+    element_integrals(kernel, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:])
+    element_integrals(kernel, nodes[m + 1:], nodes, out=g[:, m + 1:, :])
     return apply_difference(g, nodes, out=op)
 
 
-def nodal_operators(model: Contact, mesh: Mesh, cache: StickBlocks | None = None,
-                    quadrature: str = "standard") -> tuple[np.ndarray, np.ndarray]:
+def nodal_operators(model: Contact, mesh: Mesh,
+                    cache: StickBlocks | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Both parts of :func:`nodal_operator_part`, ``(P, Q)``, in one pass over each block.
 
     Equal bit for bit to ``nodal_operator_part(model, mesh, "normal", cache)`` and
     ``(..., "shear", cache)`` called in turn (the same stick blocks in ``cache``): the
     two parts' kernels are integrated on the same points, classified once
     (:func:`_joint_kernel`): the classification and packing of the element pairs are
-    done once instead of twice. ``quadrature``: as :func:`nodal_operator_part`.
+    done once instead of twice.
     """
     nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
     degrees = [model.length_degrees(part) for part in PARTS]
     if not 0 < m < n:
-        return operators(model, nodes, nodes, quadrature=quadrature)
+        return operators(model, nodes, nodes)
     if any(d is None for d in degrees):
-        return tuple(nodal_operator_part(model, mesh, part, cache, quadrature)
-                     for part in PARTS)
+        return tuple(nodal_operator_part(model, mesh, part, cache) for part in PARTS)
     c = float(nodes[m])
     joint = _joint_kernel(model)
     ref_nodes = nodes[:m + 1] / c  # (see nodal_operator_part: the key and the block)
-    keys = [(model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes(), quadrature)
+    keys = [(model.indenter, model.body, part, np.round(ref_nodes, 13).tobytes())
             for part in PARTS]
     scale = np.concatenate([c ** d for d in degrees])
     both = np.empty((6, n + 1, n + 1))
     g = both[:, :, :n]  # the element integrals, turned into the operators in place
     if cache is None:  # the reference block written in place, then scaled (the same bits)
-        element_integrals(joint, ref_nodes, ref_nodes, out=g[:, :m + 1, :m],
-                          quadrature=quadrature)
+        element_integrals(joint, ref_nodes, ref_nodes, out=g[:, :m + 1, :m])
         g[:, :m + 1, :m] *= scale[:, None, None]
     else:
         if not any(key in cache for key in keys):
-            ref = element_integrals(joint, ref_nodes, ref_nodes, quadrature=quadrature)
+            ref = element_integrals(joint, ref_nodes, ref_nodes)
             blocks = [ref[:3], ref[3:]]
             for key, block in zip(keys, blocks):
                 cache.get(key, lambda block=block: block)
             cache.misses -= 1  # (one computation for the two entries)
         else:  # one part stored already: the other alone, as nodal_operator_part would
             blocks = [cache.get(key, lambda part=part: element_integrals(
-                _kernel(model, part), ref_nodes, ref_nodes, quadrature=quadrature))
-                for key, part in zip(keys, PARTS)]
+                _kernel(model, part), ref_nodes, ref_nodes)) for key, part in zip(keys, PARTS)]
         np.multiply(blocks[0], scale[:3, None, None], out=g[:3, :m + 1, :m])
         np.multiply(blocks[1], scale[3:, None, None], out=g[3:, :m + 1, :m])
         del blocks
-    element_integrals(joint, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:],
-                      quadrature=quadrature)
-    element_integrals(joint, nodes[m + 1:], nodes, out=g[:, m + 1:, :], quadrature=quadrature)
+    element_integrals(joint, nodes[:m + 1], nodes[m:], out=g[:, :m + 1, m:])
+    element_integrals(joint, nodes[m + 1:], nodes, out=g[:, m + 1:, :])
     apply_difference(g, nodes, out=both)
     return both[:3], both[3:]
 
@@ -393,7 +376,8 @@ def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
     which is all of the signal of a stick zone of c/a = 1e-8 (the default
     method's normal rows there, see :func:`contactlib.default_method.assemble`).
     A node ``ref`` > 0 gives the rows relative to it (a thin slip annulus).
-    Units as :func:`operator_part` (a^2/R per unit traction); ``quadrature`` as there.
+    Units as :func:`operator_part` (a^2/R per unit traction). ``quadrature``: the
+    element rules (:data:`contactlib.influence.QUADRATURES`).
     """
     if part not in PARTS:
         raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")
@@ -419,7 +403,7 @@ def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: st
     u (both points then within a few interval lengths of s). The rows of a
     thin slip annulus's stick condition (:func:`contactlib.default_method.assemble`):
     there u is O(beta) while its variation across the annulus is O(width).
-    Units and ``quadrature`` as :func:`operator_part`.
+    Units as :func:`operator_part`; ``quadrature`` as :func:`axis_w_rows`.
     """
     if part not in PARTS:
         raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")

@@ -87,10 +87,7 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     Parameters
     ----------
     geometry : Contact
-    method : {"default", "extrapolated", "paper", "paper-literal"}
-        The extrapolated method's sets are the default method's meshes, integrated with
-        the rules it uses at ``n``
-        (:func:`~contactlib.extrapolated_method.quadrature_for`).
+    method : {"default", "paper", "paper-literal"}
     n : int
         Elements across the half-contact.
     stick_ratios : sequence of float
@@ -124,13 +121,11 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
         starts = _op_starts(sizes)
         ops = np.empty(starts[-1])
         cache = StickBlocks()  # this call's: the stick blocks shared across its c/a
-        quadrature = (extrapolated_method.quadrature_for(n) if method == "extrapolated"
-                      else "standard")  # the rules the method integrates with
         for i, mesh in enumerate(meshes):
             m = mesh.n + 1
             nodes[i, :m] = mesh.nodes
-            ops[starts[i]:starts[i + 1]] = nodal_operator_part(
-                geometry, mesh, part, cache=cache, quadrature=quadrature).ravel()
+            ops[starts[i]:starts[i + 1]] = nodal_operator_part(geometry, mesh, part,
+                                                               cache=cache).ravel()
         return {"stick_ratios": cs, "sizes": sizes, "nodes": nodes, "ops": ops}
     r = uniform_mesh(n, 0).nodes
     return {"nodes": r, "ops": ring_operator(geometry, r, collocation_points(n), part)}

@@ -275,39 +275,39 @@ def test_band_at_n2048_mid_and_thin_annulus():
 
 @pytest.mark.slow
 def test_fine_quadrature_near_full_stick_at_n2048():
-    """From n = 2048 the operators use the fine element rules (FINE_QUADRATURE_FROM_N).
+    """From n = 2048 the difference rows use the fine element rules (FINE_QUADRATURE_FROM_N).
     Cylinder, nu = 0.4999999 (the closed form sharp to ~1e-13), c/a = 0.98: k within
     1e-9 of the closed form (measured 1.1e-10; 4.8e-9 with the standard rules, whose bias
-    near full stick dominated the method's error), inside its own estimate."""
+    on the small difference rows dominated the method's error near full stick), inside
+    its own estimate."""
     model = contact("cylinder", 0.4999999)
     s = solve_extrapolated(model, 0.98, 2048, work=False)
     err = abs(s.k / float(uncoupled_friction("cylinder", 0.4999999, 0.98)) - 1.0)
     assert err <= 1e-9 and err <= s.error_estimate, (err, s.error_estimate)
 
 
-def test_the_workflow_operators_use_the_methods_rules(monkeypatch):
-    """The influence stage integrates with the rules the extrapolated method uses at its n
-    (quadrature_for): a solve on the stage's operators gives the bits of a solve that
-    builds its own (FINE_QUADRATURE_FROM_N lowered to 128 here, to keep it small), and
-    the rules differ from the standard ones there."""
+def test_fine_rules_act_on_the_difference_rows_only(monkeypatch):
+    """From FINE_QUADRATURE_FROM_N (lowered to 128 here, to keep it small) the difference
+    rows of every level are integrated with the fine rules and the operators are not:
+    the levels' k move (sphere, nu = 0.3, c/a = 0.5, n = 128, band rows asked for) by
+    round-off and quadrature bias only (< 1e-9), and a solve given the standard operators
+    gives the bits of one that builds them."""
     from contactlib import extrapolated_method as em
-    from contactlib import stages
     from contactlib.elements import graded_mesh
-    from contactlib.operators import nodal_operator_part
+    from contactlib.operators import nodal_operators
 
-    monkeypatch.setattr(em, "FINE_QUADRATURE_FROM_N", 128)
     model, c, n = contact("sphere", 0.3), 0.5, 128
+    monkeypatch.setattr(em, "BAND_FROM_N", 128)
+    standard = solve_extrapolated(model, c, n, work=False)
+    monkeypatch.setattr(em, "FINE_QUADRATURE_FROM_N", 128)
     assert em.quadrature_for(n) == "fine" and em.quadrature_for(n // 2) == "standard"
-    sets = [stages.influence(model, "extrapolated", n, [c], part) for part in ("normal", "shear")]
-    mesh = graded_mesh(n, c)
-    fine = nodal_operator_part(model, mesh, "normal", quadrature="fine")
-    standard = nodal_operator_part(model, mesh, "normal")
-    got = sets[0]["ops"].reshape(fine.shape)
-    assert np.array_equal(got, fine) and not np.array_equal(got, standard)
-    ops = tuple(x["ops"].reshape(fine.shape) for x in sets)
-    a = solve_extrapolated(model, c, n, ops=ops, work=False)
-    b = solve_extrapolated(model, c, n, work=False)
-    assert a.k == b.k and a.level_k == b.level_k
+    fine = solve_extrapolated(model, c, n, work=False)
+    given = solve_extrapolated(model, c, n, ops=nodal_operators(model, graded_mesh(n, c)),
+                               work=False)
+    assert fine.level_k != standard.level_k  # the rows changed
+    for a, b in zip(fine.level_k, standard.level_k):
+        assert abs(a / b - 1.0) <= 1e-9, (fine.level_k, standard.level_k)
+    assert given.level_k == fine.level_k
 
 
 @pytest.mark.slow

@@ -292,9 +292,10 @@ def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | Non
 
 
 FINE_QUADRATURE_FROM_N = 2048
-"""From this finest n on, the difference rows of every level (the band around c, and the
-axis or edge rows) are integrated with :mod:`contactlib.influence`'s ``"fine"`` rules
-(:func:`quadrature_for`); the operators keep the standard ones. A difference row is small
+"""From this finest n on, the band of difference rows around c of every level is
+integrated with :mod:`contactlib.influence`'s ``"fine"`` rules (:func:`quadrature_for`);
+the operators and the axis and edge rows (c/a <= 1e-4, 1 - c/a <= 5e-4) keep the standard
+ones (:func:`~contactlib.default_method.difference_rows`). A difference row is small
 (w(x) - w(ref) is O(|x - ref|)) while the standard classes' bias is a fraction of the
 kernels' own scale (up to 1e-10 of a row's largest entry on elements beyond 100 lengths),
 so relative to the row it is larger, and near full stick k amplifies it: against the

@@ -65,7 +65,7 @@ from .operators import StickBlocks, nodal_operators, restrict_nested
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "PREDICTED_FROM_N", "LAYER_FLOOR_FROM_N", "N_MULTIPLE", "resolving_n",
-           "FINE_QUADRATURE_FROM_N", "quadrature_for",
+           "FINE_QUADRATURE_FROM_N", "quadrature_for", "EXTREMES_FINEST_FROM_N",
            "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
@@ -309,6 +309,21 @@ up to c/a = 0.99 (0.995: 3.0e-9 -> 9.2e-10). The estimate is unchanged: at n = 3
 :func:`quadrature_noise`). Below n = 2048 the standard rules (bit for bit as before): at
 n = 1024 the truncation dominates and the fine rows moved k by at most 1.6e-9 (c/a =
 0.5 ... 0.99, both geometries, the errors 1.1e-9 ... 8.5e-9)."""
+
+
+EXTREMES_FINEST_FROM_N = 1024
+"""From this finest n on, at the extremes (the axis or edge difference rows: c/a <= 1e-4
+or 1 - c/a <= 5e-4) the solution is the finest level's own, k not extrapolated, with the
+default method's estimate from the levels n/4, n/2, n (plus the same noise bound). There
+the levels' noise, which grows with n, is larger than the terms the expansion removes,
+and the extrapolation amplified it beyond its estimate: against the closed form at
+nu = 0.499, sphere, c/a = 1e-8, 1e-7, 1e-6 and 1 - 1e-5, the extrapolated k was off by
+2.0e-3, 2.0e-4, 2.1e-5, 2.9e-4 at n = 1024 (estimates 3.8e-4, 9.3e-5, 2.7e-5, 1.1e-4) and
+2.7e-3, 1.4e-4, 4.9e-5 at n = 2048 (4.2e-4, 8.4e-5, 3.8e-5), the finest level's own k by
+9.8e-4, 1.2e-4, 2.2e-5, 1.9e-4 and 1.5e-3, 1.3e-4, 3.4e-5, each within the default
+method's estimate (error / estimate 0.98 at most); at c/a = 1e-5, 1e-4 and 0.9999 the
+extrapolation gained nothing either (sphere, n = 1024: 4.6e-6, 1.6e-6, 3.1e-5 against
+7.3e-7, 2.0e-6, 1.3e-5)."""
 
 
 def quadrature_for(n: int) -> str:
@@ -634,6 +649,12 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
             # finest level's root, the largest difference between levels its estimate
             out.k = top.k
             out.error_estimate = float(np.max(np.abs(np.diff(out.level_k)))) / abs(top.k)
+        if difference and n >= EXTREMES_FINEST_FROM_N:  # noise beyond the expansion: the
+            # finest level's own root and the default method's estimate (see the constant)
+            out.k = top.k
+            out.error_estimate = _finest_level_error(out.level_k)
+            out.extrapolated_load = out.level_load[-1]
+            out.load_error_estimate = _finest_level_error(out.level_load)
     else:  # the expansion in n needs nested levels: the finest level, its differences
         out.error_estimate = float(np.max(np.abs(np.diff(out.level_k)))) / abs(top.k)
         out.extrapolated_load = out.level_load[-1]

@@ -310,6 +310,35 @@ def test_fine_rules_act_on_the_difference_rows_only(monkeypatch):
     assert given.level_k == fine.level_k
 
 
+def test_at_the_extremes_the_finest_level_is_reported(monkeypatch):
+    """From EXTREMES_FINEST_FROM_N (lowered to 256 here, to keep it small), where the axis
+    or edge difference rows apply, k is the finest level's own root with the default
+    method's estimate from the levels n/4, n/2, n; elsewhere it is extrapolated."""
+    from contactlib import accuracy
+    from contactlib import extrapolated_method as em
+
+    monkeypatch.setattr(em, "EXTREMES_FINEST_FROM_N", 256)
+    model = contact("sphere", 0.3)
+    s = solve_extrapolated(model, 1e-6, 256, work=False)
+    assert s.converged and s.k == s.k_fine == s.level_k[-1]
+    assert s.error_estimate >= accuracy.estimate(*s.level_k[-3:])[0]
+    assert s.load() == s.level_load[-1]
+    mid = solve_extrapolated(model, 0.5, 256, work=False)
+    assert mid.k != mid.k_fine
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("geometry,c", [("sphere", 1e-8), ("cylinder", 1 - 1e-5)])
+def test_extremes_at_n1024_within_the_estimate(geometry, c):
+    """nu = 0.4999999 against the closed form (sharp there), n = 1024: the extrapolated k
+    was 2e-3 off at c/a = 1e-8 (sphere, estimate 3.8e-4; nu = 0.499) and 2.9e-4 at
+    1 - 1e-5; the finest level's root is within its estimate (measured 0.91 and 0.85 of
+    it; EXTREMES_FINEST_FROM_N)."""
+    s = solve_extrapolated(contact(geometry, 0.4999999), c, 1024, work=False)
+    err = abs(s.k / float(uncoupled_friction(geometry, 0.4999999, c)) - 1.0)
+    assert s.converged and err <= s.error_estimate, (err, s.error_estimate)
+
+
 @pytest.mark.slow
 def test_level_from_the_trend_takes_one_factorization(monkeypatch):
     """From n = 2048 the level n/2 starts from the n^-2 trend of n/8 and n/4 and takes one

@@ -311,7 +311,7 @@ n = 1024 the truncation dominates and the fine rows moved k by at most 1.6e-9 (c
 0.5 ... 0.99, both geometries, the errors 1.1e-9 ... 8.5e-9)."""
 
 
-EXTREMES_FINEST_FROM_N = 1024
+EXTREMES_FINEST_FROM_N = 640
 """From this finest n on, at the extremes (the axis or edge difference rows: c/a <= 1e-4
 or 1 - c/a <= 5e-4) the solution is the finest level's own, k not extrapolated, with the
 default method's estimate from the levels n/4, n/2, n (plus the same noise bound). There
@@ -323,7 +323,10 @@ nu = 0.499, sphere, c/a = 1e-8, 1e-7, 1e-6 and 1 - 1e-5, the extrapolated k was 
 9.8e-4, 1.2e-4, 2.2e-5, 1.9e-4 and 1.5e-3, 1.3e-4, 3.4e-5, each within the default
 method's estimate (error / estimate 0.98 at most); at c/a = 1e-5, 1e-4 and 0.9999 the
 extrapolation gained nothing either (sphere, n = 1024: 4.6e-6, 1.6e-6, 3.1e-5 against
-7.3e-7, 2.0e-6, 1.3e-5)."""
+7.3e-7, 2.0e-6, 1.3e-5). The noise bound of these rows (:data:`DIFFERENCE_NOISE`) was
+fitted at n = 256 and 512, where the extrapolated k stays within its estimate; at
+n = 768 and 896 it did not either (nu = 0.4999999, sphere, c/a = 1e-8, 1e-7: 4.6x and
+3.4x, 4.1x and 3.3x short), hence the first n above the fit."""
 
 
 def quadrature_for(n: int) -> str:

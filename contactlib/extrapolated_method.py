@@ -330,7 +330,7 @@ n = 768 and 896 it did not either (nu = 0.4999999, sphere, c/a = 1e-8, 1e-7: 4.6
 
 
 def quadrature_for(n: int) -> str:
-    """The element rules of the difference rows of a solve at finest ``n``
+    """The element rules of the band rows of a solve at finest ``n``
     (:data:`FINE_QUADRATURE_FROM_N`)."""
     return "fine" if n >= FINE_QUADRATURE_FROM_N else "standard"
 

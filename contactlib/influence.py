@@ -34,8 +34,8 @@ the elements beyond 2 lengths alone these classes leave up to ~1e-10 of a row's 
 entry (the shear's u and du/dx; the bound above is the logarithm's, not the disc
 kernels'); ``quadrature="fine"`` (:data:`QUADRATURES`: 16, 12, 10, 8, 6, 4 points from 2,
 3, 5, 12, 40, 100 lengths on) leaves round-off there (1.6e-14). The extrapolated method
-integrates its difference rows so from n = 2048, where the standard classes' bias reached
-k near full stick.
+integrates its band of difference rows around c so from n = 2048, where the standard
+classes' bias reached k near full stick.
 
 Organisation. Every element is integrated once, by its own rule. The (point,
 element) pairs are classified in row blocks and grouped by rule and by side
@@ -70,9 +70,9 @@ logarithm's bound; measured against the "fine" rules on the nodal operators (n =
 c/a = 0.9, sphere and cylinder) its largest error is 4e-13 (pressure) and 1.9e-11 (shear,
 du/dx) of a row's largest entry, and near full stick that bias reaches k: 4.8e-9 at
 c/a = 0.98 (cylinder, nu = 0.4999999, extrapolated method at n = 2048, against the closed
-form, through its difference rows). ``"fine"``: 16, 12, 10, 8, 6 and 4 Gauss points from
+form, through its band rows). ``"fine"``: 16, 12, 10, 8, 6 and 4 Gauss points from
 2, 3, 5, 12, 40 and 100 element lengths on (the near pieces as before): round-off against a
-40-point rule, and that k error is 1.1e-10 with the difference rows integrated so
+40-point rule, and that k error is 1.1e-10 with the band rows integrated so
 (:data:`contactlib.extrapolated_method.FINE_QUADRATURE_FROM_N`). It costs about 1.35-1.4x
 the kernel time of the standard rules."""
 _BLOCK_PAIRS = 1 << 17  # (point, element) pairs classified at once

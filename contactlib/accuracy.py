@@ -167,9 +167,15 @@ def relative_cost(method: str, n: int) -> float:
     return RELATIVE_COST[method] * scale
 
 
-def _cheapest_n(method: str, geometry: str, stick_ratios: Sequence[float],
+def _cheapest_n(method: str, geometry: Contact, stick_ratios: Sequence[float],
                 tolerance: float) -> int | None:
-    """The smallest admissible n whose predicted error is within tolerance / safety."""
+    """The smallest admissible n whose predicted error is within tolerance / safety.
+
+    The default method's prediction includes the noise bound its estimate carries
+    (:func:`default_noise`, from n = 512): at the extremes that bound grows with n, and
+    without it the plan picked an n whose solve could not meet the tolerance (sphere,
+    nu = 0.4999999, c/a = 1e-6, tolerance 3e-6: n = 1792, 19 s, estimate 6.4e-5).
+    """
     step = validate.EXTRAPOLATED_N_MULTIPLE if method == "extrapolated" else 64
     inside = np.array([float(c) for c in stick_ratios if 0.0 < float(c) < 1.0])
     limit = tolerance / PLAN_SAFETY[method]
@@ -182,8 +188,8 @@ def _cheapest_n(method: str, geometry: str, stick_ratios: Sequence[float],
                 + max(_extrapolated_noise(c, n) for c in {inside.min(), inside.max()})
                 <= limit)
         else:
-            meets = all(predicted_method_error(method, geometry, c, n) <= limit
-                        for c in stick_ratios)
+            meets = all(predicted_method_error(method, geometry.indenter.name, c, n)
+                        + default_noise(geometry, c, n) <= limit for c in stick_ratios)
         if meets:
             return n
     return None
@@ -238,7 +244,7 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     if tuple(methods) != ("default",):
         options = []
         for method in methods:
-            n = _cheapest_n(method, geometry.indenter.name, stick_ratios, tol)
+            n = _cheapest_n(method, geometry, stick_ratios, tol)
             if n is not None:
                 options.append((relative_cost(method, n), method, n))
         if options:
@@ -247,11 +253,13 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
         worst = max(stick_ratios, key=lambda c: predicted_error(name, c, 256))
         need = 64 * math.ceil(256.0 * math.sqrt(SAFETY * predicted_error(name, worst, 256)
                                                 / tol) / 64)
-        raise ValueError(f"tolerance {tol:g} is beyond every method: the default method "
-                         f"would need about n = {need} at c/a = {worst:g}, beyond the "
-                         f"largest supported n = {MAX_N}, and the extrapolated method's "
-                         "quadrature noise (from the smallest elements) stays above it at "
-                         "some requested c/a")
+        default_part = (f"the default method would need about n = {need} at c/a = {worst:g}, "
+                        f"beyond the largest supported n = {MAX_N}" if need > MAX_N else
+                        "the default method's quadrature noise (from the smallest elements) "
+                        "stays above it at some requested c/a")
+        raise ValueError(f"tolerance {tol:g} is beyond every method: {default_part}, and the "
+                         "extrapolated method's quadrature noise (from the smallest "
+                         "elements) stays above it at some requested c/a")
     worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
     e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:

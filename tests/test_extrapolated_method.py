@@ -432,6 +432,20 @@ def test_plan_picks_the_cheapest_method_that_meets_the_tolerance():
             accuracy.plan(model, [0.9999], 1e-6, methods=accuracy.PLANNED_METHODS)
 
 
+def test_plan_counts_the_default_methods_noise_at_the_extremes():
+    """At c/a = 1e-6 (nu = 0.4999999) tolerance 3e-6 planned the default method at
+    n = 1792, whose solve took 19 s and ended with an estimate of 6.4e-5 (its noise bound
+    grows with n there): the plan now refuses it at once, naming the noise; 1e-5 is still
+    planned (the extrapolated method at n = 128)."""
+    from contactlib import accuracy
+
+    model = contact("sphere", 0.4999999)
+    with pytest.raises(ValueError, match="default method's quadrature noise"):
+        accuracy.plan(model, [1e-6], 3e-6, methods=accuracy.PLANNED_METHODS)
+    assert accuracy.plan(model, [1e-6], 1e-5, methods=accuracy.PLANNED_METHODS) == (
+        "extrapolated", 128)
+
+
 def test_plan_covers_every_requested_stick_ratio():
     # the extrapolated model's truncation is largest at mid c/a and its noise at the extreme
     # c/a: a sweep over both plans at least the n of each alone (before, only the extreme

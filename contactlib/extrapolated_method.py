@@ -425,6 +425,13 @@ def _band(n: int) -> bool | None:
     return True if n >= BAND_FROM_N else None
 
 
+def _rows(geometry: Contact, mesh: Mesh, n: int) -> tuple:
+    """The difference rows of a level's ``mesh`` in a solve at finest ``n``: every level's
+    alike (the band from :data:`BAND_FROM_N`, its element rules :func:`quadrature_for`)."""
+    return difference_rows(geometry, mesh, band=_band(n), width=BAND_WIDTH,
+                           quadrature=quadrature_for(n))
+
+
 def _next_on_trend(k: float, k_coarser: float) -> float:
     """k on the next finer level from the n^-2 trend of a level and the one below it."""
     return k + (k - k_coarser) / 4.0
@@ -499,9 +506,7 @@ def _retry(geometry: Contact, c: float, ns, meshes, opss, odds, sols, j: int,
            k0: float) -> None:
     """Level j solved again from k0 (relative to sign(beta)); kept where it is good."""
     d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
-               rows=difference_rows(geometry, meshes[j], band=_band(ns[-1]), width=BAND_WIDTH,
-                                    quadrature=quadrature_for(ns[-1])),
-               reversed_side=k0 < 0.0)
+               rows=_rows(geometry, meshes[j], ns[-1]), reversed_side=k0 < 0.0)
     if _good(d):
         if odds[j] is not None:  # as for every level: u, du/dx inside its elements
             x, po, qo = odds[j]
@@ -559,7 +564,6 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     if n % N_MULTIPLE:
         raise ValueError(f"n must be a multiple of {N_MULTIPLE}, got {n}")
     fine = graded_mesh(n, c, store=None if cache is None else cache.meshes)
-    quadrature = quadrature_for(n)
     pw, qw = _fine_ops(geometry, fine, ops, cache)
     meshes, opss, odds = [fine], [(pw, qw)], [None]
     nested = True
@@ -613,8 +617,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
             k0 = _start(geometry, c, meshes[i], sols, i)
         near = (i == LEVELS - 1 or (level_offsets is not None and guess is not None and i > 0)
                 or (guess is None and _trend_start(ns, sols, i)))
-        rows = difference_rows(geometry, meshes[i], band=_band(n), width=BAND_WIDTH,
-                               quadrature=quadrature)  # every level's rows alike
+        rows = _rows(geometry, meshes[i], n)
         if i == LEVELS - 1:  # the noise of the finest level's rows (see quadrature_noise)
             difference = rows != (None, None) and (c <= AXIS_ROWS_BELOW
                                                    or 1.0 - c <= EDGE_ROWS_BELOW)

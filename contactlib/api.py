@@ -10,8 +10,9 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
-from typing import Callable, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -68,9 +69,16 @@ def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_ener
                  message: str = "") -> Solution:
     xi = output_grid()
     work = stages.work_case(geom, rec) if want_energy else float("nan")
+    profile: dict[str, Any] = stages.profiles(geom, rec, xi, displacements=False)
+    # u needs the kernels at every xi: computed when the caller first reads it
+    profile["tangential_displacement"] = functools.partial(_displacement, geom, rec, xi)
     return stages.to_solution(geom, method, n, rec, xi, flags=stages.check_case(rec),
-                              work=work, profile=stages.profiles(geom, rec, xi),
-                              message=message)
+                              work=work, profile=profile, message=message)
+
+
+def _displacement(geom: Geometry, rec: CaseRecord, xi: np.ndarray) -> np.ndarray:
+    """The tangential-displacement profile of a case (its kernel work)."""
+    return stages.profiles(geom, rec, xi, stresses=False)["tangential_displacement"]
 
 
 def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | None = None):

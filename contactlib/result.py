@@ -246,6 +246,27 @@ class CaseRecord:
     max_error: float = float("nan")
 
 
+class _OnAccess:
+    """A dataclass field that may be given as a zero-argument callable: called once, on first
+    access, and its value kept (what costs kernel work is computed when it is read, never for
+    a caller who does not read it). Required like a plain field (no default)."""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._slot = "_" + name + "_value"
+
+    def __get__(self, obj: Any, objtype: type | None = None) -> Any:
+        if obj is None:  # no default: the dataclass keeps the field required
+            raise AttributeError(self._slot)
+        value = obj.__dict__[self._slot]
+        if callable(value):
+            value = value()
+            obj.__dict__[self._slot] = value
+        return value
+
+    def __set__(self, obj: Any, value: Any) -> None:
+        obj.__dict__[self._slot] = value
+
+
 @dataclass(repr=False)
 class Solution:
     """One solved partial-slip case, in the scalings of docs/conventions.md.
@@ -275,7 +296,9 @@ class Solution:
     shear : ndarray
         q / p0, traction on the elastic body, positive away from the axis.
     tangential_displacement : ndarray
-        u R / a^2, positive away from the axis.
+        u R / a^2, positive away from the axis. It needs the kernels at every ``xi`` (about
+        as much work as the rest of a case's post-processing), so :func:`~contactlib.solve`
+        and :func:`~contactlib.sweep` compute it when it is first read, once.
     load_ratio : float
         P / P_Hertz(a).
     frictional_work : float
@@ -332,7 +355,7 @@ class Solution:
     xi: np.ndarray
     pressure: np.ndarray
     shear: np.ndarray
-    tangential_displacement: np.ndarray
+    tangential_displacement: np.ndarray = _OnAccess()  # type: ignore[assignment]
     load_ratio: float
     frictional_work: float = float("nan")
     slip_direction_ok: bool = True

@@ -730,7 +730,12 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
                 flags: dict[str, Any] | None = None, work: float = float("nan"),
                 profile: dict[str, np.ndarray] | None = None,
                 message: str = "") -> Solution:
-    """Assemble a :class:`Solution`; profiles not computed are left as None."""
+    """Assemble a :class:`Solution`; profiles not computed are left as None.
+
+    A profile may be given as a zero-argument callable
+    (``tangential_displacement``: the kernels at every ``xi``); the solution calls it when
+    the profile is first read.
+    """
     profile = profile or {}
     fl = flags or {}
     reversal = ""

@@ -23,6 +23,7 @@ import yaml
 import contactlib
 from conftest import ENV, REPO, dry_run, make_workdir, needs_snakemake
 from contactlib import api, cli, io, stages
+from contactlib.model import contact
 from contactlib.result import Solution, short_repr
 from contactlib.scene import ConfigError, parse_scene, parse_scenes
 
@@ -509,3 +510,28 @@ def test_history_table_shows_the_work_error_estimate() -> None:
     assert f"{res.work_error_estimate[top]:8.1e}" in text.splitlines()[2]
     bare = contactlib.history("sphere", 0.3, 0.2, [0, 1, 0], 10, n=32, error_estimate=False)
     assert "V error" not in cli.format_history(bare)  # no estimate, no column
+
+
+# ----------------------------------------------------------------------------- what is read
+def test_displacement_profile_is_computed_when_read(monkeypatch) -> None:
+    """A sweep asking for k pays no kernel work for u(xi) (the costliest profile) until the
+    caller reads it; then it is the same numbers as the record's profile, computed once."""
+    calls = []
+    real = stages.profiles
+
+    def counting(*args, **kwargs):
+        if kwargs.get("displacements", True):
+            calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(stages, "profiles", counting)
+    sols = contactlib.sweep("sphere", 0.3, [0.3, 0.6], n=32)
+    assert not calls and sols[0].pressure is not None and sols[0].friction_coefficient > 0
+    u = sols[1].tangential_displacement
+    assert len(calls) == 1 and sols[1].tangential_displacement is u  # once, then kept
+    model = contact("sphere", 0.3)
+    rec = stages.solve_cases(model, "default", 32, [0.3, 0.6])[1]  # as the sweep solved it
+    assert np.array_equal(u, real(model, rec, sols[1].xi)["tangential_displacement"])
+    import pickle
+    back = pickle.loads(pickle.dumps(sols[0]))  # a solution not yet read pickles too
+    assert np.array_equal(back.tangential_displacement, sols[0].tangential_displacement)

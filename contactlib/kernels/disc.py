@@ -69,6 +69,11 @@ import numpy as np
 
 from ..theory import beta_of_nu
 
+try:  # the compiled route (setup.py; optional): the same bits, about five times faster
+    from . import _disc_fused as _fused
+except ImportError:  # pragma: no cover - a build without a C compiler
+    _fused = None
+
 __all__ = ["beta_of_nu", "pressure_disc", "shear_disc", "axis_w_disc", "w_difference_disc"]
 
 _C_W = 4.0 / np.pi  # w of the pressure: (4/pi) s E(m) inside, (4/pi) r A(m') outside
@@ -349,11 +354,44 @@ def _shear_chunk_u(r, s, b, w, u, du, ws):
     _shear_chunk(r, s, b, w, u, du, ws, with_du=False)
 
 
+def _fused_chunk(kind: str):
+    """A chunk function of the compiled route (:data:`FUSED`): m1 there, ln(max(m1, tiny))
+    by numpy (as :func:`_params` takes it), the rest there; the same bits as the numpy
+    chunk function it replaces."""
+    stack_in, stack_out = (np.ascontiguousarray(a[:, :, 0]) for a in _STACKS[kind])
+
+    def chunk(r, s, b, w, u, du, ws):
+        lg = ws.f[0, :r.size]
+        _fused.m1(r, s, lg)
+        np.maximum(lg, _TINY, out=lg)
+        np.log(lg, out=lg)
+        if kind == "pressure":
+            _fused.pressure(r, s, lg, b, _C_W, stack_in, stack_out, w, u, du)
+        else:
+            _fused.shear(r, s, lg, b, _C_SHEAR, stack_in, stack_out, w, u, du,
+                         kind == "shear")
+    return chunk
+
+
+# the numpy chunk functions the compiled route replaces, and their replacements
+_FUSED_CHUNKS = {} if _fused is None else {
+    _pressure_chunk: _fused_chunk("pressure"), _shear_chunk: _fused_chunk("shear"),
+    _shear_chunk_u: _fused_chunk("shear_u")}
+FUSED = _fused is not None
+"""Whether the disc kernels (w of the pressure, everything of the shear) run compiled
+(``contactlib/kernels/_disc_fused.c``, built by ``pip install``): point by point the same
+IEEE operations in the same order as the numpy chunk functions here, so the same bits
+(``tests/test_kernels_fused.py``), about five times faster (``benchmarks/bench_kernels.py``).
+Setting it to False selects the numpy route (e.g. to compare)."""
+
+
 def _run(chunk_fn, r, s, nu):
     b = beta_of_nu(nu)
     r, s, shape, bad = _flat(r, s)
     out = np.empty((3, r.size))  # one block: a single allocation for the three outputs
     ws = _SCRATCH
+    if FUSED:
+        chunk_fn = _FUSED_CHUNKS.get(chunk_fn, chunk_fn)
     for a in range(0, r.size, _CHUNK):
         sl = slice(a, a + _CHUNK)
         chunk_fn(r[sl], s[sl], b, out[0, sl], out[1, sl], out[2, sl], ws)

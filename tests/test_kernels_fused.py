@@ -1,0 +1,90 @@
+"""The compiled disc kernels (``contactlib/kernels/_disc_fused.c``) against the numpy route.
+
+The compiled route promises the same bits as the numpy chunk functions of
+:mod:`contactlib.kernels.disc` (the same IEEE operations in the same order, no fused
+multiply-adds), so every comparison here is exact: ``array_equal``, not a tolerance. The
+numpy route itself is checked against independent integrals in ``test_kernels_disc.py``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from contactlib.elements import graded_mesh
+from contactlib.kernels import disc
+from contactlib.model import contact
+from contactlib.operators import nodal_operators
+
+needs_fused = pytest.mark.skipif(not disc.FUSED, reason="the compiled kernels are not built")
+
+
+@pytest.fixture
+def numpy_route(monkeypatch):
+    """Run the block with the numpy route (disc.FUSED False), then restore it."""
+    def call(f, *args, **kwargs):
+        monkeypatch.setattr(disc, "FUSED", False)
+        try:
+            return f(*args, **kwargs)
+        finally:
+            monkeypatch.undo()
+    return call
+
+
+def _points(seed: int = 0, size: int = 200_000) -> tuple[np.ndarray, np.ndarray]:
+    """Random (r, s) with the removable and singular places the kernels treat apart."""
+    rng = np.random.default_rng(seed)
+    r = rng.random(size) * 3.0 - 0.5  # negative r: |r| (a strip axis, symmetric)
+    s = rng.random(size) * 1.5 - 0.1  # s <= 0: zero output
+    k = size // 10
+    r[:k] = s[:k]  # r = s exactly: m1 = 0, du/dr of the shear -inf
+    r[k:2 * k] = s[k:2 * k] * (1.0 + 1e-15 * rng.standard_normal(k))  # r -> s
+    r[2 * k:3 * k] = 0.0  # the axis
+    r[3 * k:4 * k] = s[3 * k:4 * k] * 1e-9  # r << s: m -> 0 inside
+    s[4 * k:5 * k] = r[4 * k:5 * k] * 1e-9  # s << r: m' -> 0 outside
+    order = np.argsort(np.abs(r) <= s, kind="stable")  # runs inside/outside, as in use
+    return np.concatenate([r, r[order]]), np.concatenate([s, s[order]])
+
+
+@needs_fused
+@pytest.mark.parametrize("nu", [0.3, -0.99, 0.5, 0.0])
+@pytest.mark.parametrize("kernel, options", [
+    (disc.pressure_disc, {}), (disc.pressure_disc, {"with_w": False}),
+    (disc.shear_disc, {}), (disc.shear_disc, {"with_du": False})])
+def test_compiled_kernels_give_the_numpy_bits(numpy_route, kernel, options, nu):
+    r, s = _points()
+    got = kernel(r, s, nu, **options)
+    want = numpy_route(kernel, r, s, nu, **options)
+    for name, g, w in zip(("w", "u", "du"), got, want):
+        assert np.array_equal(g, w, equal_nan=True), (name, np.flatnonzero(
+            ~((g == w) | (np.isnan(g) & np.isnan(w))))[:5])
+    on_edge = (np.abs(r) == s) & (s > 0.0)  # the shear's du/dr is -inf there, and only there
+    assert on_edge.sum() > 1000
+    if kernel is disc.shear_disc and not options:
+        assert np.array_equal(np.isneginf(got[2]), on_edge)
+
+
+@needs_fused
+def test_compiled_kernels_give_the_numpy_operators(numpy_route):
+    """The sphere's nodal operators (every kernel route, through influence) bit for bit."""
+    model, mesh = contact("sphere", 0.3), graded_mesh(64, 0.4)
+    got = nodal_operators(model, mesh)
+    want = numpy_route(nodal_operators, model, mesh)
+    for g, w in zip(got, want):
+        assert np.array_equal(g, w, equal_nan=True)
+
+
+@needs_fused
+def test_compiled_kernels_refuse_bad_buffers():
+    """Wrong lengths or types are errors, never a read past an array."""
+    from contactlib.kernels import _disc_fused as fused
+
+    r = np.ones(4)
+    with pytest.raises(ValueError, match="expected 4"):
+        fused.m1(r, np.ones(3), np.empty(4))
+    with pytest.raises(TypeError, match="float64"):
+        fused.m1(r, np.ones(4, dtype=np.float32), np.empty(4))
+    stack = np.ones((11, 2))
+    with pytest.raises(ValueError, match="stack_in has 22 values, expected 44"):
+        fused.shear(r, r, r, 0.1, 1.0, stack, stack, np.empty(4), np.empty(4), np.empty(4),
+                    True)

@@ -8,8 +8,8 @@ gives the same bits, about five times more slowly.
 from setuptools import Extension, setup
 
 setup(ext_modules=[Extension(
-    "contactlib.kernels._disc_fused",
-    sources=["contactlib/kernels/_disc_fused.c"],
+    "contactlib.kernels.disc_fused",
+    sources=["contactlib/kernels/disc_fused.c"],
     # IEEE operations as written: no fused multiply-adds, no reassociation (the same bits
     # as the numpy route)
     extra_compile_args=["-O3", "-ffp-contract=off", "-fno-fast-math"],

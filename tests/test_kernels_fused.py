@@ -1,4 +1,4 @@
-"""The compiled disc kernels (``contactlib/kernels/_disc_fused.c``) against the numpy route.
+"""The compiled disc kernels (``contactlib/kernels/disc_fused.c``) against the numpy route.
 
 The compiled route promises the same bits as the numpy chunk functions of
 :mod:`contactlib.kernels.disc` (the same IEEE operations in the same order, no fused
@@ -77,7 +77,7 @@ def test_compiled_kernels_give_the_numpy_operators(numpy_route):
 @needs_fused
 def test_compiled_kernels_refuse_bad_buffers():
     """Wrong lengths or types are errors, never a read past an array."""
-    from contactlib.kernels import _disc_fused as fused
+    from contactlib.kernels import disc_fused as fused
 
     r = np.ones(4)
     with pytest.raises(ValueError, match="expected 4"):

@@ -70,7 +70,7 @@ import numpy as np
 from ..theory import beta_of_nu
 
 try:  # the compiled route (setup.py; optional): the same bits, about five times faster
-    from . import _disc_fused as _fused
+    from . import disc_fused as _fused
 except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 
@@ -379,7 +379,7 @@ _FUSED_CHUNKS = {} if _fused is None else {
     _shear_chunk_u: _fused_chunk("shear_u")}
 FUSED = _fused is not None
 """Whether the disc kernels (w of the pressure, everything of the shear) run compiled
-(``contactlib/kernels/_disc_fused.c``, built by ``pip install``): point by point the same
+(``contactlib/kernels/disc_fused.c``, built by ``pip install``): point by point the same
 IEEE operations in the same order as the numpy chunk functions here, so the same bits
 (``tests/test_kernels_fused.py``), about five times faster (``benchmarks/bench_kernels.py``).
 Setting it to False selects the numpy route (e.g. to compare)."""

@@ -306,8 +306,8 @@ static PyMethodDef methods[] = {
      "shear's kernels."},
     {NULL, NULL, 0, NULL}};
 
-static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_disc_fused",
+static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "disc_fused",
                                     "Fused disc kernels (see contactlib.kernels.disc).", -1,
                                     methods, NULL, NULL, NULL, NULL};
 
-PyMODINIT_FUNC PyInit__disc_fused(void) { return PyModule_Create(&module); }
+PyMODINIT_FUNC PyInit_disc_fused(void) { return PyModule_Create(&module); }

@@ -1,17 +1,18 @@
-"""Build of the one compiled part of contactlib: the fused disc kernels.
+"""Build of the compiled parts of contactlib: the fused disc kernels and the fused
+element-integrals-to-operators step.
 
-Everything else is in pyproject.toml. The extension is optional: where it cannot be built
-(no C compiler), contactlib uses the numpy route of :mod:`contactlib.kernels.disc`, which
-gives the same bits, about five times more slowly.
+Everything else is in pyproject.toml. The extensions are optional: where they cannot be
+built (no C compiler), contactlib uses the numpy routes of :mod:`contactlib.kernels.disc`
+and :func:`contactlib.influence.apply_difference`, which give the same bits, more slowly.
 """
 
 from setuptools import Extension, setup
 
-setup(ext_modules=[Extension(
-    "contactlib.kernels.disc_fused",
-    sources=["contactlib/kernels/disc_fused.c"],
-    # IEEE operations as written: no fused multiply-adds, no reassociation (the same bits
-    # as the numpy route)
-    extra_compile_args=["-O3", "-ffp-contract=off", "-fno-fast-math"],
-    optional=True,
-)])
+# IEEE operations as written: no fused multiply-adds, no reassociation (the same bits as
+# the numpy routes)
+FLAGS = ["-O3", "-ffp-contract=off", "-fno-fast-math"]
+
+setup(ext_modules=[
+    Extension(name, sources=[source], extra_compile_args=FLAGS, optional=True)
+    for name, source in (("contactlib.kernels.disc_fused", "contactlib/kernels/disc_fused.c"),
+                         ("contactlib.influence_fused", "contactlib/influence_fused.c"))])

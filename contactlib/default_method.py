@@ -150,7 +150,7 @@ class DiscreteSolution(SelfSimilarSolution):
     ``p`` the nodal pressure (p[-1] = 0), ``traction`` the nodal shear
     coefficient phi (q = shape phi, phi[-1] = 0), ``nodal_u``/``nodal_du``
     from the solve's own operators; ``interior_samples`` (a nested coarse
-    mesh: its elements' fine nodes) replace the midpoints of the slip samples.
+    mesh: its slip elements' fine nodes) replace the midpoints of the slip samples.
     """
 
     kind = "default"
@@ -239,7 +239,7 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
         xn = r[m:]
         h = np.diff(xn)
         if sol.interior_samples is not None:
-            mid, u_mid, du_mid = (v[m:] for v in sol.interior_samples)
+            mid, u_mid, du_mid = sol.interior_samples  # (the slip zone's elements only)
         else:
             mid = 0.5 * (xn[:-1] + xn[1:])
             u_mid, du_mid = sol.tangential(mid)

@@ -61,8 +61,8 @@ class SelfSimilarSolution(ABC):
     round_off : float
         Last relative Newton step when Newton stopped on the round-off floor.
     interior_samples : tuple of ndarray or None
-        (x, u, du/dx) at one interior point of every element, when known
-        without the kernels (a nested coarse mesh).
+        (x, u, du/dx) at one interior point of every element of the slip zone (from
+        c to a), when known without the kernels (a nested coarse mesh).
     """
 
     __repr__ = short_repr  # a few lines: scalars, arrays by shape

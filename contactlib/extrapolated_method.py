@@ -510,7 +510,7 @@ def _retry(geometry: Contact, c: float, ns, meshes, opss, odds, sols, j: int,
     if _good(d):
         if odds[j] is not None:  # as for every level: u, du/dx inside its elements
             x, po, qo = odds[j]
-            d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)
+            d.interior_samples = (x, po[0] @ d.p + qo[0] @ d.phi, po[1] @ d.p + qo[1] @ d.phi)
         sols[j] = d
 
 
@@ -571,8 +571,10 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         mesh = meshes[-1]
         if mesh.n % 2 == 0 and mesh.stick_index % 2 == 0:  # every other node: nested
             sub = Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
-            (pc, po), (qc, qo) = (restrict_nested(o, mesh) for o in opss[-1])
-            odd = (mesh.nodes[1::2], po, qo)
+            first = mesh.stick_index // 2  # the odd nodes of the slip zone: its samples
+            (pc, po), (qc, qo) = (restrict_nested(o, mesh, odd_parts=(1, 2), odd_from=first)
+                                  for o in opss[-1])
+            odd = (mesh.nodes[2 * first + 1::2], po, qo)
         else:  # a mesh scaled back to MAX_ELEMENTS: its own operators, not nested
             nested = False
             sub = graded_mesh(n // 2 ** len(meshes), c)
@@ -628,7 +630,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
             side = -1.0
         if odds[i] is not None:
             x, po, qo = odds[i]
-            d.interior_samples = (x, po[1] @ d.p + qo[1] @ d.phi, po[2] @ d.p + qo[2] @ d.phi)
+            d.interior_samples = (x, po[0] @ d.p + qo[0] @ d.phi, po[1] @ d.p + qo[1] @ d.phi)
         sols[i] = d
     top = sols[-1]
     out = ExtrapolatedSolution(**{f: getattr(top, f) for f in (

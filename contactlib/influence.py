@@ -54,6 +54,17 @@ from collections.abc import Callable
 
 import numpy as np
 
+try:  # the compiled route of apply_difference (setup.py; optional): the same bits
+    from . import influence_fused as _fused
+except ImportError:  # pragma: no cover - a build without a C compiler
+    _fused = None
+
+FUSED = _fused is not None
+"""Whether :func:`apply_difference` runs compiled (``contactlib/influence_fused.c``, built by
+``pip install``): the same divisions and subtractions on the same operands as its numpy
+route, so the same bits, in one pass a row (``tests/test_kernels_fused.py``). False selects
+the numpy route."""
+
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
 __all__ = ["apply_difference", "element_integrals", "QUADRATURES"]
@@ -384,6 +395,9 @@ def apply_difference(g: np.ndarray, nodes: np.ndarray, out: np.ndarray | None = 
         out = np.empty(g.shape[:-1] + (n + 1,))
     g2 = g.reshape(-1, n)
     o2 = out.reshape(-1, n + 1)
+    if FUSED and g2.dtype == np.float64 and o2.dtype == np.float64:
+        _fused.difference(g2, np.ascontiguousarray(h), o2)  # one pass a row, the same bits
+        return out
     step = max(1, 16384 // max(n, 1))  # rows at a time: small temporaries
     for a in range(0, g2.shape[0], step):
         scaled = g2[a:a + step] / h

@@ -450,17 +450,18 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
                   and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))
         odd = None
         if nested:
-            (pw, pw_odd), (qw, qw_odd) = (restrict_nested(ops[0], mesh),
-                                          restrict_nested(ops[1], mesh))
-            odd = (mesh.nodes[1::2], pw_odd, qw_odd)
+            first = mesh.stick_index // 2  # u, du/dx at the odd nodes of the slip zone
+            (pw, pw_odd), (qw, qw_odd) = (
+                restrict_nested(o, mesh, odd_parts=(1, 2), odd_from=first) for o in ops)
+            odd = (mesh.nodes[2 * first + 1::2], pw_odd, qw_odd)
             ops, mesh = (pw, qw), sub
         else:
             ops = None
         d = solve_default(geometry, c, m, k_guess=guess, ops=ops, cache=cache)
-        if odd is not None:  # u, du/dx inside each coarse element, from the fine operators
+        if odd is not None:  # u, du/dx inside each coarse slip element, from the fine operators
             x, pw_odd, qw_odd = odd
-            d.interior_samples = (x, pw_odd[1] @ d.p + qw_odd[1] @ d.phi,
-                                  pw_odd[2] @ d.p + qw_odd[2] @ d.phi)
+            d.interior_samples = (x, pw_odd[0] @ d.p + qw_odd[0] @ d.phi,
+                                  pw_odd[1] @ d.p + qw_odd[1] @ d.phi)
         out[m] = d
         if d.converged and d.k > 0.0:
             guess = d.oriented_k  # (negative when the slip runs against sign(beta))

@@ -377,6 +377,13 @@ def test_restriction_in_row_blocks_is_bit_for_bit(monkeypatch):
         got = operators.restrict_nested(op, mesh)
         assert np.array_equal(got[0], want[:, ::2, :], equal_nan=True)
         assert np.array_equal(got[1], want[:, 1::2, :], equal_nan=True)
+        # the slip zone's u and du/dx alone (what the coarse levels' samples use): the
+        # same bits, the rest not computed
+        first = mesh.stick_index // 2
+        part = operators.restrict_nested(op, mesh, odd_parts=(1, 2), odd_from=first)
+        assert np.array_equal(part[0], want[:, ::2, :], equal_nan=True)
+        assert np.array_equal(part[1], want[1:, 1::2, :][:, first:], equal_nan=True)
+        assert part[1].shape == (2, mesh.n // 2 - first, mesh.n // 2 + 1)
 
 
 def test_band_rows_from_n512_only():

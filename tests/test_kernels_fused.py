@@ -11,19 +11,22 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from contactlib import influence
 from contactlib.elements import graded_mesh
 from contactlib.kernels import disc
 from contactlib.model import contact
 from contactlib.operators import nodal_operators
 
-needs_fused = pytest.mark.skipif(not disc.FUSED, reason="the compiled kernels are not built")
+needs_fused = pytest.mark.skipif(not (disc.FUSED and influence.FUSED),
+                                 reason="the compiled parts are not built")
 
 
 @pytest.fixture
 def numpy_route(monkeypatch):
-    """Run the block with the numpy route (disc.FUSED False), then restore it."""
+    """Run the block with the numpy routes (disc.FUSED, influence.FUSED False), then restore."""
     def call(f, *args, **kwargs):
         monkeypatch.setattr(disc, "FUSED", False)
+        monkeypatch.setattr(influence, "FUSED", False)
         try:
             return f(*args, **kwargs)
         finally:
@@ -88,3 +91,20 @@ def test_compiled_kernels_refuse_bad_buffers():
     with pytest.raises(ValueError, match="stack_in has 22 values, expected 44"):
         fused.shear(r, r, r, 0.1, 1.0, stack, stack, np.empty(4), np.empty(4), np.empty(4),
                     True)
+
+
+@needs_fused
+def test_compiled_difference_gives_the_numpy_bits(numpy_route):
+    """apply_difference: a fresh output, and in place (g the first N columns of out)."""
+    rng = np.random.default_rng(3)
+    nodes = np.concatenate([[0.0], np.cumsum(rng.random(40) ** 3 + 1e-12)])
+    g = rng.standard_normal((3, 17, 40)) * 10.0 ** rng.integers(-12, 3, (3, 17, 1))
+    want = numpy_route(influence.apply_difference, g, nodes)
+    assert np.array_equal(influence.apply_difference(g, nodes), want)
+    both = np.empty((3, 17, 41))
+    both[:, :, :40] = g
+    influence.apply_difference(both[:, :, :40], nodes, out=both)
+    assert np.array_equal(both, want)
+    with pytest.raises(ValueError, match="difference needs"):
+        from contactlib import influence_fused
+        influence_fused.difference(np.ones((2, 3)), np.ones(2), np.empty((2, 4)))

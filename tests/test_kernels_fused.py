@@ -1,4 +1,5 @@
-"""The compiled disc kernels (``contactlib/kernels/disc_fused.c``) against the numpy route.
+"""The compiled parts (``contactlib/kernels/disc_fused.c``, ``strip_fused.c``,
+``contactlib/influence_fused.c``) against the numpy routes they replace.
 
 The compiled route promises the same bits as the numpy chunk functions of
 :mod:`contactlib.kernels.disc` (the same IEEE operations in the same order, no fused
@@ -13,11 +14,11 @@ import pytest
 
 from contactlib import influence
 from contactlib.elements import graded_mesh
-from contactlib.kernels import disc
+from contactlib.kernels import disc, strip
 from contactlib.model import contact
 from contactlib.operators import nodal_operators
 
-needs_fused = pytest.mark.skipif(not (disc.FUSED and influence.FUSED),
+needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.FUSED),
                                  reason="the compiled parts are not built")
 
 
@@ -25,8 +26,8 @@ needs_fused = pytest.mark.skipif(not (disc.FUSED and influence.FUSED),
 def numpy_route(monkeypatch):
     """Run the block with the numpy routes (disc.FUSED, influence.FUSED False), then restore."""
     def call(f, *args, **kwargs):
-        monkeypatch.setattr(disc, "FUSED", False)
-        monkeypatch.setattr(influence, "FUSED", False)
+        for module in (disc, strip, influence):
+            monkeypatch.setattr(module, "FUSED", False)
         try:
             return f(*args, **kwargs)
         finally:
@@ -68,9 +69,24 @@ def test_compiled_kernels_give_the_numpy_bits(numpy_route, kernel, options, nu):
 
 
 @needs_fused
-def test_compiled_kernels_give_the_numpy_operators(numpy_route):
-    """The sphere's nodal operators (every kernel route, through influence) bit for bit."""
-    model, mesh = contact("sphere", 0.3), graded_mesh(64, 0.4)
+@pytest.mark.parametrize("nu", [0.3, -0.99, 0.5])
+@pytest.mark.parametrize("kernel", [strip.pressure_strip, strip.shear_strip])
+def test_compiled_strip_kernels_give_the_numpy_bits(numpy_route, kernel, nu):
+    """The half-plane (and, through it, the slab's) strip kernels, edges and axis included."""
+    r, s = _points(1)
+    s = np.abs(s)  # (a strip's half-width is refused below 0)
+    for h in (np.inf, 0.7):
+        got = kernel(r, s, nu, h)
+        want = numpy_route(kernel, r, s, nu, h)
+        for name, g, w in zip(("w", "u", "du"), got, want):
+            assert np.array_equal(g, w, equal_nan=True), (name, h)
+
+
+@needs_fused
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_compiled_kernels_give_the_numpy_operators(numpy_route, geometry):
+    """The nodal operators (every kernel route, through influence) bit for bit."""
+    model, mesh = contact(geometry, 0.3), graded_mesh(64, 0.4)
     got = nodal_operators(model, mesh)
     want = numpy_route(nodal_operators, model, mesh)
     for g, w in zip(got, want):

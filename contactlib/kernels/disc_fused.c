@@ -13,20 +13,11 @@
  * (degree + 1) x rows, highest degree first, rows (P, R) of each fitted function, as
  * disc._stack builds them.
  */
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
+#include "fused_buffers.h"
 #include <math.h>
 
 #define NC 11 /* coefficients of each polynomial (degree 10) */
 
-/* The loops over points are built twice where the compiler can (x86-64 with GCC or Clang):
- * for AVX2 and for the baseline, chosen at load time. AVX2 here means wider vectors of the
- * same IEEE multiplications and additions (no FMA: -ffp-contract=off), so the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define CLONES
-#endif
 #define INLINE static inline __attribute__((always_inline))
 
 typedef struct {
@@ -95,38 +86,6 @@ INLINE void block_log_form(const double *sin_, const double *sout, int rows, int
     }
 }
 
-typedef struct {
-    Py_buffer b[10];
-    int n;
-} bufs_t;
-
-static void release(bufs_t *bs)
-{
-    for (int i = 0; i < bs->n; i++)
-        PyBuffer_Release(&bs->b[i]);
-    bs->n = 0;
-}
-
-/* get a contiguous float64 buffer of `k` doubles (k < 0: any length, set k) */
-static double *get(bufs_t *bs, PyObject *obj, int writable, Py_ssize_t *k, const char *name)
-{
-    Py_buffer *v = &bs->b[bs->n];
-    int flags = PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | (writable ? PyBUF_WRITABLE : 0);
-    if (PyObject_GetBuffer(obj, v, flags) != 0)
-        return NULL;
-    bs->n++;
-    if (v->itemsize != 8 || v->format == NULL || strcmp(v->format, "d") != 0) {
-        PyErr_Format(PyExc_TypeError, "%s must be a contiguous float64 array", name);
-        return NULL;
-    }
-    Py_ssize_t len = v->len / 8;
-    if (*k >= 0 && len != *k) {
-        PyErr_Format(PyExc_ValueError, "%s has %zd values, expected %zd", name, len, *k);
-        return NULL;
-    }
-    *k = len;
-    return (double *)v->buf;
-}
 
 /* m1(r, s, out): 1 - q^2 as disc._params forms it */
 static PyObject *py_m1(PyObject *Py_UNUSED(self), PyObject *args)

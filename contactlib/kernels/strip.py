@@ -619,6 +619,44 @@ def _hp_shear(x: Arr, s: Arr, b: float) -> tuple[Arr, Arr, Arr]:
     return w, u, du
 
 
+try:  # the compiled route (setup.py; optional): the same bits, the arithmetic in one pass
+    from . import strip_fused as _fused
+except ImportError:  # pragma: no cover - a build without a C compiler
+    _fused = None
+FUSED = _fused is not None
+"""Whether the half-plane strip kernels run their arithmetic compiled
+(``contactlib/kernels/strip_fused.c``, built by ``pip install``), the logarithms by numpy
+between two passes: the same IEEE operations in the same order as :func:`_hp_pressure` and
+:func:`_hp_shear`, so the same bits (``tests/test_kernels_fused.py``). False selects the
+numpy route."""
+_LN4 = 2.0 * np.log(2.0)  # g(s) = 2 s ln 2 of the shear (as _hp_shear forms it)
+
+
+def _hp_pressure_fused(x: Arr, s: Arr, b: float) -> tuple[Arr, Arr, Arr]:
+    """:func:`_hp_pressure` by the compiled route (:data:`FUSED`)."""
+    x, s = np.ascontiguousarray(x), np.ascontiguousarray(s)
+    lp, q = np.empty(x.size), np.empty(x.size)
+    _fused.args(False, x, s, lp, q)
+    np.log(lp, out=lp)
+    np.log1p(q, out=q)
+    w, u, du = np.empty(x.size), np.empty(x.size), np.empty(x.size)
+    _fused.finish(False, x, s, lp, q, b, _TWO_PI, _LN4, w, u, du)
+    return w, u, du
+
+
+def _hp_shear_fused(x: Arr, s: Arr, b: float) -> tuple[Arr, Arr, Arr]:
+    """:func:`_hp_shear` by the compiled route (:data:`FUSED`)."""
+    x, s = np.ascontiguousarray(x), np.ascontiguousarray(s)
+    q, l1, far_arg = np.empty(x.size), np.empty(x.size), np.empty(x.size)
+    _fused.args(True, x, s, q, l1, far_arg)
+    np.log1p(q, out=q)
+    np.log(l1, out=l1)
+    np.log1p(far_arg, out=l1, where=np.abs(x) > 2.0 * s)  # far field, no cancellation
+    w, u, du = np.empty(x.size), np.empty(x.size), np.empty(x.size)
+    _fused.finish(True, x, s, q, l1, b, _TWO_PI, _LN4, w, u, du)
+    return w, u, du
+
+
 # --- slab remainders (chunk level) ---------------------------------------------
 def _slab_pressure(x: Arr, s: Arr, h: float, tab: _SlabTable, out_w: Arr, out_u: Arr,
                    out_du: Arr) -> NDArray[np.bool_]:
@@ -734,6 +772,8 @@ def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float,
     if slab:
         tab = _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
     hp = _hp_pressure if kind == "pressure" else _hp_shear
+    if FUSED:
+        hp = _hp_pressure_fused if kind == "pressure" else _hp_shear_fused
     ops: list = [x, s]
     dtypes: list = [np.float64, np.float64]
     centre = False

@@ -55,12 +55,12 @@ from collections.abc import Callable
 import numpy as np
 
 try:  # the compiled route of apply_difference (setup.py; optional): the same bits
-    from . import influence_fused as _fused
+    from . import operators_fused as _fused
 except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 
 FUSED = _fused is not None
-"""Whether :func:`apply_difference` runs compiled (``contactlib/influence_fused.c``, built by
+"""Whether :func:`apply_difference` runs compiled (``contactlib/operators_fused.c``, built by
 ``pip install``): the same divisions and subtractions on the same operands as its numpy
 route, so the same bits, in one pass a row (``tests/test_kernels_fused.py``). False selects
 the numpy route."""

@@ -63,6 +63,15 @@ PARTS = ("normal", "shear")
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
 _SMOOTH_PANEL = 0.5  # longest panel, in layer thicknesses
 _RESTRICT_BLOCK = 1 << 16  # entries of restrict_nested's scratch (512 kB)
+try:  # the compiled route of restrict_nested (setup.py; optional): the same bits
+    from . import operators_fused as _fused
+except ImportError:  # pragma: no cover - a build without a C compiler
+    _fused = None
+FUSED = _fused is not None
+"""Whether :func:`restrict_nested` combines the columns compiled
+(``contactlib/operators_fused.c``, built by ``pip install``): the same products and sums on
+the same operands as its numpy route, so the same bits, in one pass a row
+(``tests/test_kernels_fused.py``). False selects the numpy route."""
 
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
@@ -370,7 +379,12 @@ def restrict_nested(op: np.ndarray, fine: Mesh, odd_parts: tuple[int, ...] | Non
 def _restrict_columns(rows: np.ndarray, left: np.ndarray, right: np.ndarray,
                       out: np.ndarray) -> None:
     """out = the fine columns of ``rows`` combined into the coarse ones (rows a block at a
-    time: small scratch, the same operations as on the whole array)."""
+    time: small scratch, the same operations as on the whole array; compiled where built,
+    :data:`FUSED`: one pass a row, the same bits)."""
+    if FUSED and rows.shape[0] and rows.strides[1] == rows.itemsize:
+        with np.errstate(invalid="ignore"):
+            _fused.restrict(rows, left, right, out)
+        return
     even, odd = rows[:, ::2], rows[:, 1::2]
     step = max(1, _RESTRICT_BLOCK // max(odd.shape[-1], 1))
     tmp = np.empty((min(step, odd.shape[0]), odd.shape[-1]))

@@ -1,5 +1,5 @@
 """The compiled parts (``contactlib/kernels/disc_fused.c``, ``strip_fused.c``,
-``contactlib/influence_fused.c``) against the numpy routes they replace.
+``contactlib/operators_fused.c``) against the numpy routes they replace.
 
 The compiled route promises the same bits as the numpy chunk functions of
 :mod:`contactlib.kernels.disc` (the same IEEE operations in the same order, no fused
@@ -12,13 +12,14 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contactlib import influence
+from contactlib import influence, operators
 from contactlib.elements import graded_mesh
 from contactlib.kernels import disc, strip
 from contactlib.model import contact
 from contactlib.operators import nodal_operators
 
-needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.FUSED),
+needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.FUSED
+                                      and operators.FUSED),
                                  reason="the compiled parts are not built")
 
 
@@ -26,7 +27,7 @@ needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.F
 def numpy_route(monkeypatch):
     """Run the block with the numpy routes (disc.FUSED, influence.FUSED False), then restore."""
     def call(f, *args, **kwargs):
-        for module in (disc, strip, influence):
+        for module in (disc, strip, influence, operators):
             monkeypatch.setattr(module, "FUSED", False)
         try:
             return f(*args, **kwargs)
@@ -122,5 +123,16 @@ def test_compiled_difference_gives_the_numpy_bits(numpy_route):
     influence.apply_difference(both[:, :, :40], nodes, out=both)
     assert np.array_equal(both, want)
     with pytest.raises(ValueError, match="difference needs"):
-        from contactlib import influence_fused
-        influence_fused.difference(np.ones((2, 3)), np.ones(2), np.empty((2, 4)))
+        from contactlib import operators_fused
+        operators_fused.difference(np.ones((2, 3)), np.ones(2), np.empty((2, 4)))
+
+
+@needs_fused
+def test_compiled_restriction_gives_the_numpy_bits(numpy_route):
+    """restrict_nested (both parts' operators, NaN du/dx on a strip axis included)."""
+    mesh = graded_mesh(64, 0.5)
+    for op in operators.nodal_operators(contact("cylinder", 0.3), mesh):
+        want = numpy_route(operators.restrict_nested, op, mesh)
+        got = operators.restrict_nested(op, mesh)
+        for g, w in zip(got, want):
+            assert np.array_equal(g, w, equal_nan=True)

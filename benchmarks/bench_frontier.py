@@ -14,7 +14,8 @@ times of this process (``time.process_time``; one thread, so the work done):
 wall-clock ratios swung by up to 40 % with the other jobs on the machine.
 
 a. **k to 1e-6 in a sweep.** ``contactlib.sweep`` (the public API: solve,
-   flags, error estimates, profiles, work) over 12 stick ratios 0.02 ... 0.98
+   flags, error estimates, stress profiles, work; the displacement profile is
+   computed when a caller first reads it) over 12 stick ratios 0.02 ... 0.98
    with ``method="extrapolated"`` at its default n = 256 (k error at most
    6.0e-7 at c/a = 0.1 ... 0.9, nu = 0 ... 0.45, against
    tests/data/frontier_reference.json), per case, in units of one dense LU of

@@ -136,3 +136,17 @@ def test_compiled_restriction_gives_the_numpy_bits(numpy_route):
         got = operators.restrict_nested(op, mesh)
         for g, w in zip(got, want):
             assert np.array_equal(g, w, equal_nan=True)
+
+
+@needs_fused
+@pytest.mark.parametrize("r0", [0.2, 0.5, 0.999])
+def test_compiled_w_differences_give_the_numpy_bits(numpy_route, r0):
+    """w(r) - w(r0) of the pressure (Gauss integrals of dw/dr, E - K near and at m = 1)."""
+    r, s = _points(2, 50_000)
+    r, s = np.abs(r), np.abs(s)
+    r[:500] = r0  # r = r0: an empty interval
+    s[500:1000] = r0  # the disc edge at the reference point
+    got = disc.w_difference_disc(r, r0, s, 0.3, "normal")
+    want = numpy_route(disc.w_difference_disc, r, r0, s, 0.3, "normal")
+    for g, w in zip(got, want):
+        assert np.array_equal(g, w, equal_nan=True)

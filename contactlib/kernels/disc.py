@@ -713,6 +713,9 @@ def _dwdr_pressure(t: np.ndarray, s: np.ndarray) -> np.ndarray:
         for a in range(0, t2.shape[1], _ELL_CHUNK):
             tt, ss = t2[i, a:a + _ELL_CHUNK], s2[i, a:a + _ELL_CHUNK]
             k = tt.size
+            if FUSED:
+                _dwdr_fused(tt, ss, ws, o2[i, a:a + k])
+                continue
             big, small, q, m1, diff, fac = ws.f[3:9, :k]
             np.maximum(tt, ss, out=big)
             np.minimum(tt, ss, out=small)
@@ -732,6 +735,28 @@ def _dwdr_pressure(t: np.ndarray, s: np.ndarray) -> np.ndarray:
             fac *= _C_W
             np.multiply(fac, diff, out=o2[i, a:a + k])
     return out
+
+
+_E_MINUS_K_ROWS = np.ascontiguousarray(_E_MINUS_K[:, :, 0])  # (11, 2) for the compiled route
+
+
+def _dwdr_fused(tt: np.ndarray, ss: np.ndarray, ws: _EllScratch, out: np.ndarray) -> None:
+    """One chunk of :func:`_dwdr_pressure` by the compiled route (:data:`FUSED`): m1 there,
+    ln(m1) by numpy, E - K and the factor there, the points outside Cephes' main branch by
+    :func:`_ellipe` and :func:`_ellipkm1` as :func:`_e_minus_k` takes them; the same bits."""
+    tt, ss = np.ascontiguousarray(tt), np.ascontiguousarray(ss)
+    k = tt.size
+    m1, lg, diff, fac = ws.f[3:7, :k]
+    _fused.ell_m1(tt, ss, m1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.log(m1, out=lg)
+    _fused.dwdr(tt, ss, m1, lg, _E_MINUS_K_ROWS, _C_W, diff, fac)
+    if k and not (m1.min() > _MACHEP and m1.max() <= 1.0):
+        odd = ~((m1 > _MACHEP) & (m1 <= 1.0))
+        mo = m1[odd]
+        with np.errstate(invalid="ignore"):
+            diff[odd] = _ellipe(1.0 - mo) - _ellipkm1(mo)
+    np.multiply(fac, diff, out=out)
 
 
 def w_difference_disc(r, r0: float, s, nu: float,

@@ -255,8 +255,109 @@ static PyObject *py_shear(PyObject *Py_UNUSED(self), PyObject *args)
     Py_RETURN_NONE;
 }
 
+/* dw/dr of the unit pressure disc (disc._dwdr_pressure): m1 of its E(1 - m1) - K(1 - m1)
+ * (no |t|: t >= 0 there), then E - K = P(m1) - ln(m1) Q(m1) and the factor (4/pi)(s/t
+ * inside, s at t = 0 inside, 1 outside), the numpy route's operations */
+CLONES static void ell_m1_work(const double *t, const double *s, double *m1, Py_ssize_t k)
+{
+    for (Py_ssize_t i = 0; i < k; i++) {
+        double big = t[i] >= s[i] ? t[i] : s[i], small = t[i] <= s[i] ? t[i] : s[i];
+        double q = small / big, m = big - small;
+        m = m / big;
+        q = q + 1.0;
+        m1[i] = m * q;
+    }
+}
+
+CLONES static void dwdr_work(const double *t, const double *s, const double *m1,
+                             const double *lg, const double *stack, double c_w, double *diff,
+                             double *fac, Py_ssize_t k)
+{
+    for (Py_ssize_t i0 = 0; i0 < k; i0 += BLOCK) {
+        int n = k - i0 < BLOCK ? (int)(k - i0) : BLOCK;
+        double p[BLOCK], q[BLOCK];
+        const double *x = m1 + i0;
+        for (int i = 0; i < n; i++) {
+            p[i] = stack[0] * x[i];
+            q[i] = stack[1] * x[i];
+            p[i] = p[i] + stack[2];
+            q[i] = q[i] + stack[3];
+        }
+        for (int j = 2; j < NC; j++) {
+            const double a = stack[2 * j], b = stack[2 * j + 1];
+            for (int i = 0; i < n; i++) {
+                p[i] = p[i] * x[i];
+                q[i] = q[i] * x[i];
+                p[i] = p[i] + a;
+                q[i] = q[i] + b;
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            double l = lg[i0 + i] * q[i];
+            diff[i0 + i] = p[i] - l;
+        }
+    }
+    for (Py_ssize_t i = 0; i < k; i++) {
+        double f = 1.0;
+        if (t[i] < s[i])
+            f = t[i] > 0.0 ? s[i] / t[i] : s[i];
+        fac[i] = f * c_w;
+    }
+}
+
+/* ell_m1(t, s, out) */
+static PyObject *py_ell_m1(PyObject *Py_UNUSED(self), PyObject *args)
+{
+    PyObject *o[3];
+    bufs_t bs = {.n = 0};
+    Py_ssize_t k = -1;
+    if (!PyArg_ParseTuple(args, "OOO", &o[0], &o[1], &o[2]))
+        return NULL;
+    double *t = get(&bs, o[0], 0, &k, "t"), *s = t ? get(&bs, o[1], 0, &k, "s") : NULL;
+    double *out = s ? get(&bs, o[2], 1, &k, "out") : NULL;
+    if (out == NULL) {
+        release(&bs);
+        return NULL;
+    }
+    Py_BEGIN_ALLOW_THREADS
+    ell_m1_work(t, s, out, k);
+    Py_END_ALLOW_THREADS
+    release(&bs);
+    Py_RETURN_NONE;
+}
+
+/* dwdr(t, s, m1, lg, stack, c_w, diff, fac): stack (11, 2) the rows (P, Q) of E - K */
+static PyObject *py_dwdr(PyObject *Py_UNUSED(self), PyObject *args)
+{
+    PyObject *o[7];
+    double c_w;
+    bufs_t bs = {.n = 0};
+    Py_ssize_t k = -1, ks = 2 * NC;
+    if (!PyArg_ParseTuple(args, "OOOOOdOO", &o[0], &o[1], &o[2], &o[3], &o[4], &c_w, &o[5],
+                          &o[6]))
+        return NULL;
+    static const char *names[] = {"t", "s", "m1", "lg", "stack", "diff", "fac"};
+    double *p[7];
+    for (int i = 0; i < 7; i++) {
+        p[i] = get(&bs, o[i], i >= 5, i == 4 ? &ks : &k, names[i]);
+        if (p[i] == NULL) {
+            release(&bs);
+            return NULL;
+        }
+    }
+    Py_BEGIN_ALLOW_THREADS
+    dwdr_work(p[0], p[1], p[2], p[3], p[4], c_w, p[5], p[6], k);
+    Py_END_ALLOW_THREADS
+    release(&bs);
+    Py_RETURN_NONE;
+}
+
 static PyMethodDef methods[] = {
     {"m1", py_m1, METH_VARARGS, "m1(r, s, out): 1 - q^2 of the disc kernels, in out."},
+    {"ell_m1", py_ell_m1, METH_VARARGS, "ell_m1(t, s, out): m1 of dw/dr of the pressure."},
+    {"dwdr", py_dwdr, METH_VARARGS,
+     "dwdr(t, s, m1, lg, stack, c_w, diff, fac): E - K and the factor of dw/dr of the "
+     "pressure."},
     {"pressure", py_pressure, METH_VARARGS,
      "pressure(r, s, lg, b, c_w, stack_in, stack_out, w, u, du): the uniform pressure's "
      "kernels."},

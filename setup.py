@@ -1,10 +1,11 @@
-"""Build of the compiled parts of contactlib: the fused disc and half-plane strip kernels
-and two fused steps of building the nodal operators.
+"""Build of the compiled parts of contactlib: the fused disc and half-plane strip kernels,
+two fused steps of building the nodal operators and the fused set-up of Newton's method.
 
 Everything else is in pyproject.toml. The extensions are optional: where they cannot be
 built (no C compiler), contactlib uses the numpy routes of :mod:`contactlib.kernels.disc`,
 :mod:`contactlib.kernels.strip`, :func:`contactlib.influence.apply_difference` and
-:func:`contactlib.operators.restrict_nested`, which give the same bits, more slowly.
+:func:`contactlib.operators.restrict_nested` and :func:`contactlib.default_method.newton_on_k`,
+which give the same bits, more slowly.
 """
 
 from setuptools import Extension, setup
@@ -17,4 +18,5 @@ setup(ext_modules=[
     Extension(name, sources=[source], extra_compile_args=FLAGS, optional=True)
     for name, source in (("contactlib.kernels.disc_fused", "contactlib/kernels/disc_fused.c"),
                          ("contactlib.kernels.strip_fused", "contactlib/kernels/strip_fused.c"),
-                         ("contactlib.operators_fused", "contactlib/operators_fused.c"))])
+                         ("contactlib.operators_fused", "contactlib/operators_fused.c"),
+                         ("contactlib.solver_fused", "contactlib/solver_fused.c"))])

@@ -65,6 +65,16 @@ __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "
            "newton_on_k", "REFINED_FINAL_STEP", "PartialSlipSystem", "NewtonResult",
            "operators", "operator_part", "nodal_operator_part"]
 
+try:  # Newton's set-up on large systems compiled (setup.py; optional): the same bits
+    from . import solver_fused as _fused
+except ImportError:  # pragma: no cover - a build without a C compiler
+    _fused = None
+FUSED = _fused is not None
+"""Whether :func:`newton_on_k` with ``overwrite`` (n >= 1024) equilibrates the system and
+forms its first A(k) compiled (``contactlib/solver_fused.c``, built by ``pip install``):
+two passes over the matrix where numpy makes six, the same operations on the same operands,
+so the same bits (``tests/test_kernels_fused.py``). False selects the numpy route."""
+
 # Extended precision for the residual of one step of iterative refinement (see
 # solve_default): 80-bit on x86-64 Linux; where long double is plain double
 # (e.g. Windows, Apple arm64) the step still helps, but k keeps a round-off
@@ -566,17 +576,28 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
         block = slice(int(slip[0]), int(slip[0]) + slip.size)  # (assemble's: M ... N-1)
     else:
         block = slip  # the same columns, by index (slower)
-    rs, cs = _equilibration(sysm.a0, sysm.a1b, block, k)
-    if overwrite:
+    first_ak = None
+    if (overwrite and FUSED and isinstance(block, slice) and sysm.a0.flags.c_contiguous
+            and sysm.a1b.flags.c_contiguous):  # compiled: two passes, the same bits
+        rs, colmax = np.empty(sysm.b.size), np.empty(sysm.b.size)
+        _fused.equilibrate(sysm.a0, sysm.a1b, block.start, float(k), rs, colmax)
+        cs = 1.0 / colmax
+        first_ak = np.empty_like(sysm.a0)
+        _fused.scale_form(sysm.a0, sysm.a1b, block.start, rs, cs, float(k), first_ak)
         a0s, a1s = sysm.a0, sysm.a1b
-        a0s *= rs[:, None]
-        a1s *= rs[:, None]
         sysm.scales = (rs, cs)
     else:
-        a0s = sysm.a0 * rs[:, None]
-        a1s = sysm.a1b * rs[:, None]
-    a0s *= cs
-    a1s *= cs[block]
+        rs, cs = _equilibration(sysm.a0, sysm.a1b, block, k)
+        if overwrite:
+            a0s, a1s = sysm.a0, sysm.a1b
+            a0s *= rs[:, None]
+            a1s *= rs[:, None]
+            sysm.scales = (rs, cs)
+        else:
+            a0s = sysm.a0 * rs[:, None]
+            a1s = sysm.a1b * rs[:, None]
+        a0s *= cs
+        a1s *= cs[block]
     bs = sysm.b * rs
     shape = sysm.shape
     converged, it, stagnated = False, 0, 0.0
@@ -584,8 +605,11 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
     step, prev_step = 0.0, np.inf
     extended = None
     for it in range(1, max_iter + 1):
-        ak = a0s.copy()
-        ak[:, block] += k * a1s
+        if first_ak is not None:  # A(k) at the first k, formed with the scaling
+            ak, first_ak = first_ak, None
+        else:
+            ak = a0s.copy()
+            ak[:, block] += k * a1s
         # overwrite: LAPACK factors A^T in ak's own memory (a C array is A^T in Fortran
         # order), where lu_factor(ak) would copy A into Fortran order first (82 MB at
         # n = 2048, fresh pages); the solves then use the transposed factors (trans=1)

@@ -12,14 +12,14 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contactlib import influence, operators
+from contactlib import default_method, influence, operators
 from contactlib.elements import graded_mesh
 from contactlib.kernels import disc, strip
 from contactlib.model import contact
 from contactlib.operators import nodal_operators
 
 needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.FUSED
-                                      and operators.FUSED),
+                                      and operators.FUSED and default_method.FUSED),
                                  reason="the compiled parts are not built")
 
 
@@ -27,7 +27,7 @@ needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.F
 def numpy_route(monkeypatch):
     """Run the block with the numpy routes (disc.FUSED, influence.FUSED False), then restore."""
     def call(f, *args, **kwargs):
-        for module in (disc, strip, influence, operators):
+        for module in (disc, strip, influence, operators, default_method):
             monkeypatch.setattr(module, "FUSED", False)
         try:
             return f(*args, **kwargs)
@@ -150,3 +150,25 @@ def test_compiled_w_differences_give_the_numpy_bits(numpy_route, r0):
     want = numpy_route(disc.w_difference_disc, r, r0, s, 0.3, "normal")
     for g, w in zip(got, want):
         assert np.array_equal(g, w, equal_nan=True)
+
+
+@needs_fused
+@pytest.mark.parametrize("geometry, c", [("sphere", 0.5), ("cylinder", 0.9)])
+def test_compiled_newton_set_up_gives_the_numpy_bits(numpy_route, geometry, c):
+    """newton_on_k with overwrite (n >= 1024): equilibration, scaling and the first A(k)
+    compiled; the same k and solution, bit for bit."""
+    model, mesh = contact(geometry, 0.3), graded_mesh(1024, c)
+    ops = nodal_operators(model, mesh)
+
+    def newton():
+        system = default_method.assemble(model, mesh, *ops)
+        out = default_method.newton_on_k(system, 0.9 * float(model.uncoupled_friction(c)),
+                                         refine=True, overwrite=True)
+        return out, system.scales
+
+    got, got_scales = newton()
+    want, want_scales = numpy_route(newton)
+    assert got.k == want.k and got.iterations == want.iterations and got.converged
+    assert np.array_equal(got.x, want.x)
+    for g, w in zip(got_scales, want_scales):
+        assert np.array_equal(g, w)

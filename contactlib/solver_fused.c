@@ -1,0 +1,154 @@
+/* Newton's set-up on a large partial-slip system (contactlib.default_method.newton_on_k with
+ * overwrite), fused: the equilibration in one pass over the rows, and the in-place scaling
+ * with the first A(k) in a second, where numpy makes six passes and two fresh temporaries.
+ *
+ * A(k) = a0 + k a1, a1 nonzero in the columns [start, start + nb) only (held as a1b). The
+ * operations are numpy's, on the same operands in the same order (maxima are exact), so the
+ * same bits (tests/test_kernels_fused.py); built with -ffp-contract=off.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <math.h>
+#include <string.h>
+
+typedef struct {
+    Py_buffer b[6];
+    int n;
+} held_t;
+
+static void release_all(held_t *h)
+{
+    for (int i = 0; i < h->n; i++)
+        PyBuffer_Release(&h->b[i]);
+    h->n = 0;
+}
+
+/* a C-contiguous float64 buffer with `len` doubles (the length checked by the caller) */
+static double *hold(held_t *h, PyObject *obj, int writable, Py_ssize_t *len)
+{
+    Py_buffer *v = &h->b[h->n];
+    if (PyObject_GetBuffer(obj, v, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT
+                                       | (writable ? PyBUF_WRITABLE : 0)) != 0)
+        return NULL;
+    h->n++;
+    if (v->itemsize != 8 || v->format == NULL || strcmp(v->format, "d") != 0) {
+        PyErr_SetString(PyExc_TypeError, "arrays must be contiguous float64");
+        return NULL;
+    }
+    *len = v->len / 8;
+    return (double *)v->buf;
+}
+
+/* the larger of m and v, NaN kept (np.max, np.maximum propagate NaN) */
+static inline double nanmax(double m, double v) { return (v > m || v != v) ? v : m; }
+
+/* equilibrate(a0, a1b, start, k, rs, colmax): rs_i = 1 / max_j |A_ij|,
+ * colmax_j = max_i |A_ij| rs_i (default_method._equilibration) */
+static PyObject *py_equilibrate(PyObject *Py_UNUSED(self), PyObject *args)
+{
+    PyObject *o0, *o1, *ors, *ocm;
+    Py_ssize_t start, l0, l1, lrs, lcm;
+    double k;
+    held_t h = {.n = 0};
+    if (!PyArg_ParseTuple(args, "OOndOO", &o0, &o1, &start, &k, &ors, &ocm))
+        return NULL;
+    double *a0 = hold(&h, o0, 0, &l0), *a1 = a0 ? hold(&h, o1, 0, &l1) : NULL;
+    double *rs = a1 ? hold(&h, ors, 1, &lrs) : NULL, *cm = rs ? hold(&h, ocm, 1, &lcm) : NULL;
+    if (cm == NULL) {
+        release_all(&h);
+        return NULL;
+    }
+    Py_ssize_t size = lrs, nb = size ? l1 / size : 0;
+    if (l0 != size * size || lcm != size || l1 != size * nb || start < 0 || start + nb > size) {
+        PyErr_SetString(PyExc_ValueError, "equilibrate needs a0 (n, n), a1b (n, nb), rs and "
+                                          "colmax (n,), 0 <= start <= n - nb");
+        release_all(&h);
+        return NULL;
+    }
+    Py_BEGIN_ALLOW_THREADS
+    for (Py_ssize_t j = 0; j < size; j++)
+        cm[j] = 0.0;
+    for (Py_ssize_t i = 0; i < size; i++) {
+        const double *r0 = a0 + i * size, *r1 = a1 + i * nb;
+        double top = -INFINITY, inv;
+        for (Py_ssize_t j = 0; j < size; j++) {
+            double v = r0[j];
+            if (j >= start && j < start + nb)
+                v = v + k * r1[j - start];
+            top = nanmax(top, fabs(v));
+        }
+        inv = 1.0 / top;
+        rs[i] = inv;
+        for (Py_ssize_t j = 0; j < size; j++) {
+            double v = r0[j];
+            if (j >= start && j < start + nb)
+                v = v + k * r1[j - start];
+            cm[j] = nanmax(cm[j], fabs(v) * inv);
+        }
+    }
+    Py_END_ALLOW_THREADS
+    release_all(&h);
+    Py_RETURN_NONE;
+}
+
+/* scale_form(a0, a1b, start, rs, cs, k, ak): a0 <- (a0 rs_i) cs_j and a1b <- (a1b rs_i)
+ * cs_(start + j) in place, and ak = a0 + k a1 of the scaled system (newton_on_k's first
+ * iteration) */
+static PyObject *py_scale_form(PyObject *Py_UNUSED(self), PyObject *args)
+{
+    PyObject *o0, *o1, *ors, *ocs, *oak;
+    Py_ssize_t start, l0, l1, lrs, lcs, lak;
+    double k;
+    held_t h = {.n = 0};
+    if (!PyArg_ParseTuple(args, "OOnOOdO", &o0, &o1, &start, &ors, &ocs, &k, &oak))
+        return NULL;
+    double *a0 = hold(&h, o0, 1, &l0), *a1 = a0 ? hold(&h, o1, 1, &l1) : NULL;
+    double *rs = a1 ? hold(&h, ors, 0, &lrs) : NULL, *cs = rs ? hold(&h, ocs, 0, &lcs) : NULL;
+    double *ak = cs ? hold(&h, oak, 1, &lak) : NULL;
+    if (ak == NULL) {
+        release_all(&h);
+        return NULL;
+    }
+    Py_ssize_t size = lrs, nb = size ? l1 / size : 0;
+    if (l0 != size * size || lcs != size || lak != size * size || l1 != size * nb
+        || start < 0 || start + nb > size) {
+        PyErr_SetString(PyExc_ValueError, "scale_form needs a0 and ak (n, n), a1b (n, nb), "
+                                          "rs and cs (n,), 0 <= start <= n - nb");
+        release_all(&h);
+        return NULL;
+    }
+    Py_BEGIN_ALLOW_THREADS
+    for (Py_ssize_t i = 0; i < size; i++) {
+        double *r0 = a0 + i * size, *r1 = a1 + i * nb, *rk = ak + i * size;
+        const double ri = rs[i];
+        for (Py_ssize_t j = 0; j < size; j++) {
+            double v = r0[j] * ri;
+            v = v * cs[j];
+            r0[j] = v;
+            rk[j] = v;
+        }
+        for (Py_ssize_t j = 0; j < nb; j++) {
+            double v = r1[j] * ri;
+            v = v * cs[start + j];
+            r1[j] = v;
+            rk[start + j] = rk[start + j] + k * v;
+        }
+    }
+    Py_END_ALLOW_THREADS
+    release_all(&h);
+    Py_RETURN_NONE;
+}
+
+static PyMethodDef methods[] = {
+    {"equilibrate", py_equilibrate, METH_VARARGS,
+     "equilibrate(a0, a1b, start, k, rs, colmax): row scales and column maxima of A(k)."},
+    {"scale_form", py_scale_form, METH_VARARGS,
+     "scale_form(a0, a1b, start, rs, cs, k, ak): the system scaled in place and A(k)."},
+    {NULL, NULL, 0, NULL}};
+
+static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "solver_fused",
+                                    "Fused set-up of Newton's method on k (see "
+                                    "contactlib.default_method).",
+                                    -1, methods, NULL, NULL, NULL, NULL};
+
+PyMODINIT_FUNC PyInit_solver_fused(void) { return PyModule_Create(&module); }

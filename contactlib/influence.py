@@ -126,6 +126,7 @@ class _Scratch(threading.local):
         self.x_of = np.empty(_BLOCK_PAIRS)  # point of each pair of a block
         self.j_of = np.empty(_BLOCK_PAIRS, dtype=np.intp)  # element of each pair
         self.j_of_n = 0  # number of elements j_of was filled for
+        self.order = np.empty(_BLOCK_PAIRS, dtype=np.int64)  # pairs grouped by key (compiled)
 
 
 _SCRATCH = _Scratch()
@@ -309,48 +310,36 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
             dist_ref = np.maximum(np.maximum(lo_e - ref, ref - hi_e), 0.0) * inv_len
     rows = max(1, min(int(chunk), _BLOCK_PAIRS) // n)
     ws = _SCRATCH
+    if FUSED:  # the compiled classification's arguments
+        lo_e, hi_e = np.ascontiguousarray(lo_e), np.ascontiguousarray(hi_e)
+        ref_arg = _NO_REF if dist_ref is None else np.ascontiguousarray(dist_ref)
+        thr_arg = np.array(thresholds, dtype=float)
+        offsets = np.empty(2 * len(thresholds) + 3, dtype=np.int64)
     packer = _Packer(kernels, dest)
     for r0 in range(0, m, rows):
         xr = x[r0:r0 + rows]
         mb = xr.size
         k = mb * n
         small = k <= _BLOCK_PAIRS
-        # classify: distance to the element in element lengths, side of x
-        dist = ws.dist[:k].reshape(mb, n) if small else np.empty((mb, n))
-        tmp = ws.tmp[:k].reshape(mb, n) if small else np.empty((mb, n))
-        side = ws.side[:k].reshape(mb, n) if small else np.empty((mb, n), dtype=bool)
-        code = ws.code[:k].reshape(mb, n) if small else np.empty((mb, n), dtype=np.int8)
-        np.subtract(lo_e[None, :], xr[:, None], out=dist)
-        np.greater_equal(dist, 0.0, out=side)  # element above x: inside the disc
-        np.subtract(xr[:, None], hi_e[None, :], out=tmp)
-        np.maximum(dist, tmp, out=dist)
-        np.maximum(dist, 0.0, out=dist)
-        with np.errstate(invalid="ignore"):
-            dist *= inv_len
-        if dist_ref is not None:
-            np.minimum(dist, dist_ref[None, :], out=dist)
-        code[...] = side  # key = 2 * class + side; class 0 = near (< _NEAR lengths)
-        for t in thresholds:
-            np.greater_equal(dist, t, out=side)
-            code += side
-            code += side
-        key = code.reshape(-1)
-        if small:
-            x_of = ws.x_of[:k].reshape(mb, n)
-            if ws.j_of_n != n:  # fill for the most rows a block can have
-                full = _BLOCK_PAIRS // n
-                ws.j_of[:full * n].reshape(full, n)[...] = np.arange(n)
-                ws.j_of_n = n
-            j_of = ws.j_of[:k]
+        if FUSED:  # compiled: the same keys, grouped in one pass (counting sort)
+            order = ws.order[:k] if small else np.empty(k, dtype=np.int64)
+            _fused.classify(xr, lo_e, hi_e, inv_len, ref_arg, thr_arg, order, offsets)
+
+            def bucket(c: int) -> np.ndarray:  # np.flatnonzero(key == c); c = 0: key < 2
+                return order[offsets[c]:offsets[c + 1]]
+
+            def points(idx: np.ndarray) -> np.ndarray:
+                return xr.take(idx // n)
+
+            def elements(idx: np.ndarray) -> np.ndarray:
+                return idx % n
         else:
-            x_of = np.empty((mb, n))
-            j_of = np.broadcast_to(np.arange(n), (mb, n)).ravel()
-        x_of[...] = xr[:, None]
-        x_of = x_of.reshape(-1)
+            bucket, points, elements = _classify(xr, lo_e, hi_e, inv_len, dist_ref,
+                                                 thresholds, ws, small)
         near = None
-        idx = np.flatnonzero(key < 2)
+        idx = bucket(0)
         if idx.size:
-            xs_near, jj = x_of.take(idx), j_of.take(idx)
+            xs_near, jj = points(idx), elements(idx)
             lo, hi = lo_e.take(jj), hi_e.take(jj)
             cut = np.clip(xs_near, lo, hi)
             pos = _positions(idx, r0, n, stride)
@@ -360,10 +349,10 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
         # above x first (inside the disc), then below; near pieces last on each side
         for sd in (1, 0):
             for cls in range(1, len(rules) + 1):
-                idx = np.flatnonzero(key == 2 * cls + sd)
+                idx = bucket(2 * cls + sd)
                 if idx.size:
-                    jj = j_of.take(idx)
-                    packer.add(x_of.take(idx), lo_e.take(jj), length.take(jj), rules[cls - 1],
+                    jj = elements(idx)
+                    packer.add(points(idx), lo_e.take(jj), length.take(jj), rules[cls - 1],
                                _sink(flat, _positions(idx, r0, n, stride)))
             if near is None:
                 continue
@@ -375,6 +364,55 @@ def element_integrals(kernel: Kernel | tuple[Kernel, ...], x: np.ndarray, nodes:
                            _sink(flat, near[0].take(piece), add=True), touch=True)
     packer.flush()
     return out
+
+
+_NO_REF = np.empty(0)  # (no reference node: the compiled classification's empty dist_ref)
+
+
+def _classify(xr: np.ndarray, lo_e: np.ndarray, hi_e: np.ndarray, inv_len: np.ndarray,
+              dist_ref: np.ndarray | None, thresholds: tuple, ws: "_Scratch", small: bool):
+    """The numpy route of :func:`element_integrals`' classification of a row block:
+    ``(bucket, points, elements)``, bucket(c) the pairs of key c (c = 0: keys 0 and 1, the
+    near pairs), points and elements the evaluation point and element of pairs."""
+    mb, n = xr.size, lo_e.size
+    k = mb * n
+    # classify: distance to the element in element lengths, side of x
+    dist = ws.dist[:k].reshape(mb, n) if small else np.empty((mb, n))
+    tmp = ws.tmp[:k].reshape(mb, n) if small else np.empty((mb, n))
+    side = ws.side[:k].reshape(mb, n) if small else np.empty((mb, n), dtype=bool)
+    code = ws.code[:k].reshape(mb, n) if small else np.empty((mb, n), dtype=np.int8)
+    np.subtract(lo_e[None, :], xr[:, None], out=dist)
+    np.greater_equal(dist, 0.0, out=side)  # element above x: inside the disc
+    np.subtract(xr[:, None], hi_e[None, :], out=tmp)
+    np.maximum(dist, tmp, out=dist)
+    np.maximum(dist, 0.0, out=dist)
+    with np.errstate(invalid="ignore"):
+        dist *= inv_len
+    if dist_ref is not None:
+        np.minimum(dist, dist_ref[None, :], out=dist)
+    code[...] = side  # key = 2 * class + side; class 0 = near (< _NEAR lengths)
+    for t in thresholds:
+        np.greater_equal(dist, t, out=side)
+        code += side
+        code += side
+    key = code.reshape(-1)
+    if small:
+        x_of = ws.x_of[:k].reshape(mb, n)
+        if ws.j_of_n != n:  # fill for the most rows a block can have
+            full = _BLOCK_PAIRS // n
+            ws.j_of[:full * n].reshape(full, n)[...] = np.arange(n)
+            ws.j_of_n = n
+        j_of = ws.j_of[:k]
+    else:
+        x_of = np.empty((mb, n))
+        j_of = np.broadcast_to(np.arange(n), (mb, n)).ravel()
+    x_of[...] = xr[:, None]
+    x_of = x_of.reshape(-1)
+
+    def bucket(c: int) -> np.ndarray:
+        return np.flatnonzero(key < 2) if c == 0 else np.flatnonzero(key == c)
+
+    return bucket, x_of.take, j_of.take
 
 
 def apply_difference(g: np.ndarray, nodes: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:

@@ -11,6 +11,8 @@
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <math.h>
+#include <string.h>
 
 /* a 2-d float64 buffer with a contiguous last axis (any row stride), or NULL */
 static double *matrix(PyObject *obj, Py_buffer *v, int writable, Py_ssize_t *rows,
@@ -143,7 +145,93 @@ static PyObject *py_restrict(PyObject *Py_UNUSED(self), PyObject *args)
     Py_RETURN_NONE;
 }
 
+/* classify(x, lo, hi, inv_len, dist_ref, thresholds, order, offsets): the (point, element)
+ * pairs of influence.element_integrals' row block grouped by key, as its numpy route does it:
+ * dist = max(lo - x, x - hi, 0) inv_len (min with dist_ref when it has n values), key =
+ * (lo - x >= 0) + 2 (number of thresholds <= dist); pairs p = i n + j. Bucket 0 holds the
+ * keys 0 and 1 (the near pairs, np.flatnonzero(key < 2)), bucket b >= 2 the key b
+ * (np.flatnonzero(key == b)), each in increasing p; offsets (2 T + 3) delimit the buckets
+ * in order (int64). NaN distances compare false, as in numpy. */
+static PyObject *py_classify(PyObject *Py_UNUSED(self), PyObject *args)
+{
+    PyObject *ox, *olo, *ohi, *oil, *oref, *othr, *oord, *ooff;
+    Py_buffer b[8];
+    int held = 0;
+    if (!PyArg_ParseTuple(args, "OOOOOOOO", &ox, &olo, &ohi, &oil, &oref, &othr, &oord, &ooff))
+        return NULL;
+    PyObject *objs[8] = {ox, olo, ohi, oil, oref, othr, oord, ooff};
+    for (; held < 8; held++) {
+        int w = held >= 6;
+        if (PyObject_GetBuffer(objs[held], &b[held], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT
+                                                         | (w ? PyBUF_WRITABLE : 0)) != 0)
+            goto fail;
+        if (b[held].itemsize != 8 || b[held].format == NULL
+            || strchr(w ? "qlL" : "d", b[held].format[0]) == NULL) {
+            held++;
+            PyErr_SetString(PyExc_TypeError, "classify needs float64 inputs and int64 outputs");
+            goto fail;
+        }
+    }
+    {
+        const double *x = b[0].buf, *lo = b[1].buf, *hi = b[2].buf, *il = b[3].buf,
+                     *ref = b[4].buf, *thr = b[5].buf;
+        Py_ssize_t mb = b[0].len / 8, n = b[1].len / 8, nt = b[5].len / 8;
+        int use_ref = b[4].len / 8 == n && n > 0;
+        long long *order = b[6].buf, *off = b[7].buf;
+        Py_ssize_t nkeys = 2 * nt + 2;
+        if (b[2].len / 8 != n || b[3].len / 8 != n || b[6].len / 8 != mb * n
+            || b[7].len / 8 != nkeys + 1 || nt > 60) {
+            PyErr_SetString(PyExc_ValueError, "classify: inconsistent lengths");
+            goto fail;
+        }
+        signed char *key = PyMem_Malloc(mb * n > 0 ? (size_t)(mb * n) : 1);
+        if (key == NULL) {
+            PyErr_NoMemory();
+            goto fail;
+        }
+        Py_BEGIN_ALLOW_THREADS
+        long long count[128] = {0};
+        for (Py_ssize_t i = 0; i < mb; i++) {
+            for (Py_ssize_t j = 0; j < n; j++) {
+                double d = lo[j] - x[i], t = x[i] - hi[j];
+                int side = d >= 0.0, c = side;
+                /* np.maximum propagates NaN */
+                d = (d != d || t != t) ? NAN : (d >= t ? d : t);
+                d = (d != d) ? d : (d >= 0.0 ? d : 0.0);
+                d = d * il[j];
+                if (use_ref)
+                    d = (d != d || ref[j] != ref[j]) ? NAN : (d <= ref[j] ? d : ref[j]);
+                for (Py_ssize_t q = 0; q < nt; q++)
+                    c += 2 * (d >= thr[q]);
+                c = c < 2 ? 0 : c; /* the near bucket */
+                key[i * n + j] = (signed char)c;
+                count[c]++;
+            }
+        }
+        off[0] = 0;
+        for (Py_ssize_t c = 0; c < nkeys; c++)
+            off[c + 1] = off[c] + count[c];
+        long long fill[128];
+        for (Py_ssize_t c = 0; c < nkeys; c++)
+            fill[c] = off[c];
+        for (Py_ssize_t p = 0; p < mb * n; p++)
+            order[fill[key[p]]++] = p;
+        Py_END_ALLOW_THREADS
+        PyMem_Free(key);
+    }
+    for (int i = 0; i < held; i++)
+        PyBuffer_Release(&b[i]);
+    Py_RETURN_NONE;
+fail:
+    for (int i = 0; i < held; i++)
+        PyBuffer_Release(&b[i]);
+    return NULL;
+}
+
 static PyMethodDef methods[] = {
+    {"classify", py_classify, METH_VARARGS,
+     "classify(x, lo, hi, inv_len, dist_ref, thresholds, order, offsets): the pairs of a row "
+     "block grouped by key (see contactlib.influence.element_integrals)."},
     {"restrict", py_restrict, METH_VARARGS,
      "restrict(rows, left, right, out): the nested coarse columns of fine rows (see "
      "contactlib.operators.restrict_nested)."},

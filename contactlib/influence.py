@@ -54,16 +54,18 @@ from collections.abc import Callable
 
 import numpy as np
 
-try:  # the compiled route of apply_difference (setup.py; optional): the same bits
+try:  # the compiled routes (setup.py; optional): the same bits
     from . import operators_fused as _fused
 except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 
 FUSED = _fused is not None
-"""Whether :func:`apply_difference` runs compiled (``contactlib/operators_fused.c``, built by
-``pip install``): the same divisions and subtractions on the same operands as its numpy
-route, so the same bits, in one pass a row (``tests/test_kernels_fused.py``). False selects
-the numpy route."""
+"""Whether :func:`apply_difference` and the classification of :func:`element_integrals` run
+compiled (``contactlib/operators_fused.c``, built by ``pip install``): the same divisions
+and subtractions on the same operands as the numpy route, one pass a row; the same keys of
+the (point, element) pairs, grouped by one counting sort in the order the numpy route's
+``flatnonzero`` gives; so the same bits (``tests/test_kernels_fused.py``). False selects
+the numpy routes."""
 
 Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 

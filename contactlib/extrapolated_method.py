@@ -61,7 +61,8 @@ from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
                              difference_rows, newton_on_k, solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
-from .operators import StickBlocks, nodal_operators, restrict_nested
+from .operators import (StickBlocks, nodal_operators, restrict_with_slip_samples,
+                        slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "PREDICTED_FROM_N", "LAYER_FLOOR_FROM_N", "N_MULTIPLE", "resolving_n",
@@ -508,9 +509,8 @@ def _retry(geometry: Contact, c: float, ns, meshes, opss, odds, sols, j: int,
     d = _level(geometry, c, ns[j], meshes[j], *opss[j], k0, one_step=False,
                rows=_rows(geometry, meshes[j], ns[-1]), reversed_side=k0 < 0.0)
     if _good(d):
-        if odds[j] is not None:  # as for every level: u, du/dx inside its elements
-            x, po, qo = odds[j]
-            d.interior_samples = (x, po[0] @ d.p + qo[0] @ d.phi, po[1] @ d.p + qo[1] @ d.phi)
+        if odds[j] is not None:  # as for every level: u, du/dx inside its slip elements
+            d.interior_samples = slip_zone_samples(odds[j], d.p, d.phi)
         sols[j] = d
 
 
@@ -571,10 +571,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         mesh = meshes[-1]
         if mesh.n % 2 == 0 and mesh.stick_index % 2 == 0:  # every other node: nested
             sub = Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
-            first = mesh.stick_index // 2  # the odd nodes of the slip zone: its samples
-            (pc, po), (qc, qo) = (restrict_nested(o, mesh, odd_parts=(1, 2), odd_from=first)
-                                  for o in opss[-1])
-            odd = (mesh.nodes[2 * first + 1::2], po, qo)
+            (pc, qc), odd = restrict_with_slip_samples(opss[-1], mesh)
         else:  # a mesh scaled back to MAX_ELEMENTS: its own operators, not nested
             nested = False
             sub = graded_mesh(n // 2 ** len(meshes), c)
@@ -629,8 +626,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
         if _good(d) and d.oriented_k < 0.0:  # the levels after it start on its side
             side = -1.0
         if odds[i] is not None:
-            x, po, qo = odds[i]
-            d.interior_samples = (x, po[0] @ d.p + qo[0] @ d.phi, po[1] @ d.p + qo[1] @ d.phi)
+            d.interior_samples = slip_zone_samples(odds[i], d.p, d.phi)
         sols[i] = d
     top = sols[-1]
     out = ExtrapolatedSolution(**{f: getattr(top, f) for f in (

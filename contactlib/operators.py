@@ -57,7 +57,8 @@ if TYPE_CHECKING:
 
 __all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators",
            "nodal_operator_part", "nodal_operators", "StickBlocks", "smooth_integrals",
-           "restrict_nested", "axis_w_rows", "u_difference_rows"]
+           "restrict_nested", "restrict_with_slip_samples", "slip_zone_samples", "axis_w_rows",
+           "u_difference_rows"]
 
 PARTS = ("normal", "shear")
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
@@ -374,6 +375,29 @@ def restrict_nested(op: np.ndarray, fine: Mesh, odd_parts: tuple[int, ...] | Non
     for i, p in enumerate(parts):
         _restrict_columns(op[p, 2 * odd_from + 1::2], left, right, at_odd[i])
     return at_nodes, at_odd
+
+
+def restrict_with_slip_samples(ops: tuple[np.ndarray, np.ndarray], fine: Mesh
+                               ) -> tuple[tuple[np.ndarray, np.ndarray], tuple]:
+    """Both parts' nodal operators restricted to the nested mesh with every other node, and
+    what samples u and du/dx inside its slip elements (no kernel is evaluated).
+
+    Returns ``((P, Q), odd)``: ``P`` and ``Q`` the coarse operators (:func:`restrict_nested`),
+    ``odd = (x, P_odd, Q_odd)`` the odd fine nodes of the slip zone (one inside each coarse
+    slip element) and the u and du/dx rows there, for :func:`slip_zone_samples`.
+    """
+    first = fine.stick_index // 2  # the coarse stick index: odd nodes from 2 first + 1 on
+    (pc, po), (qc, qo) = (restrict_nested(op, fine, odd_parts=(1, 2), odd_from=first)
+                          for op in ops)
+    return (pc, qc), (fine.nodes[2 * first + 1::2], po, qo)
+
+
+def slip_zone_samples(odd: tuple, p: np.ndarray, phi: np.ndarray) -> tuple:
+    """(x, u, du/dx) inside the coarse slip elements of a solution (nodal ``p`` and ``phi``)
+    from ``odd`` of :func:`restrict_with_slip_samples` (a ``DiscreteSolution``'s
+    ``interior_samples``)."""
+    x, po, qo = odd
+    return x, po[0] @ p + qo[0] @ phi, po[1] @ p + qo[1] @ phi
 
 
 def _restrict_columns(rows: np.ndarray, left: np.ndarray, right: np.ndarray,

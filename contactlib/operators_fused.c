@@ -9,28 +9,8 @@
  * (tests/test_kernels_fused.py). `g` may be the first N columns of `out` (the operator built
  * in place): a row's g_l is read before out_l is written, and out_l is never read again.
  */
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
+#include "fused_buffers.h"
 #include <math.h>
-#include <string.h>
-
-/* a 2-d float64 buffer with a contiguous last axis (any row stride), or NULL */
-static double *matrix(PyObject *obj, Py_buffer *v, int writable, Py_ssize_t *rows,
-                      Py_ssize_t *cols, Py_ssize_t *stride, const char *name)
-{
-    if (PyObject_GetBuffer(obj, v, PyBUF_STRIDES | PyBUF_FORMAT
-                                       | (writable ? PyBUF_WRITABLE : 0)) != 0)
-        return NULL;
-    if (v->ndim != 2 || v->itemsize != 8 || v->format == NULL || strcmp(v->format, "d") != 0
-        || (v->shape[1] > 1 && v->strides[1] != 8) || v->strides[0] % 8 != 0) {
-        PyErr_Format(PyExc_TypeError,
-                     "%s must be a 2-d float64 array with a contiguous last axis", name);
-        PyBuffer_Release(v);
-        return NULL;
-    }
-    *rows = v->shape[0], *cols = v->shape[1], *stride = v->strides[0] / 8;
-    return (double *)v->buf;
-}
 
 /* restrict: contactlib.operators.restrict_nested, the fine columns of rows combined into the
  * coarse ones, out_j = (even_j + odd_j left_j) + odd_{j-1} right_{j-1} (numpy: copy, two
@@ -40,33 +20,22 @@ static double *matrix(PyObject *obj, Py_buffer *v, int writable, Py_ssize_t *row
 static PyObject *py_difference(PyObject *Py_UNUSED(self), PyObject *args)
 {
     PyObject *og, *oh, *oo;
-    Py_buffer vg, vh, vo;
-    Py_ssize_t rows, n, sg, rows_o, n1, so;
+    bufs_t bs = {.n = 0};
+    Py_ssize_t rows, n, sg, rows_o, n1, so, nh = -1;
     if (!PyArg_ParseTuple(args, "OOO", &og, &oh, &oo))
         return NULL;
-    const double *g = matrix(og, &vg, 0, &rows, &n, &sg, "g");
-    if (g == NULL)
-        return NULL;
-    double *out = matrix(oo, &vo, 1, &rows_o, &n1, &so, "out");
-    if (out == NULL) {
-        PyBuffer_Release(&vg);
-        return NULL;
-    }
-    if (PyObject_GetBuffer(oh, &vh, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) != 0) {
-        PyBuffer_Release(&vg);
-        PyBuffer_Release(&vo);
-        return NULL;
-    }
-    if (vh.itemsize != 8 || vh.format == NULL || strcmp(vh.format, "d") != 0
-        || vh.len / 8 != n || rows_o != rows || n1 != n + 1 || n < 1) {
+    const double *g = get_matrix(&bs, og, 0, &rows, &n, &sg, "g");
+    double *out = g ? get_matrix(&bs, oo, 1, &rows_o, &n1, &so, "out") : NULL;
+    const double *h = out ? get(&bs, oh, 0, &nh, "h") : NULL;
+    if (h != NULL && (nh != n || rows_o != rows || n1 != n + 1 || n < 1)) {
         PyErr_SetString(PyExc_ValueError, "difference needs g (rows, N), h (N,) float64 and "
                                           "out (rows, N + 1), N >= 1");
-        PyBuffer_Release(&vg);
-        PyBuffer_Release(&vo);
-        PyBuffer_Release(&vh);
+        h = NULL;
+    }
+    if (h == NULL) {
+        release(&bs);
         return NULL;
     }
-    const double *h = (const double *)vh.buf;
     Py_BEGIN_ALLOW_THREADS
     for (Py_ssize_t i = 0; i < rows; i++) {
         const double *gi = g + i * sg;
@@ -81,9 +50,7 @@ static PyObject *py_difference(PyObject *Py_UNUSED(self), PyObject *args)
         oi[n] = -prev;
     }
     Py_END_ALLOW_THREADS
-    PyBuffer_Release(&vg);
-    PyBuffer_Release(&vo);
-    PyBuffer_Release(&vh);
+    release(&bs);
     Py_RETURN_NONE;
 }
 
@@ -91,42 +58,25 @@ static PyObject *py_difference(PyObject *Py_UNUSED(self), PyObject *args)
 static PyObject *py_restrict(PyObject *Py_UNUSED(self), PyObject *args)
 {
     PyObject *orows, *ol, *orr, *oo;
-    Py_buffer vr, vl, vrr, vo;
-    Py_ssize_t rows, cols, sr, rows_o, nc1, so;
+    bufs_t bs = {.n = 0};
+    Py_ssize_t rows, cols, sr, rows_o, nc1, so, nl = -1, nr = -1;
     if (!PyArg_ParseTuple(args, "OOOO", &orows, &ol, &orr, &oo))
         return NULL;
-    const double *x = matrix(orows, &vr, 0, &rows, &cols, &sr, "rows");
-    if (x == NULL)
-        return NULL;
-    double *out = matrix(oo, &vo, 1, &rows_o, &nc1, &so, "out");
-    if (out == NULL) {
-        PyBuffer_Release(&vr);
-        return NULL;
-    }
-    if (PyObject_GetBuffer(ol, &vl, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) != 0) {
-        PyBuffer_Release(&vr);
-        PyBuffer_Release(&vo);
-        return NULL;
-    }
-    if (PyObject_GetBuffer(orr, &vrr, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) != 0) {
-        PyBuffer_Release(&vr);
-        PyBuffer_Release(&vo);
-        PyBuffer_Release(&vl);
-        return NULL;
-    }
+    const double *x = get_matrix(&bs, orows, 0, &rows, &cols, &sr, "rows");
+    double *out = x ? get_matrix(&bs, oo, 1, &rows_o, &nc1, &so, "out") : NULL;
+    const double *left = out ? get(&bs, ol, 0, &nl, "left") : NULL;
+    const double *right = left ? get(&bs, orr, 0, &nr, "right") : NULL;
     Py_ssize_t nc = nc1 - 1;
-    if (vl.itemsize != 8 || vrr.itemsize != 8 || vl.format == NULL || vrr.format == NULL
-        || strcmp(vl.format, "d") != 0 || strcmp(vrr.format, "d") != 0 || vl.len / 8 != nc
-        || vrr.len / 8 != nc || rows_o != rows || cols != 2 * nc + 1 || nc < 1) {
+    if (right != NULL
+        && (nl != nc || nr != nc || rows_o != rows || cols != 2 * nc + 1 || nc < 1)) {
         PyErr_SetString(PyExc_ValueError, "restrict needs rows (R, 2 Nc + 1), left and right "
                                           "(Nc,) float64 and out (R, Nc + 1), Nc >= 1");
-        PyBuffer_Release(&vr);
-        PyBuffer_Release(&vo);
-        PyBuffer_Release(&vl);
-        PyBuffer_Release(&vrr);
+        right = NULL;
+    }
+    if (right == NULL) {
+        release(&bs);
         return NULL;
     }
-    const double *left = (const double *)vl.buf, *right = (const double *)vrr.buf;
     Py_BEGIN_ALLOW_THREADS
     for (Py_ssize_t i = 0; i < rows; i++) {
         const double *xi = x + i * sr;
@@ -138,10 +88,7 @@ static PyObject *py_restrict(PyObject *Py_UNUSED(self), PyObject *args)
             oi[j] = oi[j] + xi[2 * j - 1] * right[j - 1];
     }
     Py_END_ALLOW_THREADS
-    PyBuffer_Release(&vr);
-    PyBuffer_Release(&vo);
-    PyBuffer_Release(&vl);
-    PyBuffer_Release(&vrr);
+    release(&bs);
     Py_RETURN_NONE;
 }
 
@@ -154,40 +101,35 @@ static PyObject *py_restrict(PyObject *Py_UNUSED(self), PyObject *args)
  * in order (int64). NaN distances compare false, as in numpy. */
 static PyObject *py_classify(PyObject *Py_UNUSED(self), PyObject *args)
 {
-    PyObject *ox, *olo, *ohi, *oil, *oref, *othr, *oord, *ooff;
-    Py_buffer b[8];
-    int held = 0;
-    if (!PyArg_ParseTuple(args, "OOOOOOOO", &ox, &olo, &ohi, &oil, &oref, &othr, &oord, &ooff))
+    PyObject *o[8];
+    bufs_t bs = {.n = 0};
+    if (!PyArg_ParseTuple(args, "OOOOOOOO", &o[0], &o[1], &o[2], &o[3], &o[4], &o[5], &o[6],
+                          &o[7]))
         return NULL;
-    PyObject *objs[8] = {ox, olo, ohi, oil, oref, othr, oord, ooff};
-    for (; held < 8; held++) {
-        int w = held >= 6;
-        if (PyObject_GetBuffer(objs[held], &b[held], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT
-                                                         | (w ? PyBUF_WRITABLE : 0)) != 0)
-            goto fail;
-        if (b[held].itemsize != 8 || b[held].format == NULL
-            || strchr(w ? "qlL" : "d", b[held].format[0]) == NULL) {
-            held++;
-            PyErr_SetString(PyExc_TypeError, "classify needs float64 inputs and int64 outputs");
-            goto fail;
-        }
+    Py_ssize_t mb = -1, n = -1, n2 = -1, n3 = -1, nref = -1, nt = -1, nord, noff;
+    const double *x = get(&bs, o[0], 0, &mb, "x");
+    const double *lo = x ? get(&bs, o[1], 0, &n, "lo") : NULL;
+    const double *hi = lo ? get(&bs, o[2], 0, &n2, "hi") : NULL;
+    const double *il = hi ? get(&bs, o[3], 0, &n3, "inv_len") : NULL;
+    const double *ref = il ? get(&bs, o[4], 0, &nref, "dist_ref") : NULL;
+    const double *thr = ref ? get(&bs, o[5], 0, &nt, "thresholds") : NULL;
+    long long *order = thr ? get_int64(&bs, o[6], 1, &nord, "order") : NULL;
+    long long *off = order ? get_int64(&bs, o[7], 1, &noff, "offsets") : NULL;
+    Py_ssize_t nkeys = 2 * nt + 2;
+    if (off != NULL && (n2 != n || n3 != n || nord != mb * n || noff != nkeys + 1 || nt > 60)) {
+        PyErr_SetString(PyExc_ValueError, "classify: inconsistent lengths");
+        off = NULL;
     }
+    if (off == NULL) {
+        release(&bs);
+        return NULL;
+    }
+    int use_ref = nref == n && n > 0;
     {
-        const double *x = b[0].buf, *lo = b[1].buf, *hi = b[2].buf, *il = b[3].buf,
-                     *ref = b[4].buf, *thr = b[5].buf;
-        Py_ssize_t mb = b[0].len / 8, n = b[1].len / 8, nt = b[5].len / 8;
-        int use_ref = b[4].len / 8 == n && n > 0;
-        long long *order = b[6].buf, *off = b[7].buf;
-        Py_ssize_t nkeys = 2 * nt + 2;
-        if (b[2].len / 8 != n || b[3].len / 8 != n || b[6].len / 8 != mb * n
-            || b[7].len / 8 != nkeys + 1 || nt > 60) {
-            PyErr_SetString(PyExc_ValueError, "classify: inconsistent lengths");
-            goto fail;
-        }
         signed char *key = PyMem_Malloc(mb * n > 0 ? (size_t)(mb * n) : 1);
         if (key == NULL) {
-            PyErr_NoMemory();
-            goto fail;
+            release(&bs);
+            return PyErr_NoMemory();
         }
         Py_BEGIN_ALLOW_THREADS
         long long count[128] = {0};
@@ -219,13 +161,8 @@ static PyObject *py_classify(PyObject *Py_UNUSED(self), PyObject *args)
         Py_END_ALLOW_THREADS
         PyMem_Free(key);
     }
-    for (int i = 0; i < held; i++)
-        PyBuffer_Release(&b[i]);
+    release(&bs);
     Py_RETURN_NONE;
-fail:
-    for (int i = 0; i < held; i++)
-        PyBuffer_Release(&b[i]);
-    return NULL;
 }
 
 static PyMethodDef methods[] = {

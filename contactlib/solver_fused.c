@@ -6,38 +6,8 @@
  * operations are numpy's, on the same operands in the same order (maxima are exact), so the
  * same bits (tests/test_kernels_fused.py); built with -ffp-contract=off.
  */
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
+#include "fused_buffers.h"
 #include <math.h>
-#include <string.h>
-
-typedef struct {
-    Py_buffer b[6];
-    int n;
-} held_t;
-
-static void release_all(held_t *h)
-{
-    for (int i = 0; i < h->n; i++)
-        PyBuffer_Release(&h->b[i]);
-    h->n = 0;
-}
-
-/* a C-contiguous float64 buffer with `len` doubles (the length checked by the caller) */
-static double *hold(held_t *h, PyObject *obj, int writable, Py_ssize_t *len)
-{
-    Py_buffer *v = &h->b[h->n];
-    if (PyObject_GetBuffer(obj, v, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT
-                                       | (writable ? PyBUF_WRITABLE : 0)) != 0)
-        return NULL;
-    h->n++;
-    if (v->itemsize != 8 || v->format == NULL || strcmp(v->format, "d") != 0) {
-        PyErr_SetString(PyExc_TypeError, "arrays must be contiguous float64");
-        return NULL;
-    }
-    *len = v->len / 8;
-    return (double *)v->buf;
-}
 
 /* the larger of m and v, NaN kept (np.max, np.maximum propagate NaN) */
 static inline double nanmax(double m, double v) { return (v > m || v != v) ? v : m; }
@@ -47,22 +17,24 @@ static inline double nanmax(double m, double v) { return (v > m || v != v) ? v :
 static PyObject *py_equilibrate(PyObject *Py_UNUSED(self), PyObject *args)
 {
     PyObject *o0, *o1, *ors, *ocm;
-    Py_ssize_t start, l0, l1, lrs, lcm;
+    Py_ssize_t start, l0 = -1, l1 = -1, lrs = -1, lcm = -1;
     double k;
-    held_t h = {.n = 0};
+    bufs_t bs = {.n = 0};
     if (!PyArg_ParseTuple(args, "OOndOO", &o0, &o1, &start, &k, &ors, &ocm))
         return NULL;
-    double *a0 = hold(&h, o0, 0, &l0), *a1 = a0 ? hold(&h, o1, 0, &l1) : NULL;
-    double *rs = a1 ? hold(&h, ors, 1, &lrs) : NULL, *cm = rs ? hold(&h, ocm, 1, &lcm) : NULL;
-    if (cm == NULL) {
-        release_all(&h);
-        return NULL;
-    }
-    Py_ssize_t size = lrs, nb = size ? l1 / size : 0;
-    if (l0 != size * size || lcm != size || l1 != size * nb || start < 0 || start + nb > size) {
+    const double *a0 = get(&bs, o0, 0, &l0, "a0"), *a1 = a0 ? get(&bs, o1, 0, &l1, "a1b") : NULL;
+    double *rs = a1 ? get(&bs, ors, 1, &lrs, "rs") : NULL;
+    double *cm = rs ? get(&bs, ocm, 1, &lcm, "colmax") : NULL;
+    Py_ssize_t size = lrs, nb = size > 0 ? l1 / size : 0;
+    if (cm != NULL
+        && (l0 != size * size || lcm != size || l1 != size * nb || start < 0
+            || start + nb > size)) {
         PyErr_SetString(PyExc_ValueError, "equilibrate needs a0 (n, n), a1b (n, nb), rs and "
                                           "colmax (n,), 0 <= start <= n - nb");
-        release_all(&h);
+        cm = NULL;
+    }
+    if (cm == NULL) {
+        release(&bs);
         return NULL;
     }
     Py_BEGIN_ALLOW_THREADS
@@ -87,7 +59,7 @@ static PyObject *py_equilibrate(PyObject *Py_UNUSED(self), PyObject *args)
         }
     }
     Py_END_ALLOW_THREADS
-    release_all(&h);
+    release(&bs);
     Py_RETURN_NONE;
 }
 
@@ -97,24 +69,25 @@ static PyObject *py_equilibrate(PyObject *Py_UNUSED(self), PyObject *args)
 static PyObject *py_scale_form(PyObject *Py_UNUSED(self), PyObject *args)
 {
     PyObject *o0, *o1, *ors, *ocs, *oak;
-    Py_ssize_t start, l0, l1, lrs, lcs, lak;
+    Py_ssize_t start, l0 = -1, l1 = -1, lrs = -1, lcs = -1, lak = -1;
     double k;
-    held_t h = {.n = 0};
+    bufs_t bs = {.n = 0};
     if (!PyArg_ParseTuple(args, "OOnOOdO", &o0, &o1, &start, &ors, &ocs, &k, &oak))
         return NULL;
-    double *a0 = hold(&h, o0, 1, &l0), *a1 = a0 ? hold(&h, o1, 1, &l1) : NULL;
-    double *rs = a1 ? hold(&h, ors, 0, &lrs) : NULL, *cs = rs ? hold(&h, ocs, 0, &lcs) : NULL;
-    double *ak = cs ? hold(&h, oak, 1, &lak) : NULL;
-    if (ak == NULL) {
-        release_all(&h);
-        return NULL;
-    }
-    Py_ssize_t size = lrs, nb = size ? l1 / size : 0;
-    if (l0 != size * size || lcs != size || lak != size * size || l1 != size * nb
-        || start < 0 || start + nb > size) {
+    double *a0 = get(&bs, o0, 1, &l0, "a0"), *a1 = a0 ? get(&bs, o1, 1, &l1, "a1b") : NULL;
+    const double *rs = a1 ? get(&bs, ors, 0, &lrs, "rs") : NULL;
+    const double *cs = rs ? get(&bs, ocs, 0, &lcs, "cs") : NULL;
+    double *ak = cs ? get(&bs, oak, 1, &lak, "ak") : NULL;
+    Py_ssize_t size = lrs, nb = size > 0 ? l1 / size : 0;
+    if (ak != NULL
+        && (l0 != size * size || lcs != size || lak != size * size || l1 != size * nb
+            || start < 0 || start + nb > size)) {
         PyErr_SetString(PyExc_ValueError, "scale_form needs a0 and ak (n, n), a1b (n, nb), "
                                           "rs and cs (n,), 0 <= start <= n - nb");
-        release_all(&h);
+        ak = NULL;
+    }
+    if (ak == NULL) {
+        release(&bs);
         return NULL;
     }
     Py_BEGIN_ALLOW_THREADS
@@ -135,7 +108,7 @@ static PyObject *py_scale_form(PyObject *Py_UNUSED(self), PyObject *args)
         }
     }
     Py_END_ALLOW_THREADS
-    release_all(&h);
+    release(&bs);
     Py_RETURN_NONE;
 }
 

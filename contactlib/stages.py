@@ -33,7 +33,8 @@ import numpy as np
 from . import checks, energy, validate
 from .default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
-from .operators import PARTS, StickBlocks, nodal_operators, parts_needed, restrict_nested
+from .operators import (PARTS, StickBlocks, nodal_operators, parts_needed,
+                        restrict_with_slip_samples, slip_zone_samples)
 from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
@@ -450,18 +451,13 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
                   and np.allclose(mesh.nodes[::2], sub.nodes, rtol=0.0, atol=1e-13))
         odd = None
         if nested:
-            first = mesh.stick_index // 2  # u, du/dx at the odd nodes of the slip zone
-            (pw, pw_odd), (qw, qw_odd) = (
-                restrict_nested(o, mesh, odd_parts=(1, 2), odd_from=first) for o in ops)
-            odd = (mesh.nodes[2 * first + 1::2], pw_odd, qw_odd)
-            ops, mesh = (pw, qw), sub
+            ops, odd = restrict_with_slip_samples(ops, mesh)
+            mesh = sub
         else:
             ops = None
         d = solve_default(geometry, c, m, k_guess=guess, ops=ops, cache=cache)
         if odd is not None:  # u, du/dx inside each coarse slip element, from the fine operators
-            x, pw_odd, qw_odd = odd
-            d.interior_samples = (x, pw_odd[0] @ d.p + qw_odd[0] @ d.phi,
-                                  pw_odd[1] @ d.p + qw_odd[1] @ d.phi)
+            d.interior_samples = slip_zone_samples(odd, d.p, d.phi)
         out[m] = d
         if d.converged and d.k > 0.0:
             guess = d.oriented_k  # (negative when the slip runs against sign(beta))

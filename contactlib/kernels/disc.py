@@ -678,12 +678,18 @@ def _e_minus_k(m1: np.ndarray, out: np.ndarray, f: np.ndarray) -> np.ndarray:
         np.log(m1, out=lg)
         lg *= rows[1]
         np.subtract(rows[0], lg, out=out)
-    if k and not (m1.min() > _MACHEP and m1.max() <= 1.0):
+    _off_main_branch(m1, out)
+    return out
+
+
+def _off_main_branch(m1: np.ndarray, out: np.ndarray) -> None:
+    """E(1 - m1) - K(1 - m1) into ``out`` where m1 lies off Cephes' main branch (m1 <= 2^-53,
+    m1 > 1, NaN), from :func:`_ellipe` and :func:`_ellipkm1`; the rest left as it is."""
+    if m1.size and not (m1.min() > _MACHEP and m1.max() <= 1.0):
         odd = ~((m1 > _MACHEP) & (m1 <= 1.0))
         mo = m1[odd]
         with np.errstate(invalid="ignore"):
             out[odd] = _ellipe(1.0 - mo) - _ellipkm1(mo)
-    return out
 
 
 class _EllScratch(threading.local):
@@ -742,8 +748,8 @@ _E_MINUS_K_ROWS = np.ascontiguousarray(_E_MINUS_K[:, :, 0])  # (11, 2) for the c
 
 def _dwdr_fused(tt: np.ndarray, ss: np.ndarray, ws: _EllScratch, out: np.ndarray) -> None:
     """One chunk of :func:`_dwdr_pressure` by the compiled route (:data:`FUSED`): m1 there,
-    ln(m1) by numpy, E - K and the factor there, the points outside Cephes' main branch by
-    :func:`_ellipe` and :func:`_ellipkm1` as :func:`_e_minus_k` takes them; the same bits."""
+    ln(m1) by numpy, E - K and the factor there, the points off Cephes' main branch as
+    :func:`_e_minus_k` takes them (:func:`_off_main_branch`); the same bits."""
     tt, ss = np.ascontiguousarray(tt), np.ascontiguousarray(ss)
     k = tt.size
     m1, lg, diff, fac = ws.f[3:7, :k]
@@ -751,11 +757,7 @@ def _dwdr_fused(tt: np.ndarray, ss: np.ndarray, ws: _EllScratch, out: np.ndarray
     with np.errstate(divide="ignore", invalid="ignore"):
         np.log(m1, out=lg)
     _fused.dwdr(tt, ss, m1, lg, _E_MINUS_K_ROWS, _C_W, diff, fac)
-    if k and not (m1.min() > _MACHEP and m1.max() <= 1.0):
-        odd = ~((m1 > _MACHEP) & (m1 <= 1.0))
-        mo = m1[odd]
-        with np.errstate(invalid="ignore"):
-            diff[odd] = _ellipe(1.0 - mo) - _ellipkm1(mo)
+    _off_main_branch(m1, diff)
     np.multiply(fac, diff, out=out)
 
 

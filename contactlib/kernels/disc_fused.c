@@ -13,7 +13,7 @@
  * (degree + 1) x rows, highest degree first, rows (P, R) of each fitted function, as
  * disc._stack builds them.
  */
-#include "fused_buffers.h"
+#include "../fused_buffers.h"
 #include <math.h>
 
 #define NC 11 /* coefficients of each polynomial (degree 10) */

@@ -7,26 +7,11 @@
  * -ffp-contract=off; tests/test_kernels_fused.py compares both routes). Arguments are
  * contiguous float64 buffers of one length.
  */
-#include "fused_buffers.h"
+#include "../fused_buffers.h"
 #include <math.h>
 
-/* the objects obj[0..count) as float64 buffers of one length (the last `written` writable);
- * 0, or -1 with an exception set and everything released */
-static int buffers(bufs_t *bs, PyObject *const *obj, int count, int written, double **out,
-                   Py_ssize_t *k)
-{
-    static const char *names[] = {"argument 1", "argument 2", "argument 3", "argument 4",
-                                  "argument 5", "argument 6", "argument 7"};
-    *k = -1;
-    for (int i = 0; i < count; i++) {
-        out[i] = get(bs, obj[i], i >= count - written, k, names[i]);
-        if (out[i] == NULL) {
-            release(bs);
-            return -1;
-        }
-    }
-    return 0;
-}
+static const char *const ARG_NAMES[] = {"argument 1", "argument 2", "argument 3", "argument 4",
+                                        "argument 5", "argument 6", "argument 7"};
 
 /* pressure: a1 = a + s (for log), a2 = 2 m / |a - s| (for log1p) */
 CLONES static void pressure_args(const double *x, const double *s, double *a1, double *a2,
@@ -112,8 +97,10 @@ static PyObject *py_args(PyObject *Py_UNUSED(self), PyObject *args)
     bufs_t bs = {.n = 0};
     double *p[5];
     Py_ssize_t k;
-    if (buffers(&bs, o, count, count - 2, p, &k) != 0)
+    if (get_vectors(&bs, o, count, count - 2, p, &k, ARG_NAMES) != 0) {
+        release(&bs);
         return NULL;
+    }
     Py_BEGIN_ALLOW_THREADS
     if (shear)
         shear_args(p[0], p[1], p[2], p[3], p[4], k);
@@ -137,8 +124,10 @@ static PyObject *py_finish(PyObject *Py_UNUSED(self), PyObject *args)
     bufs_t bs = {.n = 0};
     double *p[7];
     Py_ssize_t k;
-    if (buffers(&bs, o, 7, 3, p, &k) != 0)
+    if (get_vectors(&bs, o, 7, 3, p, &k, ARG_NAMES) != 0) {
+        release(&bs);
         return NULL;
+    }
     Py_BEGIN_ALLOW_THREADS
     if (shear)
         shear_finish(p[0], p[1], p[2], p[3], b, two_pi, ln4, p[4], p[5], p[6], k);

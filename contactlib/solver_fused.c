@@ -112,11 +112,80 @@ static PyObject *py_scale_form(PyObject *Py_UNUSED(self), PyObject *args)
     Py_RETURN_NONE;
 }
 
+/* numpy's einsum("ij,j->i", e, y) on one row in long double, double e and y: numpy's loop for
+ * long double (einsum_sumprod.c.src, contig_contig_outstride0_two, no SIMD for long double)
+ * sums products four at a time, (((ab0 + ab1) + ab2) + ab3) added to the accumulator, the
+ * tail one by one; its buffered iterator hands a row over in runs of at most `buf` elements
+ * (np.getbufsize()), each run's sum added to the output element, which starts at 0 */
+static long double run_sum(const double *r, const double *y, Py_ssize_t count)
+{
+    long double accum = 0.0L;
+    for (; count >= 4; count -= 4, r += 4, y += 4) {
+        const long double ab0 = (long double)r[0] * (long double)y[0];
+        const long double ab1 = (long double)r[1] * (long double)y[1];
+        const long double ab2 = (long double)r[2] * (long double)y[2];
+        const long double ab3 = (long double)r[3] * (long double)y[3];
+        accum += ab0 + ab1 + ab2 + ab3;
+    }
+    for (; count > 0; --count, ++r, ++y)
+        accum += (long double)r[0] * (long double)y[0];
+    return accum;
+}
+
+static long double row_sum(const double *r, const double *y, Py_ssize_t m, Py_ssize_t buf)
+{
+    long double out = 0.0L;
+    for (Py_ssize_t j = 0; j < m; j += buf)
+        out = out + run_sum(r + j, y + j, m - j < buf ? m - j : buf);
+    return out;
+}
+
+/* residual(a0, a1b, start, k, y, rhs, buf, out): out = rhs - (a0 y + k a1b y[start:start+nb])
+ * in long double, rounded to double, as default_method._extended_residual's einsum route
+ * computes it (the same operations in the same order, so the same bits) */
+static PyObject *py_residual(PyObject *Py_UNUSED(self), PyObject *args)
+{
+    PyObject *o0, *o1, *oy, *orhs, *oout;
+    Py_ssize_t start, buf, l0 = -1, l1 = -1, ly = -1, lrhs = -1, lout = -1;
+    double k;
+    bufs_t bs = {.n = 0};
+    if (!PyArg_ParseTuple(args, "OOndOOnO", &o0, &o1, &start, &k, &oy, &orhs, &buf, &oout))
+        return NULL;
+    const double *a0 = get(&bs, o0, 0, &l0, "a0"), *a1 = a0 ? get(&bs, o1, 0, &l1, "a1b") : NULL;
+    const double *y = a1 ? get(&bs, oy, 0, &ly, "y") : NULL;
+    const double *rhs = y ? get(&bs, orhs, 0, &lrhs, "rhs") : NULL;
+    double *out = rhs ? get(&bs, oout, 1, &lout, "out") : NULL;
+    Py_ssize_t size = ly, nb = size > 0 ? l1 / size : 0;
+    if (out != NULL
+        && (l0 != size * size || lrhs != size || lout != size || l1 != size * nb || start < 0
+            || start + nb > size || buf < 1)) {
+        PyErr_SetString(PyExc_ValueError, "residual needs a0 (n, n), a1b (n, nb), y, rhs and "
+                                          "out (n,), 0 <= start <= n - nb, buf >= 1");
+        out = NULL;
+    }
+    if (out == NULL) {
+        release(&bs);
+        return NULL;
+    }
+    const long double ke = (long double)k;
+    Py_BEGIN_ALLOW_THREADS
+    for (Py_ssize_t i = 0; i < size; i++) {
+        long double acc = row_sum(a0 + i * size, y, size, buf);
+        acc += ke * row_sum(a1 + i * nb, y + start, nb, buf);
+        out[i] = (double)((long double)rhs[i] - acc);
+    }
+    Py_END_ALLOW_THREADS
+    release(&bs);
+    Py_RETURN_NONE;
+}
+
 static PyMethodDef methods[] = {
     {"equilibrate", py_equilibrate, METH_VARARGS,
      "equilibrate(a0, a1b, start, k, rs, colmax): row scales and column maxima of A(k)."},
     {"scale_form", py_scale_form, METH_VARARGS,
      "scale_form(a0, a1b, start, rs, cs, k, ak): the system scaled in place and A(k)."},
+    {"residual", py_residual, METH_VARARGS,
+     "residual(a0, a1b, start, k, y, rhs, buf, out): rhs - A(k) y in long double."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "solver_fused",

@@ -172,3 +172,28 @@ def test_compiled_newton_set_up_gives_the_numpy_bits(numpy_route, geometry, c):
     assert np.array_equal(got.x, want.x)
     for g, w in zip(got_scales, want_scales):
         assert np.array_equal(g, w)
+
+
+@needs_fused
+@pytest.mark.parametrize("size, nb, start", [(3201, 1100, 2000), (8193, 8, 100),
+                                             (9000, 8500, 300), (13, 0, 4), (1, 1, 0)])
+def test_compiled_residual_gives_the_einsum_bits(numpy_route, size, nb, start):
+    """The extended-precision residual rhs - (a0 + k a1) y (n >= 1024): compiled, numpy's
+    einsum loop for long double, rows longer than its 8192-element runs included (9000:
+    split); entries over 40 orders of magnitude, so that a different order of summation
+    shows in the last bits."""
+    rng = np.random.default_rng(size)
+    a0 = rng.standard_normal((size, size)) * np.exp(rng.uniform(-20.0, 20.0, (size, size)))
+    a1 = rng.standard_normal((size, nb)) * np.exp(rng.uniform(-5.0, 5.0, (size, nb)))
+    y = rng.standard_normal(size) * np.exp(rng.uniform(-10.0, 10.0, size))
+    rhs = rng.standard_normal(size)
+    cols = np.arange(start, start + nb)
+    args = (a0, a1, cols, 0.37, y, rhs)
+    got = default_method._extended_residual(*args, fused=True)
+    want = numpy_route(default_method._extended_residual, *args, fused=True)
+    assert np.array_equal(got, want)
+    exact = rhs.astype(np.longdouble) - (a0.astype(np.longdouble) @ y.astype(np.longdouble)
+                                         + np.longdouble(0.37) * (a1.astype(np.longdouble)
+                                                                  @ y[cols].astype(np.longdouble)))
+    scale = np.abs(a0) @ np.abs(y) + 0.37 * np.abs(a1) @ np.abs(y[cols]) + np.abs(rhs)
+    assert np.all(np.abs(got - exact.astype(float)) <= 1e-15 * scale + 1e-300)

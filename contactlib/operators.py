@@ -312,8 +312,8 @@ def nodal_operators(model: Contact, mesh: Mesh,
     """
     nodes, m, n = mesh.nodes, mesh.stick_index, mesh.n
     degrees = [model.length_degrees(part) for part in PARTS]
-    if not 0 < m < n:
-        return operators(model, nodes, nodes)
+    if not 0 < m < n or all(d is None for d in degrees):  # (no stick block to reuse: one
+        return operators(model, nodes, nodes)  # joint pass, the same bits as each part alone)
     if any(d is None for d in degrees):
         return tuple(nodal_operator_part(model, mesh, part, cache) for part in PARTS)
     c = float(nodes[m])

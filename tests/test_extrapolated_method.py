@@ -340,22 +340,26 @@ def test_extremes_at_n1024_within_the_estimate(geometry, c):
 
 
 @pytest.mark.slow
-def test_level_from_the_trend_takes_one_factorization(monkeypatch):
+@pytest.mark.parametrize("nu", [0.49999, 0.3])
+def test_level_from_the_trend_takes_one_factorization(monkeypatch, nu):
     """From n = 2048 the level n/2 starts from the n^-2 trend of n/8 and n/4 and takes one
-    refined step (PREDICTED_FROM_N), where Newton from k(n/4) took two plain steps and a
-    refined one: the same roots (within the refined solutions' noise, measured <= 5e-12
-    on every level; the closed form at nu = 0.49999 within 3e-9), two factorizations
-    fewer."""
+    refined step (PREDICTED_FROM_N), and the level n/4 from k(n/8) (NEXT_FROM_N), where
+    Newton from the coarser level's k took two plain steps and a refined one: the same
+    roots (within the refined solutions' noise, measured <= 5e-12 on every level; the
+    closed form at nu = 0.49999 within 3e-9), two factorizations fewer each."""
     from contactlib import extrapolated_method as em
 
-    model = contact("sphere", 0.49999)
+    model = contact("sphere", nu)
     new = solve_extrapolated(model, 0.5, 2048, work=False)
-    monkeypatch.setattr(em, "PREDICTED_FROM_N", 10**6)  # the old path: plain Newton, copies
+    monkeypatch.setattr(em, "PREDICTED_FROM_N", 10**6)  # the old paths: plain Newton, copies
+    monkeypatch.setattr(em, "NEXT_FROM_N", 10**6)
     old = solve_extrapolated(model, 0.5, 2048, work=False)
     for a, b in zip(new.level_k, old.level_k):
         assert abs(a / b - 1.0) <= 1e-10, (new.level_k, old.level_k)
-    assert new.iterations <= old.iterations - 2, (new.iterations, old.iterations)
-    assert abs(new.k / float(uncoupled_friction("sphere", 0.49999, 0.5)) - 1.0) <= 3e-9
+    assert abs(new.k / old.k - 1.0) <= 1e-10
+    assert new.iterations <= old.iterations - 4, (new.iterations, old.iterations)
+    if nu == 0.49999:
+        assert abs(new.k / float(uncoupled_friction("sphere", nu, 0.5)) - 1.0) <= 3e-9
 
 
 def test_restriction_in_row_blocks_is_bit_for_bit(monkeypatch):

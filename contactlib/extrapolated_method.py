@@ -65,7 +65,8 @@ from .operators import (StickBlocks, nodal_operators, restrict_with_slip_samples
                         slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
-           "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LAYER_FLOOR_FROM_N", "N_MULTIPLE", "resolving_n",
+           "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LAYER_FLOOR_FROM_N", "N_MULTIPLE",
+           "resolving_n",
            "FINE_QUADRATURE_FROM_N", "quadrature_for", "EXTREMES_FINEST_FROM_N",
            "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",

@@ -116,7 +116,8 @@ static PyObject *py_scale_form(PyObject *Py_UNUSED(self), PyObject *args)
  * long double (einsum_sumprod.c.src, contig_contig_outstride0_two, no SIMD for long double)
  * sums products four at a time, (((ab0 + ab1) + ab2) + ab3) added to the accumulator, the
  * tail one by one; its buffered iterator hands a row over in runs of at most `buf` elements
- * (np.getbufsize()), each run's sum added to the output element, which starts at 0 */
+ * (8192, its fixed NPY_BUFSIZE: np.setbufsize does not change it), each run's sum added to
+ * the output element, which starts at 0 */
 static long double run_sum(const double *r, const double *y, Py_ssize_t count)
 {
     long double accum = 0.0L;

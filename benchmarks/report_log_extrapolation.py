@@ -1,0 +1,94 @@
+"""A lead toward k to 1e-9 (issue 18): an n^-3 ln n term in the levels' expansion.
+
+    python benchmarks/report_log_extrapolation.py            # about 3 minutes
+    python benchmarks/report_log_extrapolation.py --self     # nu = 0.3 and 0: no truth
+
+The extrapolated method eliminates n^-2, n^-3 and n^-4 from the default method's
+roots on four nested meshes. This script solves the levels n = 32 ... 2048 (two
+extrapolated solves, n = 256 and 2048, whose levels are nested and share the meshes
+they have in common) and extrapolates every run of consecutive levels two ways:
+
+* ``2+3+4``: four levels, k + A n^-2 + B n^-3 + C n^-4 (the method's own);
+* ``2+3L+3+4``: five levels, with a term n^-3 ln n added.
+
+With nu = 0.4999999 the closed form of the uncoupled problem is a truth to about
+1e-13 (the coupling enters at beta^2), so the printed numbers are errors. ``--self``
+prints, at nu = 0.3 and 0 (c/a = 0.5, levels up to n = 4096), each value relative to
+the last one of its own kind, i.e. how far the extrapolations move as n grows.
+
+Nothing here changes the method; it measures what a fifth level would buy.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")  # before numpy is imported
+
+import sys
+
+import numpy as np
+
+from contactlib.extrapolated_method import solve_extrapolated
+from contactlib.model import contact
+from contactlib.theory import uncoupled_friction
+
+TERMS = {
+    "2+3+4": (lambda n: n**-2.0, lambda n: n**-3.0, lambda n: n**-4.0),
+    "2+3L+3+4": (lambda n: n**-2.0, lambda n: n**-3.0 * np.log(n), lambda n: n**-3.0,
+                 lambda n: n**-4.0),
+}
+
+
+def levels(geometry: str, nu: float, c: float, finest: tuple[int, ...]) -> dict[int, float]:
+    """Every level's k of extrapolated solves at the given finest n (levels in common:
+    their mean; they agree to about 1e-11)."""
+    model = contact(geometry, nu)
+    found: dict[int, list[float]] = {}
+    for n in finest:
+        s = solve_extrapolated(model, c, n, work=False)
+        if not s.converged or "not nested" in (s.message or ""):
+            raise SystemExit(f"{geometry}, nu = {nu}, c/a = {c}, n = {n}: {s.message}")
+        for level, k in zip(s.levels, s.level_k):
+            found.setdefault(level, []).append(k)
+    return {n: float(np.mean(v)) for n, v in sorted(found.items())}
+
+
+def extrapolations(by_n: dict[int, float], terms) -> list[tuple[int, float]]:
+    """(finest n, k) of every run of len(terms) + 1 consecutive levels."""
+    ns = sorted(by_n)
+    size = len(terms) + 1
+    out = []
+    for last in range(size - 1, len(ns)):
+        run = ns[last - size + 1:last + 1]
+        a = np.array([[1.0] + [f(float(n)) for f in terms] for n in run])
+        out.append((run[-1], float(np.linalg.solve(a, [by_n[n] for n in run])[0])))
+    return out
+
+
+def main() -> None:
+    if "--self" in sys.argv[1:]:
+        print("k of each extrapolation relative to the last of its kind (c/a = 0.5; no truth)")
+        for geometry, nu in (("sphere", 0.3), ("cylinder", 0.3), ("sphere", 0.0)):
+            by_n = levels(geometry, nu, 0.5, (512, 4096))
+            for name, terms in TERMS.items():
+                ex = extrapolations(by_n, terms)
+                last = ex[-1][1]
+                print(f"  {geometry:8s} nu = {nu:<4} {name:9s} "
+                      + "  ".join(f"n={n}: {k / last - 1:+.1e}" for n, k in ex))
+        return
+    nu = 0.4999999
+    print(f"error of k against the closed form, nu = {nu}, by the finest level used")
+    for geometry in ("sphere", "cylinder"):
+        for c in (0.1, 0.5, 0.9):
+            by_n = levels(geometry, nu, c, (256, 2048))
+            exact = float(uncoupled_friction(geometry, nu, c))
+            for name, terms in TERMS.items():
+                ex = extrapolations(by_n, terms)
+                print(f"  {geometry:8s} c/a = {c}  {name:9s} "
+                      + "  ".join(f"n={n}: {k / exact - 1:+.1e}" for n, k in ex if n >= 256))
+
+
+if __name__ == "__main__":
+    main()

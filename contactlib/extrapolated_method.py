@@ -65,8 +65,8 @@ from .operators import (StickBlocks, nodal_operators, restrict_with_slip_samples
                         slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
-           "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LAYER_FLOOR_FROM_N", "N_MULTIPLE",
-           "resolving_n",
+           "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LOG_LEVEL_FROM_N",
+           "extrapolate_with_log", "LAYER_FLOOR_FROM_N", "N_MULTIPLE", "resolving_n",
            "FINE_QUADRATURE_FROM_N", "quadrature_for", "EXTREMES_FINEST_FROM_N",
            "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
@@ -110,6 +110,19 @@ level's root (sphere, nu = 0.3, c/a = 0.5, n = 2048: 4e-7), so one factorization
 level suffices where it took three (two plain Newton steps from k(n/4), then a refined
 one); from the same n on, the finest level's system is also equilibrated in place (as the
 default method's from n = 1024)."""
+
+LOG_LEVEL_FROM_N = 1024
+"""From this finest n (half-space bodies, the band of difference rows around c, levels
+nested down to n/16) a fifth level n/16 is solved (its operators restricted from n/8) and
+k is extrapolated from the five with an n^-3 ln n term besides n^-2, n^-3 and n^-4
+(:func:`extrapolate_with_log`): the levels' roots carry that term, which the four-level
+extrapolation leaves as its n^-3 truncation. Against the closed forms at nu = 0.4999999
+(sphere and cylinder, c/a = 0.1, 0.5, 0.9): four levels 2.5e-9 ... 8.5e-9 at n = 1024 and
+3.9e-10 ... 9.9e-10 at 2048, five 7.4e-11 ... 3.8e-10 and 3.9e-11 ... 5.8e-10
+(``benchmarks/report_log_extrapolation.py``). The five-level k is taken only where it lies
+within the four-level estimate of the four-level k (else that one stays, ``k_four_levels``
+either way), and the estimate stays the four-level one: it overstates the five-level
+error (measured 4e-12 ... 6.3e-10 against estimates of 2.7e-9 ... 1.2e-8)."""
 
 NEXT_FROM_N = 512
 """A coarse level with at least this many elements (below :data:`PREDICTED_FROM_N`: the
@@ -206,6 +219,9 @@ class ExtrapolatedSolution(DiscreteSolution):
         k of each coarse level over the extrapolated k, minus 1.
     k_fine : float
         The finest level's own root.
+    k_four_levels : float
+        k extrapolated from the four levels alone (equal to ``k`` unless a fifth level
+        was used, :data:`LOG_LEVEL_FROM_N`).
     extrapolated_load : float
         The extrapolated load (what :meth:`load` returns).
     error_estimate, load_error_estimate, work_error_estimate : float
@@ -217,6 +233,7 @@ class ExtrapolatedSolution(DiscreteSolution):
     level_load: tuple = ()
     level_work: tuple = ()
     k_fine: float = math.nan
+    k_four_levels: float = math.nan
     level_offsets: tuple = ()
     extrapolated_load: float = math.nan
     error_estimate: float = math.nan
@@ -261,6 +278,32 @@ def extrapolate(values, orders=ORDERS) -> tuple[float, float]:
     if v.size > 2 and abs(full[-1]) >= np.max(np.abs(full[1:-1])):
         return float(v[-1]), float(np.max(np.abs(np.diff(v)))) / abs(v[-1] or 1.0)
     return value, abs(value - float(part[0])) / scale
+
+
+def extrapolate_with_log(values) -> float:
+    """k from five nested levels n/16, n/8, n/4, n/2, n: k + A n^-2 + B n^-3 ln n + C n^-3
+    + D n^-4 through the five (:data:`LOG_LEVEL_FROM_N`)."""
+    v = np.asarray(values, dtype=float)
+    h = 2.0 ** np.arange(v.size - 1, -1, -1)  # 16, 8, 4, 2, 1 (units of 1/n): h^3 ln h and
+    # h^3 span n^-3 ln n and n^-3
+    a = np.column_stack([np.ones(v.size), h**2, h**3 * np.log(h), h**3, h**4])
+    return float(np.linalg.solve(a, v)[0])
+
+
+def _fifth_level_k(geometry: Contact, c: float, n: int, mesh: Mesh, ops, sols,
+                   side: float) -> float | None:
+    """k of :func:`extrapolate_with_log` with the level n/16 nested in ``mesh`` (the level
+    n/8, operators ``ops``) solved here; None where it cannot be (not nested, not solved)."""
+    if mesh.n % 2 or mesh.stick_index % 2:
+        return None
+    sub = Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
+    (pc, qc), _ = restrict_with_slip_samples(ops, mesh)
+    k8, k4 = sols[0].oriented_k, sols[1].oriented_k
+    d = _level(geometry, c, n // 16, sub, pc, qc, k8 + 4.0 * (k8 - k4), one_step=False,
+               rows=_rows(geometry, sub, n), reversed_side=side < 0.0)
+    if not (_good(d) and d.oriented_k * k8 > 0.0):
+        return None
+    return extrapolate_with_log([d.k] + [s.k for s in sols])
 
 
 def _predict(coarse_k, orders=ORDERS) -> float:
@@ -661,6 +704,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     out.level_k = tuple(float(s.k) for s in sols)
     out.level_load = tuple(float(geometry.load(s.mesh.nodes, s.p)) for s in sols)
     out.k_fine = float(top.k)
+    out.k_four_levels = float(top.k)  # (the four-level value once extrapolated, below)
     if not all(s.converged for s in sols):
         bad = ", ".join(str(m) for m, s in zip(ns, sols) if not s.converged)
         out.converged = False
@@ -697,6 +741,12 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     if (not geometry.body.is_half_space and not (band or difference)
             and n >= LAYER_FLOOR_FROM_N):  # plain rows on a layer: see LAYER_FLOOR_FROM_N
         out.error_estimate = max(out.error_estimate, _finest_level_error(out.level_k))
+    out.k_four_levels = out.k
+    if (nested and n >= LOG_LEVEL_FROM_N and band and geometry.body.is_half_space
+            and out.k != top.k and np.isfinite(out.error_estimate)):
+        k5 = _fifth_level_k(geometry, c, n, meshes[0], opss[0], sols, side)
+        if k5 is not None and abs(k5 / out.k - 1.0) <= out.error_estimate:
+            out.k = k5
     out.level_offsets = tuple(float(s.k) / out.k - 1.0 for s in sols[:-1])
     if work:
         out.level_work = tuple(_work(geometry, s) for s in sols)

@@ -554,3 +554,33 @@ def test_a_scene_with_the_extrapolated_method_runs_through_the_workflow_stages()
     ref = {c["stick_ratio"]: c["k"] for c in REFERENCE["cases"]
            if c["geometry"] == "cylinder" and c["nu"] == 0.3}
     assert abs(records[0].k / ref[0.1] - 1.0) < 1e-6
+
+
+@pytest.mark.parametrize("geometry, c", [("sphere", 0.5), ("sphere", 0.1), ("cylinder", 0.9),
+                                         ("cylinder", 0.02)])
+def test_fifth_level_removes_the_n3_log_term(geometry, c):
+    """From n = 1024 (LOG_LEVEL_FROM_N) a fifth level n/16 and an n^-3 ln n term: against
+    the closed form at nu = 0.4999999 (a truth to ~1e-13 there) k is within 5e-10 where the
+    four-level value is 1.8e-9 ... 8.5e-9 off (measured 5.7e-11 ... 4e-10 and 2.1e-9 ...
+    8.5e-9); the estimate, the four-level one, covers both. Below, k is the four levels'."""
+    from contactlib import extrapolated_method as em
+
+    model = contact(geometry, 0.4999999)
+    exact = float(uncoupled_friction(geometry, 0.4999999, c))
+    s = solve_extrapolated(model, c, em.LOG_LEVEL_FROM_N, work=False)
+    assert s.converged
+    assert abs(s.k / exact - 1.0) <= 5e-10, (s.k / exact - 1.0, s.k_four_levels / exact - 1.0)
+    assert abs(s.k_four_levels / exact - 1.0) >= 1.5e-9  # (the fifth level was used)
+    assert abs(s.k_four_levels / exact - 1.0) <= s.error_estimate
+    coarse = solve_extrapolated(model, c, em.LOG_LEVEL_FROM_N // 2, work=False)
+    assert coarse.k == coarse.k_four_levels
+
+
+def test_five_level_extrapolation_is_exact_on_its_expansion():
+    """extrapolate_with_log recovers k from values k + A n^-2 + B n^-3 ln n + C n^-3 + D n^-4
+    on n/16 ... n (to round-off)."""
+    from contactlib.extrapolated_method import extrapolate_with_log
+
+    ns = 1024.0 / 2.0 ** np.arange(4, -1, -1)
+    values = 0.3 + 0.8 * ns**-2 - 5.0 * ns**-3 * np.log(ns) + 2.0 * ns**-3 + 7.0 * ns**-4
+    assert abs(extrapolate_with_log(values) / 0.3 - 1.0) <= 1e-13

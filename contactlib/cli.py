@@ -512,7 +512,7 @@ def _indenter(geometry: str) -> Any:
 
 def _head(sol: Solution) -> str:
     """``sphere, nu = 0.3, method = default, n = 256`` (and a/h where a layer is possible)."""
-    head = f"{sol.geometry}, nu = {sol.nu:g}, method = {sol.method}, n = {sol.n}"
+    head = f"{sol.geometry}, nu = {sol.nu:.10g}, method = {sol.method}, n = {sol.n}"
     if _indenter(sol.geometry).reports_layer(sol.slab_ratio):
         head += f", a/h = {sol.slab_ratio:g}"
     if sol.slab_ratio > 0:
@@ -568,7 +568,7 @@ def format_history(res: Any) -> str:
     """Summary of a history: the state at the end of every path segment, and the work."""
     ind = _indenter(res.geometry)
     work_scale = f"V R^2/(E* a_max^{ind.work_exponent})"
-    head = (f"{res.geometry}, nu = {res.nu:g}, k = {_g(res.friction)}, n = {res.n}, "
+    head = (f"{res.geometry}, nu = {res.nu:.10g}, k = {_g(res.friction)}, n = {res.n}, "
             f"{res.steps} steps per segment")
     if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"

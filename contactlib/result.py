@@ -108,7 +108,7 @@ def history_repr(res: Any) -> str:
     path = " -> ".join(f"{v:g}" for v in res.load_path[:8])
     if len(res.load_path) > 8:
         path += f" -> ... ({len(res.load_path)} levels)"
-    head = (f"HistoryResult: {res.geometry}, nu = {res.nu:g}, k = {_scalar(res.friction)}, "
+    head = (f"HistoryResult: {res.geometry}, nu = {res.nu:.10g}, k = {_scalar(res.friction)}, "
             f"n = {res.n}")
     if indenter(res.geometry).reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
@@ -377,7 +377,7 @@ class Solution:
     base: str = "smooth"
 
     def __repr__(self) -> str:
-        head = f"Solution: {self.geometry}, nu = {self.nu:g}, method = {self.method}, n = {self.n}"
+        head = f"Solution: {self.geometry}, nu = {self.nu:.10g}, method = {self.method}, n = {self.n}"
         if indenter(self.geometry).reports_layer(self.slab_ratio):
             head += f", a/h = {self.slab_ratio:g}"
         if self.slab_ratio > 0:

@@ -535,3 +535,13 @@ def test_displacement_profile_is_computed_when_read(monkeypatch) -> None:
     import pickle
     back = pickle.loads(pickle.dumps(sols[0]))  # a solution not yet read pickles too
     assert np.array_equal(back.tangential_displacement, sols[0].tangential_displacement)
+
+
+def test_repr_shows_poisson_ratio_as_given():
+    """nu = 0.4999999 is not shown as 0.5 (six significant digits did): the first line of a
+    solution's repr gives nu to ten digits, 0.3 still as 0.3."""
+    import contactlib
+
+    for nu, shown in ((0.4999999, "nu = 0.4999999,"), (0.3, "nu = 0.3,")):
+        head = repr(contactlib.solve("sphere", nu, stick_ratio=0.5, n=64)).splitlines()[0]
+        assert shown in head, head

@@ -32,15 +32,12 @@ import sys
 
 import numpy as np
 
-from contactlib.extrapolated_method import solve_extrapolated
+from contactlib.extrapolated_method import extrapolate, extrapolate_with_log, solve_extrapolated
 from contactlib.model import contact
 from contactlib.theory import uncoupled_friction
 
-TERMS = {
-    "2+3+4": (lambda n: n**-2.0, lambda n: n**-3.0, lambda n: n**-4.0),
-    "2+3L+3+4": (lambda n: n**-2.0, lambda n: n**-3.0 * np.log(n), lambda n: n**-3.0,
-                 lambda n: n**-4.0),
-}
+# the method's own extrapolations, by the number of consecutive levels they take
+KINDS = {"2+3+4": (4, lambda v: extrapolate(v)[0]), "2+3L+3+4": (5, extrapolate_with_log)}
 
 
 def levels(geometry: str, nu: float, c: float, finest: tuple[int, ...]) -> dict[int, float]:
@@ -57,16 +54,12 @@ def levels(geometry: str, nu: float, c: float, finest: tuple[int, ...]) -> dict[
     return {n: float(np.mean(v)) for n, v in sorted(found.items())}
 
 
-def extrapolations(by_n: dict[int, float], terms) -> list[tuple[int, float]]:
-    """(finest n, k) of every run of len(terms) + 1 consecutive levels."""
+def extrapolations(by_n: dict[int, float], kind: str) -> list[tuple[int, float]]:
+    """(finest n, k) of every run of consecutive levels that ``kind`` takes."""
     ns = sorted(by_n)
-    size = len(terms) + 1
-    out = []
-    for last in range(size - 1, len(ns)):
-        run = ns[last - size + 1:last + 1]
-        a = np.array([[1.0] + [f(float(n)) for f in terms] for n in run])
-        out.append((run[-1], float(np.linalg.solve(a, [by_n[n] for n in run])[0])))
-    return out
+    size, extrapolated = KINDS[kind]
+    return [(ns[last], float(extrapolated([by_n[n] for n in ns[last - size + 1:last + 1]])))
+            for last in range(size - 1, len(ns))]
 
 
 def main() -> None:
@@ -74,8 +67,8 @@ def main() -> None:
         print("k of each extrapolation relative to the last of its kind (c/a = 0.5; no truth)")
         for geometry, nu in (("sphere", 0.3), ("cylinder", 0.3), ("sphere", 0.0)):
             by_n = levels(geometry, nu, 0.5, (512, 4096))
-            for name, terms in TERMS.items():
-                ex = extrapolations(by_n, terms)
+            for name in KINDS:
+                ex = extrapolations(by_n, name)
                 last = ex[-1][1]
                 print(f"  {geometry:8s} nu = {nu:<4} {name:9s} "
                       + "  ".join(f"n={n}: {k / last - 1:+.1e}" for n, k in ex))
@@ -86,8 +79,8 @@ def main() -> None:
         for c in (0.1, 0.5, 0.9):
             by_n = levels(geometry, nu, c, (256, 2048))
             exact = float(uncoupled_friction(geometry, nu, c))
-            for name, terms in TERMS.items():
-                ex = extrapolations(by_n, terms)
+            for name in KINDS:
+                ex = extrapolations(by_n, name)
                 print(f"  {geometry:8s} c/a = {c}  {name:9s} "
                       + "  ".join(f"n={n}: {k / exact - 1:+.1e}" for n, k in ex if n >= 256))
 

@@ -317,23 +317,18 @@ def _expand_phi(geometry: Contact, f: np.ndarray) -> np.ndarray:
 _EINSUM_RUN = 8192
 
 
-def _contiguous_run(cols: np.ndarray) -> bool:
-    """Whether the indices ``cols`` are consecutive (a1's columns a slice of A's)."""
-    return cols.size == 0 or bool(cols[-1] - cols[0] == cols.size - 1
-                                  and np.all(np.diff(cols) == 1))
-
-
 def _c_doubles(*arrays: np.ndarray) -> bool:
     return all(a.dtype == np.float64 and a.flags.c_contiguous for a in arrays)
 
 
-def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k: float,
+def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray | slice, k: float,
                        y: np.ndarray, rhs: np.ndarray, block: int = 256,
                        extended: tuple[np.ndarray, np.ndarray] | None = None,
                        fused: bool = False) -> np.ndarray:
     """rhs - (a0 + k a1) y in extended precision, a block of rows at a time.
 
-    ``a1`` is given by its nonzero columns ``cols`` only. Memory: two blocks
+    ``a1`` is given by its nonzero columns ``cols`` (indices, or a slice: newton_on_k's
+    ``block``; the compiled route needs the slice) only. Memory: two blocks
     of rows in long double (27 MB at n = 4096), never a full extended copy,
     unless the caller gives ``extended``, (a0, a1_cols) already in long double
     (the same numbers: the conversion is exact), to reuse across solves.
@@ -346,11 +341,10 @@ def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray, k:
     (``solver_fused.residual``: einsum's own loop for long double, four products at
     a time, in its runs of 8192; the same bits, 15 instead of 57 ms at 3201 x 3201).
     """
-    if (fused and extended is None and FUSED and _contiguous_run(cols)
+    if (fused and extended is None and FUSED and isinstance(cols, slice)
             and _c_doubles(a0, a1_cols, y, rhs)):  # compiled: the einsum route's bits
         out = np.empty(rhs.size)
-        _fused.residual(a0, a1_cols, int(cols[0]) if cols.size else 0, float(k), y, rhs,
-                        _EINSUM_RUN, out)
+        _fused.residual(a0, a1_cols, cols.start, float(k), y, rhs, _EINSUM_RUN, out)
         return out
     ye = y.astype(_EXTENDED)
     yc = ye[cols]
@@ -526,7 +520,8 @@ class NewtonResult:
     stagnated: float
 
 
-def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray, k: float,
+def _refined_solve(lu: tuple, a0s: np.ndarray, a1s: np.ndarray, cols: np.ndarray | slice,
+                   k: float,
                    rhs: np.ndarray, refine: bool,
                    extended: tuple[np.ndarray, np.ndarray] | None = None,
                    in_place: bool = False) -> np.ndarray:
@@ -643,10 +638,10 @@ def newton_on_k(system: PartialSlipSystem, k: float, *, max_iter: int = 30,
                               check_finite=False)
         if refine and extended is None and bs.size <= _EXTENDED_COPY_UP_TO:
             extended = (a0s.astype(_EXTENDED), a1s.astype(_EXTENDED))
-        x = cs * _refined_solve(lu, a0s, a1s, slip, k, bs, refine, extended, overwrite)
+        x = cs * _refined_solve(lu, a0s, a1s, block, k, bs, refine, extended, overwrite)
         g = shape[j] * x[nn + j] - k * x[j]
         a1x = a1s @ (x[slip] / cs[block]) if overwrite else rs * (sysm.a1b @ x[slip])
-        xk = -cs * _refined_solve(lu, a0s, a1s, slip, k, a1x,
+        xk = -cs * _refined_solve(lu, a0s, a1s, block, k, a1x,
                                   refine and refine_derivative, extended, overwrite)
         dg = shape[j] * xk[nn + j] - x[j] - k * xk[j]
         step = g / dg

@@ -61,8 +61,8 @@ from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
                              difference_rows, newton_on_k, solve_default)
 from .elements import Mesh, graded_mesh
 from .model import Contact
-from .operators import (StickBlocks, nodal_operators, restrict_with_slip_samples,
-                        slip_zone_samples)
+from .operators import (StickBlocks, nodal_operators, restrict_nested,
+                        restrict_with_slip_samples, slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LOG_LEVEL_FROM_N",
@@ -290,14 +290,22 @@ def extrapolate_with_log(values) -> float:
     return float(np.linalg.solve(a, v)[0])
 
 
+def _halved(mesh: Mesh) -> Mesh | None:
+    """The nested mesh with every other node of ``mesh``, None where it has none (an odd
+    element count in either zone)."""
+    if mesh.n % 2 or mesh.stick_index % 2:
+        return None
+    return Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
+
+
 def _fifth_level_k(geometry: Contact, c: float, n: int, mesh: Mesh, ops, sols,
                    side: float) -> float | None:
     """k of :func:`extrapolate_with_log` with the level n/16 nested in ``mesh`` (the level
     n/8, operators ``ops``) solved here; None where it cannot be (not nested, not solved)."""
-    if mesh.n % 2 or mesh.stick_index % 2:
+    sub = _halved(mesh)
+    if sub is None:
         return None
-    sub = Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
-    (pc, qc), _ = restrict_with_slip_samples(ops, mesh)
+    pc, qc = (restrict_nested(op, mesh, odd_parts=())[0] for op in ops)  # (no samples)
     k8, k4 = sols[0].oriented_k, sols[1].oriented_k
     d = _level(geometry, c, n // 16, sub, pc, qc, k8 + 4.0 * (k8 - k4), one_step=False,
                rows=_rows(geometry, sub, n), reversed_side=side < 0.0)
@@ -632,8 +640,8 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     nested = True
     for _ in range(LEVELS - 1):  # restrict level by level: n/2 from n, n/4 from n/2
         mesh = meshes[-1]
-        if mesh.n % 2 == 0 and mesh.stick_index % 2 == 0:  # every other node: nested
-            sub = Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
+        sub = _halved(mesh)
+        if sub is not None:  # every other node: nested
             (pc, qc), odd = restrict_with_slip_samples(opss[-1], mesh)
         else:  # a mesh scaled back to MAX_ELEMENTS: its own operators, not nested
             nested = False

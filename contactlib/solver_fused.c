@@ -12,6 +12,15 @@
 /* the larger of m and v, NaN kept (np.max, np.maximum propagate NaN) */
 static inline double nanmax(double m, double v) { return (v > m || v != v) ? v : m; }
 
+/* whether a0 (l0 doubles) and a1b (l1) hold a system of `size` unknowns, a1b's nb columns
+ * (set here) at columns start ... start + nb - 1 of A: the check every function here makes */
+static int system_ok(Py_ssize_t l0, Py_ssize_t l1, Py_ssize_t size, Py_ssize_t start,
+                     Py_ssize_t *nb)
+{
+    *nb = size > 0 ? l1 / size : 0;
+    return l0 == size * size && l1 == size * *nb && start >= 0 && start + *nb <= size;
+}
+
 /* equilibrate(a0, a1b, start, k, rs, colmax): rs_i = 1 / max_j |A_ij|,
  * colmax_j = max_i |A_ij| rs_i (default_method._equilibration) */
 static PyObject *py_equilibrate(PyObject *Py_UNUSED(self), PyObject *args)
@@ -25,10 +34,8 @@ static PyObject *py_equilibrate(PyObject *Py_UNUSED(self), PyObject *args)
     const double *a0 = get(&bs, o0, 0, &l0, "a0"), *a1 = a0 ? get(&bs, o1, 0, &l1, "a1b") : NULL;
     double *rs = a1 ? get(&bs, ors, 1, &lrs, "rs") : NULL;
     double *cm = rs ? get(&bs, ocm, 1, &lcm, "colmax") : NULL;
-    Py_ssize_t size = lrs, nb = size > 0 ? l1 / size : 0;
-    if (cm != NULL
-        && (l0 != size * size || lcm != size || l1 != size * nb || start < 0
-            || start + nb > size)) {
+    Py_ssize_t size = lrs, nb = 0;
+    if (cm != NULL && !(system_ok(l0, l1, size, start, &nb) && lcm == size)) {
         PyErr_SetString(PyExc_ValueError, "equilibrate needs a0 (n, n), a1b (n, nb), rs and "
                                           "colmax (n,), 0 <= start <= n - nb");
         cm = NULL;
@@ -78,10 +85,9 @@ static PyObject *py_scale_form(PyObject *Py_UNUSED(self), PyObject *args)
     const double *rs = a1 ? get(&bs, ors, 0, &lrs, "rs") : NULL;
     const double *cs = rs ? get(&bs, ocs, 0, &lcs, "cs") : NULL;
     double *ak = cs ? get(&bs, oak, 1, &lak, "ak") : NULL;
-    Py_ssize_t size = lrs, nb = size > 0 ? l1 / size : 0;
+    Py_ssize_t size = lrs, nb = 0;
     if (ak != NULL
-        && (l0 != size * size || lcs != size || lak != size * size || l1 != size * nb
-            || start < 0 || start + nb > size)) {
+        && !(system_ok(l0, l1, size, start, &nb) && lcs == size && lak == size * size)) {
         PyErr_SetString(PyExc_ValueError, "scale_form needs a0 and ak (n, n), a1b (n, nb), "
                                           "rs and cs (n,), 0 <= start <= n - nb");
         ak = NULL;
@@ -156,10 +162,9 @@ static PyObject *py_residual(PyObject *Py_UNUSED(self), PyObject *args)
     const double *y = a1 ? get(&bs, oy, 0, &ly, "y") : NULL;
     const double *rhs = y ? get(&bs, orhs, 0, &lrhs, "rhs") : NULL;
     double *out = rhs ? get(&bs, oout, 1, &lout, "out") : NULL;
-    Py_ssize_t size = ly, nb = size > 0 ? l1 / size : 0;
+    Py_ssize_t size = ly, nb = 0;
     if (out != NULL
-        && (l0 != size * size || lrhs != size || lout != size || l1 != size * nb || start < 0
-            || start + nb > size || buf < 1)) {
+        && !(system_ok(l0, l1, size, start, &nb) && lrhs == size && lout == size && buf >= 1)) {
         PyErr_SetString(PyExc_ValueError, "residual needs a0 (n, n), a1b (n, nb), y, rhs and "
                                           "out (n,), 0 <= start <= n - nb, buf >= 1");
         out = NULL;

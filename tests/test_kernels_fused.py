@@ -187,7 +187,7 @@ def test_compiled_residual_gives_the_einsum_bits(numpy_route, size, nb, start):
     a1 = rng.standard_normal((size, nb)) * np.exp(rng.uniform(-5.0, 5.0, (size, nb)))
     y = rng.standard_normal(size) * np.exp(rng.uniform(-10.0, 10.0, size))
     rhs = rng.standard_normal(size)
-    cols = np.arange(start, start + nb)
+    cols = slice(start, start + nb)  # (newton_on_k's block of a1 columns)
     args = (a0, a1, cols, 0.37, y, rhs)
     got = default_method._extended_residual(*args, fused=True)
     want = numpy_route(default_method._extended_residual, *args, fused=True)

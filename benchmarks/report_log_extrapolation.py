@@ -2,6 +2,7 @@
 
     python benchmarks/report_log_extrapolation.py            # about 3 minutes
     python benchmarks/report_log_extrapolation.py --self     # nu = 0.3 and 0: no truth
+    python benchmarks/report_log_extrapolation.py --estimate # the method's k and estimate
 
 The extrapolated method eliminates n^-2, n^-3 and n^-4 from the default method's
 roots on four nested meshes. This script solves the levels n = 32 ... 2048 (two
@@ -15,6 +16,10 @@ With nu = 0.4999999 the closed form of the uncoupled problem is a truth to about
 1e-13 (the coupling enters at beta^2), so the printed numbers are errors. ``--self``
 prints, at nu = 0.3 and 0 (c/a = 0.5, levels up to n = 4096), each value relative to
 the last one of its own kind, i.e. how far the extrapolations move as n grows.
+
+``--estimate`` (about 4 minutes) prints, for the method's own solve at n = 1024, 1536 and
+2048 (nu = 0.4999999, both geometries, c/a = 0.003 ... 0.995), the error of its k against
+the closed form, its error estimate and their ratio, and whether the five-level k was taken.
 
 The method itself does the five-level extrapolation from n = 1024
 (``extrapolated_method.LOG_LEVEL_FROM_N``, its ``k`` against ``k_four_levels``); this
@@ -62,7 +67,34 @@ def extrapolations(by_n: dict[int, float], kind: str) -> list[tuple[int, float]]
             for last in range(size - 1, len(ns))]
 
 
+ESTIMATE_RATIOS = (0.003, 0.01, 0.02, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95, 0.98, 0.99, 0.995)
+
+
+def estimates() -> None:
+    """The method's k error against the closed form and its estimate (nu = 0.4999999)."""
+    nu = 0.4999999
+    print(f"the method's k against the closed form, nu = {nu}: error, estimate, ratio")
+    worst = 0.0
+    for geometry in ("sphere", "cylinder"):
+        model = contact(geometry, nu)
+        for c in ESTIMATE_RATIOS:
+            exact = float(uncoupled_friction(geometry, nu, c))
+            row = []
+            for n in (1024, 1536, 2048):
+                s = solve_extrapolated(model, c, n, work=False)
+                err = abs(s.k / exact - 1.0)
+                worst = max(worst, err / s.error_estimate)
+                five = "5" if s.k != s.k_four_levels else "4"
+                row.append(f"n={n}: {err:.1e} / {s.error_estimate:.1e} "
+                           f"({err / s.error_estimate:.2f}, {five})")
+            print(f"  {geometry:8s} c/a = {c:<6} " + "  ".join(row), flush=True)
+    print(f"largest error / estimate: {worst:.2f}")
+
+
 def main() -> None:
+    if "--estimate" in sys.argv[1:]:
+        estimates()
+        return
     if "--self" in sys.argv[1:]:
         print("k of each extrapolation relative to the last of its kind (c/a = 0.5; no truth)")
         for geometry, nu in (("sphere", 0.3), ("cylinder", 0.3), ("sphere", 0.0)):

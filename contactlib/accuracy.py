@@ -85,6 +85,17 @@ ERROR_AT_256 = {
 _X_TABLE = np.array([0.02, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95, 0.98])
 EXTRAPOLATED_ERROR_AT_256 = np.array([1.5e-7, 1.6e-7, 2.1e-7, 4.0e-7, 6.1e-7, 6.0e-7, 3.3e-7,
                                       2.6e-7, 2.4e-7])
+# The five-level estimate of the extrapolated method from n = 1024 (extrapolated_method.
+# LOG_LEVEL_FROM_N: half-space bodies, 1e-4 < c/a < 1 - 5e-4, n a multiple of 512 so that
+# the levels nest down to n/32): its truncation part |k5(n/2) - k5(n)| / 7 at n = 1024, the
+# largest measured at each c/a of _X_TABLE (nu = 0.4999999, both geometries, c/a = 0.003 ...
+# 0.995; nu = -0.5, 0, 0.3, sphere, c/a = 0.02, 0.1, 0.5, 0.9, 0.98), rounded up, falling
+# like n^-4 (0.87e-9 -> 0.19e-9 from n = 1024 to 1536 at c/a = 0.5, nu = 0.4999999; n^-4
+# gives 0.17e-9), plus its noise bound (extrapolated_method.log_noise), which grows like
+# n^2. Columns: _X_TABLE.
+LOG_ESTIMATE_AT_1024 = np.array([2.0e-10, 2.0e-10, 2.8e-10, 5.3e-10, 9.0e-10, 6.3e-10, 3.3e-10,
+                                 2.4e-10, 2.4e-10])
+LOG_N_MULTIPLE = 512
 PLANNED_METHODS = ("default", "extrapolated")
 # Time a case costs relative to the default method's at the same n, both with their error
 # estimates (benchmarks/bench_frontier.py, part d: stages.solve_cases, 5 cases c/a = 0.1
@@ -120,13 +131,35 @@ def planned_body(geometry: Contact) -> bool:
 
 
 def predicted_method_error(method: str, geometry: str, stick_ratio: float, n: int) -> float:
-    """Measured-model relative k error of ``method`` (``"default"`` or ``"extrapolated"``)."""
+    """Measured-model relative k error of ``method`` (``"default"`` or ``"extrapolated"``)
+    on the half-space (the extrapolated method's: its four-level model, or from n = 1024
+    the five-level estimate where that is the smaller)."""
     if method == "default":
         return predicted_error(geometry, stick_ratio, n)
     c = float(stick_ratio)
     if c <= 0.0 or c >= 1.0:
         return 0.0
-    return _extrapolated_truncation(np.array([c]), n) + _extrapolated_noise(c, n)
+    return min(_extrapolated_truncation(np.array([c]), n) + _extrapolated_noise(c, n),
+               _five_level_estimate(True, np.array([c]), n))
+
+
+def _five_level_estimate(half_space: bool, stick_ratios: np.ndarray, n: int) -> float:
+    """The largest predicted five-level estimate of the extrapolated method over
+    ``stick_ratios`` (all inside (0, 1)) at n: the measured truncation part
+    (:data:`LOG_ESTIMATE_AT_1024`, n^-4) plus the noise bound at each stick ratio; inf
+    where the method does not extrapolate from five levels (below n = 1024, n not a multiple
+    of 512, a layer, c/a <= 1e-4 or >= 1 - 5e-4)."""
+    from .default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW
+    from .elements import graded_mesh
+    from .extrapolated_method import LOG_LEVEL_FROM_N, log_noise
+
+    if (n < LOG_LEVEL_FROM_N or n % LOG_N_MULTIPLE or not half_space
+            or stick_ratios.size == 0 or stick_ratios.min() <= AXIS_ROWS_BELOW
+            or 1.0 - stick_ratios.max() <= EDGE_ROWS_BELOW):
+        return math.inf
+    truncation = float(np.max(np.interp(stick_ratios, _X_TABLE, LOG_ESTIMATE_AT_1024))
+                       * (LOG_LEVEL_FROM_N / n) ** 4)
+    return truncation + max(log_noise(graded_mesh(n, float(c))) for c in set(stick_ratios))
 
 
 def _extrapolated_truncation(stick_ratios: np.ndarray, n: int) -> float:
@@ -190,10 +223,12 @@ def _cheapest_n(method: str, geometry: Contact, stick_ratios: Sequence[float],
         if method == "extrapolated":  # c/a = 0 and 1 are exact
             # the truncation part is largest where its table is (mid c/a), the noise at the
             # extreme c/a on either side (the smallest elements): each bounded by its largest
-            meets = inside.size == 0 or (
+            # (from n = 1024 the five-level estimate where it is the smaller: the method
+            # takes the smaller of the two)
+            meets = inside.size == 0 or min(
                 _extrapolated_truncation(inside, n)
-                + max(_extrapolated_noise(c, n) for c in {inside.min(), inside.max()})
-                <= limit)
+                + max(_extrapolated_noise(c, n) for c in {inside.min(), inside.max()}),
+                _five_level_estimate(geometry.body.is_half_space, inside, n)) <= limit
         else:
             meets = all(predicted_method_error(method, geometry.indenter.name, c, n)
                         + default_noise(geometry, c, n) <= limit for c in stick_ratios)

@@ -286,7 +286,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         bonded; irrelevant at ``slab_ratio = 0``.
     tolerance : float, optional
         A relative error of k to reach instead of a resolution, in
-        [1e-8, 0.1] (:func:`contactlib.validate.planned_tolerance`): the
+        [1e-9, 0.1] (:func:`contactlib.validate.planned_tolerance`): the
         method and n are planned (:func:`contactlib.accuracy.plan` over the
         default and the extrapolated method, the cheapest whose measured
         error model meets it; give neither ``n`` nor ``method``), n is

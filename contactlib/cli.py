@@ -117,7 +117,7 @@ def parse_max_error(text: str) -> float:
 
 
 def parse_tolerance(text: str) -> float:
-    """A relative error of k to reach, in [1e-8, 0.1] (:func:`validate.planned_tolerance`)."""
+    """A relative error of k to reach, in [1e-9, 0.1] (:func:`validate.planned_tolerance`)."""
     return _check(validate.planned_tolerance, text, _float(text))
 
 
@@ -261,7 +261,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                           "default: %(default)s")
     sub.add_argument("--tolerance", metavar="T", default=None,
                      help="relative error of k to reach instead of --n/--method, in "
-                          "[1e-8, 0.1]: the cheapest method and n predicted to meet it are "
+                          "[1e-9, 0.1]: the cheapest method and n predicted to meet it are "
                           "planned (the extrapolated method from about 1e-5 down), n is "
                           "doubled where a case's estimate falls short, and --max-error "
                           "becomes T; refused where no method is predicted to meet it "

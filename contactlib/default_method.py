@@ -821,7 +821,8 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
                   k_guess: float | None = None, tol: float = 1e-9,
                   max_iter: int = 30,
                   ops: tuple[np.ndarray, np.ndarray | None] | None = None,
-                  cache: StickBlocks | None = None) -> DiscreteSolution:
+                  cache: StickBlocks | None = None,
+                  mesh: Mesh | None = None) -> DiscreteSolution:
     """Solve the self-similar partial-slip problem for a given stick ratio.
 
     The stages: the mesh and its nodal operators; :func:`assemble` the
@@ -854,13 +855,19 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         :func:`~contactlib.operators.nodal_operator_part`) and of graded
         meshes (its ``meshes``), shared by the cases of a sweep; the numbers
         do not depend on it.
+    mesh : Mesh, optional
+        The mesh (default: ``graded_mesh(n, stick_ratio, power)``); given by the
+        extrapolated method for a level that is a halving of a finer mesh, which differs
+        from the graded mesh of its n where the finest was scaled back to the largest
+        element count.
 
     Returns
     -------
     DiscreteSolution
     """
-    mesh = graded_mesh(n, stick_ratio, power=power,
-                       store=None if cache is None else cache.meshes)
+    if mesh is None:
+        mesh = graded_mesh(n, stick_ratio, power=power,
+                           store=None if cache is None else cache.meshes)
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index
     pw, qw = _nodal_operators(geometry, mesh, ops, cache)

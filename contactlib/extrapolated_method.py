@@ -71,7 +71,8 @@ __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS"
            "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
-           "BAND_NOISE_POWER"]
+           "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise",
+           "LOG_LEVEL_MAX_OFFSET"]
 
 ORDERS = (2.0, 3.0, 4.0)
 """The orders of the default method's error expansion that are eliminated."""
@@ -113,16 +114,50 @@ default method's from n = 1024)."""
 
 LOG_LEVEL_FROM_N = 1024
 """From this finest n (half-space bodies, the band of difference rows around c, levels
-nested down to n/16) a fifth level n/16 is solved (its operators restricted from n/8) and
-k is extrapolated from the five with an n^-3 ln n term besides n^-2, n^-3 and n^-4
+nested down to n/32) two more levels, n/16 and n/32, are solved (their operators restricted
+from n/8, no kernel evaluated; 64 and 32 elements at n = 1024), and k is extrapolated from
+the five levels n/16 ... n with an n^-3 ln n term besides n^-2, n^-3 and n^-4
 (:func:`extrapolate_with_log`): the levels' roots carry that term, which the four-level
-extrapolation leaves as its n^-3 truncation. Against the closed forms at nu = 0.4999999
-(sphere and cylinder, c/a = 0.1, 0.5, 0.9): four levels 2.5e-9 ... 8.5e-9 at n = 1024 and
-3.9e-10 ... 9.9e-10 at 2048, five 7.4e-11 ... 3.8e-10 and 3.9e-11 ... 5.8e-10
-(``benchmarks/report_log_extrapolation.py``). The five-level k is taken only where it lies
-within the four-level estimate of the four-level k (else that one stays, ``k_four_levels``
-either way), and the estimate stays the four-level one: it overstates the five-level
-error (measured 4e-12 ... 6.3e-10 against estimates of 2.7e-9 ... 1.2e-8)."""
+extrapolation leaves as its n^-3 truncation. Its error estimate (:data:`LOG_ESTIMATE_DIVISOR`,
+:func:`log_noise`) compares it with the same extrapolation one level down (n/32 ... n/2).
+The five-level k and its estimate are taken where that k lies within the four-level
+estimate of the four-level k, its estimate is the smaller and the coarsest level is close
+enough (:data:`LOG_LEVEL_MAX_OFFSET`); else the four-level k and estimate stay
+(``k_four_levels`` either way). Against the closed forms at nu = 0.4999999 (sphere and
+cylinder, c/a = 0.003 ... 0.995, n = 1024): four levels 1.2e-9 ... 8.5e-9 off, five 3e-13
+... 1.1e-9 (at most 4e-10 for c/a <= 0.98), with estimates 3.0e-10 ... 9.2e-10 at c/a = 0.02
+... 0.9 (1.4e-9 at 0.98, 5.6e-9 at 0.995) where the four-level ones were 3.5e-9 ... 1.4e-8;
+the largest error / estimate over n = 1024, 1536, 2048 was 0.75
+(``python benchmarks/report_log_extrapolation.py --estimate``)."""
+
+LOG_ESTIMATE_DIVISOR = 7.0
+"""The five-level k's truncation estimate is |k5(n/2) - k5(n)| / 7, k5(n/2) the same
+extrapolation one level down (the levels n/32 ... n/2): exact for a remaining error of
+order n^-3; the remaining terms are of higher order (n^-4 ln n: the error fell 12 ... 17
+times from n = 512 to 1024), so it overstates. Against the closed forms at nu = 0.4999999,
+n = 1024 (both geometries, c/a = 0.003 ... 0.98), error / truncation estimate <= 0.69 where
+the truncation dominates; the rest, from n = 1536 on and next to full stick, is the
+quadrature noise (:func:`log_noise`)."""
+
+LOG_LEVEL_MAX_OFFSET = 5e-3
+"""The five-level k is taken only where the coarsest level n/32 lies within this of it
+(relative): beyond, the levels n/32 and n/16 are too far outside the expansion's range
+for its higher terms. Measured offsets were at most 3.9e-3 (sphere, nu = 0.4999999,
+c/a = 2e-4, n = 1024; 2.5e-3 at c/a = 0.02, nu = -0.5) over nu = -0.5 ... 0.4999999 and
+c/a = 2e-4 ... 0.9994, n = 1024 ... 4096, except sphere, nu = -0.5, c/a = 0.98 (k = 13.6):
+3.6e-2, 1.6e-2, 8.6e-3, 6.1e-3 at n = 1024, 1536, 2048, 4096, where the five-level k at
+n = 1536 lay 1.4e-8 from the values at n = 1024, 2048 and 4096 (which agree within 1.1e-9)
+with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3)."""
+
+# The quadrature noise of the five-level k (what its truncation estimate leaves of the
+# error against the closed form at nu = 0.4999999, sphere and cylinder, c/a = 2e-4 ...
+# 0.9994, n = 1024, 1536, 2048): LOG_NOISE[side] / h_min, h_min the smallest element
+# (units of a). The noise times h_min was at most 3.6e-17 on the stick side (c/a < 1/2;
+# sphere, c/a = 0.02, n = 1536) and 1.4e-16 on the annulus side (cylinder, c/a = 0.998,
+# n = 1536; at most 8.2e-17 for c/a <= 0.99). It falls less steeply with h_min^-0.5
+# (the four-level bound's power) across c/a and n.
+LOG_NOISE = {"stick": 5e-17, "annulus": 1.5e-16}
+
 
 NEXT_FROM_N = 512
 """A coarse level with at least this many elements (below :data:`PREDICTED_FROM_N`: the
@@ -222,6 +257,9 @@ class ExtrapolatedSolution(DiscreteSolution):
     k_four_levels : float
         k extrapolated from the four levels alone (equal to ``k`` unless a fifth level
         was used, :data:`LOG_LEVEL_FROM_N`).
+    log_level_k : tuple of float
+        The roots on the levels n/32 and n/16 where they were solved
+        (:data:`LOG_LEVEL_FROM_N`; else empty).
     extrapolated_load : float
         The extrapolated load (what :meth:`load` returns).
     error_estimate, load_error_estimate, work_error_estimate : float
@@ -234,6 +272,7 @@ class ExtrapolatedSolution(DiscreteSolution):
     level_work: tuple = ()
     k_fine: float = math.nan
     k_four_levels: float = math.nan
+    log_level_k: tuple = ()
     level_offsets: tuple = ()
     extrapolated_load: float = math.nan
     error_estimate: float = math.nan
@@ -290,6 +329,15 @@ def extrapolate_with_log(values) -> float:
     return float(np.linalg.solve(a, v)[0])
 
 
+def log_noise(mesh: Mesh) -> float:
+    """Measured bound of the relative quadrature noise of the five-level k on ``mesh`` (the
+    finest): :data:`LOG_NOISE` [side] / h_min (5e-11 at c/a = 0.5, n = 1024; 1.2e-9 at c/a =
+    0.98, n = 1024, 5e-9 at n = 2048)."""
+    c = float(mesh.nodes[mesh.stick_index])
+    h_min = float(np.min(np.diff(mesh.nodes)))
+    return LOG_NOISE["stick" if c < 0.5 else "annulus"] / h_min
+
+
 def _halved(mesh: Mesh) -> Mesh | None:
     """The nested mesh with every other node of ``mesh``, None where it has none (an odd
     element count in either zone)."""
@@ -298,20 +346,27 @@ def _halved(mesh: Mesh) -> Mesh | None:
     return Mesh(mesh.nodes[::2].copy(), mesh.stick_index // 2)
 
 
-def _fifth_level_k(geometry: Contact, c: float, n: int, mesh: Mesh, ops, sols,
-                   side: float) -> float | None:
-    """k of :func:`extrapolate_with_log` with the level n/16 nested in ``mesh`` (the level
-    n/8, operators ``ops``) solved here; None where it cannot be (not nested, not solved)."""
-    sub = _halved(mesh)
-    if sub is None:
-        return None
-    pc, qc = (restrict_nested(op, mesh, odd_parts=())[0] for op in ops)  # (no samples)
-    k8, k4 = sols[0].oriented_k, sols[1].oriented_k
-    d = _level(geometry, c, n // 16, sub, pc, qc, k8 + 4.0 * (k8 - k4), one_step=False,
-               rows=_rows(geometry, sub, n), reversed_side=side < 0.0)
-    if not (_good(d) and d.oriented_k * k8 > 0.0):
-        return None
-    return extrapolate_with_log([d.k] + [s.k for s in sols])
+def _log_levels(geometry: Contact, c: float, n: int, mesh: Mesh, ops, sols,
+                side: float) -> list[DiscreteSolution]:
+    """The levels n/16 and n/32 nested in ``mesh`` (the level n/8, operators ``ops``), for
+    :func:`extrapolate_with_log` at n and at n/2 (its estimate), coarsest first: as many
+    as could be solved (nested, converged, on the side of zero of the level n/8)."""
+    found: list[DiscreteSolution] = []
+    finer = list(sols)
+    for divisor in (16, 32):
+        sub = _halved(mesh)
+        if sub is None:
+            break
+        ops = tuple(restrict_nested(op, mesh, odd_parts=())[0] for op in ops)  # no samples
+        k2, k1 = finer[0].oriented_k, finer[1].oriented_k
+        d = _level(geometry, c, n // divisor, sub, *ops, k2 + 4.0 * (k2 - k1), one_step=False,
+                   rows=_rows(geometry, sub, n), reversed_side=side < 0.0)
+        if not (_good(d) and d.oriented_k * k2 > 0.0):
+            break
+        found.insert(0, d)
+        finer.insert(0, d)
+        mesh = sub
+    return found
 
 
 def _predict(coarse_k, orders=ORDERS) -> float:
@@ -458,7 +513,7 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
         guess = abs(k0)
         if reversed_side:  # (never on a half-space: its levels slip along sign(beta))
             guess = sigma * k if newton.converged and np.isfinite(k) else k0
-        return solve_default(geometry, c, n, ops=(pw, qw), k_guess=guess)
+        return solve_default(geometry, c, n, ops=(pw, qw), k_guess=guess, mesh=mesh)
     nn, m = mesh.n, mesh.stick_index
     x = newton.x
     p = np.append(x[:nn], 0.0)
@@ -669,7 +724,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
                 # nu = -0.5, c/a = 0.98, beyond c*: 175 factorizations, 38 s at n = 1024)
                 good = [s.oriented_k for s in sols[:-1] if _good(s)]
                 sols[i] = solve_default(geometry, c, n, ops=opss[i], cache=cache,
-                                        k_guess=good[-1] if good else None)
+                                        mesh=meshes[i], k_guess=good[-1] if good else None)
                 continue
             k0 = side * _predict([s.k for s in sols[:-1]])
         elif guess is not None and level_offsets is not None:  # continuation: each
@@ -752,9 +807,18 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
     out.k_four_levels = out.k
     if (nested and n >= LOG_LEVEL_FROM_N and band and geometry.body.is_half_space
             and out.k != top.k and np.isfinite(out.error_estimate)):
-        k5 = _fifth_level_k(geometry, c, n, meshes[0], opss[0], sols, side)
-        if k5 is not None and abs(k5 / out.k - 1.0) <= out.error_estimate:
-            out.k = k5
+        extra = _log_levels(geometry, c, n, meshes[0], opss[0], sols, side)
+        out.log_level_k = tuple(float(d.k) for d in extra)
+        out.iterations += sum(d.iterations for d in extra)
+        if len(extra) == 2:  # k at n and, for its estimate, at n/2 (levels n/32 ... n/2)
+            k5 = extrapolate_with_log(out.log_level_k[1:] + out.level_k)
+            k5_half = extrapolate_with_log(out.log_level_k + out.level_k[:-1])
+            estimate5 = (abs(k5_half / k5 - 1.0) / LOG_ESTIMATE_DIVISOR
+                         + 2.0 * max(d.round_off for d in [*sols, *extra])
+                         + log_noise(top.mesh))
+            if (abs(k5 / out.k - 1.0) <= out.error_estimate and estimate5 < out.error_estimate
+                    and abs(out.log_level_k[0] / k5 - 1.0) <= LOG_LEVEL_MAX_OFFSET):
+                out.k, out.error_estimate = k5, estimate5
     out.level_offsets = tuple(float(s.k) / out.k - 1.0 for s in sols[:-1])
     if work:
         out.level_work = tuple(_work(geometry, s) for s in sols)

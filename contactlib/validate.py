@@ -93,15 +93,18 @@ MAX_STEPS = 100_000
 
 DEFAULT_MAX_ERROR = 1e-3
 """Default accuracy asked of a result: a larger error estimate is not resolved."""
-MIN_TOLERANCE = 1e-8
+MIN_TOLERANCE = 1e-9
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""
 
-MIN_PLANNED_TOLERANCE = 1e-8
+MIN_PLANNED_TOLERANCE = 1e-9
 """Smallest ``tolerance`` of solve/sweep (library and command line): the extrapolated
-method's measured reach (nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98: k to
-1.3e-9 ... 8.7e-9 at n = 1024 and 1.3e-10 ... 3.9e-9 at n = 2048; its quadrature-noise
-bound, 2.3e-9 ... 1.2e-8 at n = 2048, keeps the plan above 1e-8 at the extreme c/a)."""
+method's measured reach with five levels from n = 1024
+(:data:`~contactlib.extrapolated_method.LOG_LEVEL_FROM_N`; nu = 0.4999999 against the
+closed form, c/a = 0.003 ... 0.98: k to 4e-10 and better at n = 1024, its estimate 2.6e-10
+... 1.3e-9). 1e-9 is planned where the estimate model meets it (c/a = 0.1 ... 0.9 at n =
+1024 ... 2048) and refused elsewhere (c/a near 0 and 1, where the quadrature noise of the
+smallest elements stays above it, and on layers)."""
 
 
 class InputError(ValueError):
@@ -390,7 +393,7 @@ def tolerance(value: Any) -> float:
 
 
 def planned_tolerance(value: Any) -> float:
-    """The ``tolerance`` of solve/sweep: a relative error of k in [1e-8, 0.1]."""
+    """The ``tolerance`` of solve/sweep: a relative error of k in [1e-9, 0.1]."""
     return number("tolerance", value, MIN_PLANNED_TOLERANCE, MAX_TOLERANCE)
 
 

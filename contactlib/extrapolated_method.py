@@ -71,7 +71,7 @@ __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS"
            "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
-           "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise",
+           "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise", "EDGE_ZONE",
            "LOG_LEVEL_MAX_OFFSET"]
 
 ORDERS = (2.0, 3.0, 4.0)
@@ -149,14 +149,20 @@ c/a = 2e-4 ... 0.9994, n = 1024 ... 4096, except sphere, nu = -0.5, c/a = 0.98 (
 n = 1536 lay 1.4e-8 from the values at n = 1024, 2048 and 4096 (which agree within 1.1e-9)
 with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3)."""
 
-# The quadrature noise of the five-level k (what its truncation estimate leaves of the
-# error against the closed form at nu = 0.4999999, sphere and cylinder, c/a = 2e-4 ...
-# 0.9994, n = 1024, 1536, 2048): LOG_NOISE[side] / h_min, h_min the smallest element
-# (units of a). The noise times h_min was at most 3.6e-17 on the stick side (c/a < 1/2;
-# sphere, c/a = 0.02, n = 1536) and 1.4e-16 on the annulus side (cylinder, c/a = 0.998,
-# n = 1536; at most 8.2e-17 for c/a <= 0.99). It falls less steeply with h_min^-0.5
-# (the four-level bound's power) across c/a and n.
-LOG_NOISE = {"stick": 5e-17, "annulus": 1.5e-16}
+# The quadrature noise of k with the band rows, in a form that grows faster toward full
+# stick than BAND_NOISE's: LOG_NOISE[zone] / h_min, h_min the smallest element (units of
+# a), zone "stick" (c/a < 1/2), "annulus" (1/2 <= c/a < 1 - EDGE_ZONE) or "edge". Fitted
+# against the closed form at nu = 0.4999999 (sphere and cylinder, c/a = 2e-4 ... 0.9994,
+# n = 1024, 1536, 2048): what the five-level truncation estimate leaves of the five-level
+# error, times h_min, was at most 3.6e-17 on the stick side (sphere, c/a = 0.02,
+# n = 1536) and 8.2e-17 on the annulus side (cylinder, c/a = 0.9, n = 1536); next to full
+# stick the four-level errors (where the five-level k is not taken) times h_min reached
+# 1.6e-16 (cylinder, c/a = 0.9994, n = 1536: error 1.0e-7 where the four-level estimate
+# with BAND_NOISE alone was 6.0e-8), 1.3e-16 (cylinder, 0.998, n = 1536) and 1.2e-16
+# (sphere, 0.9992, n = 1024). It is the five-level k's noise bound (log_noise) and a
+# floor under the four-level band bound (quadrature_noise).
+LOG_NOISE = {"stick": 5e-17, "annulus": 1e-16, "edge": 2e-16}
+EDGE_ZONE = 0.01
 
 
 NEXT_FROM_N = 512
@@ -330,12 +336,14 @@ def extrapolate_with_log(values) -> float:
 
 
 def log_noise(mesh: Mesh) -> float:
-    """Measured bound of the relative quadrature noise of the five-level k on ``mesh`` (the
-    finest): :data:`LOG_NOISE` [side] / h_min (5e-11 at c/a = 0.5, n = 1024; 1.2e-9 at c/a =
-    0.98, n = 1024, 5e-9 at n = 2048)."""
+    """Measured bound of the relative quadrature noise of k on ``mesh`` (the finest) with
+    the band rows: :data:`LOG_NOISE` [zone] / h_min (3.3e-11 at c/a = 0.5, n = 1024; 8.3e-10
+    at c/a = 0.98, n = 1024, 3.3e-9 at n = 2048; the five-level k's, and a floor under
+    :func:`quadrature_noise`'s band bound)."""
     c = float(mesh.nodes[mesh.stick_index])
     h_min = float(np.min(np.diff(mesh.nodes)))
-    return LOG_NOISE["stick" if c < 0.5 else "annulus"] / h_min
+    zone = "stick" if c < 0.5 else "annulus" if 1.0 - c > EDGE_ZONE else "edge"
+    return LOG_NOISE[zone] / h_min
 
 
 def _halved(mesh: Mesh) -> Mesh | None:
@@ -383,7 +391,8 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
 
     ``NOISE[side] * h_min^-1.5`` with the plain rows, ``DIFFERENCE_NOISE[side] *
     h_min^-0.5`` with the axis or edge difference rows, ``BAND_NOISE[side] *
-    h_min^-0.5`` with the band around c on every level (see :data:`NOISE`,
+    h_min^-0.5`` with the band around c on every level, or :func:`log_noise` where that is
+    larger (c/a >= 0.995 or so, see :data:`LOG_NOISE`; see :data:`NOISE`,
     :data:`DIFFERENCE_NOISE`, :data:`BAND_NOISE`): negligible (< 2e-9) at c/a = 0.02
     ... 0.98 up to n = 256, 2.3e-9 ... 1.2e-8 at n = 2048, the dominant error at c/a <= 1e-4
     and >= 0.999. ``difference``: whether the rows were the axis or edge differences
@@ -398,8 +407,8 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
         difference = c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW
     if difference:
         return DIFFERENCE_NOISE[side] * h_min ** -DIFFERENCE_NOISE_POWER
-    if band:
-        return BAND_NOISE[side] * h_min ** -BAND_NOISE_POWER
+    if band:  # (the edge's faster growth: log_noise, see LOG_NOISE)
+        return max(BAND_NOISE[side] * h_min ** -BAND_NOISE_POWER, log_noise(mesh))
     return NOISE[side] * h_min ** -NOISE_POWER
 
 

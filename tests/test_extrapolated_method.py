@@ -635,3 +635,14 @@ def test_a_level_handed_to_the_default_method_keeps_its_own_mesh():
     ref = solve_default(model, 0.995, 128)
     assert d.converged and d.mesh.n == mesh.n != graded_mesh(64, 0.995).n
     assert abs(d.k / ref.k - 1.0) <= 1e-10
+
+
+@pytest.mark.slow
+def test_four_level_estimate_covers_the_noise_next_to_full_stick():
+    """Next to full stick the band rows' noise grows like 1/h_min (quadrature_noise takes
+    log_noise where it is the larger): cylinder, c/a = 0.9994, n = 1536, nu = 0.4999999,
+    the error was 1.0e-7 against an estimate of 6.0e-8 with the h_min^-0.5 bound alone."""
+    nu, c = 0.4999999, 0.9994
+    s = solve_extrapolated(contact("cylinder", nu), c, 1536, work=False)
+    err = abs(s.k / float(uncoupled_friction("cylinder", nu, c)) - 1.0)
+    assert s.converged and 5e-8 <= err <= s.error_estimate

@@ -191,18 +191,47 @@ def _planned_sweep(geom: Geometry, ratios: Sequence[float], tolerance: float, en
     from . import accuracy
 
     try:
-        method, n = accuracy.plan(geom, ratios, tolerance, methods=accuracy.PLANNED_METHODS)
-    except ValueError as exc:
+        groups = {accuracy.plan(geom, ratios, tolerance, methods=accuracy.PLANNED_METHODS):
+                  list(range(len(ratios)))}
+    except ValueError as exc:  # one n for all cannot meet it: each stick ratio its own plan
+        groups = _plans_by_stick_ratio(geom, ratios, tolerance, str(exc))
+    out: list[Solution | None] = [None] * len(ratios)
+    done = 0
+    for (method, n), where in groups.items():
+        cases = stages.iter_cases(geom, method, n, [ratios[i] for i in where], samples=True,
+                                  tolerance=tolerance, max_error=tolerance)
+        for i, rec in zip(where, cases):
+            used = int(rec.elements) if rec.elements is not None else n
+            out[i] = _from_record(geom, rec, method, used, energy)
+            done += 1
+            if progress is not None:
+                progress(done, len(ratios))
+    return out  # type: ignore[return-value]
+
+
+def _plans_by_stick_ratio(geom: Geometry, ratios: Sequence[float], tolerance: float,
+                          why: str) -> dict[tuple[str, int], list[int]]:
+    """Indices of ``ratios`` by the (method, n) planned for each alone, where no single
+    (method, n) meets the tolerance at all of them: the truncation falls with n while the
+    quadrature noise of the smallest elements grows, so at 1e-9 c/a = 0.5 needs n = 1536
+    and 0.02 at most 1024. Refused (naming ``tolerance``, with the plan's reason ``why``)
+    where one of them alone cannot be met, or where they would need different methods
+    (one dataset holds one method)."""
+    from . import accuracy
+
+    groups: dict[tuple[str, int], list[int]] = {}
+    for i, c in enumerate(ratios):
+        try:
+            key = accuracy.plan(geom, [c], tolerance, methods=accuracy.PLANNED_METHODS)
+        except ValueError as exc:
+            raise validate.InputError("tolerance", "met by a supported method and n",
+                                      tolerance, str(exc)) from None
+        groups.setdefault(key, []).append(i)
+    if len({method for method, _ in groups}) > 1:
         raise validate.InputError("tolerance", "met by a supported method and n", tolerance,
-                                  str(exc)) from None
-    out = []
-    for i, rec in enumerate(stages.iter_cases(geom, method, n, ratios, samples=True,
-                                              tolerance=tolerance, max_error=tolerance)):
-        used = int(rec.elements) if rec.elements is not None else n
-        out.append(_from_record(geom, rec, method, used, energy))
-        if progress is not None:
-            progress(i + 1, len(ratios))
-    return out
+                                  why + "; planned one stick ratio at a time, they would "
+                                  "need different methods")
+    return groups
 
 
 def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
@@ -398,7 +427,12 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
         As for :func:`solve`.
     tolerance : float, optional
         As for :func:`solve`: planned over all the stick ratios (a list, not
-        ``"all"``).
+        ``"all"``) at one method and n; where no single n meets it at all of
+        them (at 1e-9 the truncation needs n = 1536 at c/a = 0.5 while the
+        noise of the smallest elements allows at most 1024 at 0.02), each
+        stick ratio is planned alone and solved at its own n (``Solution.n``;
+        the dataset's ``elements`` variable). Refused where one of them alone
+        cannot be met.
     stick_ratios : "all" or sequence of float
         c/a values in [0, 1], each at most once (they index the dataset);
         ``"all"`` is m/n for m = 1 ... n-1.

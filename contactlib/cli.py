@@ -510,9 +510,11 @@ def _indenter(geometry: str) -> Any:
     return indenter(geometry)
 
 
-def _head(sol: Solution) -> str:
-    """``sphere, nu = 0.3, method = default, n = 256`` (and a/h where a layer is possible)."""
-    head = f"{sol.geometry}, nu = {sol.nu:.10g}, method = {sol.method}, n = {sol.n}"
+def _head(sol: Solution, n_text: str | None = None) -> str:
+    """``sphere, nu = 0.3, method = default, n = 256`` (and a/h where a layer is possible;
+    ``n_text`` in place of ``n = 256``)."""
+    n_text = f"n = {sol.n}" if n_text is None else n_text
+    head = f"{sol.geometry}, nu = {sol.nu:.10g}, method = {sol.method}, {n_text}"
     if _indenter(sol.geometry).reports_layer(sol.slab_ratio):
         head += f", a/h = {sol.slab_ratio:g}"
     if sol.slab_ratio > 0:
@@ -547,13 +549,18 @@ def format_table(solutions: Sequence[Solution]) -> str:
     """Compact table of a sweep, one row per stick ratio."""
     if not solutions:
         return "(no points)"
-    head = _head(solutions[0])
-    cols = (f"{'c/a':>8} {'k':>11} {'P/P_H':>11} {'V':>11} "
+    by_case = len({s.n for s in solutions}) > 1  # a sweep to a tolerance, n by stick ratio
+    head = _head(solutions[0], "n by stick ratio" if by_case else None)
+    ks = [_g(s.friction_coefficient, _k_digits(s.error_estimate)) for s in solutions]
+    wide = max(11, *(len(k) for k in ks))  # k to the digits its estimate supports
+    cols = (f"{'c/a':>8}" + (f" {'n':>5}" if by_case else "")
+            + f" {'k':>{wide}} {'P/P_H':>11} {'V':>11} "
             f"{'slip':>4} {'stick':>5} {'cons':>4} {'conv':>4} {'residual':>9} "
             f"{'k error':>8} {'res':>3}")
     rows = [head, cols]
-    for s in solutions:
-        row = (f"{s.stick_ratio:8.4f} {_g(s.friction_coefficient):>11} "
+    for s, k in zip(solutions, ks):
+        row = (f"{s.stick_ratio:8.4f}" + (f" {s.n:5d}" if by_case else "")
+               + f" {k:>{wide}} "
                f"{_g(s.load_ratio):>11} {_g(s.frictional_work):>11} "
                f"{_yes(s.slip_direction_ok):>4} {_yes(s.stick_admissible):>5} "
                f"{_yes(s.consistent):>4} {_yes(s.converged):>4} "

@@ -146,7 +146,7 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
     ),
 }
 
-_SHARED_FIELDS = ("geometry", "nu", "method", "n", "slab_ratio", "base",
+_SHARED_FIELDS = ("geometry", "nu", "method", "slab_ratio", "base",
                   "indenter_modulus_ratio", "indenter_poisson_ratio")
 
 
@@ -268,7 +268,9 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         coordinate and profiles on ``(xi,)``. A sequence (a sweep) gives a
         ``stick_ratio`` dimension, in the given order, and profiles on
         ``(stick_ratio, xi)``. All members must share geometry, nu, method,
-        n, slab_ratio and xi.
+        slab_ratio and xi. Where their n differ (a sweep to a tolerance, each
+        stick ratio at the n that met it) an ``elements`` variable (stick_ratio)
+        holds each one's n and the ``elements`` attribute the largest.
 
     Returns
     -------
@@ -344,6 +346,12 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     for name, (long_name, comment) in _POINT_BOOL_ATTRS.items():
         values = np.array([bool(getattr(s, name)) for s in sols], dtype=bool)
         data[name] = (dims, values, cf_attrs(long_name, comment=comment, **_BOOL_FLAGS))
+    ns = np.array([int(s.n) for s in sols], dtype=np.int32)
+    if np.any(ns != ns[0]):
+        data["elements"] = (dims, ns, cf_attrs(
+            "elements used for this stick ratio",
+            comment="a sweep to a tolerance: each stick ratio at the n planned for it, "
+            "doubled where its estimate missed the tolerance"))
     messages = [str(s.message or "") for s in sols]
     if any(messages):
         data["message"] = (
@@ -356,7 +364,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         "title": f"contactlib partial-slip solution ({geometry})",
         "geometry": geometry,
         "poisson_ratio": float(first.nu),
-        "elements": int(first.n),
+        "elements": int(ns.max()),
         "method": str(first.method),
     }
     max_errors = {float(s.max_error) for s in sols if math.isfinite(s.max_error)}

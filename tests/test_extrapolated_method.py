@@ -646,3 +646,24 @@ def test_four_level_estimate_covers_the_noise_next_to_full_stick():
     s = solve_extrapolated(contact("cylinder", nu), c, 1536, work=False)
     err = abs(s.k / float(uncoupled_friction("cylinder", nu, c)) - 1.0)
     assert s.converged and 5e-8 <= err <= s.error_estimate
+
+
+def test_tolerance_1e9_sweep_plans_each_stick_ratio_where_one_n_cannot():
+    """At 1e-9 no single n serves c/a = 0.02, 0.5 and 0.9 (0.5 needs n = 1536, where the
+    noise bound at 0.02 is too large): each is planned alone and solved at its own n, met
+    against the closed form at nu = 0.4999999; the dataset records each n. A stick ratio
+    that cannot be met alone is still refused before anything is solved."""
+    from contactlib import accuracy, io
+
+    nu, ratios = 0.4999999, [0.02, 0.5, 0.9]
+    with pytest.raises(ValueError):
+        accuracy.plan(contact("sphere", nu), ratios, 1e-9, methods=accuracy.PLANNED_METHODS)
+    sols = api.sweep("sphere", nu, ratios, tolerance=1e-9)
+    assert [s.n for s in sols] == [1024, 1536, 1024]
+    for c, s in zip(ratios, sols):
+        err = abs(s.friction_coefficient / float(uncoupled_friction("sphere", nu, c)) - 1.0)
+        assert s.method == "extrapolated" and s.resolved and err <= s.error_estimate <= 1e-9
+    ds = io.to_dataset(sols)
+    assert list(ds["elements"].values) == [1024, 1536, 1024] and ds.attrs["elements"] == 1536
+    with pytest.raises(validate.InputError, match="tolerance"):
+        api.sweep("sphere", nu, [0.5, 0.98], tolerance=1e-9)

@@ -171,13 +171,26 @@ def test_write_to_directory_fails(tmp_path) -> None:
         io.write_dataset(io.to_dataset(fake_solution()), tmp_path)
 
 
-@pytest.mark.parametrize("field,value", [("nu", 0.25), ("n", 9), ("geometry", "cylinder"),
+@pytest.mark.parametrize("field,value", [("nu", 0.25), ("geometry", "cylinder"),
                                          ("method", "paper")])
 def test_inconsistent_sweep_rejected(field: str, value) -> None:
     sols = fake_sweep()
     setattr(sols[1], field, value)
     with pytest.raises(ValueError, match=field):
         io.to_dataset(sols)
+
+
+def test_sweep_with_n_by_stick_ratio_records_each(tmp_path) -> None:
+    # a sweep to a tolerance solves each stick ratio at the n that met it (planned alone,
+    # or doubled): the dataset keeps each n (it raised "solutions[1].n differs" before)
+    sols = fake_sweep()
+    assert "elements" not in io.to_dataset(sols)  # one n: the attribute alone
+    sols[1].n = 16
+    ds = io.to_dataset(sols)
+    assert list(ds["elements"].values) == [8, 16, 8] and ds.attrs["elements"] == 16
+    path = tmp_path / "mixed.nc"
+    io.write_dataset(ds, path)
+    assert list(io.read_dataset(path)["elements"].values) == [8, 16, 8]
 
 
 def test_empty_and_mismatched_rejected() -> None:

@@ -340,10 +340,14 @@ def log_noise(mesh: Mesh) -> float:
     the band rows: :data:`LOG_NOISE` [zone] / h_min (3.3e-11 at c/a = 0.5, n = 1024; 8.3e-10
     at c/a = 0.98, n = 1024, 3.3e-9 at n = 2048; the five-level k's, and a floor under
     :func:`quadrature_noise`'s band bound)."""
-    c = float(mesh.nodes[mesh.stick_index])
-    h_min = float(np.min(np.diff(mesh.nodes)))
+    c, h_min = _noise_scales(mesh)
     zone = "stick" if c < 0.5 else "annulus" if 1.0 - c > EDGE_ZONE else "edge"
     return LOG_NOISE[zone] / h_min
+
+
+def _noise_scales(mesh: Mesh) -> tuple[float, float]:
+    """(c/a, the smallest element) of ``mesh``: what every noise bound is a function of."""
+    return float(mesh.nodes[mesh.stick_index]), float(np.min(np.diff(mesh.nodes)))
 
 
 def _halved(mesh: Mesh) -> Mesh | None:
@@ -400,8 +404,7 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
     half-space, by c/a); ``band``: whether every level wrote the band around c (a solve at
     n >= :data:`BAND_FROM_N`; it applies where neither the axis nor the edge rows do).
     """
-    c = float(mesh.nodes[mesh.stick_index])
-    h_min = float(np.min(np.diff(mesh.nodes)))
+    c, h_min = _noise_scales(mesh)
     side = "stick" if c < 0.5 else "annulus"
     if difference is None:
         difference = c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW

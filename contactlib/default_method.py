@@ -48,6 +48,7 @@ re-exported here; the model (indenter and body) is a
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -166,6 +167,12 @@ class DiscreteSolution(SelfSimilarSolution):
     """
 
     kind = "default"
+    newton_root: float = math.nan
+    """The root Newton's method on k ended at, relative to sign(beta) (as
+    :attr:`oriented_k`), also where it is not a solution and ``k`` is reported NaN (e.g. a
+    reversed root with tensile pressure beyond c*); NaN where Newton did not converge. A
+    finer mesh of the same case starts from it (the extrapolated method's finest level,
+    when no coarse level found a solution)."""
 
     @property
     def phi(self) -> np.ndarray:
@@ -937,6 +944,8 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     elif newton.stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
                f"(last step {newton.stagnated:.1e} relative)")
-    return DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
-                            newton.iterations, msg, nodal_u, nodal_du,
-                            float(newton.stagnated))
+    out = DiscreteSolution(geometry, mesh, p, phi, float(x[nn]), float(k), converged, res,
+                           newton.iterations, msg, nodal_u, nodal_du, float(newton.stagnated))
+    if newton.converged and np.isfinite(newton.k):
+        out.newton_root = float(sigma * newton.k)
+    return out

@@ -522,9 +522,11 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
             newton.iterations += iterations
     k = newton.k
     if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
-        guess = abs(k0)
-        if reversed_side:  # (never on a half-space: its levels slip along sign(beta))
-            guess = sigma * k if newton.converged and np.isfinite(k) else k0
+        guess = k0 if reversed_side else abs(k0)
+        if newton.converged and np.isfinite(k):  # a root on the other side of zero: the
+            # default method starts there and judges it in one step (from k0 it repeated
+            # the same 13-19 iterations to the same root: cylinder, nu = -0.5, c/a = 0.98)
+            guess = sigma * k
         return solve_default(geometry, c, n, ops=(pw, qw), k_guess=guess, mesh=mesh)
     nn, m = mesh.n, mesh.stick_index
     x = newton.x
@@ -652,6 +654,28 @@ def _retry(geometry: Contact, c: float, ns, meshes, opss, odds, sols, j: int,
         sols[j] = d
 
 
+def _failed_start(coarse) -> float | None:
+    """Newton's start (relative to sign(beta)) on the finest level when a coarse level
+    failed: the finest good level's k; without one, the roots the two finest coarse levels
+    ended at where they are not solutions (beyond c*: reversed roots with tensile pressure,
+    growing with n), continued geometrically; else None (the default method's own start).
+
+    Cylinder, nu = -0.5, c/a = 0.98 lies beyond c*: every level ends on such a root, whose
+    |k| grows about 1.6 times a halving of the elements (6.7, 10.2, 16.4 at n = 64, 128,
+    256, 27.8 at 512); from the uncoupled closed form (1.27) the finest level took 19
+    Newton steps to it, each a factorization of the largest system, from the trend 5.
+    Only the levels n/4 and n/2 are continued, one halving: over three (10.2 x 1.5^3 = 35
+    at n = 1024 from n = 64 and 128) Newton did not converge in 30 steps to the root 48.5.
+    """
+    good = [s.oriented_k for s in coarse if _good(s)]
+    if good:
+        return good[-1]
+    below, last = (getattr(s, "newton_root", math.nan) for s in coarse[-2:])
+    if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
+        return last * (last / below)
+    return None
+
+
 def _work(geometry: Contact, d: DiscreteSolution) -> float:
     xs, ws, q, s = d.slip_samples()
     return float(energy.frictional_work(xs, ws, q, s, geometry.work_factor,
@@ -734,9 +758,8 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
                 # finest level only for its own answer and diagnosis, by the default method
                 # at once (a level's own Newton first repeated its failure: cylinder,
                 # nu = -0.5, c/a = 0.98, beyond c*: 175 factorizations, 38 s at n = 1024)
-                good = [s.oriented_k for s in sols[:-1] if _good(s)]
                 sols[i] = solve_default(geometry, c, n, ops=opss[i], cache=cache,
-                                        mesh=meshes[i], k_guess=good[-1] if good else None)
+                                        mesh=meshes[i], k_guess=_failed_start(sols[:-1]))
                 continue
             k0 = side * _predict([s.k for s in sols[:-1]])
         elif guess is not None and level_offsets is not None:  # continuation: each

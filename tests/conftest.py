@@ -97,3 +97,20 @@ def job_counts(workdir: Path, *args: str) -> dict[str, int]:
 def nothing_to_do(workdir: Path) -> bool:
     out = snakemake(workdir, "--dry-run")
     return "Nothing to be done" in out.stdout + out.stderr
+
+
+@pytest.fixture
+def factorizations(monkeypatch):
+    """A counter (a one-item list) of the solvers' LU factorizations, one per Newton
+    iteration and level, counted from the test's start."""
+    from contactlib import default_method
+
+    count = [0]
+    lu_factor = default_method.linalg.lu_factor
+
+    def counted(*args, **kwargs):
+        count[0] += 1
+        return lu_factor(*args, **kwargs)
+
+    monkeypatch.setattr(default_method.linalg, "lu_factor", counted)
+    return count

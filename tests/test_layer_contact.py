@@ -350,23 +350,8 @@ OUTWARD = [("smooth", 0.3), ("smooth", 0.45), ("bonded", 0.45)]
 SWEEP = (0.4, 0.42, 0.44, 0.46, 0.48, 0.5)
 
 
-def _factorizations(monkeypatch):
-    """A counter of the LU factorizations (one per Newton iteration and level)."""
-    from contactlib import default_method
-
-    count = [0]
-    lu_factor = default_method.linalg.lu_factor
-
-    def counted(*args, **kwargs):
-        count[0] += 1
-        return lu_factor(*args, **kwargs)
-
-    monkeypatch.setattr(default_method.linalg, "lu_factor", counted)
-    return count
-
-
 @pytest.mark.parametrize("base, nu", OUTWARD)
-def test_a_sweep_on_a_layer_with_outward_slip_continues_on_its_side(base, nu, monkeypatch):
+def test_a_sweep_on_a_layer_with_outward_slip_continues_on_its_side(base, nu, factorizations):
     """A sweep's continuation guess is relative to sign(beta) (oriented k): on these
     layers it is negative and Newton starts on the root's side. The roots are those of
     each case solved alone, to Newton's tolerance (it stops after a relative step of
@@ -386,7 +371,8 @@ def test_a_sweep_on_a_layer_with_outward_slip_continues_on_its_side(base, nu, mo
     for r in recs[2::3]:
         alone = solve_default(layer, r.stick_ratio, 256)
         assert abs(r.k / alone.k - 1.0) < 2e-6
-    count = _factorizations(monkeypatch)
+    count = factorizations
+    count[0] = 0  # from here
     per_case = []
     for r in stages.iter_cases(layer, "extrapolated", 256, SWEEP, estimate=False):
         per_case.append((r, count[0]))
@@ -399,7 +385,7 @@ def test_a_sweep_on_a_layer_with_outward_slip_continues_on_its_side(base, nu, mo
 
 
 @pytest.mark.parametrize("base, nu", OUTWARD)
-def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, monkeypatch):
+def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, factorizations):
     """Without a guess the extrapolated method's first level starts from the uncoupled
     closed form (> 0) and lands on the outward root; the other levels start from its
     oriented k (< 0): at most 25 factorizations for the four levels (35-77 from |k|).
@@ -410,7 +396,8 @@ def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, monkeypatc
     from contactlib.extrapolated_method import extrapolate, solve_extrapolated
 
     layer = contact("sphere", nu, slab_ratio=20.0, base=base)
-    count = _factorizations(monkeypatch)
+    count = factorizations
+    count[0] = 0  # from here
     d = solve_extrapolated(layer, 0.5, 256)
     assert d.converged and count[0] <= 25
     assert all(lk > 0.0 for lk in d.level_k) and d.oriented_k < 0.0
@@ -419,7 +406,7 @@ def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, monkeypatc
     assert abs(d.k / extrapolate(ks)[0] - 1.0) < 5e-6
 
 
-def test_the_inverse_problem_estimate_starts_its_coarse_solves_on_the_roots_side(monkeypatch):
+def test_the_inverse_problem_estimate_starts_its_coarse_solves_on_the_roots_side(factorizations):
     """k given on a layer whose slip runs outward: the error estimate's coarse solves
     (n/2, n/4) start from the case's signed k: 4 factorizations for both levels, 12 from
     the reported k >= 0 (10 Newton steps at n = 64), the same roots either way."""
@@ -430,7 +417,8 @@ def test_the_inverse_problem_estimate_starts_its_coarse_solves_on_the_roots_side
     d = solve_default(layer, 0.45, 128)
     assert d.converged and d.oriented_k < 0.0  # outward on this layer
     rec = stages.case_record(layer, d, samples=True)
-    count = _factorizations(monkeypatch)
+    count = factorizations
+    count[0] = 0  # from here
     out = stages.estimate_case(layer, "default", 128, rec, solution=d)
     assert count[0] <= 6  # two levels, at most 3 iterations each (10 or more from +k)
     assert np.isfinite(out.error_estimate) and out.error_estimate < 1e-3

@@ -299,9 +299,15 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
                         f"beyond the largest supported n = {MAX_N}" if need > MAX_N else
                         "the default method's quadrature noise (from the smallest elements) "
                         "stays above it at some requested c/a")
-        raise ValueError(f"tolerance {tol:g} is beyond every method: {default_part}, and the "
-                         "extrapolated method's quadrature noise (from the smallest "
-                         "elements) stays above it at some requested c/a")
+        beyond = [c for c in stick_ratios
+                  if _cheapest_n("extrapolated", geometry, [c], tol) is None]
+        where = (f"at c/a = {', '.join(f'{c:g}' for c in beyond[:5])}"
+                 f"{' ...' if len(beyond) > 5 else ''}" if beyond else
+                 "at every n that serves all the requested c/a at once")
+        raise ValueError(f"tolerance {validate.shown(tol)} is beyond every method: "
+                         f"{default_part}, and the extrapolated method's noise bound (the "
+                         f"round-off of the smallest elements, which grows with n) stays above "
+                         f"it {where}")
     worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
     e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:
@@ -309,8 +315,9 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     need = 256.0 * math.sqrt(SAFETY * e256 / tol)
     n = max(MIN_N, 64 * math.ceil(need / 64))
     if n > MAX_N:
-        raise ValueError(f"tolerance {tol:g} needs about n = {n} at c/a = {worst:g} (measured "
-                         f"k error {e256:.1e} at n = 256, falling like n^-2), beyond the "
+        raise ValueError(f"tolerance {validate.shown(tol)} needs about n = {n} at c/a = "
+                         f"{worst:g} (measured k error {e256:.1e} at n = 256, falling like "
+                         f"n^-2), beyond the "
                          f"largest supported n = {MAX_N}{layer_note}")
     return "default", n
 

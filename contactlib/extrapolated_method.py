@@ -71,7 +71,8 @@ __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS"
            "work_error",
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
-           "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise", "EDGE_ZONE",
+           "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise",
+           "LOG_NOISE_MIN_STICK",
            "LOG_LEVEL_MAX_OFFSET"]
 
 ORDERS = (2.0, 3.0, 4.0)
@@ -149,20 +150,31 @@ c/a = 2e-4 ... 0.9994, n = 1024 ... 4096, except sphere, nu = -0.5, c/a = 0.98 (
 n = 1536 lay 1.4e-8 from the values at n = 1024, 2048 and 4096 (which agree within 1.1e-9)
 with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3)."""
 
-# The quadrature noise of k with the band rows, in a form that grows faster toward full
-# stick than BAND_NOISE's: LOG_NOISE[zone] / h_min, h_min the smallest element (units of
-# a), zone "stick" (c/a < 1/2), "annulus" (1/2 <= c/a < 1 - EDGE_ZONE) or "edge". Fitted
-# against the closed form at nu = 0.4999999 (sphere and cylinder, c/a = 2e-4 ... 0.9994,
-# n = 1024, 1536, 2048): what the five-level truncation estimate leaves of the five-level
-# error, times h_min, was at most 3.6e-17 on the stick side (sphere, c/a = 0.02,
-# n = 1536) and 8.2e-17 on the annulus side (cylinder, c/a = 0.9, n = 1536); next to full
-# stick the four-level errors (where the five-level k is not taken) times h_min reached
-# 1.6e-16 (cylinder, c/a = 0.9994, n = 1536: error 1.0e-7 where the four-level estimate
-# with BAND_NOISE alone was 6.0e-8), 1.3e-16 (cylinder, 0.998, n = 1536) and 1.2e-16
-# (sphere, 0.9992, n = 1024). It is the five-level k's noise bound (log_noise) and a
-# floor under the four-level band bound (quadrature_noise).
-LOG_NOISE = {"stick": 5e-17, "annulus": 1e-16, "edge": 2e-16}
-EDGE_ZONE = 0.01
+LOG_NOISE = 5e-16
+"""The five-level k's noise bound is ``LOG_NOISE * max(c/a, LOG_NOISE_MIN_STICK) / h_min``
+(:func:`log_noise`), h_min the smallest element (units of a): the round-off of positions
+near c, about eps c, relative to the elements there. Measured as the spread of k over
+stick ratios 1e-15 apart, which leaves the discretization alone and moves the round-off
+(c/a + j 1e-15, j = 0 ... 9; 608 solves: sphere and cylinder, nu = 0.4999999, c/a = 0.02
+... 0.98, n = 1024, 1536, 2048, 3072, against the closed form): the spread's standard
+deviation was 1.2e-16 c/h_min at most (about eps/2 times c/h_min), over n = 1536 ... 3072
+at every c/a alike (rising to that from n = 1024), on the stick side and the annulus side
+alike; at nu = 0 and -0.5 it was smaller. Together with a bias that grows with n (c/a =
+0.1, n = 3072: 4e-10 against the closed form over a spread of 1.2e-10) the largest
+error / estimate was 0.85 with this bound. The bound it replaces (5e-17 / h_min below c/a
+= 1/2, 1e-16 / h_min up to 0.99, fitted to single solves) was exceeded by 27 of the 608
+solves, by up to 1.7 times (cylinder, c/a = 0.97, n = 1536: 3.1e-9 against an estimate of
+1.8e-9); a solve that differs from another only in the last digit of c/a carries
+different round-off (cylinder, nu = 0.4999999, c/a = 0.97 and 0.97 + 1e-15, n = 2048:
+-1.0e-9 and +3.1e-9). It is also the floor under the four-level band bound
+(:func:`quadrature_noise`)."""
+
+LOG_NOISE_MIN_STICK = 0.1
+"""Below this c/a the noise bound's factor c/a stays at this value: there the five-level
+truncation estimate falls short (sphere, nu = 0.4999999, c/a = 0.02, n = 1536: error
+7.9e-10 over a spread of 1.4e-11, the estimate's truncation part 8e-11), and the bound,
+2e-10 with c/a itself, takes 9.6e-10 so (the earlier form, 5e-17 / h_min, gave the same
+below c/a = 1/2; it covered this case as well)."""
 
 
 NEXT_FROM_N = 512
@@ -336,13 +348,12 @@ def extrapolate_with_log(values) -> float:
 
 
 def log_noise(mesh: Mesh) -> float:
-    """Measured bound of the relative quadrature noise of k on ``mesh`` (the finest) with
-    the band rows: :data:`LOG_NOISE` [zone] / h_min (3.3e-11 at c/a = 0.5, n = 1024; 8.3e-10
-    at c/a = 0.98, n = 1024, 3.3e-9 at n = 2048; the five-level k's, and a floor under
-    :func:`quadrature_noise`'s band bound)."""
+    """Measured bound of the relative round-off noise of k on ``mesh`` (the finest) with the
+    band rows: :data:`LOG_NOISE` max(c/a, :data:`LOG_NOISE_MIN_STICK`) / h_min (8.4e-11 at
+    c/a = 0.5, n = 1024, 3.3e-10 at n = 2048; 4.1e-9 at c/a = 0.98, n = 1024, 1.6e-8 at n = 2048;
+    the five-level k's, and a floor under :func:`quadrature_noise`'s band bound)."""
     c, h_min = _noise_scales(mesh)
-    zone = "stick" if c < 0.5 else "annulus" if 1.0 - c > EDGE_ZONE else "edge"
-    return LOG_NOISE[zone] / h_min
+    return LOG_NOISE * max(c, LOG_NOISE_MIN_STICK) / h_min
 
 
 def _noise_scales(mesh: Mesh) -> tuple[float, float]:
@@ -396,7 +407,7 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
     ``NOISE[side] * h_min^-1.5`` with the plain rows, ``DIFFERENCE_NOISE[side] *
     h_min^-0.5`` with the axis or edge difference rows, ``BAND_NOISE[side] *
     h_min^-0.5`` with the band around c on every level, or :func:`log_noise` where that is
-    larger (c/a >= 0.995 or so, see :data:`LOG_NOISE`; see :data:`NOISE`,
+    larger (see :data:`LOG_NOISE`; see :data:`NOISE`,
     :data:`DIFFERENCE_NOISE`, :data:`BAND_NOISE`): negligible (< 2e-9) at c/a = 0.02
     ... 0.98 up to n = 256, 2.3e-9 ... 1.2e-8 at n = 2048, the dominant error at c/a <= 1e-4
     and >= 0.999. ``difference``: whether the rows were the axis or edge differences
@@ -410,7 +421,7 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
         difference = c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW
     if difference:
         return DIFFERENCE_NOISE[side] * h_min ** -DIFFERENCE_NOISE_POWER
-    if band:  # (the edge's faster growth: log_noise, see LOG_NOISE)
+    if band:  # (the round-off of positions near c: log_noise, see LOG_NOISE)
         return max(BAND_NOISE[side] * h_min ** -BAND_NOISE_POWER, log_noise(mesh))
     return NOISE[side] * h_min ** -NOISE_POWER
 

@@ -131,15 +131,23 @@ class InputError(ValueError):
         super().__init__(message or f"{name} must be {requirement}, got {value!r}")
 
 
+def shown(x: float) -> str:
+    """A number as messages write it: ``%g`` without the exponent's padding (1e-9, not
+    1e-09)."""
+    text = f"{x:g}"
+    mantissa, e, exponent = text.partition("e")
+    return f"{mantissa}e{int(exponent)}" if e else text
+
+
 def requirement(lo: float | None = None, hi: float | None = None, lo_open: bool = False,
                 hi_open: bool = False) -> str:
     """An allowed range in words: ``in (-1, 0.5]``, ``>= 0``, ``< 1``."""
     if lo is not None and hi is not None:
-        return f"in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+        return f"in {'(' if lo_open else '['}{shown(lo)}, {shown(hi)}{')' if hi_open else ']'}"
     if lo is not None:
-        return f"{'>' if lo_open else '>='} {lo:g}"
+        return f"{'>' if lo_open else '>='} {shown(lo)}"
     if hi is not None:
-        return f"{'<' if hi_open else '<='} {hi:g}"
+        return f"{'<' if hi_open else '<='} {shown(hi)}"
     return "a number"
 
 

@@ -534,9 +534,10 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
     k = newton.k
     if not (newton.converged and np.isfinite(k) and k * sigma > 0.0):
         guess = k0 if reversed_side else abs(k0)
-        if newton.converged and np.isfinite(k):  # a root on the other side of zero: the
-            # default method starts there and judges it in one step (from k0 it repeated
-            # the same 13-19 iterations to the same root: cylinder, nu = -0.5, c/a = 0.98)
+        if np.isfinite(k):  # where Newton ended: a root on the other side of zero, judged
+            # there in one step, or an iterate it goes on from (from k0 it repeated the
+            # same iterations: 13-19 to the same root, or 30 to the same iterate without
+            # converging; cylinder, nu = -0.5, c/a = 0.98)
             guess = sigma * k
         return solve_default(geometry, c, n, ops=(pw, qw), k_guess=guess, mesh=mesh)
     nn, m = mesh.n, mesh.stick_index

@@ -246,6 +246,22 @@ def test_beyond_c_star_no_level_repeats_its_newton(factorizations):
     assert factorizations[0] <= 60, factorizations[0]
 
 
+@pytest.mark.slow
+def test_beyond_c_star_a_level_that_does_not_converge_goes_on_from_its_last_iterate(
+        factorizations):
+    """The same case at n = 768: the level n = 384 does not converge in 30 steps from the
+    closed form (the iterates wander through k = -449 and come back toward a reversed
+    root). Handed over from 1.27 again it repeated the same 30 steps; from its last
+    iterate (-22.8) the default method reaches that root (22.2, tensile) in 4, and the
+    finest starts from the levels' roots continued (13.4, 22.2: 37) and ends on its own
+    (38.4). 162 factorizations before, and a diagnosis at an unrelated root (0.77);
+    80 now."""
+    s = solve_extrapolated(contact("cylinder", -0.5), 0.98, 768, work=False)
+    assert not s.converged and "beyond the largest stick ratio c*" in s.message, s.message
+    assert "|k| = 38.39" in s.message, s.message
+    assert factorizations[0] <= 100, factorizations[0]
+
+
 @pytest.mark.parametrize("geometry, nu, c", [("cylinder", 0.3, 0.1945),
                                                ("sphere", -0.5, 0.3691)])
 def test_a_vanishing_n2_term_is_no_reason_to_stop_extrapolating(geometry, nu, c):

@@ -72,7 +72,8 @@ __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS"
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
            "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise",
-           "LOG_NOISE_MIN_STICK",
+           "LOG_NOISE_MIN_STICK", "TRUNCATION_FACTOR", "TRUNCATION_FACTOR_COARSE",
+           "truncation_factor",
            "LOG_LEVEL_MAX_OFFSET"]
 
 ORDERS = (2.0, 3.0, 4.0)
@@ -113,6 +114,27 @@ level suffices where it took three (two plain Newton steps from k(n/4), then a r
 one); from the same n on, the finest level's system is also equilibrated in place (as the
 default method's from n = 1024)."""
 
+TRUNCATION_FACTOR = 1.5
+"""The four-level truncation estimate is the last correction (:func:`extrapolate`) times
+this (times :data:`TRUNCATION_FACTOR_COARSE` below n = 256). The levels carry an n^-3 ln n
+term the four-level fit leaves (:data:`LOG_LEVEL_FROM_N`); where it dominates, the error
+is 8/7 of the last correction (the fits' residuals of h^3 ln h on h = 8, 4, 2, 1: 0.563
+and 1.056), and below n ~ 500 the n^-4 term lowers the correction further. Against the
+five-level k at n = 2048 (sphere and cylinder, nu = 0.4999999, 0.3, 0, -0.5, c/a = 0.1,
+0.3, 0.5, 0.7, 0.9, 0.98) the error over the last correction was at most 1.68, 1.29,
+1.22 and 1.15 at n = 128, 256, 512 and 768 (cylinder, c/a = 0.5, at the first two),
+besides one case outside the expansion's range (:data:`LOG_LEVEL_MAX_OFFSET`)."""
+
+TRUNCATION_FACTOR_COARSE = 2.0
+"""The factor of :data:`TRUNCATION_FACTOR` below n = 256 (error / last correction up to
+1.68 at n = 128)."""
+
+
+def truncation_factor(n: int) -> float:
+    """The factor of the four-level k's (and load's) last correction at finest ``n``."""
+    return TRUNCATION_FACTOR_COARSE if n < 256 else TRUNCATION_FACTOR
+
+
 LOG_LEVEL_FROM_N = 1024
 """From this finest n (half-space bodies, the band of difference rows around c, levels
 nested down to n/32) two more levels, n/16 and n/32, are solved (their operators restricted
@@ -148,7 +170,9 @@ c/a = 2e-4, n = 1024; 2.5e-3 at c/a = 0.02, nu = -0.5) over nu = -0.5 ... 0.4999
 c/a = 2e-4 ... 0.9994, n = 1024 ... 4096, except sphere, nu = -0.5, c/a = 0.98 (k = 13.6):
 3.6e-2, 1.6e-2, 8.6e-3, 6.1e-3 at n = 1024, 1536, 2048, 4096, where the five-level k at
 n = 1536 lay 1.4e-8 from the values at n = 1024, 2048 and 4096 (which agree within 1.1e-9)
-with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3)."""
+with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3). The four-level
+estimate uses the same bound on its coarsest level n/8: beyond, the finest level's own
+estimate bounds the last correction (see :data:`TRUNCATION_FACTOR`)."""
 
 LOG_NOISE = 5e-16
 """The five-level k's noise bound is ``LOG_NOISE * max(c/a, LOG_NOISE_MIN_STICK) / h_min``
@@ -824,8 +848,16 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
                                             "converge: k not extrapolated"] if x)
         return out
     if nested:
+        factor = truncation_factor(n)
         out.k, out.error_estimate = extrapolate(out.level_k)
         out.extrapolated_load, out.load_error_estimate = extrapolate(out.level_load)
+        out.error_estimate *= factor
+        out.load_error_estimate *= factor
+        if abs(out.level_k[0] / out.k - 1.0) > LOG_LEVEL_MAX_OFFSET:  # the coarsest level
+            # too far outside the expansion's range for its last correction (sphere,
+            # nu = -0.5, c/a = 0.98, n = 256: n/8 3.6e-2 off, error 5.3e-6 against 2.2e-6):
+            # the finest level's own estimate bounds it
+            out.error_estimate = max(out.error_estimate, _finest_level_error(out.level_k))
         if not out.k * top.k > 0.0:  # levels far outside the expansion (sphere, nu = 0,
             # c/a = 0.999, n = 128: k = 94, 471, 4624, 1202 extrapolated to -1293): the
             # finest level's root, the largest difference between levels its estimate

@@ -700,15 +700,21 @@ def _failed_start(coarse) -> float | None:
     |k| grows about 1.6 times a halving of the elements (6.7, 10.2, 16.4 at n = 64, 128,
     256, 27.8 at 512); from the uncoupled closed form (1.27) the finest level took 19
     Newton steps to it, each a factorization of the largest system, from the trend 5.
-    Only the levels n/4 and n/2 are continued, one halving: over three (10.2 x 1.5^3 = 35
-    at n = 1024 from n = 64 and 128) Newton did not converge in 30 steps to the root 48.5.
+    The levels n/4 and n/2 are continued one halving, else (the level n/2 without a root)
+    n/8 and n/4 two: at n = 1536 the level 768 does not converge, and from 13.4 and 22.2
+    at n = 192 and 384 the finest starts at 61.5 and ends on its own root (68.0) in 7
+    steps, where 30 from the closed form did not converge (119 s, now 27 s). Not over
+    three: from n = 64 and 128 (10.2 x 1.5^3 = 35 at n = 1024) Newton did not converge in
+    30 steps to the root 48.5.
     """
     good = [s.oriented_k for s in coarse if _good(s)]
     if good:
         return good[-1]
-    below, last = (getattr(s, "newton_root", math.nan) for s in coarse[-2:])
-    if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
-        return last * (last / below)
+    roots = [getattr(s, "newton_root", math.nan) for s in coarse]
+    for halvings in (1, 2):  # from the levels n/4 and n/2, else n/8 and n/4
+        below, last = roots[len(roots) - 1 - halvings:len(roots) + 1 - halvings]
+        if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
+            return last * (last / below) ** halvings
     return None
 
 

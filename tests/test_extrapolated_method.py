@@ -287,6 +287,17 @@ def test_beyond_c_star_a_level_that_does_not_converge_goes_on_from_its_last_iter
     assert factorizations[0] <= 100, factorizations[0]
 
 
+@pytest.mark.slow
+def test_beyond_c_star_the_finest_continues_the_roots_over_two_halvings(factorizations):
+    """The same case at n = 1536: the level n/2 (768) finds no root, so the finest starts
+    from those of n/8 and n/4 (13.4, 22.2) continued two halvings (61.5) and reaches its
+    own tensile root (68.0) in 7 steps. From the closed form it did not converge in 30
+    (209 factorizations, 119 s, 'did not converge' as the reason); 129 now, 27 s."""
+    s = solve_extrapolated(contact("cylinder", -0.5), 0.98, 1536, work=False)
+    assert not s.converged and "beyond the largest stick ratio c*" in s.message, s.message
+    assert factorizations[0] <= 150, factorizations[0]
+
+
 @pytest.mark.parametrize("geometry, nu, c", [("cylinder", 0.3, 0.1945),
                                                ("sphere", -0.5, 0.3691)])
 def test_a_vanishing_n2_term_is_no_reason_to_stop_extrapolating(geometry, nu, c):

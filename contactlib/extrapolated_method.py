@@ -701,7 +701,7 @@ def _failed_start(coarse) -> float | None:
     Cylinder, nu = -0.5, c/a = 0.98 lies beyond c*: every level ends on such a root, whose
     |k| grows about 1.6 times a halving of the elements (6.7, 10.2, 16.4 at n = 64, 128,
     256, 27.8 at 512); from the uncoupled closed form (1.27) the finest level took 19
-    Newton steps to it, each a factorization of the largest system, from the trend 5.
+    Newton steps to it, each a factorization of the largest system, and 5 from the trend.
     The levels n/4 and n/2 are continued one halving, else (the level n/2 without a root)
     n/8 and n/4 two: at n = 1536 the level 768 does not converge, and from 13.4 and 22.2
     at n = 192 and 384 the finest starts at 61.5 and ends on its own root (68.0) in 7

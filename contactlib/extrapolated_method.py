@@ -642,7 +642,11 @@ def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
     uncoupled closed form at the stick edge.
 
     Relative to sign(beta) (``DiscreteSolution.oriented_k``): negative when the levels
-    solved slip against it (outward on a layer; on a half-space it is their k).
+    solved slip against it (outward on a layer; on a half-space it is their k). Where the
+    two coarser levels found no solution but ended on roots (beyond c*, reversed and
+    tensile), those continued one halving (:func:`_root_trend`): from the closed form the
+    level 768 of a solve at n = 1536 (cylinder, nu = -0.5, c/a = 0.98) wandered through 60
+    steps without a root; from 13.4 and 22.2 continued it ends on its own, 38.4.
     """
     finer = [s.oriented_k for s in sols[i + 1:-1] if _good(s)]
     if len(finer) >= 2:  # the n^-2 trend of the two next finer levels, continued one level
@@ -652,6 +656,10 @@ def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
     done = [s.oriented_k for s in sols[:i] if _good(s)]
     if done:
         return done[-1]
+    if i >= 2:  # the two coarser levels ended on roots that are no solutions (beyond c*)
+        trend = _root_trend([getattr(s, "newton_root", math.nan) for s in sols[i - 2:i]], 1)
+        if trend is not None:
+            return trend
     return float(geometry.uncoupled_friction(mesh.nodes[mesh.stick_index]))
 
 
@@ -704,20 +712,31 @@ def _failed_start(coarse) -> float | None:
     256, 27.8 at 512); from the uncoupled closed form (1.27) the finest level took 19
     Newton steps to it, each a factorization of the largest system, and 5 from the trend.
     The levels n/4 and n/2 are continued one halving, else (the level n/2 without a root)
-    n/8 and n/4 two: at n = 1536 the level 768 does not converge, and from 13.4 and 22.2
-    at n = 192 and 384 the finest starts at 61.5 and ends on its own root (68.0) in 7
-    steps, where 30 from the closed form did not converge (119 s, now 27 s). Not over
-    three: from n = 64 and 128 (10.2 x 1.5^3 = 35 at n = 1024) Newton did not converge in
-    30 steps to the root 48.5.
+    n/8 and n/4 two: at n = 1536, had the level 768 no root, from 13.4 and 22.2 at n = 192
+    and 384 the finest would start at 61.5 and end on its own root (68.0) in 7 steps, where
+    30 from the closed form did not converge. (The level 768 itself now starts from those
+    two continued one halving, :func:`_start`, and finds its root.) Not over three: from
+    n = 64 and 128 (10.2 x 1.5^3 = 35 at n = 1024) Newton did not converge in 30 steps to
+    the root 48.5.
     """
     good = [s.oriented_k for s in coarse if _good(s)]
     if good:
         return good[-1]
     roots = [getattr(s, "newton_root", math.nan) for s in coarse]
     for halvings in (1, 2):  # from the levels n/4 and n/2, else n/8 and n/4
-        below, last = roots[len(roots) - 1 - halvings:len(roots) + 1 - halvings]
-        if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
-            return last * (last / below) ** halvings
+        trend = _root_trend(roots[len(roots) - 1 - halvings:len(roots) + 1 - halvings],
+                            halvings)
+        if trend is not None:
+            return trend
+    return None
+
+
+def _root_trend(pair, halvings: int) -> float | None:
+    """The roots (``newton_root``) of two consecutive levels continued ``halvings`` levels
+    finer, geometrically; None unless both are finite, on one side of zero and growing."""
+    below, last = pair
+    if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
+        return last * (last / below) ** halvings
     return None
 
 

@@ -657,7 +657,7 @@ def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
     if done:
         return done[-1]
     if i >= 2:  # the two coarser levels ended on roots that are no solutions (beyond c*)
-        trend = _root_trend([getattr(s, "newton_root", math.nan) for s in sols[i - 2:i]], 1)
+        trend = _root_trend([getattr(s, "newton_root", math.nan) for s in sols[i - 2:i]])
         if trend is not None:
             return trend
     return float(geometry.uncoupled_friction(mesh.nodes[mesh.stick_index]))
@@ -711,32 +711,24 @@ def _failed_start(coarse) -> float | None:
     |k| grows about 1.6 times a halving of the elements (6.7, 10.2, 16.4 at n = 64, 128,
     256, 27.8 at 512); from the uncoupled closed form (1.27) the finest level took 19
     Newton steps to it, each a factorization of the largest system, and 5 from the trend.
-    The levels n/4 and n/2 are continued one halving, else (the level n/2 without a root)
-    n/8 and n/4 two: at n = 1536, had the level 768 no root, from 13.4 and 22.2 at n = 192
-    and 384 the finest would start at 61.5 and end on its own root (68.0) in 7 steps, where
-    30 from the closed form did not converge. (The level 768 itself now starts from those
-    two continued one halving, :func:`_start`, and finds its root.) Not over three: from
-    n = 64 and 128 (10.2 x 1.5^3 = 35 at n = 1024) Newton did not converge in 30 steps to
-    the root 48.5.
+    The levels n/4 and n/2 are continued one halving (as every level is from the two below
+    it, :func:`_start`). Over two halvings it worked once (from 13.4 and 22.2 at n = 192
+    and 384 to 61.5 at 1536, 7 steps to its root 68.0, before the level 768 found its own);
+    over three it failed: from n = 64 and 128 (10.2 x 1.5^3 = 35 at n = 1024) Newton did
+    not converge in 30 steps to the root 48.5.
     """
     good = [s.oriented_k for s in coarse if _good(s)]
     if good:
         return good[-1]
-    roots = [getattr(s, "newton_root", math.nan) for s in coarse]
-    for halvings in (1, 2):  # from the levels n/4 and n/2, else n/8 and n/4
-        trend = _root_trend(roots[len(roots) - 1 - halvings:len(roots) + 1 - halvings],
-                            halvings)
-        if trend is not None:
-            return trend
-    return None
+    return _root_trend([getattr(s, "newton_root", math.nan) for s in coarse[-2:]])
 
 
-def _root_trend(pair, halvings: int) -> float | None:
-    """The roots (``newton_root``) of two consecutive levels continued ``halvings`` levels
-    finer, geometrically; None unless both are finite, on one side of zero and growing."""
+def _root_trend(pair) -> float | None:
+    """The roots (``newton_root``) of two consecutive levels continued to the next finer
+    level, geometrically; None unless both are finite, on one side of zero and growing."""
     below, last = pair
     if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
-        return last * (last / below) ** halvings
+        return last * (last / below)
     return None
 
 

@@ -294,8 +294,7 @@ def test_beyond_c_star_every_level_continues_the_roots_below_it(factorizations):
     (209 factorizations, 119 s, 'did not converge' as the reason). Now the level n/2
     starts from the roots of n/8 and n/4 (13.4, 22.2) continued one halving (37) and ends
     on its tensile root; the finest continues n/4 and n/2 and reaches its own (68.0):
-    76 factorizations, 12 s, the diagnosis. (Where n/2 still finds no root the finest
-    continues n/8 and n/4 over two halvings: 61.5, 7 steps to 68.0.)"""
+    76 factorizations, 12 s, the diagnosis."""
     s = solve_extrapolated(contact("cylinder", -0.5), 0.98, 1536, work=False)
     assert not s.converged and "beyond the largest stick ratio c*" in s.message, s.message
     assert "|k| = 68" in s.message, s.message

@@ -653,13 +653,9 @@ def _start(geometry: Contact, c: float, mesh: Mesh, sols, i: int) -> float:
         return finer[0] + 4.0 * (finer[0] - finer[1])
     if finer:
         return finer[0]
-    done = [s.oriented_k for s in sols[:i] if _good(s)]
-    if done:
-        return done[-1]
-    if i >= 2:  # the two coarser levels ended on roots that are no solutions (beyond c*)
-        trend = _root_trend([getattr(s, "newton_root", math.nan) for s in sols[i - 2:i]])
-        if trend is not None:
-            return trend
+    below = _start_from_below(sols[:i])
+    if below is not None:
+        return below
     return float(geometry.uncoupled_friction(mesh.nodes[mesh.stick_index]))
 
 
@@ -701,11 +697,13 @@ def _retry(geometry: Contact, c: float, ns, meshes, opss, odds, sols, j: int,
         sols[j] = d
 
 
-def _failed_start(coarse) -> float | None:
-    """Newton's start (relative to sign(beta)) on the finest level when a coarse level
-    failed: the finest good level's k; without one, the roots the two finest coarse levels
-    ended at where they are not solutions (beyond c*: reversed roots with tensile pressure,
-    growing with n), continued geometrically; else None (the default method's own start).
+def _start_from_below(coarse) -> float | None:
+    """Newton's start (relative to sign(beta)) on a level from the levels ``coarse`` below
+    it (None where not solved yet): the finest good one's k; without one, the roots the
+    two finest ended at where they are not solutions (beyond c*: reversed roots with
+    tensile pressure, growing with n), continued geometrically; else None. A coarse level
+    then starts from the closed form (:func:`_start`); the finest, when a coarse level
+    failed, from the default method's own start.
 
     Cylinder, nu = -0.5, c/a = 0.98 lies beyond c*: every level ends on such a root, whose
     |k| grows about 1.6 times a halving of the elements (6.7, 10.2, 16.4 at n = 64, 128,
@@ -725,7 +723,10 @@ def _failed_start(coarse) -> float | None:
 
 def _root_trend(pair) -> float | None:
     """The roots (``newton_root``) of two consecutive levels continued to the next finer
-    level, geometrically; None unless both are finite, on one side of zero and growing."""
+    level, geometrically; None unless there are two, finite, on one side of zero and
+    growing."""
+    if len(pair) < 2:
+        return None
     below, last = pair
     if below * last > 0.0 and abs(last) > abs(below):  # (False for NaN)
         return last * (last / below)
@@ -815,7 +816,7 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
                 # at once (a level's own Newton first repeated its failure: cylinder,
                 # nu = -0.5, c/a = 0.98, beyond c*: 175 factorizations, 38 s at n = 1024)
                 sols[i] = solve_default(geometry, c, n, ops=opss[i], cache=cache,
-                                        mesh=meshes[i], k_guess=_failed_start(sols[:-1]))
+                                        mesh=meshes[i], k_guess=_start_from_below(sols[:-1]))
                 continue
             k0 = side * _predict([s.k for s in sols[:-1]])
         elif guess is not None and level_offsets is not None:  # continuation: each

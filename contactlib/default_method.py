@@ -120,6 +120,17 @@ EDGE_REF_WIDTHS = 4.0
 # c/a; the differences, <= 3.6e-8 relative, are below the method's error there.
 NEAR_ROWS_BELOW = 2e-6
 NEAR_ROWS_WIDTH = 0.001
+BAND_REF_RATIO = 2.0
+BAND_REF_INNER = 2.0
+"""The band's rows are written relative to a cascade of reference nodes
+(:func:`band_references`): a row within w of c relative to the node just inside c - w,
+for the widths w = NEAR_ROWS_WIDTH min(c, a - c) / BAND_REF_RATIO^l down to BAND_REF_INNER
+elements next to c. A row relative to one node at the band's edge keeps a round-off of
+~eps times its own size, width x slope, which the stick-edge condition amplifies by
+about width / h_min: moving the last stick node by 1e-16 c moved the root of a level by
+8.5e-11 (cylinder, nu = 0.4999999, c/a = 0.9, n = 1024, one refined Newton step from a
+fixed k), and it is the round-off noise of the extrapolated method's k
+(:data:`~contactlib.extrapolated_method.LOG_NOISE`); relative to the cascade, by 1e-12."""
 NEAR_ROWS_FROM_N = 512
 """From this n on the band of difference rows around c is written at every c/a (as well
 as where the elements next to c are below :data:`NEAR_ROWS_BELOW` min(c, a - c), which
@@ -488,17 +499,19 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
         a0[near, nn + 1:nn + m] = sign * dqx[at][:, stick_cols]
         a1b[near] = sign * dqx[at][:, slip_cols] / shape[slip_nodes]
         b[0] = 0.5 * r[m + 1] ** 2  # w(0) - w(r_{M+1}); -r_i^2/2 for the others as before
-    if edge is not None:  # rows i0+1 ... N: w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2
-        i0, dp, dq, up, uq = edge
+    if edge is not None:  # rows i0+1 ...: w(r_i) - w(r_ref) = -(r_i^2 - r_ref^2)/2
+        i0, dp, dq, up, uq = edge[:5]
         rows = slice(i0 + 1, i0 + 1 + dp.shape[0])
+        ref = r[edge[5]] if len(edge) > 5 else r[i0]  # each row's reference (or i0's)
         a0[rows, :nn] = dp[:, :-1]
         a0[rows, nn] = 0.0
         _put_shear(tie, dq, m, nn, shape, a0[rows, nn + 1:nn + m], a1b[rows])
-        b[rows] = -0.5 * (r[rows] - r[i0]) * (r[rows] + r[i0])
+        b[rows] = -0.5 * (r[rows] - ref) * (r[rows] + ref)
         srows = slice(nr + i0, nr + m)  # stick rows of the nodes i0 + 1 ... M
+        sref = ref[:m - i0] if len(edge) > 5 else ref
         a0[srows, :nn] = up[:m - i0, :-1]
         _put_shear(tie, uq[:m - i0], m, nn, shape, a0[srows, nn + 1:nn + m], a1b[srows])
-        a0[srows, nn + m] = -(r[i0 + 1:m + 1] - r[i0]) * (r[i0 + 1:m + 1] + r[i0])
+        a0[srows, nn + m] = -(r[i0 + 1:m + 1] - sref) * (r[i0 + 1:m + 1] + sref)
     return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
 
@@ -809,19 +822,63 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
     elif axis is None and ((mesh.n >= NEAR_ROWS_FROM_N
                             or _near_c_h(r, m) < NEAR_ROWS_BELOW * min(r[m], 1.0 - r[m]))
                            if band is None else band):
-        width = width * min(r[m], 1.0 - r[m])
-        i0 = int(np.searchsorted(r, r[m] - width))
-        i1 = int(np.searchsorted(r, r[m] + width))
         try:
-            ref = float(r[i0])
-            edge = (i0,) + tuple(axis_w_rows(geometry, r, r[i0 + 1:i1 + 1], part, ref=ref,
-                                             quadrature=quadrature)
-                                 for part in ("normal", "shear")) + tuple(
-                u_difference_rows(geometry, r, r[i0 + 1:m + 1], part, ref, quadrature)
-                for part in ("normal", "shear"))
+            edge = _band_rows(geometry, mesh, width * min(r[m], 1.0 - r[m]), quadrature)
         except NotImplementedError:
             edge = None
     return axis, edge
+
+
+def band_references(mesh: Mesh, width: float) -> tuple[int, np.ndarray]:
+    """The band's first reference node i0 and each band node's reference, (i0, refs).
+
+    The band is the nodes i0 + 1 ... i1 within ``width`` (units a) of c; ``refs[j]`` is
+    the node the row of node i0 + 1 + j is written relative to: the node just inside
+    c - w_l for the innermost of the widths w_l = width / :data:`BAND_REF_RATIO`^l
+    (down to :data:`BAND_REF_INNER` elements next to c) whose band holds the node. Every
+    reference is itself a node of the next wider band (or i0), so the rows are the plain
+    ones combined by an invertible (triangular) transformation: the same equations.
+    """
+    r, m = mesh.nodes, mesh.stick_index
+    i0 = int(np.searchsorted(r, r[m] - width))
+    i1 = int(np.searchsorted(r, r[m] + width))
+    refs = np.full(i1 - i0, i0, dtype=np.intp)
+    node = np.arange(i0 + 1, i1 + 1)
+    inner = BAND_REF_INNER * _near_c_h(r, m)
+    w = width / BAND_REF_RATIO
+    while w >= inner:
+        j0 = int(np.searchsorted(r, r[m] - w))
+        if j0 >= m:
+            break
+        j1 = int(np.searchsorted(r, r[m] + w))
+        refs[(node > j0) & (node <= j1)] = j0
+        w /= BAND_REF_RATIO
+    return i0, refs
+
+
+def _band_rows(geometry: Contact, mesh: Mesh, width: float, quadrature: str) -> tuple:
+    """The band's difference rows (i0, w rows of p and phi, u rows of p and phi, refs).
+
+    Each row relative to its own reference node (:func:`band_references`), one kernel pass
+    per distinct reference.
+    """
+    r, m = mesh.nodes, mesh.stick_index
+    i0, refs = band_references(mesh, width)
+    node = np.arange(i0 + 1, i0 + 1 + refs.size)
+    cols = r.size
+    dp, dq = np.empty((refs.size, cols)), np.empty((refs.size, cols))
+    up, uq = np.empty((m - i0, cols)), np.empty((m - i0, cols))
+    for ref in np.unique(refs):
+        sel = np.flatnonzero(refs == ref)
+        stick = sel[node[sel] <= m]
+        x = float(r[ref])
+        dp[sel], dq[sel] = (axis_w_rows(geometry, r, r[node[sel]], part, ref=x,
+                                        quadrature=quadrature) for part in ("normal", "shear"))
+        if stick.size:
+            up[stick], uq[stick] = (u_difference_rows(geometry, r, r[node[stick]], part, x,
+                                                      quadrature)
+                                    for part in ("normal", "shear"))
+    return i0, dp, dq, up, uq, refs
 
 
 def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float = 2.0,

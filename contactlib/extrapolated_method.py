@@ -72,7 +72,7 @@ __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS"
            "quadrature_noise", "NOISE", "NOISE_POWER", "DIFFERENCE_NOISE",
            "DIFFERENCE_NOISE_POWER", "BAND_FROM_N", "BAND_WIDTH", "BAND_NOISE",
            "BAND_NOISE_POWER", "LOG_ESTIMATE_DIVISOR", "LOG_NOISE", "log_noise",
-           "LOG_NOISE_MIN_STICK", "TRUNCATION_FACTOR", "TRUNCATION_FACTOR_COARSE",
+           "LOG_NOISE_POWER", "TRUNCATION_FACTOR", "TRUNCATION_FACTOR_COARSE",
            "truncation_factor",
            "LOG_LEVEL_MAX_OFFSET"]
 
@@ -177,31 +177,26 @@ with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3). The four
 estimate uses the same bound on its coarsest level n/8: beyond, the finest level's own
 estimate bounds the last correction (see :data:`TRUNCATION_FACTOR`)."""
 
-LOG_NOISE = 5e-16
-"""The five-level k's noise bound is ``LOG_NOISE * max(c/a, LOG_NOISE_MIN_STICK) / h_min``
-(:func:`log_noise`), h_min the smallest element (units of a): the round-off of positions
-near c, about eps c, relative to the elements there. Measured as the spread of k over
-stick ratios 1e-15 apart, which leaves the discretization alone and moves the round-off
-(c/a + j 1e-15, j = 0 ... 9; 608 solves: sphere and cylinder, nu = 0.4999999, c/a = 0.02
-... 0.98, n = 1024, 1536, 2048, 3072, against the closed form): the spread's standard
-deviation was 1.2e-16 c/h_min at most (about eps/2 times c/h_min), over n = 1536 ... 3072
-at every c/a alike (rising to that from n = 1024), on the stick side and the annulus side
-alike; at nu = 0 and -0.5 it was smaller. Together with a bias that grows with n (c/a =
-0.1, n = 3072: 4e-10 against the closed form over a spread of 1.2e-10) the largest
-error / estimate was 0.85 with this bound. The bound it replaces (5e-17 / h_min below c/a
-= 1/2, 1e-16 / h_min up to 0.99, fitted to single solves) was exceeded by 27 of the 608
-solves, by up to 1.7 times (cylinder, c/a = 0.97, n = 1536: 3.1e-9 against an estimate of
-1.8e-9); a solve that differs from another only in the last digit of c/a carries
-different round-off (cylinder, nu = 0.4999999, c/a = 0.97 and 0.97 + 1e-15, n = 2048:
--1.0e-9 and +3.1e-9). It is also the floor under the four-level band bound
-(:func:`quadrature_noise`)."""
+LOG_NOISE = 1.5e-12
+"""The five-level k's noise bound is ``LOG_NOISE (1 / (c/a) + 1 / (1 - c/a)^LOG_NOISE_POWER)``
+(:func:`log_noise`, relative): the round-off the levels' roots keep, measured as the spread
+of k over stick ratios 1e-15 apart, which leaves the discretization alone and moves the
+round-off (``python benchmarks/report_estimate_coverage.py``). With the band's rows
+relative to a cascade of reference nodes (:data:`~contactlib.default_method.BAND_REF_RATIO`)
+it no longer grows with n: sphere and cylinder, nu = 0.4999999, three draws a case, the
+standard deviation at n = 1536 and 2048 was 1e-13 (c/a = 0.5), 7e-13 (0.1), 3.6e-12
+(0.02), 9e-12 (0.9), 4.5e-11 (0.97) and 8.4e-11 (0.98), the same at n = 1024 (1.05e-10 at
+0.98), the bound's 7e-12, 1.7e-11, 7.5e-11, 4.7e-11, 2.9e-10 and 5.3e-10 there. Before the
+cascade, with every band row relative to the band's edge, the spread was 1.2e-16 c / h_min
+(about eps/2 c / h_min, h_min the smallest element, growing like n^2: 2.8e-9 at c/a = 0.97,
+n = 2048) and the bound was 5e-16 max(c/a, 0.1) / h_min. It is also the floor under the
+four-level band bound (:func:`quadrature_noise`)."""
 
-LOG_NOISE_MIN_STICK = 0.1
-"""Below this c/a the noise bound's factor c/a stays at this value: there the five-level
-truncation estimate falls short (sphere, nu = 0.4999999, c/a = 0.02, n = 1536: error
-7.9e-10 over a spread of 1.4e-11, the estimate's truncation part 8e-11), and the bound,
-2e-10 with c/a itself, takes 9.6e-10 so (the earlier form, 5e-17 / h_min, gave the same
-below c/a = 1/2; it covered this case as well)."""
+LOG_NOISE_POWER = 1.5
+"""Toward full stick the spread grows like (1 - c/a)^-1.5 (c/a = 0.9, 0.97, 0.98: 9e-12,
+4.5e-11, 8.4e-11 over the 1 - c/a of 0.1, 0.03, 0.02); toward c/a = 0 like (c/a)^-1
+(3.6e-12 at 0.02 against 7e-13 at 0.1)."""
+
 
 
 NEXT_FROM_N = 512
@@ -376,11 +371,11 @@ def extrapolate_with_log(values) -> float:
 
 def log_noise(mesh: Mesh) -> float:
     """Measured bound of the relative round-off noise of k on ``mesh`` (the finest) with the
-    band rows: :data:`LOG_NOISE` max(c/a, :data:`LOG_NOISE_MIN_STICK`) / h_min (8.4e-11 at
-    c/a = 0.5, n = 1024, 3.3e-10 at n = 2048; 4.1e-9 at c/a = 0.98, n = 1024, 1.6e-8 at n = 2048;
-    the five-level k's, and a floor under :func:`quadrature_noise`'s band bound)."""
-    c, h_min = _noise_scales(mesh)
-    return LOG_NOISE * max(c, LOG_NOISE_MIN_STICK) / h_min
+    band rows: :data:`LOG_NOISE` (1 / (c/a) + 1 / (1 - c/a)^:data:`LOG_NOISE_POWER`) (7e-12 at
+    c/a = 0.5, 7.5e-11 at 0.02, 2.9e-10 at 0.97, 5.3e-10 at 0.98, 1.5e-9 at 0.99, whatever
+    n; the five-level k's, and a floor under :func:`quadrature_noise`'s band bound)."""
+    c, _ = _noise_scales(mesh)
+    return LOG_NOISE * (1.0 / c + (1.0 - c) ** -LOG_NOISE_POWER)
 
 
 def _noise_scales(mesh: Mesh) -> tuple[float, float]:
@@ -461,7 +456,7 @@ def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | Non
     return need if need <= max_n else None
 
 
-FINE_QUADRATURE_FROM_N = 2048
+FINE_QUADRATURE_FROM_N = 1024
 """From this finest n on, the band of difference rows around c of every level is
 integrated with :mod:`contactlib.influence`'s ``"fine"`` rules (:func:`quadrature_for`);
 the operators and the axis and edge rows (c/a <= 1e-4, 1 - c/a <= 5e-4) keep the standard

@@ -428,6 +428,45 @@ def test_difference_rows_are_the_plain_row_differences(geometry, part):
         assert np.abs(got - want).max() <= 1e-10 * scale
 
 
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_band_rows_relative_to_a_cascade_are_the_same_equations(geometry):
+    """Each band row is written relative to its own reference node, every reference a node
+    of the next wider band (or the band's edge i0) and closer to c the closer its rows lie,
+    down to a few elements next to c; the system solves to the same p and phi as with the
+    plain rows (to the plain rows' round-off) at a fixed k."""
+    from contactlib.default_method import (BAND_REF_INNER, BAND_REF_RATIO, assemble,
+                                           band_references, difference_rows)
+    from contactlib.elements import graded_mesh
+    from contactlib.model import contact
+    from contactlib.operators import nodal_operators
+
+    model = contact(geometry, 0.3)
+    mesh = graded_mesh(512, 0.6)
+    r, m = mesh.nodes, mesh.stick_index
+    width = 1e-3 * 0.4
+    i0, refs = band_references(mesh, width)
+    node = np.arange(i0 + 1, i0 + 1 + refs.size)
+    assert np.all(refs < node) and refs[0] == i0
+    for ref in np.unique(refs)[1:]:  # each deeper reference is a row of a wider band
+        assert i0 < ref < m and refs[ref - i0 - 1] < ref
+    inner = refs[m - i0 - 1]  # the reference of the node at c: within a few elements
+    h = min(r[m] - r[m - 1], r[m + 1] - r[m])
+    assert 0.0 < r[m] - r[inner] <= BAND_REF_RATIO * BAND_REF_INNER * h
+    assert np.unique(refs).size >= 5
+    ops = nodal_operators(model, mesh)
+    axis, edge = difference_rows(model, mesh, band=True, width=1e-3)
+    assert edge is not None and np.array_equal(edge[5], refs)
+    k = 0.2
+    xs = []
+    for rows in ((None, None), (axis, edge)):
+        system = assemble(model, mesh, *ops, *rows)
+        a = system.a0.copy()
+        a[:, system.slip_nodes] += k * system.a1b
+        xs.append(np.linalg.solve(a, system.b))
+    nn = mesh.n
+    assert np.abs(xs[1][:nn] - xs[0][:nn]).max() <= 1e-8 * np.abs(xs[0][:nn]).max()
+
+
 def test_an_inconsistent_root_is_never_resolved():
     # sphere, nu = -0.99, c/a = 1 - 1e-5: Newton converges (k = 1.03) with a tiny
     # discretization estimate, but the stick zone is not admissible: no answer

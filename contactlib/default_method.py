@@ -62,7 +62,8 @@ from .model import Contact
 from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators,
                         operator_part, operators, u_difference_rows)
 
-__all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "start_k",
+__all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "band_references",
+           "BAND_REF_RATIO", "BAND_REF_INNER", "start_k",
            "newton_on_k", "REFINED_FINAL_STEP", "PartialSlipSystem", "NewtonResult",
            "operators", "operator_part", "nodal_operator_part"]
 
@@ -450,8 +451,7 @@ class PartialSlipSystem:
 
 def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
              axis: tuple[np.ndarray, np.ndarray] | None = None,
-             edge: tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
-             ) -> PartialSlipSystem:
+             edge: tuple | None = None) -> PartialSlipSystem:
     """The partial-slip system on ``mesh`` from the nodal operators (see the module notes).
 
     Rows: normal collocation at every node (w = delta - r^2/2), then the
@@ -466,7 +466,10 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
     w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2 and the stick rows i0 + 1 ... M by
     u(r_i) - u(r_i0) = C (r_i^2 - r_i0^2) (a thin slip annulus), from
     :func:`~contactlib.operators.axis_w_rows` and
-    :func:`~contactlib.operators.u_difference_rows` with ``ref = r_i0``.
+    :func:`~contactlib.operators.u_difference_rows` with ``ref = r_i0``. A sixth
+    element, an int array, gives each of those rows its own reference node instead of
+    i0 (the band around c, :func:`band_references`): w(r_i) - w(r_ref) = -(r_i^2 -
+    r_ref^2)/2 and u(r_i) - u(r_ref) = C (r_i^2 - r_ref^2).
     """
     r = mesh.nodes
     nn, m = mesh.n, mesh.stick_index

@@ -470,10 +470,13 @@ same with the fine rules on the operators too, and back to the first values with
 fine rules on the operators alone). Over c/a = 0.02 ... 0.98 (sphere and cylinder) the
 largest error at n = 2048 fell from 4.8e-9 to 1.1e-9; the sphere moved by at most 1e-10
 up to c/a = 0.99 (0.995: 3.0e-9 -> 9.2e-10). The estimate is unchanged: at n = 3072 and
-4096 the errors at c/a = 0.98 are 1.2e-9 ... 5.5e-9 with either rule (the noise of
-:func:`quadrature_noise`). Below n = 2048 the standard rules (bit for bit as before): at
-n = 1024 the truncation dominates and the fine rows moved k by at most 1.6e-9 (c/a =
-0.5 ... 0.99, both geometries, the errors 1.1e-9 ... 8.5e-9)."""
+4096 the errors at c/a = 0.98 were 1.2e-9 ... 5.5e-9 with either rule (the band rows'
+round-off then, see :data:`LOG_NOISE`). It was 2048 until that round-off was removed
+(:func:`~contactlib.default_method.band_references`); the standard rules' bias then
+showed at n = 1536: sphere, nu = 0.4999999, c/a = 0.1 and 0.02, -6.9e-11 and -6.4e-11
+against the closed form (the five-level truncation part 2.5e-11 and 2.9e-12), with the
+fine rules -2.2e-11 and -1.8e-11. Below n = 1024 the standard rules, where the four-level
+truncation dominates."""
 
 
 EXTREMES_FINEST_FROM_N = 640

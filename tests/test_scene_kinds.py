@@ -95,7 +95,7 @@ def test_tolerance_scene_plans_the_default_method_and_refuses_n_with_it():
                           "stick_ratios": [0.5]})
     with pytest.raises(ValueError, match="beyond the largest supported n"):
         parse_scene("t", {"geometry": "sphere", "nu": 0.3, "tolerance": 1e-9,
-                          "stick_ratios": [0.98]})  # (1e-8 is met there from n = 1024)
+                          "stick_ratios": [0.99]})  # (1e-9 is met up to c/a = 0.98)
 
 
 # ----------------------------------------------------------------------------- stacking

@@ -443,7 +443,7 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
         difference = c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW
     if difference:
         return DIFFERENCE_NOISE[side] * h_min ** -DIFFERENCE_NOISE_POWER
-    if band:  # (the round-off of positions near c: log_noise, see LOG_NOISE)
+    if band:  # (the band rows' round-off: log_noise, see LOG_NOISE)
         return max(BAND_NOISE[side] * h_min ** -BAND_NOISE_POWER, log_noise(mesh))
     return NOISE[side] * h_min ** -NOISE_POWER
 

@@ -105,7 +105,9 @@ EDGE_REF_WIDTHS = 4.0
 # High n: where the elements next to c are below NEAR_ROWS_BELOW min(c, a - c) (n >~ 1500;
 # never at the default n = 256, whose are ~9e-5 of it), the normal rows within
 # NEAR_ROWS_WIDTH min(c, a - c) of c and the stick rows from there to c are written
-# relative to the node just inside c - that width (:func:`assemble`, as for the annulus).
+# relative to the node just inside c - that width (:func:`assemble`, as for the annulus;
+# since 2026-11-28 each relative to its own reference, a cascade toward c: BAND_REF_RATIO).
+# The measurements below are of the rows relative to that one node.
 # Sphere, nu = 0.3, c/a = 0.5, (k(n) - k_inf) n^2 / k_inf with the plain rows: 0.83, 0.83,
 # 0.83 at n = 1024, 1536, 2048, then 0.95, 1.86, 0.12, 3.05 at 2560 ... 4096 (k(4096)
 # 1.3e-7 off the n^-2 trend); with these rows 0.80, 0.75, 0.73, 0.69, 0.82 at 2048 ... 4096

@@ -309,7 +309,7 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
                  "at every n that serves all the requested c/a at once")
         raise ValueError(f"tolerance {validate.shown(tol)} is beyond every method: "
                          f"{default_part}, and the extrapolated method's noise bound (the "
-                         f"round-off of the smallest elements, which grows with n) stays above "
+                         f"round-off of the rows next to c, measured by c/a and n) stays above "
                          f"it {where}")
     worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
     e256 = predicted_error(geometry.indenter.name, worst, 256)

@@ -507,13 +507,14 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
     if edge is not None:  # rows i0+1 ...: w(r_i) - w(r_ref) = -(r_i^2 - r_ref^2)/2
         i0, dp, dq, up, uq = edge[:5]
         rows = slice(i0 + 1, i0 + 1 + dp.shape[0])
-        ref = r[edge[5]] if len(edge) > 5 else r[i0]  # each row's reference (or i0's)
+        # each row's reference: its own (the band's cascade) or i0 for all (an annulus)
+        ref = r[edge[5] if len(edge) > 5 else np.full(dp.shape[0], i0)]
         a0[rows, :nn] = dp[:, :-1]
         a0[rows, nn] = 0.0
         _put_shear(tie, dq, m, nn, shape, a0[rows, nn + 1:nn + m], a1b[rows])
         b[rows] = -0.5 * (r[rows] - ref) * (r[rows] + ref)
         srows = slice(nr + i0, nr + m)  # stick rows of the nodes i0 + 1 ... M
-        sref = ref[:m - i0] if len(edge) > 5 else ref
+        sref = ref[:m - i0]
         a0[srows, :nn] = up[:m - i0, :-1]
         _put_shear(tie, uq[:m - i0], m, nn, shape, a0[srows, nn + 1:nn + m], a1b[srows])
         a0[srows, nn + m] = -(r[i0 + 1:m + 1] - sref) * (r[i0 + 1:m + 1] + sref)

@@ -20,7 +20,9 @@
 * Eq. 12: q_1 = q_2 (sphere) or q_1 = q_2 / 2 (cylinder), and the adherence
   condition Eq. 8 at i = 1/2: u(a/2n) = u_1 / 4.
 * Newton-Raphson from the paper's trial vector (frictionless pressures,
-  q_j = 1, k = 0.1).
+  q_j = 1, k = 0.1). A run that does not converge reports NaN for every value
+  (its last iterate depends on the machine's round-off), with ``converged``
+  False and a message.
 
 Trap 1 of docs/methods.md: Eq. 9 uses only differences w_i - w_0, so nothing
 excludes a flat-punch pressure; the scheme is kept as printed, and its
@@ -210,6 +212,12 @@ def solve_paper(geometry: Contact, m: int, n: int, *, coulomb: str = "resultant"
             converged = True
             break
     res = float(np.linalg.norm(residual(x)) / np.linalg.norm(rhs9))
-    msg = "" if converged else f"Newton did not converge in {max_iter} iterations"
+    msg = ""
+    if not converged:
+        # the last iterate of a run that did not converge is no data (it differs from one
+        # BLAS kernel to the next): the case is kept, flagged, with NaN values
+        msg = (f"Newton did not converge in {max_iter} iterations from the paper's trial "
+               "vector; no root of the printed scheme is reported (NaN)")
+        x = np.full_like(x, np.nan)
     return PaperSolution(geometry, mesh, x[:n], x[n:2 * n], np.nan, float(sigma * x[-1]),
                          converged, res, it, msg)

@@ -209,7 +209,7 @@ def case_record(geometry: Contact, d: SelfSimilarSolution, samples: bool) -> Cas
         pts = d.stick_points()
         extra.update(slip_x=xs, slip_w=ws, slip_q=q_slip, slip_s=s_slip,
                      stick_q=d.shear(pts), stick_p=d.pressure(pts))
-        if not np.all(np.isfinite(s_slip)):  # never a silent NaN in a converged case
+        if converged and not np.all(np.isfinite(s_slip)):  # never a silent NaN as converged
             converged = False
             message = "; ".join(x for x in (message, (
                 "the slip-rate samples hit a kernel singularity (a slip zone narrower than "
@@ -524,7 +524,9 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     elif method not in NODAL_METHODS:
         ref = solve_default(geometry, solved, 64, cache=cache)
         k_ref, load_ref = ref.k, ref.load()
-        if 0.0 < c < 1.0 and np.isfinite(rec.k) and k_ref > 0.0:
+        if not rec.converged:  # no value, so no error of it
+            out["error_estimate"] = math.nan
+        elif 0.0 < c < 1.0 and np.isfinite(rec.k) and k_ref > 0.0:
             out["error_estimate"] = abs(rec.k - k_ref) / k_ref
         else:
             out["error_estimate"] = 0.0

@@ -66,13 +66,48 @@ REPORT_COLUMNS = (
 _RATIOS = (0.25, 0.5, 0.75)
 
 
+# the relative error estimate of each quoted variable
+_ESTIMATES = {"friction_coefficient": "error_estimate", "load_ratio": "load_error_estimate",
+              "frictional_work": "work_error_estimate"}
+
+
+def quoted(value: float, relative_error: float) -> float:
+    """``value`` rounded to the significant digits its relative error supports.
+
+    floor(-log10(error)) digits, between 2 and 6 (6 without an estimate): a
+    number whose last digits are round-off or discretization error would
+    change with the machine's BLAS kernel, which a quoted number must not.
+
+    >>> quoted(0.30809448, 2e-5), quoted(0.30809448, float("nan")), quoted(2.784, 0.3)
+    (0.3081, 0.308094, 2.8)
+    """
+    if not (math.isfinite(value) and value != 0.0):
+        return float(value)
+    digits = 6
+    if math.isfinite(relative_error) and relative_error > 0.0:
+        digits = int(np.clip(math.floor(-math.log10(relative_error)), 2, 6))
+    return float(f"{value:.{digits}g}")
+
+
+def _values(ds: xr.Dataset, name: str) -> np.ndarray:
+    """A per-case variable as quoted: NaN where the solver did not converge (no data
+    there), elsewhere rounded to the digits its error estimate supports (:func:`quoted`)."""
+    v = np.atleast_1d(np.asarray(ds[name].values, dtype=float))
+    if "converged" in ds:
+        v = np.where(np.atleast_1d(ds["converged"].values).astype(bool), v, np.nan)
+    est = _ESTIMATES.get(name)
+    err = (np.atleast_1d(np.asarray(ds[est].values, dtype=float)) if est in ds
+           else np.full(v.shape, np.nan))
+    return np.array([quoted(float(x), float(e)) for x, e in zip(v, err)])
+
+
 def _at(ds: xr.Dataset, name: str, c: float) -> float:
-    """Value of a per-case variable at stick ratio c exactly (NaN when absent)."""
+    """Value of a per-case variable at stick ratio c exactly (NaN when absent or not converged)."""
     if name not in ds:
         return float("nan")
     hit = np.flatnonzero(np.isclose(np.atleast_1d(ds["stick_ratio"].values), c, rtol=0,
                                     atol=1e-12))
-    return float(np.atleast_1d(ds[name].values)[hit[0]]) if hit.size else float("nan")
+    return float(_values(ds, name)[hit[0]]) if hit.size else float("nan")
 
 
 def _frictionless(ds: xr.Dataset) -> tuple[float, str]:
@@ -115,7 +150,7 @@ def _common(ds: xr.Dataset) -> dict[str, Any]:
 
 def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
     c = np.atleast_1d(ds["stick_ratio"].values)
-    k = np.atleast_1d(ds["friction_coefficient"].values)
+    k = _values(ds, "friction_coefficient")
     conv = np.atleast_1d(ds["converged"].values).astype(bool)
     if "resolved" in ds and ds.attrs.get("method") in ("default", "extrapolated"):  # not
         # resolved: a failure
@@ -130,7 +165,7 @@ def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
     else:
         upto, n_consistent = float("nan"), float("nan")
     finite = k[np.isfinite(k)]
-    work = np.atleast_1d(ds["frictional_work"].values) if "frictional_work" in ds else None
+    work = _values(ds, "frictional_work") if "frictional_work" in ds else None
     p0, source = _frictionless(ds)
     row = _common(ds)
     row.update({
@@ -185,15 +220,18 @@ def _history(ds: xr.Dataset) -> dict[str, Any]:
     if load.ndim > 1:
         load = load.reshape(-1, load.shape[-1])[0]
     peak = int(np.argmax(load))  # the first step at the largest load
-    c_peak = by_k("stick_ratio").astype(float).reshape(ks.size, -1)[:, peak]
+    done = conv.all(axis=1)  # a run with a step that did not converge has no data
+    c_peak = np.where(done, by_k("stick_ratio").astype(float).reshape(ks.size, -1)[:, peak],
+                      np.nan)
     work = by_k("frictional_work").astype(float).reshape(ks.size, -1) \
         if "frictional_work" in ds else np.full((ks.size, load.size), np.nan)
+    work = np.where(done[:, None], work, np.nan)
     nan = float("nan")
     row = _common(ds)
     row.update({
         "method": "history",
         "cases": int(ks.size),
-        "converged": int(conv.all(axis=1).sum()),
+        "converged": int(done.sum()),
         "consistent": nan, "consistent up to c/a": nan,
         "frictionless P/P_Hertz": nan, "frictionless source": "",
         **{f"k at c/a = {r:g}": nan for r in _RATIOS},

@@ -1,4 +1,4 @@
-"""The main job's outputs against a stored fingerprint (guard for restructurings).
+"""The main job's outputs against a stored fingerprint, compared for meaning, not bits.
 
 ``tests/data/mainjob_reference.json`` holds the file list, the structure and the
 numbers of every dataset, the key-numbers table and the figures' SHA-256 of the
@@ -6,16 +6,35 @@ README Quickstart's main job (``snakemake --cores 2``, ``config/config.yaml``);
 ``tests/data/mainjob_reference.py`` regenerates it and says when that is allowed
 (only in a commit that names the bug it fixes).
 
+What is compared, and how closely (another CPU's BLAS kernel moves round-off, and
+Newton's last step, but not what the numbers mean):
+
+* a value with no data (NaN: a solver that did not converge) must be NaN in both;
+* a converged value of the default method within its own error estimate (k with
+  ``error_estimate``, the load with ``load_error_estimate``, the work with
+  ``work_error_estimate``; profiles with k's), never closer than :data:`ROUNDOFF`;
+* the paper's scheme (n = 16) and the histories to :data:`ROUNDOFF` of the
+  variable's scale: their roots are converged to round-off, and two OpenBLAS
+  kernels (SkylakeX and Sandybridge) moved them by at most 1e-10;
+* error estimates as estimates, within a factor :data:`ESTIMATE_FACTOR`;
+* Newton's iteration counts and residuals (round-off diagnostics) not at all;
+* every key number within one unit of its last quoted digit (each is quoted to the
+  digits its estimate supports);
+* figures: byte-identical when drawn twice on this machine (across machines their
+  content is that of the datasets, checked above).
+
 The main job takes minutes (``slow``, ``workflow``). A cheap check of the same
 numbers stays in the fast tier: the paper-scheme scenes (n = 16) solved in process
-must give the stored k, load and work to 1e-12.
+must give the stored k, load and work.
 """
 
 from __future__ import annotations
 
+import hashlib
 import importlib.util
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -24,7 +43,16 @@ import contactlib
 from conftest import DATA, make_workdir, needs_snakemake, snakemake
 
 REFERENCE = json.loads((DATA / "mainjob_reference.json").read_text())
-RTOL = 1e-12  # bit-level reproducibility, with room for another BLAS's last digits
+ROUNDOFF = 1e-8
+"""Relative to a variable's scale: the agreement of values converged to round-off (two
+OpenBLAS kernels moved them by at most 1e-10), with a margin of 100."""
+ESTIMATE_FACTOR = 2.0
+"""Error estimates agree within this factor (two kernels moved them by at most 9 %)."""
+DIAGNOSTICS = ("iterations", "residual_norm")
+"""Round-off diagnostics of Newton, not compared."""
+ESTIMATE_OF = {"friction_coefficient": "error_estimate", "load_ratio": "load_error_estimate",
+               "frictional_work": "work_error_estimate"}
+"""Which estimate bounds a variable of the default method (profiles: k's)."""
 
 
 def _script():
@@ -36,50 +64,125 @@ def _script():
 
 
 def _float(v) -> float:
+    if isinstance(v, str):
+        return float(v)  # "inf", "-inf"
     return math.nan if v is None else float(v)
 
 
-def assert_close(got, want, scale: float, where: str) -> None:
-    """Numbers equal to RTOL (relative to the value, or to the variable's scale near 0)."""
+def assert_close(got, want, tol: float, where: str) -> None:
+    """Numbers within ``tol`` (absolute); NaN and infinities exactly."""
     g, w = _float(got), _float(want)
-    if math.isnan(w) or math.isinf(w):
+    if not math.isfinite(w) or not math.isfinite(g):
         assert (math.isnan(g) and math.isnan(w)) or g == w, (where, got, want)
         return
-    assert abs(g - w) <= RTOL * max(abs(w), scale), (where, got, want)
+    assert abs(g - w) <= tol, (where, got, want, tol)
 
 
-def assert_same_fingerprint(got: dict, want: dict, where: str) -> None:
-    """Recursive comparison: numbers to RTOL, everything else exactly."""
-    if isinstance(want, dict):
-        assert sorted(got) == sorted(want), (where, sorted(set(got) ^ set(want)))
-        stored = [want.get("values"), list(want.get("samples", {}).values())]
-        scale = max([abs(_float(v)) for vs in stored if vs for v in vs
-                     if v is not None and not isinstance(v, str)] + [0.0])
-        if "abs_sum" in want and want["abs_sum"] is not None:
-            scale = max(scale, float(want["abs_sum"]) / max(1, np.prod(want["shape"])))
-        for key in want:
-            sub = f"{where}.{key}"
-            if key in ("values", "samples", "sum", "abs_sum"):
-                if isinstance(want[key], dict):
-                    for i in want[key]:
-                        assert_close(got[key][i], want[key][i], scale, f"{sub}[{i}]")
-                elif isinstance(want[key], list):
-                    assert len(got[key]) == len(want[key]), sub
-                    for i, (g, w) in enumerate(zip(got[key], want[key])):
-                        assert_close(g, w, scale, f"{sub}[{i}]")
-                else:
-                    assert_close(got[key], want[key], scale * max(1, np.prod(want["shape"])),
-                                 sub)
+def assert_estimate(got, want, where: str) -> None:
+    """Two estimates within ESTIMATE_FACTOR of each other (or both round-off small)."""
+    g, w = _float(got), _float(want)
+    if not (math.isfinite(w) and math.isfinite(g)):
+        assert (math.isnan(g) and math.isnan(w)) or g == w, (where, got, want)
+        return
+    if max(abs(g), abs(w)) <= 1e-12:
+        return
+    assert w / ESTIMATE_FACTOR <= g <= w * ESTIMATE_FACTOR, (where, got, want)
+
+
+def _scale(fp: dict) -> float:
+    stored = [fp.get("values"), list(fp.get("samples", {}).values())]
+    scale = max([abs(_float(v)) for vs in stored if vs for v in vs
+                 if v is not None and math.isfinite(_float(v))] + [0.0])
+    if fp.get("abs_sum") is not None:
+        scale = max(scale, float(fp["abs_sum"]) / max(1, int(np.prod(fp["shape"]))))
+    return scale
+
+
+def _relative_tolerances(dataset: dict, name: str) -> np.ndarray | None:
+    """Per case (first dimension) relative tolerance of a default-method variable."""
+    if dataset["attrs"].get("method") not in ("default", "extrapolated"):
+        return None
+    variables = dataset["variables"]
+    est = variables.get(ESTIMATE_OF.get(name, "error_estimate"))
+    if est is None or variables[name]["dims"][:1] != ["stick_ratio"]:
+        return None
+    e = np.array([_float(v) for v in est["values"]])
+    return np.where(np.isfinite(e), np.maximum(e, ROUNDOFF), ROUNDOFF)
+
+
+def assert_same_variable(got: dict, want: dict, dataset: dict, name: str, where: str) -> None:
+    """One variable's fingerprint against the stored one, by what the variable means."""
+    for key in ("dtype", "shape", "dims", "attrs"):
+        assert got[key] == want[key], (where, key, got[key], want[key])
+    if name in DIAGNOSTICS:
+        return
+    if "text" in want:
+        # messages quote estimates and last steps: their words must agree, not their digits
+        norm = [[re.sub(r"[-+]?\d[\d.]*(e[-+]?\d+)?", "#", t) for t in texts]
+                if isinstance(texts, list) else texts for texts in (got["text"], want["text"])]
+        assert norm[0] == norm[1], (where, got["text"], want["text"])
+        return
+    if name.endswith("error_estimate"):
+        for key in ("values", "samples"):
+            items = (enumerate(want[key]) if isinstance(want.get(key), list)
+                     else want.get(key, {}).items())
+            for i, w in items:
+                g = got[key][int(i)] if isinstance(want[key], list) else got[key][i]
+                assert_estimate(g, w, f"{where}[{i}]")
+        if "sum" in want:
+            assert_estimate(got["sum"], want["sum"], f"{where}.sum")
+        return
+    assert got.get("nan_count") == want.get("nan_count"), (where, "NaN count")
+    scale = _scale(want)
+    rel = _relative_tolerances(dataset, name)
+    per_case = int(np.prod(want["shape"][1:])) if len(want["shape"]) > 1 else 1
+    if "values" in want:
+        for i, (g, w) in enumerate(zip(got["values"], want["values"])):
+            size = abs(_float(w)) if per_case == 1 and math.isfinite(_float(w)) else scale
+            tol = (0.0 if rel is None else rel[i // per_case] * size) + ROUNDOFF * scale
+            assert_close(g, w, tol, f"{where}[{i}]")
+        return
+    for i, w in want["samples"].items():
+        tol = (0.0 if rel is None else rel[int(i) // per_case] * scale) + ROUNDOFF * scale
+        assert_close(got["samples"][i], w, tol, f"{where}.samples[{i}]")
+    r = ROUNDOFF + (0.0 if rel is None else float(np.max(rel)))
+    for key in ("sum", "abs_sum"):
+        assert_close(got[key], want[key], r * float(want["abs_sum"]), f"{where}.{key}")
+
+
+def assert_same_dataset(got: dict, want: dict, where: str) -> None:
+    """A dataset's fingerprint: structure exactly, numbers by meaning."""
+    assert got["sizes"] == want["sizes"], where
+    assert sorted(got["attrs"]) == sorted(want["attrs"]), where
+    for key, w in want["attrs"].items():
+        g = got["attrs"][key]
+        if isinstance(w, float):
+            assert_close(g, w, ROUNDOFF * abs(w), f"{where}.attrs.{key}")
+        else:
+            assert g == w, (where, key, g, w)
+    assert sorted(got["variables"]) == sorted(want["variables"]), where
+    for name, w in want["variables"].items():
+        assert_same_variable(got["variables"][name], w, want, name, f"{where}.{name}")
+
+
+def _last_digit(cell: float) -> float:
+    """One unit of the last significant digit a number was written with (6 at most)."""
+    if cell == 0 or not math.isfinite(cell):
+        return 0.0
+    digits = len(re.sub(r"^0\.0*|[.-]|e.*$", "", f"{cell:.6g}".lstrip("-")).rstrip("0")) or 1
+    return 10.0 ** (math.floor(math.log10(abs(cell))) - digits + 1)
+
+
+def assert_same_table(got: list, want: list, where: str) -> None:
+    """Key numbers: text exactly, each number within one unit of its last quoted digit."""
+    assert len(got) == len(want), where
+    for r, (grow, wrow) in enumerate(zip(got, want)):
+        assert len(grow) == len(wrow), (where, r)
+        for c, (g, w) in enumerate(zip(grow, wrow)):
+            if isinstance(w, float) and isinstance(g, float):
+                assert_close(g, w, 1.01 * _last_digit(w), f"{where}[{r}][{c}]")
             else:
-                assert_same_fingerprint(got[key], want[key], sub)
-    elif isinstance(want, list):
-        assert len(got) == len(want), (where, got, want)
-        for i, (g, w) in enumerate(zip(got, want)):
-            assert_same_fingerprint(g, w, f"{where}[{i}]")
-    elif isinstance(want, float) and isinstance(got, float):
-        assert_close(got, want, 0.0, where)
-    else:
-        assert got == want, (where, got, want)
+                assert g == w, (where, r, c, g, w)
 
 
 # ----------------------------------------------------------------------------- fast tier
@@ -97,17 +200,50 @@ def test_paper_scenes_in_process_give_the_stored_numbers(scene, geometry, slab):
         got = [getattr(s, name) for s in sols]
         scale = max(abs(_float(w)) for w in want if w is not None)
         for i, (g, w) in enumerate(zip(got, want)):
-            assert_close(g, w, scale, f"{scene}.{name}[{i}]")
+            assert_close(g, w, ROUNDOFF * scale, f"{scene}.{name}[{i}]")
 
 
-def test_the_comparison_sees_a_change_in_the_last_digits():
+def test_a_case_that_did_not_converge_has_no_numbers():
+    # the paper's scheme at n = 16 on the slab: Newton finds no root at c/a = 8/16
+    sol = contactlib.solve("cylinder", 0.3, stick_ratio=0.5, n=16, method="paper",
+                           slab_ratio=0.05)
+    assert not sol.converged and not sol.resolved
+    assert "did not converge" in sol.message
+    for name in ("friction_coefficient", "load_ratio", "frictional_work", "error_estimate"):
+        assert math.isnan(getattr(sol, name)), name
+    assert np.all(np.isnan(sol.pressure)) and np.all(np.isnan(sol.shear))
+
+
+def test_the_comparison_sees_a_change_beyond_the_estimate():
     want = REFERENCE["datasets"]["datasets/sphere-default.nc"]
+    assert_same_dataset(json.loads(json.dumps(want)), want, "copy")
+    est = _float(want["variables"]["error_estimate"]["values"][16])
+    for factor, seen in ((0.5, False), (3.0, True)):
+        got = json.loads(json.dumps(want))
+        got["variables"]["friction_coefficient"]["values"][16] *= 1 + factor * est
+        if seen:
+            with pytest.raises(AssertionError, match="friction_coefficient"):
+                assert_same_dataset(got, want, "changed")
+        else:
+            assert_same_dataset(got, want, "changed")
     got = json.loads(json.dumps(want))
-    assert_same_fingerprint(got, want, "copy")
-    k = got["variables"]["friction_coefficient"]["values"]
-    k[16] *= 1 + 1e-11
+    got["variables"]["error_estimate"]["values"][16] *= 2.5
+    with pytest.raises(AssertionError, match="error_estimate"):
+        assert_same_dataset(got, want, "estimate")
+    paper = REFERENCE["datasets"]["datasets/cylinder-paper.nc"]
+    got = json.loads(json.dumps(paper))
+    got["variables"]["friction_coefficient"]["values"][0] *= 1 + 1e-6
     with pytest.raises(AssertionError, match="friction_coefficient"):
-        assert_same_fingerprint(got, want, "changed")
+        assert_same_dataset(got, paper, "paper")
+
+
+def test_the_table_comparison_allows_one_unit_of_the_last_digit():
+    assert _last_digit(0.3081) == pytest.approx(1e-4)
+    assert _last_digit(2.8) == pytest.approx(0.1)
+    assert _last_digit(0.00128844) == pytest.approx(1e-8)
+    assert_same_table([["a", 0.3082]], [["a", 0.3081]], "t")
+    with pytest.raises(AssertionError):
+        assert_same_table([["a", 0.3083]], [["a", 0.3081]], "t")
 
 
 # ----------------------------------------------------------------------------- the main job
@@ -135,24 +271,38 @@ def test_main_job_writes_the_stored_files(fingerprint):
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(REFERENCE["datasets"]))
 def test_main_job_dataset_matches_the_reference(fingerprint, name):
-    assert_same_fingerprint(fingerprint["datasets"][name], REFERENCE["datasets"][name], name)
+    assert_same_dataset(fingerprint["datasets"][name], REFERENCE["datasets"][name], name)
 
 
 @needs_snakemake
 @pytest.mark.workflow
 @pytest.mark.slow
 def test_main_job_tables_match_the_reference(fingerprint):
-    assert_same_fingerprint(fingerprint["tables"], REFERENCE["tables"], "tables")
+    for name, want in REFERENCE["tables"].items():
+        assert_same_table(fingerprint["tables"][name], want, name)
 
 
 @needs_snakemake
 @pytest.mark.workflow
 @pytest.mark.slow
-def test_main_job_figures_are_byte_identical(fingerprint):
-    import matplotlib
+def test_main_job_draws_no_value_of_a_case_that_did_not_converge(main_job):
+    import xarray as xr
 
-    want = REFERENCE["figures"]
-    if matplotlib.__version__ != want["matplotlib"]:
-        pytest.skip(f"figures stored with matplotlib {want['matplotlib']}, "
-                    f"this is {matplotlib.__version__}")
-    assert fingerprint["figures"]["sha256"] == want["sha256"]
+    for path in sorted((main_job / "datasets").glob("*-paper.nc")):
+        with xr.open_dataset(path) as ds:
+            failed = ~ds["converged"].values.astype(bool)
+            assert failed.any(), path.name  # the printed scheme fails at n = 16
+            for name in ("friction_coefficient", "load_ratio", "frictional_work",
+                         "pressure", "shear", "tangential_displacement"):
+                assert np.all(np.isnan(ds[name].values[failed])), (path.name, name)
+
+
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
+def test_main_job_figures_are_byte_identical_when_drawn_again(main_job, fingerprint):
+    snakemake(main_job.parent, "--forcerun", "figures_paper", "figures_history", "key_numbers",
+              timeout=1200)
+    again = {f: hashlib.sha256((main_job / f).read_bytes()).hexdigest()
+             for f in fingerprint["figures"]["sha256"]}
+    assert again == fingerprint["figures"]["sha256"]

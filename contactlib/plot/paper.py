@@ -22,7 +22,10 @@ Conventions common to all figures:
   (its error estimate above the accuracy asked for), is always drawn,
   marked by a black cross (k and work curves) or a dotted line with crosses
   (profiles), and "not converged" in its legend label: a case that is not
-  resolved is treated as a failure. The paper's scheme is a reproduction
+  resolved is treated as a failure. A case with no value (NaN: a solver that
+  did not converge reports none) is a cross on the bottom edge of a k plot,
+  is left out of profiles and work plots, and is named in the legend or a
+  note; no number of it is drawn or written. The paper's scheme is a reproduction
   whose k is not the physical one (its ``error_estimate`` against our method
   is large by design); its cases keep their consistency markers;
 * filled markers are consistent cases, open markers inconsistent ones;
@@ -367,7 +370,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
                               main_in + strip_in + legend_in + 1.15),
                      layout="constrained")
         grid = fig.add_gridspec(3, ncol, height_ratios=[main_in, strip_in, legend_in])
-        any_high = any_low = False
+        any_high = any_low = any_nan = False
         for j, (geometry, members) in enumerate(groups):
             ax = fig.add_subplot(grid[0, j])
             strip = fig.add_subplot(grid[1, j], sharex=ax)
@@ -376,23 +379,25 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
             for row, case in enumerate(members):
                 color, marker, size, x, k, consistent, converged = _series(
                     case, "friction_coefficient", colors)
-                finite = np.isfinite(k)
-                ax.plot(x[finite], k[finite], color=color, zorder=2, **_line_style(case))
+                # the line breaks where a case has no value (NaN: no root)
+                ax.plot(x, np.where(np.isinf(k), np.nan, k), color=color, zorder=2,
+                        **_line_style(case))
                 nan = np.isnan(k)
                 high = ~nan & (k > k_max)
                 low = ~nan & (k < bottom)
                 on = ~(high | low | nan)
-                edge = low | nan
                 _draw_points(ax, x[on], k[on], consistent[on], marker=marker,
                              color=color, size=size)
                 _draw_points(ax, x[high], np.full(int(high.sum()), k_max), consistent[high],
                              marker="^", color=color, size=size + 1, clip_on=False)
-                _draw_points(ax, x[edge], np.full(int(edge.sum()), bottom), consistent[edge],
+                _draw_points(ax, x[low], np.full(int(low.sum()), bottom), consistent[low],
                              marker="v", color=color, size=size + 1, clip_on=False)
                 any_high |= bool(np.any(high))
-                any_low |= bool(np.any(edge))
-                # failed cases: crosses wherever their marker went
-                y_marks = np.where(high, k_max, np.where(edge, bottom, k))
+                any_low |= bool(np.any(low))
+                any_nan |= bool(np.any(nan))
+                # failed cases: crosses wherever their marker went; a case with no
+                # value (no root) only a cross on the bottom edge
+                y_marks = np.where(high, k_max, np.where(low | nan, bottom, k))
                 _draw_not_converged(ax, x[~converged], y_marks[~converged])
                 for xv, kv in zip(x[low], k[low]):  # the value of a case below the axis
                     ax.annotate(f"k = {k_text(float(kv))}", (xv, bottom), xytext=(4, 3),
@@ -442,7 +447,11 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
         ]
         if any_low:
             key.append(Line2D([], [], ls="none", marker="v", color="0.35",
-                              label="k below the axis (value given) or NaN: on the bottom edge"))
+                              label="k below the axis (value given): on the bottom edge"))
+        if any_nan:
+            key.append(Line2D([], [], ls="none", marker="x", ms=7, mew=1.3, color="black",
+                              label="no root (not converged): cross on the bottom edge, "
+                                    "no value"))
         fig.legend(handles=key, loc="outside lower center", ncols=3 if ncol == 2 else 2,
                    fontsize=6.3)
         return finish(fig)
@@ -618,6 +627,9 @@ def _scale_to(ax: Axes, case: _Case, name: str, good: Sequence[int], picks: Sequ
 def _case_label(case: _Case, i: int) -> str:
     """'c/a = 0.3, k = 0.117' plus [inconsistent, NOT CONVERGED] as they apply."""
     label = f"c/a = {float(case.stick[i]):.4g}"
+    if "friction_coefficient" in case.ds and not bool(case.flag("converged")[i]) \
+            and math.isnan(float(case.values("friction_coefficient")[i])):
+        return label + ": no root (not converged), not drawn"
     if "friction_coefficient" in case.ds:
         label += f", k = {k_text(float(case.values('friction_coefficient')[i]))}"
     consistent = bool(case.flag("consistent")[i]) if "consistent" in case.ds else None
@@ -851,13 +863,14 @@ def _skip_note(x: np.ndarray, v: np.ndarray, converged: np.ndarray) -> str:
     if not np.any(skipped):
         return ""
     parts = []
-    for mask, what in ((zero, "V = 0"), (negative, "V < 0"), (nan, "V NaN"),
-                       (at_zero, "at c/a = 0")):
+    no_root = nan & ~converged
+    for mask, what in ((zero, "V = 0"), (negative, "V < 0"), (nan & converged, "V NaN"),
+                       (no_root, "no root"), (at_zero, "at c/a = 0")):
         n = int(mask.sum())
         if n:
             parts.append(f"{what}: {n}")
     text = f"{int(skipped.sum())} not shown ({', '.join(parts)})"
-    failed = int((skipped & ~converged).sum())
+    failed = int((skipped & ~converged & ~no_root).sum())
     if failed:
         text = text[:-1] + f"; {failed} not converged)"
     return text

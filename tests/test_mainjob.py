@@ -306,3 +306,116 @@ def test_main_job_figures_are_byte_identical_when_drawn_again(main_job, fingerpr
     again = {f: hashlib.sha256((main_job / f).read_bytes()).hexdigest()
              for f in fingerprint["figures"]["sha256"]}
     assert again == fingerprint["figures"]["sha256"]
+
+
+# ----------------------------------------------------------------------------- report, captions
+REPORT = DATA.parent.parent / "workflow" / "report"
+
+
+def _report_results(html: str) -> dict:
+    """The ``var results = {...};`` table of a Snakemake report: file -> name, caption."""
+    start = html.index("var results = {") + len("var results = ")
+    return json.JSONDecoder().raw_decode(html[start:])[0]
+
+
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
+def test_report_lists_every_figure_with_its_caption_and_the_table(main_job):
+    snakemake(main_job.parent, "--report", "results/report.html", timeout=600)
+    results = _report_results((main_job / "report.html").read_text())
+    figures = sorted(p.name for p in (main_job / "figures").glob("*.png"))
+    assert figures
+    for name in figures + ["key-numbers.html"]:
+        entry = results.get(f"results/figures/{name}") or results.get(f"results/tables/{name}")
+        assert entry is not None, f"{name} is not in the report"
+        stem = "key_numbers" if name == "key-numbers.html" else name[:-4]
+        title = re.search(r"\*\*(.+?)\*\*", (REPORT / f"{stem}.rst").read_text()).group(1)
+        assert title in entry["caption"], (name, title)
+
+
+def _dataset(results, scene):
+    import xarray as xr
+
+    return xr.open_dataset(results / "datasets" / f"{scene}.nc")
+
+
+# Every number the captions of figures 2, 3 and 5 quote from the data: (caption, the text
+# as quoted, the value from the main job's datasets and table, its format).
+def _caption_claims(r):
+    sp, sd = _dataset(r, "sphere-paper"), _dataset(r, "sphere-default")
+    cp, cd = _dataset(r, "cylinder-paper"), _dataset(r, "cylinder-default")
+    k = "friction_coefficient"
+    table = {row[0]: row for row in _script().fingerprint_table(r / "tables/key-numbers.csv")}
+    columns = table["scene"]
+    load0 = float(table["sphere-paper"][columns.index("frictionless P/P_Hertz")])
+    beta = 0.4 / 1.4  # nu = 0.3, rigid indenter: (1 - 2 nu) / (2 (1 - nu))
+
+    def at(ds, name, c):
+        return float(ds[name].sel(stick_ratio=c, method="nearest"))
+
+    def asymptote(c):  # V ~ (16/5 pi)(pi/4 - 2/3) k beta
+        return 16 / (5 * math.pi) * (math.pi / 4 - 2 / 3) * at(sd, k, c) * beta
+
+    inner = {"stick_ratio": slice(0.001, 0.98)}
+    return [
+        ("fig2", "0.29 against\n0.152", (at(sp, k, 0.5), at(sd, k, 0.5)), "{:.2f} against\n{:.3f}"),
+        ("fig2", "k = −0.572", at(cp, k, 0.25), "k = {:.3f}"),
+        ("fig3", "k = −0.572", at(cp, k, 0.25), "k = {:.3f}"),
+        ("fig3", "4.2% above\nHertz", 100 * (load0 - 1), "{:.1f}% above\nHertz"),
+        ("fig3", "dip to 0.34 p0", float(cp.pressure.sel(stick_ratio=0.25).min()),
+         "dip to {:.2f} p0"),
+        ("fig3", "pressure of −23 p0", float(cp.pressure.sel(stick_ratio=0.3125).min()),
+         "pressure of {:.0f} p0"),
+        ("fig3", "load of −6.1 times", at(cp, "load_ratio", 0.3125), "load of {:.1f} times"),
+        ("fig3", "0 ≤ p ≤ 1.11 p0", (float(cd.pressure.sel(**inner).min()) + 0.0,
+                                     float(cd.pressure.sel(**inner).max())), "{:.0f} ≤ p ≤ {:.2f} p0"),
+        ("fig3", "1.090 p0 at c/a = 0.001 and 1.097 p0 at c/a = 0.9",
+         (float(sd.pressure.sel(stick_ratio=0.001)[0]), float(sd.pressure.sel(stick_ratio=0.9)[0])),
+         "{:.3f} p0 at c/a = 0.001 and {:.3f} p0 at c/a = 0.9"),
+        ("fig5", "0.99e-3 at c/a = 0.001 to a maximum of 1.51e-3 near\nc/a = 0.15",
+         (1e3 * at(sd, "frictional_work", 0.001), 1e3 * float(sd.frictional_work.max()),
+          float(sd.stick_ratio[int(sd.frictional_work.argmax("stick_ratio"))])),
+         "{:.2f}e-3 at c/a = 0.001 to a maximum of {:.2f}e-3 near\nc/a = {:.2f}"),
+        ("fig5", "from 0.98e-3 to 1.29e-3 near c/a = 1/16",
+         (1e3 * at(cd, "frictional_work", 0.001), 1e3 * float(cd.frictional_work.max()),
+          16 * float(cd.stick_ratio[int(cd.frictional_work.argmax("stick_ratio"))])),
+         "from {:.2f}e-3 to {:.2f}e-3 near c/a = {:.0f}/16"),
+        ("fig5", "k = 0.036 at c/a = 0.001", at(sd, k, 0.001), "k = {:.3f} at c/a = 0.001"),
+        ("fig5", "0.80 of it (0.54 at c/a = 0.1)",
+         (at(sd, "frictional_work", 0.001) / asymptote(0.001),
+          at(sd, "frictional_work", 0.1) / asymptote(0.1)), "{:.2f} of it ({:.2f} at c/a = 0.1)"),
+    ]
+
+
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
+def test_caption_numbers_are_those_of_the_data(main_job):
+    for caption, quoted, value, form in _caption_claims(main_job):
+        text = " ".join((REPORT / f"{caption}.rst").read_text().split())
+        want = " ".join(quoted.split())
+        assert want in text, (caption, want)
+        values = value if isinstance(value, tuple) else (value,)
+        got = re.sub(r"(^|[\s(])-", "\\1−", " ".join(form.format(*values).split()))
+        assert got == want, (caption, got, want)
+
+
+@needs_snakemake
+@pytest.mark.workflow
+@pytest.mark.slow
+def test_caption_statements_hold_in_the_data(main_job):
+    sp, sd = _dataset(main_job, "sphere-paper"), _dataset(main_job, "sphere-default")
+    cp, cd = _dataset(main_job, "cylinder-paper"), _dataset(main_job, "cylinder-default")
+    # fig2: the printed scheme's work changes sign between c/a = 4/16 and 5/16 (sphere); ours
+    # is consistent from 0.001 to 0.98 for both geometries
+    w = sp.frictional_work
+    assert float(w.sel(stick_ratio=0.25)) > 0 > float(w.sel(stick_ratio=0.3125))
+    for ds in (sd, cd):
+        assert bool(ds.consistent.sel(stick_ratio=slice(0.001, 0.98)).all())
+    # fig3: Newton finds no root at 8/16 and 12/16 on the slab
+    assert not cp.converged.sel(stick_ratio=[0.5, 0.75]).any()
+    # fig5: negative work from c/a = 5/16 on (sphere, where the scheme has a value)
+    late = w.sel(stick_ratio=slice(0.3, 1.0))
+    assert bool((late.where(sp.converged.sel(stick_ratio=late.stick_ratio)) < 0).sum()
+                == sp.converged.sel(stick_ratio=late.stick_ratio).sum())

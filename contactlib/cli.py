@@ -463,7 +463,9 @@ def check_output(text: str | None) -> None:
     """Refuse an ``--output`` that could not be written, before any computing.
 
     Missing parent folders are allowed (the writer creates them); an
-    unwritable place, a path through a file, a folder, or a name too long
+    unwritable place, a path through a file, a folder, an existing path that
+    is not a regular file (a symbolic link, a named pipe, a device such as
+    ``/dev/null``, which the write would replace), or a name too long
     (:func:`contactlib.io.check_writable`) is a :class:`UsageError` naming
     ``--output``. Nothing is left on the disk.
     """

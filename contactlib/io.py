@@ -16,10 +16,19 @@ and scalings of docs/conventions.md):
   (:class:`~contactlib.result.CaseRecord`) the workflow passes between its
   stages (npz).
 
+Every file the workflow passes on carries a content check, the SHA-256 of
+its content (npz: an array ``contactlib_sha256``; netCDF: a global attribute
+``contactlib_sha256``), written by the writers and verified by the readers:
+a truncated, corrupt or changed file is a :class:`DamagedFileError` naming
+it, never used, and case records are read strictly (a missing field is an
+error, not a default).
+
 Every writer (:func:`write_dataset`, :func:`write_arrays`,
 :func:`write_records`, :func:`write_table`, :func:`write_figure`) goes
 through one atomic write: a temporary file in the destination folder, then
-:func:`os.replace`. The numerics never import this module; it imports them
+:func:`os.replace`, with SIGINT and SIGTERM held meanwhile; an existing
+destination that is not a regular file (a link, a pipe, a device) is
+refused. The numerics never import this module; it imports them
 only for their types and constants, and only when a conversion needs them.
 
 Examples
@@ -39,9 +48,15 @@ from __future__ import annotations
 
 import dataclasses
 import errno
+import hashlib
 import math
 import os
+import signal
+import socket
+import stat
 import tempfile
+import threading
+import time
 import zipfile
 import zlib
 from collections.abc import Callable, Mapping, Sequence
@@ -451,6 +466,9 @@ def scene_to_dataset(solutions: Sequence[Solution], *, outputs: Sequence[str],
     return set_provenance(ds, scene, config_hash, outputs=outputs)
 
 
+_PROVENANCE = "scene_config_hash"  # the workflow's own datasets: read_dataset needs their check
+
+
 def set_provenance(ds: xr.Dataset, scene: str, config_hash: str,
                    outputs: Sequence[str] | None = None) -> xr.Dataset:
     """Add the workflow's provenance attributes to ``ds`` (in place) and return it.
@@ -471,7 +489,7 @@ def set_provenance(ds: xr.Dataset, scene: str, config_hash: str,
         ``ds``.
     """
     ds.attrs["scene"] = scene
-    ds.attrs["scene_config_hash"] = config_hash
+    ds.attrs[_PROVENANCE] = config_hash
     if outputs is not None:
         ds.attrs["outputs"] = " ".join(outputs)
     return ds
@@ -849,13 +867,97 @@ def _encoding(ds: xr.Dataset) -> dict[str, dict[str, Any]]:
     return encoding
 
 
+_FILE_KINDS = ((stat.S_ISLNK, "a symbolic link"), (stat.S_ISFIFO, "a named pipe (FIFO)"),
+               (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+               (stat.S_ISSOCK, "a socket"))
+
+
+def _refuse_special(path: Path) -> None:
+    """Refuse to replace an existing ``path`` that is not a regular file (or a folder).
+
+    The atomic write replaces whatever is at ``path``: a symbolic link, a
+    named pipe or a device (``/dev/null``) would be replaced by a file, so
+    only a regular file (or nothing) may be there.
+    """
+    try:
+        mode = os.lstat(path).st_mode
+    except (FileNotFoundError, NotADirectoryError):
+        return
+    except OSError:  # e.g. a name too long: the temporary file reports it
+        return
+    if stat.S_ISDIR(mode):
+        raise IsADirectoryError(f"{path} is a folder, not a file")
+    for test, kind in _FILE_KINDS:
+        if test(mode):
+            raise FileExistsError(f"{path} is {kind}, not a regular file: refusing to "
+                                  f"replace it (give the path of a regular file)")
+
+
+# temporary files: ".<name>.<host>-<pid>-<random>.tmp", so that a writer can tell a stale
+# one (left by a killed process of this machine) from one that is being written
+_HOST_TAG = hashlib.sha256(socket.gethostname().encode("utf-8", "replace")).hexdigest()[:6]
+_LEGACY_TMP_AGE = 3600.0  # s: ".<name>.<random>.tmp" of earlier versions, no owner recorded
+
+
+def _pid_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # e.g. another user's process
+        return True
+    return True
+
+
+def _remove_stale_temporaries(path: Path) -> None:
+    """Remove temporary files of ``path`` left by killed writers (SIGKILL, power cut).
+
+    Only those of this machine whose process is gone, and those of earlier
+    versions (no owner recorded) older than an hour; never another running
+    writer's.
+    """
+    prefix, own = f".{path.name}.", f"{_HOST_TAG}-{os.getpid()}-"
+    try:
+        names = [n for n in os.listdir(path.parent) if n.startswith(prefix)
+                 and n.endswith(".tmp")]
+    except OSError:
+        return
+    for name in names:
+        middle = name[len(prefix):-len(".tmp")]
+        parts = middle.split("-")
+        stale = False
+        if len(parts) == 3 and parts[0] == _HOST_TAG and parts[1].isdigit():
+            stale = not middle.startswith(own) and not _pid_alive(int(parts[1]))
+        elif len(parts) == 1 and len(middle) == 8:  # tempfile's random part alone
+            try:
+                stale = time.time() - os.lstat(path.parent / name).st_mtime > _LEGACY_TMP_AGE
+            except OSError:
+                continue
+        if stale:
+            try:
+                (path.parent / name).unlink()
+            except OSError:
+                pass
+
+
 def _atomic_target(path: str | os.PathLike[str]) -> tuple[Path, Path]:
-    """Destination and a fresh temporary file beside it (parents created)."""
+    """Destination and a fresh temporary file beside it (parents created).
+
+    Raises
+    ------
+    IsADirectoryError
+        If ``path`` is a folder.
+    FileExistsError
+        If ``path`` exists and is not a regular file (a symbolic link, a
+        named pipe, a device such as ``/dev/null``, a socket).
+    """
     path = Path(path)
     if path.is_dir():
         raise IsADirectoryError(f"output path is a directory: {path}")
+    _refuse_special(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.{_HOST_TAG}-{os.getpid()}-",
+                                    suffix=".tmp", dir=path.parent)
     os.close(fd)
     umask = os.umask(0)  # mkstemp makes the file 0600: give it the usual permissions
     os.umask(umask)
@@ -863,21 +965,130 @@ def _atomic_target(path: str | os.PathLike[str]) -> tuple[Path, Path]:
     return path, Path(tmp_name)
 
 
+_DEFERRED = (signal.SIGINT, signal.SIGTERM)
+
+
+class _DeferSignals:
+    """Hold SIGINT and SIGTERM while a file is written and renamed (main thread only).
+
+    An interrupt inside netCDF4/HDF5 can leave a lock held (Ctrl-C hung the
+    write) and SIGTERM's default action ends the process before the
+    temporary file is removed. Inside the ``with`` block a signal is only
+    noted; :meth:`deliver` hands it on to the handler that was in place,
+    after a cleanup. Leaving the block delivers what is still noted.
+    """
+
+    def __init__(self) -> None:
+        self.received: list[int] = []
+        self.previous: dict[int, Any] = {}
+
+    def __enter__(self) -> _DeferSignals:
+        if threading.current_thread() is not threading.main_thread():
+            return self  # Python runs signal handlers in the main thread only
+        for sig in _DEFERRED:
+            handler = signal.getsignal(sig)
+            if handler is None or handler is signal.SIG_IGN:
+                continue  # not installed from Python, or ignored: left alone
+            try:
+                signal.signal(sig, self._note)
+            except (ValueError, OSError):
+                continue
+            self.previous[sig] = handler
+        return self
+
+    def _note(self, signum: int, frame: Any) -> None:
+        self.received.append(signum)
+
+    def deliver(self, cleanup: Callable[[], None] = lambda: None) -> None:
+        """If a signal came: restore the handlers, clean up, hand the signal on.
+
+        ``cleanup`` runs before a signal whose action ends the process
+        (``SIG_DFL``), and when a Python handler raises (KeyboardInterrupt);
+        a handler that returns lets the caller go on.
+        """
+        if not self.received:
+            return
+        previous, received = self.previous, list(dict.fromkeys(self.received))
+        self._restore()
+        self.received = []
+        for sig in received:
+            if previous.get(sig) is signal.SIG_DFL:
+                cleanup()
+                signal.raise_signal(sig)  # ends the process
+            else:
+                try:
+                    signal.raise_signal(sig)  # runs the handler: KeyboardInterrupt, ...
+                except BaseException:
+                    cleanup()
+                    raise
+
+    def _restore(self) -> None:
+        for sig, handler in self.previous.items():
+            signal.signal(sig, handler)
+        self.previous = {}
+
+    def __exit__(self, *exc: Any) -> None:
+        self.deliver()
+        self._restore()
+
+
+def _disk_full(folder: Path) -> bool:
+    """Whether the file system of ``folder`` has (next to) no space left."""
+    try:
+        st = os.statvfs(folder)
+    except OSError:
+        return False
+    blocks = st.f_bfree if hasattr(os, "geteuid") and os.geteuid() == 0 else st.f_bavail
+    return blocks * st.f_frsize < 1 << 20
+
+
+def _write_error(path: Path, tmp: Path, exc: BaseException) -> BaseException | None:
+    """One line naming ``path`` and the cause for an error of a write; None: keep ``exc``."""
+    code = getattr(exc, "errno", None)
+    if code in (errno.ENOSPC, errno.EDQUOT) or (
+            isinstance(exc, (OSError, RuntimeError)) and _disk_full(tmp.parent)):
+        reason = ("disk quota exceeded" if code == errno.EDQUOT
+                  else "no space left on device")
+        err = OSError(f"cannot write {path}: {reason} (nothing was written; free some "
+                      f"space and run again)")
+        err.errno = errno.EDQUOT if code == errno.EDQUOT else errno.ENOSPC
+        return err
+    if type(exc) is RuntimeError:  # netCDF4's errors name no file
+        return RuntimeError(f"cannot write {path}: {exc}")
+    return None
+
+
 def _atomic_write(path: str | os.PathLike[str], write: Callable[[Path], None]) -> Path:
     """The one atomic write of contactlib: ``write(tmp)``, then ``os.replace(tmp, path)``.
 
     ``write`` fills a fresh temporary file beside ``path`` (same folder, so
-    the replace is atomic; parent folders are created). On any failure,
-    including an interrupt, the temporary file is removed and ``path`` is
-    left as it was.
+    the replace is atomic; parent folders are created). On any failure the
+    temporary file is removed and ``path`` is left as it was. SIGINT and
+    SIGTERM are held while the file is written (in the main thread): one
+    that comes then removes the temporary file, leaves ``path`` as it was
+    and is handed on (KeyboardInterrupt, or the end of the process by
+    SIGTERM). After a successful write the temporary files of ``path`` left
+    by killed processes are removed. A full disk is an :class:`OSError`
+    naming ``path`` and saying "no space left on device".
     """
-    path, tmp = _atomic_target(path)
-    try:
-        write(tmp)
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
+    with _DeferSignals() as held:
+        path, tmp = _atomic_target(path)
+
+        def discard() -> None:
+            tmp.unlink(missing_ok=True)
+
+        try:
+            write(tmp)
+            held.deliver(discard)  # an interrupt during the write: no file
+            os.replace(tmp, path)
+        except BaseException as exc:
+            replacement = _write_error(path, tmp, exc) if isinstance(exc, Exception) else None
+            discard()
+            held.deliver()
+            if replacement is not None:
+                raise replacement from exc
+            raise
+        _remove_stale_temporaries(path)
     return path
 
 
@@ -888,8 +1099,10 @@ def check_writable(path: str | os.PathLike[str]) -> Path:
     missing parent folders, create the temporary file beside the
     destination), then removes the temporary file and every folder it
     created, so nothing is left behind. This catches an unwritable folder, a
-    path through a file and a name too long (the temporary name is longer
-    than the destination's) before a long computation rather than after it.
+    path through a file, a name too long (the temporary name is longer than
+    the destination's) and an existing path that is not a regular file (a
+    symbolic link, a named pipe, a device such as ``/dev/null``: the write
+    would replace it) before a long computation rather than after it.
 
     Parameters
     ----------
@@ -911,6 +1124,7 @@ def check_writable(path: str | os.PathLike[str]) -> Path:
     path = Path(path)
     if path.is_dir():
         raise IsADirectoryError(f"{path} is a folder, not a file")
+    _refuse_special(path)
     ancestors = [a for a in path.parents]
     for folder in ancestors:  # the nearest existing ancestor must be a folder
         if folder.exists() or folder.is_symlink():
@@ -937,12 +1151,34 @@ def check_writable(path: str | os.PathLike[str]) -> Path:
     return path
 
 
+# the content check of an npz file (write_arrays): SHA-256 over every other array's name,
+# dtype, shape and bytes, stored as one more array
+_NPZ_CHECKSUM = "contactlib_sha256"
+
+
+def _arrays_digest(arrays: Mapping[str, np.ndarray]) -> str:
+    h = hashlib.sha256()
+    for name in sorted(arrays):
+        if name == _NPZ_CHECKSUM:
+            continue
+        value = np.ascontiguousarray(arrays[name])
+        for part in (name, value.dtype.str, repr(value.shape)):
+            text = part.encode("utf-8")
+            h.update(len(text).to_bytes(8, "little") + text)
+        h.update(value.nbytes.to_bytes(8, "little"))
+        h.update(memoryview(value).cast("B") if value.nbytes else b"")
+    return h.hexdigest()
+
+
 def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) -> Path:
     """Write named arrays (an intermediate of the workflow) to ``.npz``, atomically.
 
     Used for influence matrices and case records between workflow stages.
     Arrays are stored uncompressed (influence matrices do not compress) and
     without pickling: only numeric, boolean and string arrays are allowed.
+    A content check goes with them: one more array, ``contactlib_sha256``,
+    the SHA-256 of every array's name, dtype, shape and bytes, which
+    :func:`read_arrays` verifies.
 
     Parameters
     ----------
@@ -953,13 +1189,23 @@ def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) ->
     Returns
     -------
     pathlib.Path
+
+    Raises
+    ------
+    ValueError
+        If the suffix is not ``.npz`` or an array is named ``contactlib_sha256``.
+    TypeError
+        If an array would need pickling.
     """
     if Path(path).suffix != ".npz":
         raise ValueError(f"path must end in .npz, got {str(path)!r}")
     data = {k: np.asarray(v) for k, v in arrays.items()}
+    if _NPZ_CHECKSUM in data:
+        raise ValueError(f"{_NPZ_CHECKSUM!r} is reserved for the content check")
     for k, v in data.items():
         if v.dtype.kind not in "biufUS":
             raise TypeError(f"array {k!r} has dtype {v.dtype}, which needs pickling")
+    data[_NPZ_CHECKSUM] = np.array(_arrays_digest(data))
 
     def write(tmp: Path) -> None:
         with open(tmp, "wb") as fh:
@@ -969,7 +1215,7 @@ def write_arrays(arrays: dict[str, np.ndarray], path: str | os.PathLike[str]) ->
 
 
 class DamagedFileError(OSError):
-    """A file exists but cannot be read back whole (truncated or corrupt).
+    """A file exists but cannot be read back whole (truncated, corrupt or changed).
 
     The message is one line naming the file and the fix (delete it and
     rebuild it).
@@ -980,42 +1226,75 @@ class DamagedFileError(OSError):
 # (FileNotFoundError, PermissionError, IsADirectoryError) keeps its own error
 _MISSING = (FileNotFoundError, PermissionError, IsADirectoryError)
 
+_REBUILD = ("delete it and make it again (in the workflow: delete it and run snakemake "
+            "--rerun-incomplete, which rebuilds it)")
 
-def _damaged(path: str | os.PathLike[str], kind: str, exc: BaseException) -> DamagedFileError:
-    detail = " ".join(f"{type(exc).__name__}: {exc}".split())
+
+def _damaged(path: str | os.PathLike[str], kind: str,
+             exc: BaseException | str) -> DamagedFileError:
+    detail = exc if isinstance(exc, str) else f"{type(exc).__name__}: {exc}"
+    detail = " ".join(detail.split())
     if len(detail) > 160:
         detail = detail[:157] + "..."
     return DamagedFileError(
         f"{os.fspath(path)} is damaged or incomplete (not a readable {kind} file: {detail}); "
-        f"delete it and make it again (in the workflow: remove the file and rerun "
-        f"snakemake, which rebuilds it)")
+        f"{_REBUILD}")
 
 
-def read_arrays(path: str | os.PathLike[str]) -> dict[str, np.ndarray]:
+def read_arrays(path: str | os.PathLike[str], *,
+                require_checksum: bool = True) -> dict[str, np.ndarray]:
     """Read arrays written by :func:`write_arrays` (no pickles are loaded).
 
-    Every array is read whole, so a truncated or corrupt file (a broken zip
-    directory, a CRC mismatch, a short array) is detected here.
+    Every array is read whole and the content check is verified, so a
+    truncated, corrupt or changed file (a broken zip directory, a CRC
+    mismatch, a short array, an array removed or rewritten) is detected
+    here and never used.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    require_checksum : bool
+        True (default): a file without the content check is refused (every
+        file :func:`write_arrays` writes has one). False: a file without one
+        (``numpy.savez``, an earlier version) is read unchecked; a check
+        that is there is verified all the same.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Without the content check.
 
     Raises
     ------
     DamagedFileError
-        If the file exists but cannot be read back whole; the message names
-        the file and the fix.
+        If the file exists but cannot be read back whole or its content
+        does not match its check; the message names the file and the fix.
     FileNotFoundError
         If there is no such file.
     """
     try:
         with np.load(path, allow_pickle=False) as data:
-            return {k: data[k] for k in data.files}
+            arrays = {k: data[k] for k in data.files}
     except _MISSING:
         raise
-    except (zipfile.BadZipFile, zlib.error, EOFError, ValueError, KeyError, OSError) as exc:
+    except Exception as exc:  # noqa: BLE001 - whatever a damaged zip raises
         raise _damaged(path, "npz", exc) from exc
+    stored = arrays.pop(_NPZ_CHECKSUM, None)
+    if stored is None:
+        if require_checksum:
+            raise _damaged(path, "npz", "it has no content checksum (written by an earlier "
+                                        "version, or changed)")
+        return arrays
+    if stored.shape != () or stored.dtype.kind != "U" or str(stored) != _arrays_digest(arrays):
+        raise _damaged(path, "npz", "its content does not match its checksum (changed after "
+                                    "it was written)")
+    return arrays
 
 
 # fields of case records written by earlier versions and no longer kept (ignored on reading)
 _RETIRED_RECORD_FIELDS = ("tolerance_message",)  # (merged into the message)
+_RECORD_FIELDS = tuple(f.name for f in dataclasses.fields(CaseRecord))
+_NONE_FIELDS = "none"  # "<i>/<field>" of every field that is None
 
 
 def write_records(records: Sequence[CaseRecord], path: str | os.PathLike[str]) -> Path:
@@ -1024,8 +1303,10 @@ def write_records(records: Sequence[CaseRecord], path: str | os.PathLike[str]) -
     The workflow's transport between its stages: every field of each
     :class:`~contactlib.result.CaseRecord` that is not None becomes an array
     named ``"<i>/<field>"`` (i the case's position), next to ``count``, the
-    number of records; written with :func:`write_arrays` (atomically, no
-    pickles).
+    number of records, and ``none``, the names ``"<i>/<field>"`` of the
+    fields that are None; written with :func:`write_arrays` (atomically,
+    with its content check, no pickles). So every field of every record is
+    accounted for, and :func:`read_records` needs no default.
 
     Parameters
     ----------
@@ -1038,27 +1319,90 @@ def write_records(records: Sequence[CaseRecord], path: str | os.PathLike[str]) -
     pathlib.Path
     """
     arrays: dict[str, np.ndarray] = {"count": np.array(len(records))}
+    none: list[str] = []
     for i, rec in enumerate(records):
-        for f in dataclasses.fields(CaseRecord):
-            value = getattr(rec, f.name)
-            if value is not None:
-                arrays[f"{i}/{f.name}"] = np.asarray(value)
+        for name in _RECORD_FIELDS:
+            value = getattr(rec, name)
+            if value is None:
+                none.append(f"{i}/{name}")
+            else:
+                arrays[f"{i}/{name}"] = np.asarray(value)
+    arrays[_NONE_FIELDS] = np.array(none, dtype=str)
     return write_arrays(arrays, path)
 
 
-def read_records(path: str | os.PathLike[str]) -> list[CaseRecord]:
+def _record_key(name: str, count: int) -> tuple[int, str]:
+    """``"<i>/<field>"`` -> (i, field), i a record of the file."""
+    i, _, key = name.partition("/")
+    if not (i.isdigit() and int(i) < count and key):
+        raise ValueError(f"unexpected array {name!r} (not '<case>/<field>' of {count} cases)")
+    return int(i), key
+
+
+def _record_fields(arrays: dict[str, np.ndarray], upgrade: bool) -> list[dict[str, Any]]:
+    """The fields of each record; strict (every field accounted for) unless ``upgrade``."""
+    count = arrays.get("count")
+    if count is None or count.shape != () or count.dtype.kind not in "iu" or int(count) < 0:
+        raise ValueError("no record count")
+    fields: list[dict[str, Any]] = [{} for _ in range(int(count))]
+    none = arrays.get(_NONE_FIELDS)
+    if not upgrade:
+        if none is None or none.ndim != 1 or (none.size and none.dtype.kind != "U"):
+            raise ValueError("no list of the fields that are None")
+        for name in none.tolist():
+            i, key = _record_key(name, len(fields))
+            fields[i][key] = None
+    for name, value in arrays.items():
+        if name in ("count", _NONE_FIELDS):
+            continue
+        i, key = _record_key(name, len(fields))
+        if key in _RETIRED_RECORD_FIELDS and upgrade:
+            continue
+        if key not in _RECORD_FIELDS:
+            raise ValueError(f"unknown field {name!r}")
+        if key in fields[i]:
+            raise ValueError(f"field {name!r} is both given and None")
+        fields[i][key] = value.item() if value.ndim == 0 else value
+    if not upgrade:
+        for i, f in enumerate(fields):
+            missing = [key for key in _RECORD_FIELDS if key not in f]
+            if missing:
+                raise ValueError(f"case {i} has no field {missing[0]!r}"
+                                 + (f" (and {len(missing) - 1} more)" if len(missing) > 1
+                                    else ""))
+    return fields
+
+
+def read_records(path: str | os.PathLike[str], *, upgrade: bool = False) -> list[CaseRecord]:
     """Read case records written by :func:`write_records`.
 
-    0-d arrays come back as Python scalars and fields not in the file take
-    their defaults (None, or NaN for the estimates), so a record read back
-    equals the one written field by field. Files of earlier versions read
-    too (a retired field, ``tolerance_message``, is skipped).
+    Strict: the content check must be there and match, and every field of
+    every record must be in the file (as an array, or named among the
+    fields that are None); a missing field is an error naming the file and
+    the field, never a default. 0-d arrays come back as Python scalars, so
+    a record read back equals the one written field by field.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    upgrade : bool
+        The explicit reading of files of earlier versions (no content check,
+        no list of None fields, fields added since then missing): fields
+        not in the file take their defaults (None, or NaN for the
+        estimates) and a retired field (``tolerance_message``) is skipped.
+        Write the records again with :func:`write_records` to upgrade the
+        file.
+
+    Returns
+    -------
+    list of CaseRecord
 
     Raises
     ------
     DamagedFileError
-        If the file exists but cannot be read back whole, or does not hold
-        case records.
+        If the file exists but cannot be read back whole, does not match its
+        content check, or does not hold complete case records; the message
+        names the file and, for a missing field, the field.
     FileNotFoundError
         If there is no such file.
 
@@ -1074,19 +1418,12 @@ def read_records(path: str | os.PathLike[str]) -> list[CaseRecord]:
     >>> back[0].stick_ratio, back[0].k, back[0].p.shape
     (0.0, 0.0, (17,))
     """
-    arrays = read_arrays(path)
+    arrays = read_arrays(path, require_checksum=not upgrade)
     try:
-        count = int(arrays["count"])
-        fields: list[dict[str, Any]] = [{} for _ in range(count)]
-        for name, value in arrays.items():
-            if name == "count":
-                continue
-            i, key = name.split("/", 1)
-            if key not in _RETIRED_RECORD_FIELDS:
-                fields[int(i)][key] = value.item() if value.ndim == 0 else value
-        records = [CaseRecord(**f) for f in fields]
+        records = [CaseRecord(**f) for f in _record_fields(arrays, upgrade)]
     except (KeyError, ValueError, IndexError, TypeError) as exc:
-        raise _damaged(path, "case-record npz", exc) from exc
+        detail = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
+        raise _damaged(path, "case-record npz", detail) from exc
     return records
 
 
@@ -1139,14 +1476,72 @@ def write_table(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str],
     return _atomic_write(path, lambda tmp: tmp.write_text(buf.getvalue(), encoding="utf-8"))
 
 
+# the content check of a netCDF file (write_dataset): a global attribute, the SHA-256 of the
+# dataset as it reads back (every variable's name, dimensions, dtype, values and attributes,
+# and the other global attributes)
+_NC_CHECKSUM = "contactlib_sha256"
+
+
+def _attr_text(value: Any) -> str:
+    if isinstance(value, str):
+        return "s" + value
+    arr = np.asarray(value)
+    return f"{arr.dtype.str}{arr.shape}{arr.tolist()!r}"
+
+
+def _dataset_digest(ds: xr.Dataset) -> str:
+    """SHA-256 of a dataset's content (not of its file's bytes), without ``_NC_CHECKSUM``."""
+    h = hashlib.sha256()
+
+    def put(data: str | bytes | memoryview) -> None:
+        raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
+        h.update(len(raw).to_bytes(8, "little"))
+        h.update(raw)
+
+    def put_attrs(attrs: Mapping[Any, Any]) -> None:
+        for key in sorted(map(str, attrs)):
+            if key != _NC_CHECKSUM:
+                put(key)
+                put(_attr_text(attrs[key]))
+
+    put_attrs(ds.attrs)
+    put("coords:" + ",".join(sorted(map(str, ds.coords))))
+    for name in sorted(map(str, ds.variables)):
+        var = ds.variables[name]
+        put(name)
+        put(",".join(map(str, var.dims)))
+        put_attrs(var.attrs)
+        values = np.asarray(var.values)
+        if values.dtype.kind in "OUS":  # text: str items, whatever the array's dtype
+            put(f"text{values.shape}")
+            for item in values.ravel().tolist():
+                put(item if isinstance(item, bytes) else f"{type(item).__name__}:{item!r}")
+        else:
+            put(f"{values.dtype.str}{values.shape}")
+            values = np.ascontiguousarray(values)
+            put(memoryview(values).cast("B") if values.nbytes else b"")
+    return h.hexdigest()
+
+
+def _open_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
+    import xarray as xr
+
+    with xr.open_dataset(path, engine="netcdf4") as ds:
+        return ds.load()
+
+
 def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
-    """Write ``ds`` to a netCDF-4 file, atomically and reproducibly.
+    """Write ``ds`` to a netCDF-4 file, atomically and reproducibly, with a content check.
 
     The data go to a temporary file in the destination folder, which then
     replaces ``path`` with :func:`os.replace`; on any failure the temporary
     file is removed and ``path`` is left as it was. Parent folders are
     created. Data variables are zlib-compressed, coordinates get no
-    ``_FillValue``. Identical datasets give byte-identical files.
+    ``_FillValue``. Identical datasets give byte-identical files. The
+    global attribute ``contactlib_sha256`` holds the SHA-256 of the content
+    as it reads back (every variable's values and attributes, the other
+    global attributes); the file is read back and checked before it
+    replaces ``path``, and :func:`read_dataset` verifies it.
 
     Parameters
     ----------
@@ -1159,6 +1554,13 @@ def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     -------
     pathlib.Path
         The destination path.
+
+    Raises
+    ------
+    OSError
+        If ``path`` is a folder or another existing thing that is not a
+        regular file, or the disk is full ("no space left on device",
+        naming ``path``).
 
     Examples
     --------
@@ -1175,19 +1577,48 @@ def write_dataset(ds: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     (True, True)
     """
     encoding = _encoding(ds)
-    return _atomic_write(path, lambda tmp: ds.to_netcdf(
-        tmp, mode="w", format="NETCDF4", engine="netcdf4", encoding=encoding))
+    if _NC_CHECKSUM in ds.attrs:  # e.g. a dataset opened with xarray itself
+        ds = ds.copy(deep=False)
+        del ds.attrs[_NC_CHECKSUM]
+
+    def to_netcdf(data: xr.Dataset, tmp: Path) -> None:
+        data.to_netcdf(tmp, mode="w", format="NETCDF4", engine="netcdf4", encoding=encoding)
+
+    def write(tmp: Path) -> None:
+        # the content as it reads back (attributes and types as netCDF keeps them) ...
+        digest = _dataset_digest(ds)
+        for _ in range(2):
+            to_netcdf(ds.assign_attrs({_NC_CHECKSUM: digest}), tmp)
+            back = _dataset_digest(_open_dataset(tmp))
+            if back == digest:
+                return
+            digest = back  # ... differs from the dataset in memory: take the file's
+        raise RuntimeError("the file does not read back as written; nothing was written")
+
+    return _atomic_write(path, write)
 
 
-def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
-    """Read a dataset written by :func:`write_dataset` into memory.
+def read_dataset(path: str | os.PathLike[str], *,
+                 require_checksum: bool | None = None) -> xr.Dataset:
+    """Read a dataset written by :func:`write_dataset` into memory, verifying its content.
 
     The file is closed before returning, so it may be replaced afterwards.
+    Its content check (global attribute ``contactlib_sha256``, written by
+    :func:`write_dataset`) is verified and left out of the returned
+    dataset. A file without one is refused if it is the workflow's own (it
+    has the provenance attribute ``scene_config_hash`` of
+    :func:`set_provenance`), and read as it is otherwise (a dataset a user
+    wrote with other tools).
 
     Parameters
     ----------
     path : str or os.PathLike
         A netCDF file.
+    require_checksum : bool, optional
+        True: refuse any file without a content check; False: read one
+        without a check whatever it holds (an explicit upgrade of a file of
+        an earlier version). None (default): required for the workflow's
+        own files, as above. A check that is there is always verified.
 
     Returns
     -------
@@ -1197,24 +1628,62 @@ def read_dataset(path: str | os.PathLike[str]) -> xr.Dataset:
     Raises
     ------
     DamagedFileError
-        If the file exists but is not a readable netCDF file (e.g. truncated);
-        the message names the file and the fix.
+        If the file exists but is not a readable netCDF file (e.g.
+        truncated), or its content does not match its check (changed after
+        it was written); the message names the file and the fix.
     FileNotFoundError
         If there is no such file.
     """
-    import xarray as xr
-
     try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            return ds.load()
+        ds = _open_dataset(path)
+        stored = ds.attrs.pop(_NC_CHECKSUM, None)
+        actual = None if stored is None else _dataset_digest(ds)
     except _MISSING:
         raise
-    except (OSError, RuntimeError, ValueError, KeyError, IndexError) as exc:
+    except Exception as exc:  # noqa: BLE001 - whatever netCDF4/HDF5/xarray raise
         raise _damaged(path, "netCDF", exc) from exc
+    if require_checksum is None:
+        require_checksum = _PROVENANCE in ds.attrs
+    if stored is None and require_checksum:
+        raise _damaged(path, "netCDF", "it has no content checksum (written by an earlier "
+                                       "version, or changed)")
+    if stored is not None and (not isinstance(stored, str) or stored != actual):
+        raise _damaged(path, "netCDF", "its content does not match its checksum (changed "
+                                       "after it was written)")
+    return ds
+
+
+def _unique_key_loader() -> type:
+    """A safe YAML loader that refuses a key given twice in one mapping (any level)."""
+    import yaml
+
+    class UniqueKeyLoader(yaml.SafeLoader):
+        def construct_mapping(self, node: Any, deep: bool = False) -> Any:
+            if isinstance(node, yaml.MappingNode):
+                seen: dict[Any, Any] = {}
+                for key_node, _ in node.value:
+                    if key_node.tag == "tag:yaml.org,2002:merge":
+                        continue  # "<<: *base": keys given here override the merged ones
+                    key = self.construct_object(key_node, deep=True)
+                    try:
+                        first = seen.get(key)
+                    except TypeError:  # an unhashable key: SafeLoader reports it
+                        continue
+                    if first is not None:
+                        raise yaml.constructor.ConstructorError(
+                            None, None, f"duplicate key {key!r} (first at line "
+                            f"{first.line + 1})", key_node.start_mark)
+                    seen[key] = key_node.start_mark
+            return super().construct_mapping(node, deep=deep)
+
+    return UniqueKeyLoader
 
 
 def check_yaml(path: str | os.PathLike[str]) -> Any:
     """Parse a YAML file, turning a syntax error into one line naming the file and line.
+
+    A key given twice in one mapping (a scene name, or a key inside a
+    scene) is an error too: YAML would keep the last one silently.
 
     Parameters
     ----------
@@ -1230,24 +1699,38 @@ def check_yaml(path: str | os.PathLike[str]) -> Any:
     Raises
     ------
     ValueError
-        ``<path>, line L, column C: <problem>`` for a syntax error (lines
-        and columns count from 1).
+        ``<path>, line L, column C: <problem>`` for a syntax error or a
+        duplicate key (lines and columns count from 1; ``duplicate key 'x'
+        (first at line L)``), or ``<path>: <problem>`` when the path is a
+        folder, not a regular file, unreadable or not UTF-8 text.
     """
     import yaml
 
+    name = os.fspath(path)
     try:
+        mode = os.stat(path).st_mode
+        if stat.S_ISDIR(mode):
+            raise ValueError(f"{name}: is a folder, not a YAML file")
+        if not stat.S_ISREG(mode):  # a pipe or a device: reading could block or never end
+            raise ValueError(f"{name}: is not a regular file")
         text = Path(path).read_text(encoding="utf-8")
     except FileNotFoundError:
         return None
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{name}: not UTF-8 text (byte {exc.start + 1})") from None
+    except OSError as exc:
+        reason = (exc.strerror or type(exc).__name__).lower()
+        raise ValueError(f"{name}: cannot be read: {reason}") from None
     try:
-        return yaml.safe_load(text)
+        return yaml.load(text, Loader=_unique_key_loader())  # noqa: S506 - a SafeLoader
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         problem = " ".join(str(exc.problem or exc.context or "invalid YAML").split())
-        raise ValueError(f"{os.fspath(path)}{where}: YAML syntax error: {problem}") from None
+        kind = "" if problem.startswith("duplicate key") else "YAML syntax error: "
+        raise ValueError(f"{name}{where}: {kind}{problem}") from None
     except yaml.YAMLError as exc:
-        raise ValueError(f"{os.fspath(path)}: YAML syntax error: "
+        raise ValueError(f"{name}: YAML syntax error: "
                          f"{' '.join(str(exc).split())}") from None
 
 

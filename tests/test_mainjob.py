@@ -50,6 +50,9 @@ ESTIMATE_FACTOR = 2.0
 """Error estimates agree within this factor (two kernels moved them by at most 9 %)."""
 DIAGNOSTICS = ("iterations", "residual_norm")
 """Round-off diagnostics of Newton, not compared."""
+VIOLATIONS = ("stick_violation", "slip_violation")
+"""Consistency margins (units of p0): round-off near zero at a consistent case (two OpenBLAS
+kernels moved them by up to 1e-14), compared to :data:`ROUNDOFF` absolute."""
 ESTIMATE_OF = {"friction_coefficient": "error_estimate", "load_ratio": "load_error_estimate",
                "frictional_work": "work_error_estimate"}
 """Which estimate bounds a variable of the default method (profiles: k's)."""
@@ -133,7 +136,7 @@ def assert_same_variable(got: dict, want: dict, dataset: dict, name: str, where:
             assert_estimate(got["sum"], want["sum"], f"{where}.sum")
         return
     assert got.get("nan_count") == want.get("nan_count"), (where, "NaN count")
-    scale = _scale(want)
+    scale = max(_scale(want), 1.0) if name in VIOLATIONS else _scale(want)
     rel = _relative_tolerances(dataset, name)
     per_case = int(np.prod(want["shape"][1:])) if len(want["shape"]) > 1 else 1
     if "values" in want:

@@ -75,7 +75,7 @@ def test_records_of_an_earlier_version_still_read(tmp_path):
            if getattr(rec, f.name) is not None and f.default is dataclasses.MISSING}
     old.update({"count": np.array(1), "0/tolerance_message": np.asarray("")})
     path = io.write_arrays(old, tmp_path / "old.npz")
-    back = io.read_records(path)[0]
+    back = io.read_records(path, upgrade=True)[0]
     assert np.isnan(back.error_estimate) and back.elements is None and not back.resolved
     np.testing.assert_array_equal(back.p, rec.p)
     io.write_arrays({"count": np.array(1), "0/k": np.asarray(0.1)}, tmp_path / "bad.npz")

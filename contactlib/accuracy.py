@@ -190,15 +190,31 @@ def default_noise(geometry: Contact, stick_ratio: float, n: int) -> float:
     levels, which do not see a noise that grows with n. It matters at the extremes:
     nu = 0.49999 against the closed form, c/a = 1e-6, n = 1024, the sphere's k error
     was 1.9e-5 against an estimate of 5.3e-6 from the levels (3.6x short), the
-    half-plane's 4.5e-5 against 2.9e-5 at n = 2048; the bound there is 2.5e-5 and 3.4e-5.
+    half-plane's 4.5e-5 against 2.9e-5 at n = 2048; the bound there is 5.1e-5 and 6.8e-5
+    (2.5e-5 and 3.4e-5 before its margin for other CPUs, see
+    :data:`~contactlib.extrapolated_method.DIFFERENCE_NOISE`).
     At c/a = 0.02 ... 0.98 it is at most 1.2e-8 (n = 2048), below the method's error.
-    0 below n = 512 (the levels' estimate was measured to cover the error there,
-    docs/accuracy.md), at c/a = 0 and 1 (k exact) and on a layer (not measured).
+    Below n = 512 it is the bound of the axis or edge difference rows
+    (:data:`~contactlib.extrapolated_method.DIFFERENCE_NOISE`) where those rows apply
+    (c/a <= 1e-4, 1 - c/a <= 5e-4), and 0 elsewhere (the levels' estimate was measured to
+    cover the error there, docs/accuracy.md). At the extremes the levels did not cover
+    it (nu = 0.4999999 against the closed form; issue 42): sphere, c/a = 1e-8, n = 384,
+    error 1.23e-4 against 3.0e-5 from the levels (the error grows from n = 256, 6.5e-5:
+    noise); c/a = 1 - 1e-5, n = 384, 5.2e-6 against 8.8e-7; the half-plane at c/a = 1e-8,
+    n = 64 ... 256, 1.4 ... 1.7 times its estimate, at 1e-6, n = 256, 4.5e-7 against 3.8e-7
+    (an n-independent floor: 4.6e-7 at n = 128). 0 at c/a = 0 and 1 (k exact) and on a
+    layer (not measured).
     """
-    from .default_method import NEAR_ROWS_FROM_N
+    from .default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N
+    from .elements import graded_mesh
+    from .extrapolated_method import quadrature_noise
 
     c = float(stick_ratio)
-    if n < NEAR_ROWS_FROM_N or not 0.0 < c < 1.0 or not geometry.body.is_half_space:
+    if not 0.0 < c < 1.0 or not geometry.body.is_half_space:
+        return 0.0
+    if n < NEAR_ROWS_FROM_N:
+        if c <= AXIS_ROWS_BELOW or 1.0 - c <= EDGE_ROWS_BELOW:  # the difference rows
+            return float(quadrature_noise(graded_mesh(n, c), difference=True))
         return 0.0
     return _extrapolated_noise(c, n)  # the same mesh and rows (the band from n = 512)
 

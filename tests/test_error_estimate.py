@@ -100,7 +100,9 @@ def test_default_estimate_carries_the_quadrature_noise_at_high_n():
     """A tiny stick zone at n = 1024 (nu = 0.49999, c/a = 1e-6): the round-off of the
     kernels' quadrature grows with n there, and the nested levels n/4, n/2 do not see it.
     The sphere's k error was 1.9e-5 against an estimate of 5.3e-6 (3.6x short); the
-    estimate now adds the measured noise bound (accuracy.default_noise, 2.5e-5)."""
+    estimate now adds the measured noise bound (accuracy.default_noise, 5.1e-5 with its
+    margin for other CPUs). Below n = 512 the bound applies where the axis or edge
+    difference rows do (tests/test_estimate_extremes.py), and is 0 elsewhere."""
     from contactlib.accuracy import default_noise
     from contactlib.model import contact
 
@@ -112,7 +114,8 @@ def test_default_estimate_carries_the_quadrature_noise_at_high_n():
     assert err <= sol.error_estimate
     noise = default_noise(contact("sphere", nu), c, 1024)
     assert noise < sol.error_estimate < 2.0 * noise + 2.0 * err
-    assert default_noise(contact("sphere", nu), c, 256) == 0.0  # below n = 512: unchanged
+    assert default_noise(contact("sphere", nu), c, 256) > 0.0  # difference rows: every n
+    assert default_noise(contact("sphere", nu), 0.5, 256) == 0.0  # plain rows below 512
 
 
 FOURFOLD = [("cylinder", 0.9), pytest.param("sphere", 0.3, marks=pytest.mark.slow),

@@ -91,13 +91,18 @@ def test_extrapolated_estimate_on_a_layer_covers_the_levels_noise():
     plain rows, no band around c): the extrapolated k at n = 512 and 1024 differ by
     2.5e-7 (relative) while the estimates said 1e-7 and 2e-8. From n = 512, with plain
     rows on a layer, the estimate is at least the finest level's own, and the two
-    estimates cover the gap."""
-    from contactlib.extrapolated_method import solve_extrapolated
+    estimates cover the gap.
+
+    The gap is round-off and changes with the BLAS kernel (OPENBLAS_CORETYPE): 2.5e-7
+    (SkylakeX), 1.5e-7 (Sandybridge), 9.3e-8 (Haswell); so the test checks that the floor
+    is in the estimates and that they cover the gap, not the gap's size (issue 42)."""
+    from contactlib.extrapolated_method import _finest_level_error, solve_extrapolated
 
     layer_model = contact("sphere", 0.3, 1.0, base="bonded")
     a, b = (solve_extrapolated(layer_model, 0.1, n, work=False) for n in (512, 1024))
+    for s in (a, b):  # the finest level's own estimate is the floor (LAYER_FLOOR_FROM_N)
+        assert s.error_estimate >= _finest_level_error(s.level_k)
     gap = abs(a.k / b.k - 1.0)
-    assert gap > 1.5e-7  # the noise this test is about
     assert gap <= a.error_estimate + b.error_estimate, (gap, a.error_estimate, b.error_estimate)
 
 
@@ -242,9 +247,13 @@ def test_tiny_stick_zone_on_a_layer():
 def test_plain_w_near_the_axis_is_even_like_the_axis_rows(base, nu):
     """Near the axis (r/h <= 2.5e-3) the remainder's w from the table, in all three
     evaluations, is its axis value plus remainder_axis_w (the even powers of rho, itself
-    checked against the transform above) to 3 eps of max |w|: the plain rows and the
-    axis-referenced rows of the default method see one even function. Measured <= 2.4 eps;
-    with the interpolant's odd part (~1e-11 rho) kept, up to 5.7 eps."""
+    checked against the transform above) to 4.5 eps of max |w|: the plain rows and the
+    axis-referenced rows of the default method see one even function. With the
+    interpolant's odd part (~1e-11 rho) kept, up to 5.7 eps. The rest is round-off, which
+    depends on the BLAS kernel (OPENBLAS_CORETYPE, issue 42): at most 2.37 eps (SkylakeX),
+    3.18 (Haswell), 1.99 (Sandybridge, Nehalem), 3.27 (Katmai); 3 eps, fitted on one
+    kernel, failed on Haswell. 4.5 eps lies 1.4x above the largest of five kernels and
+    1.27x below the odd part's 5.7 (near their geometric mean, 4.3)."""
     tab = layer.layer_table(nu, base)
     rho = np.array([0.0, 1e-4, 1e-3, 2.5e-3])
     sig = np.linspace(0.3, 19.0, 40)
@@ -255,7 +264,7 @@ def test_plain_w_near_the_axis_is_even_like_the_axis_rows(base, nu):
                 layer._remainders_integrated("pressure", rho, sig, np.ones(sig.size),
                                              np.arange(sig.size), sig.size, tab)[0]):
         dev = np.abs(got[1:] - got[0] - axis)
-        assert np.max(dev) <= 3 * np.finfo(float).eps * np.max(np.abs(got))
+        assert np.max(dev) <= 4.5 * np.finfo(float).eps * np.max(np.abs(got))
 
 
 def _quadrature_w_rows(monkeypatch):
@@ -281,18 +290,25 @@ def _quadrature_w_rows(monkeypatch):
 
 @pytest.mark.slow
 def test_tiny_stick_zone_at_n_512_against_quadrature_rows(monkeypatch):
-    """Sphere, bonded, a/h = 1, c/a = 1e-6, n = 512: k with the table within 1e-5 of k
-    with the w rows' remainder from the quadrature (measured 5.6e-6: 0.0079157643 against
-    0.0079158086). With the interpolant's odd part in w near the axis it was 2.3e-5
-    (0.0079159930): the slip-zone rows next to c (r < 1e-3 h) against discs s >= 0.3 h.
-    Both runs carry round-off of order 1e-5 in k here (docs/theory.md, near the axis):
-    the quadrature rows' own k moves by -2.6e-7 from n = 512 to 1024."""
+    """Sphere, bonded, a/h = 1, c/a = 1e-6, n = 512: k with the table within its error
+    estimate of k with the w rows' remainder from the quadrature (measured 5.6e-6:
+    0.0079157643 against 0.0079158086). With the interpolant's odd part in w near the
+    axis it was 2.3e-5 (0.0079159930): the slip-zone rows next to c (r < 1e-3 h) against
+    discs s >= 0.3 h. Both runs carry round-off of order 1e-5 in k here (docs/theory.md,
+    near the axis), and it depends on the BLAS kernel (issue 42): the table's k moved by
+    1.3e-5 between OPENBLAS_CORETYPE = SkylakeX, Haswell and Sandybridge, and its
+    difference to the quadrature rows was 5.6e-6 (SkylakeX) and 1.8e-5 (Haswell) against a
+    fixed bound of 1e-5 fitted on one kernel. The comparison is therefore with the table
+    solve's own estimate (the levels n/4, n/2, n, which see the noise of the level n:
+    1.2e-5, 2.4e-5, 1.35e-5 on the three kernels; difference / estimate 0.47 and 0.72 on
+    the first two)."""
     from contactlib.default_method import solve_default
     from contactlib.model import contact
 
-    geo = contact("sphere", 0.3, slab_ratio=1.0, base="bonded")
-    table = solve_default(geo, 1e-6, 512)
+    table = contactlib.solve("sphere", 0.3, n=512, stick_ratio=1e-6, slab_ratio=1.0,
+                             base="bonded", energy=False)
     _quadrature_w_rows(monkeypatch)
     quad = solve_default(contact("sphere", 0.3, slab_ratio=1.0, base="bonded"), 1e-6, 512)
-    assert table.converged and quad.converged
-    assert abs(table.k / quad.k - 1.0) < 1e-5
+    assert table.converged and quad.converged and table.resolved
+    diff = abs(table.friction_coefficient / quad.k - 1.0)
+    assert diff <= table.error_estimate, (diff, table.error_estimate)

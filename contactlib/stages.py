@@ -504,8 +504,9 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     Default method: k, the load and (with samples) the work of the same case
     on the nested meshes n/4 and n/2 give the estimates (:func:`_relative`);
     where Newton stopped on the round-off floor, twice its last step is added
-    to the k estimate, and from n = 512 the quadrature-noise bound
-    (:func:`contactlib.accuracy.default_noise`). A mesh with elements below
+    to the k estimate, and the quadrature-noise bound
+    (:func:`contactlib.accuracy.default_noise`: from n = 512, and at every n where the
+    axis or edge difference rows apply). A mesh with elements below
     :data:`QUADRATURE_FLOOR_H` is never resolved (a limit of the method; the message says so).
     Frictionless, full adhesion and nu = 0.5 are exact in k (estimate 0) and
     carry the estimate of the load. The paper's scheme is measured against
@@ -517,7 +518,14 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     out: dict[str, Any] = {}  # the fields this adds (the record is frozen)
     notes = []
     limit = False  # below the quadrature floor: refining does not help
-    if rec.elements is not None or method == "extrapolated":
+    # k exact (0 or inf: frictionless, full adhesion, decoupled): the answer is the load
+    # (and the work, where there is one), which ``resolved`` judges instead of k
+    exact_k = method in NODAL_METHODS and not 0.0 < solved < 1.0
+    if exact_k and method == "extrapolated" and not np.isfinite(rec.load_error_estimate):
+        method_for_levels = "default"  # (the extrapolated method solved it as the default)
+    else:
+        method_for_levels = method
+    if (rec.elements is not None or method_for_levels == "extrapolated"):
         # a tolerance scene estimated k itself, or the extrapolated method did
         if method == "extrapolated":
             limit = _below_floor(rec, solved, notes)
@@ -568,25 +576,41 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         limit = _below_floor(rec, solved, notes)
         # Newton stopped on the round-off floor: its iterates scatter by about the
         # last step, twice which is added to the discretization estimate; from n = 512
-        # the kernels' quadrature noise, which the nested levels do not see
+        # (at the extremes at every n) the kernels' quadrature noise, which the nested
+        # levels do not see
         out["error_estimate"] = float(out["error_estimate"]) + 2.0 * float(
             rec.round_off) + default_noise(geometry, solved, n)
-    est = float(out.get("error_estimate", rec.error_estimate))
+    est, what = float(out.get("error_estimate", rec.error_estimate)), "k"
+    if exact_k:  # the load's estimate, and the work's where there is work (not NaN)
+        est, what = _exact_k_estimate(out, rec), "load"
     good = bool(rec.converged) and np.isfinite(est) and est <= max_error and not limit
     out["resolved"] = good
     out["max_error"] = float(max_error)
     if not good and bool(rec.converged) and np.isfinite(est) and est > max_error:
-        need = (resolving_n(n, est, max_error) if method == "default" and not limit else
+        need = (resolving_n(n, est, max_error) if (method == "default" or exact_k)
+                and not limit else
                 extrapolated_method.resolving_n(n, est, max_error, MAX_N)
                 if method == "extrapolated" and not limit else None)
         hint = (f"n = {need} should resolve it" if need is not None else
                 "no n resolves it" if limit else
                 f"no supported n (up to {MAX_N}) resolves it" if method in NODAL_METHODS else
                 "use the default method")
-        notes.append(f"estimated k error {est:.1e} exceeds max_error {max_error:g}: {hint}")
+        notes.append(f"estimated {what} error {est:.1e} exceeds max_error {max_error:g}"
+                     f"{' (k is exact here)' if exact_k else ''}: {hint}")
     if notes:
         out["message"] = "; ".join(x for x in [rec.message] + notes if x)
     return dataclasses.replace(rec, **out)
+
+
+def _exact_k_estimate(out: dict[str, Any], rec: CaseRecord) -> float:
+    """Where k is exact (c/a = 0 or 1, or decoupled), the estimate ``resolved`` judges: the
+    larger of the load's and the work's (the work's where it is estimated, not NaN); NaN
+    when the load has no estimate."""
+    load = float(out.get("load_error_estimate", rec.load_error_estimate))
+    work = float(out.get("work_error_estimate", rec.work_error_estimate))
+    if not np.isfinite(load) and not math.isinf(load):
+        return math.nan
+    return max(load, work) if np.isfinite(work) or math.isinf(work) else load
 
 
 def _below_floor(rec: CaseRecord, solved: float, notes: list[str]) -> bool:
@@ -671,8 +695,9 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
     if method not in NODAL_METHODS:
         raise ValueError("a tolerance needs the default or the extrapolated method (the "
                          "paper's scheme does not converge to the physical k)")
-    if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact
-        return d, {"elements": n, "error_estimate": 0.0}, ""
+    if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact, and
+        # the tolerance applies to the load (both methods solve it as the default method)
+        return _load_to_tolerance(geometry, n, c, d, tolerance, cache)
     if method == "extrapolated":  # its own estimate; n doubled while it falls short
         while d.error_estimate > tolerance and 2 * n <= MAX_N and d.converged:
             finer = extrapolated_method.solve_extrapolated(geometry, c, 2 * n,
@@ -695,6 +720,41 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
         solve_k, n, tolerance, known={n: d.k},
         noise=lambda m: default_noise(geometry, c, m))
     return sols[used], {"elements": used, "error_estimate": est}, msg
+
+
+def _load_to_tolerance(geometry: Contact, n: int, c: float, d: DiscreteSolution,
+                       tolerance: float, cache: StickBlocks | None = None
+                       ) -> tuple[DiscreteSolution, dict[str, Any], str]:
+    """Where k is exact (c/a = 0 or 1, decoupled): refine n (doubling) until the load's
+    estimate from n/4, n/2, n (:func:`_relative`) meets the tolerance; stop where the n^-2
+    convergence needs an n beyond :data:`MAX_N` (:func:`~contactlib.accuracy.resolving_n`),
+    with a message. The work is 0 there (no shear, or no slip)."""
+    loads = {n: d.load()}
+
+    def load_at(m: int) -> float:
+        if m not in loads:
+            loads[m] = solve_default(geometry, c, m, cache=cache).load()
+        return loads[m]
+
+    while True:
+        est = _relative([load_at(m) for m in (n // 4, n // 2, n)])
+        if est <= tolerance:
+            msg = ""
+            break
+        need = resolving_n(n, est, tolerance)
+        if need is None or 2 * n > MAX_N:
+            msg = (f"tolerance {tolerance:g} not met: k is exact here, and the estimated "
+                   f"load error is {est:.2g} at n = {n}; the load's n^-2 convergence needs "
+                   f"{'about n = ' + str(need) if need else 'an n'} beyond the largest "
+                   f"supported n = {MAX_N}" if need is None or need > MAX_N else
+                   f"tolerance {tolerance:g} not met: estimated load error {est:.2g} at "
+                   f"the largest n = {n}")
+            break
+        n *= 2
+        d = solve_default(geometry, c, n, cache=cache)
+        loads[n] = d.load()
+    return d, {"elements": n, "error_estimate": 0.0, "load_error_estimate": float(est),
+               "work_error_estimate": 0.0}, msg
 
 
 # ----------------------------------------------------------------------------- post-processing

@@ -45,8 +45,17 @@ def uncoupled(geometry: str, nu: float, c: float) -> float:
 
 
 def assert_no_nan_or_inf(sol, *, energy: bool = True) -> None:
-    """Every number of the solution's dataset is finite, except k = inf at full adhesion."""
+    """Every number of the solution's dataset is finite, except k = inf at full adhesion.
+
+    A case that did not converge has no values (NaN), never its last iterate.
+    """
     ds = io.to_dataset(sol)
+    if not sol.converged:
+        for name in ("friction_coefficient", "load_ratio", "pressure", "shear",
+                     "tangential_displacement"):
+            assert np.all(np.isnan(ds[name].values)), (name, sol.geometry, sol.nu, sol.method,
+                                                       sol.stick_ratio)
+        return
     for name, var in ds.variables.items():
         values = np.asarray(var.values)
         if values.dtype.kind != "f":

@@ -81,7 +81,8 @@ def test_pressure_tends_to_the_squeeze_profile(geometry):
     ratios, n, _ = CASES[geometry]
     gaps = []
     for r in ratios:
-        sol = _frictionless(geometry, r, min(n, 256))
+        # (cylinder, a/h = 100: n = 256 leaves the load 2e-3 off, estimate 3.9e-3)
+        sol = _frictionless(geometry, r, min(n, 256 if geometry == "sphere" else 512))
         x, p = np.asarray(sol.xi), np.asarray(sol.pressure)
         inside = x < 1.0
         gaps.append(np.max(np.abs(p[inside] / p[0] - (1.0 - x[inside] ** 2) ** 2)))

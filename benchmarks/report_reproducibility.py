@@ -78,7 +78,7 @@ def worst_over_estimate(a: Path, b: Path) -> float:
                 e = np.maximum(x[est].values, tm.ROUNDOFF) * np.abs(u)
                 ok = np.isfinite(u) & np.isfinite(v) & (e > 0)
                 if ok.any():
-                    worst = max(worst, float(np.max(np.abs(u - v)[ok] / e[ok])))
+                    worst = max(worst, float(np.max(np.abs(u[ok] - v[ok]) / e[ok])))
     return worst
 
 

@@ -241,12 +241,47 @@ def parse_indenter(modulus: str, nu: str | None) -> tuple[float, float | None]:
         raise _usage(exc, modulus if name == "indenter_modulus" else nu) from None
 
 
+_UNITS_HELP = ("an SI number or a number with a unit suffix")
+
+
+def _physical_options(sub: argparse.ArgumentParser, *, load: bool) -> None:
+    """The options of a problem in physical units (docs/physical.md)."""
+    group = sub.add_argument_group(
+        "physical units", "give the problem in SI (numbers, or with a unit: 5mm, 100N, "
+        "210GPa, 2um): the summary and the dataset then report a, c, pressures, approach and "
+        "energies in m, Pa, N and J beside the dimensionless values")
+    group.add_argument("--radius", metavar="R", default=None,
+                       help=f"indenter radius R in m ({_UNITS_HELP}: 5mm)")
+    if load:
+        group.add_argument("--load", metavar="P", default=None,
+                           help=f"normal force P in N ({_UNITS_HELP}: 100N; a cylinder's over "
+                                "its --length)")
+    group.add_argument("--indenter", metavar="NAME|E,NU", default=None,
+                       help="indenter material: a name of the package's table "
+                            "(contactlib/data/materials.yaml), rigid, or E,nu (210GPa,0.3); "
+                            "default: rigid")
+    group.add_argument("--body", metavar="NAME|E,NU", default=None,
+                       help="elastic body (the layer's material on a layer): a name of the "
+                            "table or E,nu")
+    group.add_argument("--length", metavar="L", default=None,
+                       help="the cylinder's length in m (required for a cylinder)")
+    group.add_argument("--thickness", metavar="H", default=None,
+                       help="thickness of an elastic layer on a rigid base, in m (default: "
+                            "half-space / half-plane); --base chooses the base")
+    if not load:
+        group.add_argument("--times", metavar="LIST", default=None,
+                           help="with --relaxation: the time of each load-path point, in s "
+                                "or with a unit (0s,0.5s,1s); relaxation times then in s "
+                                "too (G1:TAU1 with TAU1 in s or with a unit)")
+
+
 def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--geometry", required=True, metavar="{sphere,cylinder}",
                      help="rigid indenter: sphere (axisymmetric) or cylinder "
                           "(plane strain)")
-    sub.add_argument("--nu", required=True, metavar="NU",
-                     help="Poisson's ratio of the elastic body, in (-1, 0.5]")
+    sub.add_argument("--nu", default=None, metavar="NU",
+                     help="Poisson's ratio of the elastic body, in (-1, 0.5] (required, "
+                          "unless the body is given physically with --body)")
     sub.add_argument("--n", metavar="N", default=None,
                      help="number of elements across the half-contact "
                           "(integer >= 2; library default if omitted)")
@@ -298,6 +333,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Solve one case for a given stick ratio c/a or friction "
                     "coefficient k; print a summary, optionally write a dataset.")
     _common(solve, output_required=False)
+    _physical_options(solve, load=True)
     which = solve.add_mutually_exclusive_group(required=True)
     which.add_argument("--stick-ratio", metavar="G",
                        help="stick ratio c/a in [0, 1] (0 frictionless, "
@@ -321,19 +357,23 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--geometry", required=True, metavar="{sphere,cylinder}",
                       help="rigid indenter: sphere (axisymmetric) or cylinder "
                            "(plane strain)")
-    hist.add_argument("--nu", required=True, metavar="NU",
-                      help="Poisson's ratio of the elastic body, in (-1, 0.5]")
+    hist.add_argument("--nu", default=None, metavar="NU",
+                      help="Poisson's ratio of the elastic body, in (-1, 0.5] (required, "
+                           "unless the body is given physically with --body)")
     hist.add_argument("--friction", required=True, metavar="K",
                       help="friction coefficient k >= 0 (inf: no slip)")
     hist.add_argument("--load-path", required=True, metavar="LIST",
                       help="comma-separated load levels P/P_max in [0, 1] starting at 0, "
-                           "e.g. 0,1,0")
-    hist.add_argument("--steps", required=True, metavar="N",
-                      help="equal load steps per path segment (positive integer)")
+                           "e.g. 0,1,0; or forces with a unit, e.g. 0N,100N,0N (a physical "
+                           "problem: needs --radius and --body)")
+    hist.add_argument("--steps", default=None, metavar="N",
+                      help="equal load steps per path segment (positive integer; required "
+                           "for a dimensionless path, default 200 for a path in newtons)")
     hist.add_argument("--n", metavar="N", default=None,
                       help="elements over 1.2 a_max (integer; library default if omitted)")
     _layer_options(hist, "a_max")
     _indenter_options(hist)
+    _physical_options(hist, load=False)
     hist.add_argument("--relaxation", metavar="G1:TAU1[,G2:TAU2...]", default=None,
                       help="a viscoelastic body: Prony terms of E(t)/E(0) = 1 - sum g_i "
                            "(1 - exp(-t/tau_i)), g_i > 0, sum g_i < 1, tau_i > 0 (constant "
@@ -378,7 +418,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
     base = parse_base(args.base)
     kwargs: dict[str, Any] = {
         "geometry": geometry,
-        "nu": parse_nu(args.nu),
+        "nu": parse_nu(_required(args.nu, "--nu")),
         "n": n,
         "method": method,
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base),
@@ -412,10 +452,10 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     base = parse_base(args.base)
     kwargs = {
         "geometry": geometry,
-        "nu": parse_nu(args.nu),
+        "nu": parse_nu(_required(args.nu, "--nu")),
         "friction": parse_friction(args.friction),
         "load_path": parse_load_path(args.load_path),
-        "steps": parse_steps(args.steps),
+        "steps": parse_steps(_required(args.steps, "--steps")),
         "n": None if args.n is None else parse_history_n(args.n),
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base,
                                        validate.HISTORY_MESH_EXTENT),
@@ -432,6 +472,167 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     if base != "smooth":
         kwargs["base"] = base
     return kwargs
+
+
+def _required(value: str | None, option: str) -> str:
+    """``value``, or a usage error naming the missing ``option``."""
+    if value is None:
+        raise UsageError(f"the following arguments are required: {option}")
+    return value
+
+
+# --------------------------------------------------------------------------
+# physical units (contactlib.physical)
+# --------------------------------------------------------------------------
+
+_PHYSICAL = ("radius", "load", "indenter", "body", "length", "thickness", "times")
+_UNIT_RE = re.compile(r"[A-Za-zµμ]")
+
+
+def _path_has_units(text: str) -> bool:
+    """A load path with a unit suffix anywhere (``0N,100N,0N``): forces, not levels."""
+    return any(_UNIT_RE.search(item.strip().lstrip("+-").replace("e", "").replace("E", ""))
+               for item in text.split(",") if item.strip().lower() not in ("inf", "nan"))
+
+
+def is_physical(args: argparse.Namespace) -> bool:
+    """True when any physical option is given, or a history's load path has units."""
+    if any(getattr(args, name, None) is not None for name in _PHYSICAL):
+        return True
+    return args.command == "history" and _path_has_units(args.load_path)
+
+
+def _physical_check(rule: Callable[..., Any], *args: Any) -> Any:
+    """``rule(*args)`` of :mod:`contactlib.physical`, its errors as usage errors."""
+    try:
+        return rule(*args)
+    except ValueError as exc:
+        raise _usage(exc) from None
+
+
+def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
+    """Checked keyword arguments of :func:`contactlib.physical.physical_solve` or
+    :func:`~contactlib.physical.physical_history` (the physical options replace --nu,
+    --indenter-modulus, --indenter-nu and --slab-ratio)."""
+    from contactlib import physical
+
+    geometry = _check(validate.geometry, args.geometry, args.geometry)
+    for option, given in (("--nu", args.nu is not None),
+                          ("--indenter-modulus", args.indenter_modulus != "inf"),
+                          ("--indenter-nu", args.indenter_nu is not None),
+                          ("--slab-ratio", args.slab_ratio != "0")):
+        if given:
+            raise UsageError(f"{option} is not used with physical units (--radius, --body, "
+                             f"--indenter, --thickness give the problem), got {option} with "
+                             "them")
+    radius = _physical_check(physical.parse_quantity, _required(args.radius, "--radius"),
+                             "length", "radius")
+    body = _physical_check(physical.material, _required(args.body, "--body"), "body")
+    indenter = _physical_check(physical.material,
+                               "rigid" if args.indenter is None else args.indenter, "indenter")
+    kwargs: dict[str, Any] = {"geometry": geometry, "radius": radius, "indenter": indenter,
+                              "body": body, "base": parse_base(args.base),
+                              "max_error": parse_max_error(args.max_error)}
+    if geometry == "cylinder":
+        kwargs["length"] = _physical_check(physical.parse_quantity,
+                                           _required(args.length, "--length"), "length",
+                                           "length")
+    elif args.length is not None:
+        raise UsageError(f"--length is for a cylinder only, got --length {args.length!r} "
+                         "with --geometry sphere")
+    if args.thickness is not None:
+        kwargs["thickness"] = _physical_check(physical.parse_quantity, args.thickness,
+                                              "length", "thickness")
+    if args.command == "solve":
+        kwargs["load"] = _physical_check(physical.parse_quantity,
+                                         _required(args.load, "--load"), "force", "load")
+        method = _check(validate.method, args.method, args.method)
+        kwargs.update(method=method, n=None if args.n is None else parse_n(args.n, method),
+                      energy=not args.no_energy)
+        if args.tolerance is not None:
+            kwargs["tolerance"] = parse_tolerance(args.tolerance)
+        if args.stick_ratio is not None:
+            kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
+        else:
+            kwargs["friction"] = parse_friction(args.friction)
+        return kwargs
+    if not _path_has_units(args.load_path):
+        raise UsageError(f"--load-path must be forces with a unit (0N,100N,0N) with physical "
+                         f"units, got {args.load_path!r}")
+    if any(not _path_has_units(item) and item.strip() not in ("0",)
+           for item in args.load_path.split(",")):
+        raise UsageError(f"--load-path must give every force with its unit (0N,100N,0N), "
+                         f"got {args.load_path!r}")
+    forces = _physical_check(physical.parse_force_path, args.load_path)
+    kwargs.update(load_path=forces, friction=parse_friction(args.friction),
+                  steps=parse_steps(args.steps) if args.steps is not None
+                  else physical.DEFAULT_HISTORY_STEPS,
+                  n=None if args.n is None else parse_history_n(args.n))
+    if args.duration is not None:
+        raise UsageError(f"--duration is not used with physical units: give --times (s), got "
+                         f"--duration {args.duration!r}")
+    if (args.relaxation is None) != (args.times is None):
+        missing = "--times" if args.times is None else "--relaxation"
+        raise UsageError(f"--relaxation and --times go together with physical units: "
+                         f"{missing} is missing")
+    if args.relaxation is not None:
+        pairs: list[Any] = []
+        for item in args.relaxation.split(","):
+            parts = item.split(":")
+            if len(parts) != 2:
+                raise UsageError(f"--relaxation must be G1:TAU1[,G2:TAU2...], got "
+                                 f"{args.relaxation!r}")
+            tau = _physical_check(physical.parse_quantity, parts[1].strip(), "time",
+                                  "relaxation")
+            pairs.append([_float(parts[0]), tau])
+        kwargs["relaxation"] = _check(validate.relaxation, args.relaxation, pairs)
+        def when(text: str) -> float:
+            return physical.parse_quantity(text.strip(), "time", "times", positive=False)
+
+        times = [_physical_check(when, t) for t in args.times.split(",")]
+        if len(times) != len(forces) or any(b <= a for a, b in zip(times, times[1:])):
+            raise UsageError(f"--times must give {len(forces)} increasing times, one a "
+                             f"--load-path point, got {args.times!r}")
+        kwargs["times"] = times
+    return kwargs
+
+
+def _warned(run: Callable[[], Any]) -> Any:
+    """``run()``, its validity warnings as one line each on stderr (``contactlib: warning:``)."""
+    import warnings
+
+    from contactlib.physical import SmallStrainWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", SmallStrainWarning)
+        result = run()
+    for w in caught:
+        if issubclass(w.category, SmallStrainWarning):
+            print(f"{PROG}: warning: {' '.join(str(w.message).split())}", file=sys.stderr)
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return result
+
+
+def _run_physical(kwargs: dict[str, Any], output: str | None, command: str) -> int:
+    from contactlib import physical
+
+    if command == "history":
+        with _progress("history") as progress:
+            res = _warned(lambda: physical.physical_history(progress=progress, **kwargs))
+    else:
+        try:
+            res = _warned(lambda: physical.physical_solve(**kwargs))
+        except ValueError as exc:
+            raise _usage(exc) from exc
+    if output is not None:
+        from contactlib import io
+
+        io.write_dataset(io.physical_to_dataset(res), output)
+    print(res.summary())
+    if output is not None:
+        print(f"  wrote {output}")
+    return 0
 
 
 def parse_relaxation(text: str) -> tuple[tuple[float, float], ...]:
@@ -812,6 +1013,10 @@ def main(argv: list[str] | None = None) -> int:
         debug = bool(getattr(args, "debug", False))
         if args.command == "check-config":
             return _run_check_config(args.files)
+        if args.command in ("solve", "history") and is_physical(args):
+            phys_kwargs = _validate_physical(args)  # before any numerics
+            check_output(args.output)
+            return _run_physical(phys_kwargs, args.output, args.command)
         if args.command == "history":
             hist_kwargs = _validate_history(args)  # before importing the numerics
             check_output(args.output)

@@ -385,3 +385,11 @@ def test_at_least_thirty_bad_inputs() -> None:
 def test_materials_yaml_is_the_package_table() -> None:
     doc = yaml.safe_load(materials.MATERIALS_FILE.read_text(encoding="utf-8"))
     assert set(doc["materials"]) == set(materials.materials())
+
+
+def test_docs_page_gives_the_two_tested_commands() -> None:
+    from pathlib import Path
+
+    page = (Path(__file__).resolve().parents[1] / "docs" / "physical.md").read_text()
+    for argv in (SOLVE + ["--output", "ball.nc"], HIST + ["--output", "cycle.nc"]):
+        assert "contactlib " + " ".join(argv) in page

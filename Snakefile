@@ -12,7 +12,7 @@
 
 from snakemake.utils import min_version
 
-min_version("9.0")
+min_version("9.2")
 
 
 # Snakemake's own message for a YAML syntax error names neither the file nor the line

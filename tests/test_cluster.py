@@ -140,7 +140,8 @@ def test_local_cluster_profile_runs_the_default_target(cluster_run):
     for job, f in zip(ids, fields):
         assert re.search(rf"Submitted job \d+ with external jobid '{job}'", text), job
         assert (wd / "results/logs/cluster" / f"{job}.exit").read_text().strip() == "0"
-        assert (wd / f["output"]).exists()
+        # every output is there, but the influence matrices: temporary, removed once read
+        assert (wd / f["output"]).exists() != (f["rule"] == "influence"), f["output"]
         # the declared resources reach the scheduler
         # (a figure family's job draws its two figures in two worker processes)
         assert f["threads"] == ("2" if f["rule"] == "figures_paper" else "1")

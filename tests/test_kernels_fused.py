@@ -149,7 +149,13 @@ def test_compiled_w_differences_give_the_numpy_bits(numpy_route, r0):
     got = disc.w_difference_disc(r, r0, s, 0.3, "normal")
     want = numpy_route(disc.w_difference_disc, r, r0, s, 0.3, "normal")
     for g, w in zip(got, want):
-        assert np.array_equal(g, w, equal_nan=True)
+        if np.lib.NumpyVersion(np.__version__) >= "2.4.0":
+            assert np.array_equal(g, w, equal_nan=True)
+        else:  # older numpy rounds some elementwise functions differently from the C
+            # library (numpy 2.0.0: 155 of 50,000 values, by at most 1.5 ulp)
+            same = (g == w) | (np.isnan(g) & np.isnan(w))
+            assert np.count_nonzero(~same) <= 0.01 * g.size
+            np.testing.assert_array_max_ulp(g[~same], w[~same], maxulp=2)
 
 
 @needs_fused

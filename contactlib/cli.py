@@ -486,13 +486,13 @@ def _required(value: str | None, option: str) -> str:
 # --------------------------------------------------------------------------
 
 _PHYSICAL = ("radius", "load", "indenter", "body", "length", "thickness", "times")
-_UNIT_RE = re.compile(r"[A-Za-zµμ]")
+_UNIT_RE = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[A-Za-zµμ]+\s*$")
 
 
 def _path_has_units(text: str) -> bool:
-    """A load path with a unit suffix anywhere (``0N,100N,0N``): forces, not levels."""
-    return any(_UNIT_RE.search(item.strip().lstrip("+-").replace("e", "").replace("E", ""))
-               for item in text.split(",") if item.strip().lower() not in ("inf", "nan"))
+    """A load path with a number and a unit anywhere (``0N,100N,0N``): forces, not levels
+    (``0,x`` is a bad list of levels, not a force path)."""
+    return any(_UNIT_RE.match(item) for item in text.split(","))
 
 
 def is_physical(args: argparse.Namespace) -> bool:

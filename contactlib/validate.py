@@ -152,8 +152,16 @@ def requirement(lo: float | None = None, hi: float | None = None, lo_open: bool 
 
 
 def _is_bool(value: Any) -> bool:
-    """Python and numpy booleans (numpy is not imported here)."""
-    return isinstance(value, bool) or type(value).__name__ == "bool_"
+    """Python and numpy booleans (numpy is not imported here; ``numpy.bool`` from 2.0)."""
+    return isinstance(value, bool) or (type(value).__name__ in ("bool_", "bool")
+                                       and type(value).__module__ == "numpy")
+
+
+def _scalar(value: Any) -> Any:
+    """A 0-d numpy array as the scalar it holds (``np.array(0.3)`` is 0.3); else as given."""
+    if type(value).__name__ == "ndarray" and getattr(value, "ndim", None) == 0:
+        return value.item() if value.dtype.kind in "biuf" else value
+    return value
 
 
 # ----------------------------------------------------------------------------- generic rules
@@ -161,6 +169,7 @@ def number(name: str, value: Any, lo: float | None = None, hi: float | None = No
            lo_open: bool = False, hi_open: bool = False) -> float:
     """A finite real number in the given range (booleans and strings refused)."""
     req = requirement(lo, hi, lo_open, hi_open)
+    value = _scalar(value)
     if _is_bool(value) or not isinstance(value, Real):
         raise InputError(name, f"a number {req}" if req != "a number" else req, value)
     try:
@@ -178,6 +187,7 @@ def number(name: str, value: Any, lo: float | None = None, hi: float | None = No
 def integer(name: str, value: Any, lo: int, hi: int | None = None) -> int:
     """An integer in [lo, hi] (an integral float such as ``64.0`` is accepted)."""
     req = f"an integer >= {lo}" if hi is None else f"an integer in [{lo}, {hi}]"
+    value = _scalar(value)
     if _is_bool(value) or not isinstance(value, (Integral, Real)):
         raise InputError(name, req, value)
     if not isinstance(value, Integral):
@@ -191,6 +201,7 @@ def integer(name: str, value: Any, lo: int, hi: int | None = None) -> int:
 
 def flag(name: str, value: Any) -> bool:
     """A real boolean (``True``/``False``, numpy bools too); never a truthy string."""
+    value = _scalar(value)
     if _is_bool(value):
         return bool(value)
     raise InputError(name, "True or False", value)
@@ -387,6 +398,9 @@ def load_path(values: Any) -> tuple[float, ...]:
         raise InputError("load_path", req, values,
                          f"load_path must start at 0 (the body starts unloaded), "
                          f"got {items[0]!r}")
+    if max(levels) == 0.0:
+        raise InputError("load_path", req, values,
+                         f"load_path never rises above 0 (no contact to follow), got {items!r}")
     return levels
 
 

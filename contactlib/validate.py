@@ -157,6 +157,12 @@ def _is_bool(value: Any) -> bool:
                                        and type(value).__module__ == "numpy")
 
 
+def _sequence(value: Any) -> bool:
+    """Whether ``value`` is a sequence of items (not a string, not a 0-d array)."""
+    return not isinstance(value, (str, bytes)) and hasattr(value, "__iter__") and \
+        getattr(value, "ndim", None) != 0
+
+
 def _scalar(value: Any) -> Any:
     """A 0-d numpy array as the scalar it holds (``np.array(0.3)`` is 0.3); else as given."""
     if type(value).__name__ == "ndarray" and getattr(value, "ndim", None) == 0:
@@ -266,6 +272,7 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
 
 def indenter_modulus(value: Any) -> float:
     """E1/E2, Young's modulus of the indenter over the body's, in (0, inf]; inf is rigid."""
+    value = _scalar(value)
     if isinstance(value, Real) and not _is_bool(value) and value == math.inf:
         return math.inf
     return number("indenter_modulus", value, 0.0, None, lo_open=True)
@@ -347,6 +354,7 @@ def paper_multiple(c: float, n: int, name: str = "stick_ratio") -> int:
 
 def friction(value: Any) -> float:
     """Friction coefficient k >= 0; ``inf`` (full adhesion) is allowed."""
+    value = _scalar(value)
     if isinstance(value, Real) and not _is_bool(value) and value == math.inf:
         return math.inf
     return number("friction", value, 0.0, None)
@@ -384,7 +392,7 @@ def steps(value: Any) -> int:
 def load_path(values: Any) -> tuple[float, ...]:
     """Load levels P/P_max in [0, 1], at least two, starting at 0."""
     req = "a sequence of at least two load levels in [0, 1] starting at 0"
-    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+    if not _sequence(values):
         raise InputError("load_path", req, values)
     items = list(values)
     if not items:
@@ -400,7 +408,8 @@ def load_path(values: Any) -> tuple[float, ...]:
                          f"got {items[0]!r}")
     if max(levels) == 0.0:
         raise InputError("load_path", req, values,
-                         f"load_path never rises above 0 (no contact to follow), got {items!r}")
+                         f"load_path never rises above 0 (no contact to follow), got "
+                         f"{list(levels)!r}")
     return levels
 
 
@@ -433,12 +442,11 @@ def relaxation(values: Any) -> tuple[tuple[float, float], ...]:
     req = "a list of pairs [g, tau] with g > 0, tau > 0 and sum of g < 1"
     if values is None:
         return ()
-    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+    if not _sequence(values):
         raise InputError("relaxation", req, values)
     pairs = []
     for item in values:
-        if isinstance(item, (str, bytes)) or not hasattr(item, "__iter__") or \
-                len(list(item)) != 2:
+        if not _sequence(item) or len(list(item)) != 2:
             raise InputError("relaxation", req, values,
                              f"relaxation must be {req}, got the malformed pair {item!r}")
         g, tau = list(item)
@@ -470,7 +478,7 @@ def duration(value: Any, segments: int, relaxed: bool) -> tuple[float, ...]:
         raise InputError("duration", "given (> 0) with a relaxation", value,
                          "duration is required with a relaxation (the path's duration, "
                          "in the unit of tau)")
-    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+    if not _sequence(value):
         total = number("duration", value, 0.0, None, lo_open=True)
         return tuple(total / segments for _ in range(segments))
     items = list(value)

@@ -900,7 +900,7 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
 
     The stages: the mesh and its nodal operators; :func:`assemble` the
     system A(k) x = b; :func:`start_k`; :func:`newton_on_k` (with the
-    extended-precision refinement from n = 384 on); the nodal solution and
+    extended-precision refinement from n = 128 on); the nodal solution and
     its messages. c/a = 0 and 1 are single linear solves.
 
     Parameters

@@ -91,13 +91,6 @@ def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | No
 # ----------------------------------------------------------------------------- inverse problem
 SMALLEST_STICK_RATIO = 1e-8  # the inverse's floor: the smallest c/a resolved at the default n
 LARGEST_STICK_RATIO = 1.0 - 1e-5  # its ceiling: the largest c/a resolved at the default n
-K_ROUNDOFF = 1e-8
-"""Relative distance of a friction from k at the inverse's floor or ceiling within which
-the floor or ceiling is its stick ratio: k's round-off there. Measured at c/a = 0.99999
-(sphere, nu = 0.3, n = 256): k spreads 4e-10 relative with Newton's starting point, and
-``solve(stick_ratio=0.99999)`` gives 2e-10 ... 4e-10 above the search's own solves, which
-refused that k as too large. k rises by 7e4 per unit c/a there, so the stick ratio is
-then within 4e-13 of the ceiling."""
 
 
 def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
@@ -119,36 +112,19 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     a failed solve below c/a = 1/2 as lying under it (a stick zone too small
     to resolve).
 
-    Each stick ratio is solved once: Brent's method gets the values the
-    bracket was checked with (a second solve from another warm start could
-    differ in round-off and change a sign at k(c) ~ friction, which scipy
-    refused as "f(a) and f(b) must have different signs"). A friction within
-    :data:`K_ROUNDOFF` (relative) of k at the floor or the ceiling gets
-    that stick ratio.
-
     Raises
     ------
-    contactlib.validate.InputError
-        A ValueError naming ``friction``: when the stick zone lies outside
-        [SMALLEST_STICK_RATIO, LARGEST_STICK_RATIO] (the message gives the
-        range of k solved at this n, and at the floor the small-k estimate
-        c/a ~ 4 exp(-A/k), A = k ln(4 a/c)), or when no converged root is
-        found (the message names where the solutions end, the largest k
-        found, and what to do: the contact probably sticks; check with
-        :func:`contactlib.history`).
+    ValueError
+        When the stick zone lies outside [SMALLEST_STICK_RATIO,
+        LARGEST_STICK_RATIO] (the message gives the small-k estimate
+        c/a ~ 4 exp(-A/k), A = k ln(4 a/c) at the floor), or when no
+        converged root is found (the message names where the solutions end).
     """
     cache: dict[float, DiscreteSolution] = {}
-    values: dict[float, float] = {}  # f at every c solved: Brent's method re-asks the ends
     blocks = StickBlocks()  # this search's store of stick blocks, shared by its solves
     last: dict[str, float | None] = {"k": None, "way": None}
-    below: dict[str, float] = {}  # the largest c/a whose root has k < friction, and its k
 
     def f(c: float) -> float:
-        if c not in values:
-            values[c] = g(c)
-        return values[c]
-
-    def g(c: float) -> float:
         d = solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
         cache[c] = d
         if not (d.converged and np.isfinite(d.k)):  # no self-similar solution found here:
@@ -161,8 +137,6 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
         elif c > 0.5 and (way != last["way"] or not d.node_flags()["consistent"]):
             return friction  # the root came back through k = inf, or is no solution: past c*
         last["k"] = d.k
-        if d.k < friction and c > below.get("c", -1.0):
-            below.update(c=c, k=float(d.k))
         return d.k - friction
 
     gam = np.linspace(1e-4, 1 - 1e-9, 4001)
@@ -177,46 +151,26 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     while fhi < 0 and hi < LARGEST_STICK_RATIO:
         lo, hi = hi, min(1 - (1 - hi) * 0.1, LARGEST_STICK_RATIO)
         fhi = f(hi)
-    req = "a friction coefficient whose stick ratio is resolved"
     if flo > 0:
-        if flo <= K_ROUNDOFF * friction:  # k at the floor, within its round-off
-            return lo, cache[lo]
         k_floor = flo + friction
         amp = k_floor * np.log(4.0 / lo)  # k ~ A / ln(4 a/c) for small stick zones
         log10_c = (np.log(4.0) - amp / friction) / np.log(10.0)
-        raise validate.InputError(
-            "friction", req, friction,
-            f"friction {friction!r} gives a stick zone below c/a = {lo:.3g}, the smallest "
-            f"resolved (k = {k_floor:.10g} there, at n = {n}); by the small-k law "
-            f"k ~ {amp:.3g}/ln(4 a/c) it is c/a ~ 1e{log10_c:.0f}: nearly the whole contact "
-            "slips; use friction 0 for Hertz")
+        raise ValueError(f"friction {friction!r} gives a stick zone below c/a = {lo:.3g}, the "
+                         f"smallest resolved (k = {k_floor:.4g} there); by the small-k law "
+                         f"k ~ {amp:.3g}/ln(4 a/c) it is c/a ~ 1e{log10_c:.0f}: nearly the whole "
+                         "contact slips; use friction 0 for Hertz")
     if fhi < 0:
-        if -fhi <= K_ROUNDOFF * friction:  # k at the ceiling, within its round-off
-            return hi, cache[hi]
-        raise validate.InputError(
-            "friction", req, friction,
-            f"friction {friction!r} is too large: at n = {n} the solved stick ratios reach "
-            f"c/a = {hi:.5f} (1 - {validate.shown(1.0 - hi)}), the largest resolved, where k = "
-            f"{fhi + friction:.10g}; a larger k sticks more of the contact (nearly full stick, "
-            "less than 1e-5 of the contact radius slips): ask for the stick ratio directly "
-            "(stick_ratio 1 is full adhesion, as friction inf)")
+        raise ValueError(f"friction {friction!r} is too large: the stick zone covers more than "
+                         f"{hi:.5f} of the contact, the largest resolved (k = "
+                         f"{fhi + friction:.4g} there); use stick_ratio 1 (full adhesion)")
     from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
 
     c = optimize.brentq(f, lo, hi, xtol=xtol)
     d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
     if not (d.converged and np.isfinite(d.k)
             and abs(d.k - friction) <= 1e-3 * friction):  # else a jump, not a root
-        found = (f"; the largest k found is {below['k']:.4g} (at c/a = {below['c']:.7f}), "
-                 f"below {friction!r}") if below else ""
-        why = d.message or "k = " + format(d.k, ".4g")
-        raise validate.InputError(
-            "friction", req, friction,
-            f"friction {friction!r}: no converged stick ratio found at n = {n}: the "
-            f"single-stick-zone solutions end at c/a = {c:.7f} ({why}){found}. The contact "
-            "probably sticks fully at this friction: check with `contactlib history` and the "
-            "same options and --load-path 0,1 (library: contactlib.history(..., "
-            "load_path=[0, 1], steps=...)), which follows the loading without assuming one "
-            "stick zone, or ask for the stick ratio directly")
+        raise ValueError(f"friction {friction!r}: no converged stick ratio found; the solutions "
+                         f"end at c/a = {c:.7f} ({d.message or 'k = ' + format(d.k, '.4g')})")
     return c, d
 
 

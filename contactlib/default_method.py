@@ -164,7 +164,7 @@ within ~1e-6 (one factorization fewer a solve, where one costs most)."""
 _THREE_LEVEL_START_FROM_N = 1024  # start_k from n = 64, 128, 256 (orders 2 and 3) instead
 # of 64 and 128 (order 2): within ~1e-6 of the root instead of 1e-5 ... 3e-5, so that
 # one refined step is final (REFINED_FINAL_STEP) where a factorization costs most
-_REFINE_FROM_N = 128  # from n = 128 every solve is refined: without it the round-off in k
+_REFINE_FROM_N = 256  # from n = 256 every solve is refined: without it the round-off in k
 # was 2.7e-5 at n = 256 (half-plane, nu = 0.3, c/a = 0.9, OpenBLAS Sandybridge kernel; its
 # estimate from the levels 3.4e-6, 10x short) where this machine's kernel had 4e-8, and
 # the two kernels' k agreed to 1e-10 with it, at no measurable cost (0.07-0.08 s) ...
@@ -900,7 +900,7 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
 
     The stages: the mesh and its nodal operators; :func:`assemble` the
     system A(k) x = b; :func:`start_k`; :func:`newton_on_k` (with the
-    extended-precision refinement from n = 128 on); the nodal solution and
+    extended-precision refinement from n = 256 on); the nodal solution and
     its messages. c/a = 0 and 1 are single linear solves.
 
     Parameters

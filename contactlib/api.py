@@ -235,9 +235,14 @@ def _plans_by_stick_ratio(geom: Geometry, ratios: Sequence[float], tolerance: fl
 
 
 def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
-                               rtol: float = 1e-11) -> tuple[float, DiscreteSolution]:
+                               rtol: float = 1e-10) -> tuple[float, DiscreteSolution]:
     """Stick ratio whose extrapolated k is ``friction``: the default method's c at n, then
-    secant steps on the extrapolated k(c) (smooth and increasing; two or three steps)."""
+    secant steps on the extrapolated k(c) (smooth and increasing; two or three steps).
+
+    The extrapolated k carries round-off of a few 1e-10 relative (its levels' Newton
+    tolerance, amplified by the Richardson weights; measured on c steps of 2e-10), so
+    the secant stops at ``rtol`` or after 8 steps and returns the converged iterate
+    whose k is nearest ``friction``: further steps only chase that noise."""
     from .extrapolated_method import solve_extrapolated
 
     c0, d0 = stick_ratio_for_friction(geometry, friction, n)
@@ -248,16 +253,21 @@ def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
 
     c1 = c0 + 1e-4 * min(c0, 1.0 - c0)
     s0, s1 = at(c0), at(c1)
+    tried = [(c0, s0), (c1, s1)]
     for _ in range(8):
         if not (s0.converged and s1.converged) or s1.k == s0.k:
+            break
+        if abs(s1.k / friction - 1.0) <= rtol:
             break
         c2 = c1 - (s1.k - friction) * (c1 - c0) / (s1.k - s0.k)
         c2 = min(max(c2, 0.5 * c1), c1 + 0.5 * (1.0 - c1))  # stay inside (0, 1)
         c0, s0, c1 = c1, s1, c2
         s1 = at(c1)
-        if abs(s1.k / friction - 1.0) <= rtol:
-            break
-    return c1, s1
+        tried.append((c1, s1))
+    good = [(c, s) for c, s in tried if s.converged and np.isfinite(s.k)]
+    if not good:
+        return c1, s1
+    return min(good, key=lambda cs: abs(cs[1].k - friction))
 
 
 # ----------------------------------------------------------------------------- public API

@@ -140,11 +140,14 @@ def test_friction_gives_the_stick_ratio_of_the_extrapolated_k():
            if c["geometry"] == "sphere" and c["nu"] == 0.3}
     sol = api.solve("sphere", 0.3, friction=ref[0.5], method="extrapolated")
     assert sol.method == "extrapolated" and sol.resolved
-    assert abs(sol.friction_coefficient / ref[0.5] - 1.0) < 1e-10  # the k asked for ...
+    # the extrapolated k is smooth in c/a only down to round-off of a few 1e-10 relative
+    # (measured: k(c + 2e-10) - k(c) scatters by 1e-10 about its slope), so the inverse
+    # lands on the k asked for within a few of that noise, not to Brent's 1e-10 in c/a
+    assert abs(sol.friction_coefficient / ref[0.5] - 1.0) < 1e-9  # the k asked for ...
     assert abs(sol.stick_ratio - 0.5) < 2e-6  # ... at the c/a of the converged reference
     assert 0.0 < sol.error_estimate < 1e-6
     direct = solve_extrapolated(model, sol.stick_ratio, 256)
-    assert abs(direct.k / sol.friction_coefficient - 1.0) < 1e-10
+    assert abs(direct.k / sol.friction_coefficient - 1.0) < 1e-9  # cold start: same noise
 
 
 def test_cli_method_extrapolated(tmp_path):

@@ -91,6 +91,9 @@ def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | No
 # ----------------------------------------------------------------------------- inverse problem
 SMALLEST_STICK_RATIO = 1e-8  # the inverse's floor: the smallest c/a resolved at the default n
 LARGEST_STICK_RATIO = 1.0 - 1e-5  # its ceiling: the largest c/a resolved at the default n
+ENDPOINT_RTOL = 1e-7  # a friction within this of the k at an end is that end: warm-started
+#   Newton's k at c/a = 0.99999 moves by up to 4e-10 relative with its start (measured,
+#   sphere and cylinder, nu = 0.3 and 0.49), and its error estimate there is above 1e-5
 
 
 def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
@@ -151,6 +154,11 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
     while fhi < 0 and hi < LARGEST_STICK_RATIO:
         lo, hi = hi, min(1 - (1 - hi) * 0.1, LARGEST_STICK_RATIO)
         fhi = f(hi)
+    # the ends themselves: a friction equal to the k there (to round-off) is that end's c/a
+    for end, val in ((hi, fhi), (lo, flo)):
+        d = cache.get(end)
+        if d is not None and abs(val) <= ENDPOINT_RTOL * friction and d.converged:
+            return end, d
     if flo > 0:
         k_floor = flo + friction
         amp = k_floor * np.log(4.0 / lo)  # k ~ A / ln(4 a/c) for small stick zones
@@ -165,12 +173,22 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
                          f"{fhi + friction:.4g} there); use stick_ratio 1 (full adhesion)")
     from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
 
-    c = optimize.brentq(f, lo, hi, xtol=xtol)
+    try:
+        c = optimize.brentq(f, lo, hi, xtol=xtol)
+    except ValueError:  # the ends, solved again from another start, no longer bracket:
+        ends = {lo: flo, hi: fhi}  # search from the values that did
+        c = optimize.brentq(lambda x: ends[x] if x in ends else f(x), lo, hi, xtol=xtol)
     d = cache.get(c) or solve_default(geometry, c, n, k_guess=last["k"], cache=blocks)
     if not (d.converged and np.isfinite(d.k)
             and abs(d.k - friction) <= 1e-3 * friction):  # else a jump, not a root
+        why = d.message or "k = " + format(d.k, ".4g")
+        hint = ("; a friction this large most likely holds the whole contact stuck (no "
+                "single slip annulus reaches it): use stick_ratio 1 (full adhesion), or "
+                "`history` with this friction and load path 0,1, which assumes no "
+                "self-similar stick zone and shows where slip occurs") if c > 0.5 else (
+                "; a larger n resolves smaller stick zones")
         raise ValueError(f"friction {friction!r}: no converged stick ratio found; the solutions "
-                         f"end at c/a = {c:.7f} ({d.message or 'k = ' + format(d.k, '.4g')})")
+                         f"end at c/a = {c:.7f} ({why}){hint}")
     return c, d
 
 

@@ -119,3 +119,15 @@ def test_large_friction_beyond_the_resolved_stick_zone_is_refused():
     far below 1 - 1e-5, the largest resolved; refused, not a flagged c/a = 1 - 7.6e-7."""
     with pytest.raises(ValueError, match="too large"):
         solve("sphere", 0.3, friction=10.0, n=64, energy=False)
+
+
+@pytest.mark.slow  # two solves near full stick and one inverse search (about 15 s)
+def test_friction_of_the_largest_resolved_stick_ratio_is_accepted():
+    """The project's own k at c/a = 1 - 1e-5 (the inverse's ceiling), given back as the
+    friction, returns that stick ratio, resolved: not a refusal as 'too large' because a
+    warm-started Newton there lands 4e-10 relative away, nor a raw scipy sign error."""
+    k = solve("cylinder", 0.3, stick_ratio=0.99999, energy=False)
+    assert k.resolved
+    back = solve("cylinder", 0.3, friction=k.friction_coefficient, energy=False)
+    assert back.resolved and abs(back.stick_ratio - 0.99999) < 1e-9
+    assert abs(back.friction_coefficient / k.friction_coefficient - 1.0) < k.error_estimate

@@ -340,6 +340,11 @@ def build_parser() -> argparse.ArgumentParser:
                             "1 full adhesion)")
     which.add_argument("--friction", metavar="K",
                        help="friction coefficient k >= 0; solve for c/a")
+    solve.add_argument("--subsurface", action="store_true",
+                       help="add the stress field inside the body to --output (variables "
+                            "sigma_*, von_mises, tresca, ... in units of p0 on x = r/a "
+                            "(x/a) and z = depth/a, 0 ... 2; docs/stresses.md); half-space "
+                            "and half-plane only")
 
     sweep = subs.add_parser(
         "sweep", help="solve a sweep over c/a", allow_abbrev=False,
@@ -858,12 +863,19 @@ def _silence_stdout() -> None:
         pass
 
 
-def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType) -> int:
+def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType,
+               subsurface: bool = False) -> int:
     try:
+        if subsurface:  # before any numerics: refuses a layer and a missing --output
+            from contactlib.stresses import check_subsurface_request
+            check_subsurface_request(output, kwargs.get("slab_ratio", 0.0))
         sol = api.solve(**kwargs)
     except ValueError as exc:  # the library's own input validation
         raise _usage(exc) from exc
-    if output is not None:  # the file first: a closed pipe on stdout must not lose it
+    if output is not None and subsurface:  # the solve's dataset and the stress field
+        from contactlib import io, stresses
+        io.write_dataset(stresses.with_subsurface(io.to_dataset(sol), sol), output)
+    elif output is not None:  # the file first: a closed pipe on stdout must not lose it
         _write(sol, output)
     print(format_summary(sol))
     if output is not None:
@@ -1014,6 +1026,9 @@ def main(argv: list[str] | None = None) -> int:
         if args.command == "check-config":
             return _run_check_config(args.files)
         if args.command in ("solve", "history") and is_physical(args):
+            if getattr(args, "subsurface", False):
+                raise UsageError("--subsurface must be given without --body (physical "
+                                 "input), got both")
             phys_kwargs = _validate_physical(args)  # before any numerics
             check_output(args.output)
             return _run_physical(phys_kwargs, args.output, args.command)
@@ -1025,7 +1040,7 @@ def main(argv: list[str] | None = None) -> int:
         api = _api()
         check_output(args.output)
         if args.command == "solve":
-            return _run_solve(kwargs, args.output, api)
+            return _run_solve(kwargs, args.output, api, args.subsurface)
         return _run_sweep(kwargs, args.output, api)
     except UsageError as exc:
         _fail(str(exc))

@@ -1,0 +1,640 @@
+"""Stresses inside the elastic body under the solved surface tractions (issue 38).
+
+The body is the elastic half-space (sphere, axisymmetric) or half-plane (cylinder, plane
+strain) z >= 0 under a pressure p and a shear q on its surface z = 0, both tabulated on
+``xi`` = r/a (x/a) in [0, 1], continuous and piecewise linear between the tabulated
+points, zero outside. Lengths are in units of a, stresses in the unit of the tabulated
+tractions (p0 for a :class:`~contactlib.result.Solution`). Signs: tension positive, z
+positive into the body, p positive in compression and q the traction on the body,
+positive away from the axis, so that the surface limits are sigma_zz = -p and
+sigma_rz = -q (sigma_xz = -q for x > 0) (docs/conventions.md). The cylinder's shear is odd
+in x: q(-x) = -q(x).
+
+Method
+------
+Half-plane (plane strain), exact for the piecewise-linear tractions: the Flamant
+kernels (Johnson, *Contact Mechanics*, Eq. 2.23) integrated in closed form over each
+linear piece (antiderivatives of u^k / (u^2 + z^2)^2, k = 0 ... 4); only round-off
+(about 1e-13 p0) is added to the tractions' own discretization. sigma_yy = nu (sigma_xx +
+sigma_zz).
+
+Half-space (axisymmetric): Hankel transforms (Boussinesq's potentials, Sneddon)
+
+    sigma_zz = int xi e^{-xi z} J0 [-P (1 + xi z) + Q xi z] dxi,
+    sigma_rz = int xi e^{-xi z} J1 [-P xi z - Q (1 - xi z)] dxi,
+
+and sigma_rr, sigma_tt likewise (:func:`halfspace_stresses`), with P(xi) = int p J0(xi r)
+r dr and Q(xi) = int q J1(xi r) r dr in closed form for the piecewise-linear tractions
+(``scipy.special.itj0y0``). The xi integral is Gauss-Legendre on panels of width
+``2/(1 + max r)`` (8 points each) up to 36/z_min (e^{-36} < 3e-16), where z_min is the
+smallest positive depth asked for; the quadrature error is measured at 1e-9 p0 and below
+(tests/test_stresses.py). On the surface (z = 0) the pressure's part is Johnson's closed
+form (sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt - p, Eq. 3.?? of his Ch. 3) and the shear's
+part the same Hankel integral cut at ``XI_SURFACE``: its integrand decays only like
+xi^-2, so the surface values of the shear's part carry a truncation error, measured
+(docs/stresses.md).
+
+Memory is bounded by working in chunks of about ``CHUNK`` numbers an array (a few arrays
+of 8 * CHUNK bytes at once).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import scipy.special as sp
+
+__all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses", "stress_field", "principal_stresses",
+           "von_mises", "tresca", "hydrostatic", "derived_measures", "subsurface_stresses",
+           "field_maximum", "surface_radial_stress", "default_grid", "check_subsurface_request",
+           "with_subsurface", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
+
+COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
+              "cylinder": ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz")}
+"""The stress components of each geometry, in the order of the returned dictionaries
+(``sigma_tt`` is the hoop stress sigma_theta_theta)."""
+
+CHUNK = 2_000_000
+"""Numbers in one working array of a chunk (16 MB)."""
+
+XI_SURFACE = 4000.0
+"""Upper end of the xi integral of the shear's part of the surface (z = 0) stresses."""
+
+_DEPTH_CUTOFF = 36.0  # xi_max z_min: e^-36 = 2.3e-16
+_GAUSS = np.polynomial.legendre.leggauss(8)
+
+
+# ----------------------------------------------------------------------------- input
+def _profile(xi: Any, pressure: Any, shear: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The tabulated tractions as float arrays, checked (nodes increasing in [0, inf))."""
+    from .validate import InputError
+
+    r = np.asarray(xi, dtype=float)
+    p = np.asarray(pressure, dtype=float)
+    q = np.asarray(shear, dtype=float)
+    if r.ndim != 1 or r.size < 2 or p.shape != r.shape or q.shape != r.shape:
+        raise InputError("xi", "a 1-d array of at least 2 points, with pressure and shear "
+                         "of the same shape", r.shape)
+    if not (np.all(np.isfinite(r)) and np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
+        raise InputError("pressure", "finite (xi, pressure and shear)", "non-finite values")
+    if r[0] < 0 or np.any(np.diff(r) <= 0):
+        raise InputError("xi", "increasing and >= 0", r)
+    return r, p, q
+
+
+def _grid(x: Any, z: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The output grid's coordinates: 1-d, finite, z >= 0."""
+    from .validate import InputError
+
+    xs = np.atleast_1d(np.asarray(x, dtype=float))
+    zs = np.atleast_1d(np.asarray(z, dtype=float))
+    if xs.ndim != 1 or zs.ndim != 1 or not (np.all(np.isfinite(xs)) and np.all(np.isfinite(zs))):
+        raise InputError("x", "1-d finite arrays (x and z)", (xs.shape, zs.shape))
+    if np.any(zs < 0):
+        raise InputError("z", "depths >= 0 (z is positive into the body)", zs.min())
+    return xs, zs
+
+
+# ----------------------------------------------------------------------------- half-plane
+def _plane_antiderivatives(u: np.ndarray, z: np.ndarray) -> dict[str, np.ndarray]:
+    """Antiderivatives in u of the Flamant kernels' moments, scaled to stay finite at z = 0.
+
+    With D = u^2 + z^2 and M_k = int u^k / D^2 du: ``z3M0`` = z^3 M0, ``z2M1``, ``zM2``,
+    ``M3``, ``M4``.
+    """
+    d = u * u + z * z
+    dsafe = np.where(d > 0, d, 1.0)
+    at = np.arctan2(u, z)
+    zu = z * u / (2.0 * dsafe)
+    return {"z3M0": zu + 0.5 * at,
+            "z2M1": -z * z / (2.0 * dsafe),
+            "zM2": -zu + 0.5 * at,
+            "M3": np.where(d > 0, 0.5 * np.log(dsafe), 0.0) + z * z / (2.0 * dsafe),
+            "M4": u - 1.5 * z * at + z * z * u / (2.0 * dsafe)}
+
+
+def halfplane_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
+                       nu: float) -> dict[str, np.ndarray]:
+    """Plane-strain stresses in the half-plane z >= 0 under tabulated p(x) and q(x).
+
+    Parameters
+    ----------
+    xi : array_like, shape (m,)
+        Increasing abscissae x/a >= 0 of the tabulated tractions (usually 0 ... 1).
+    pressure, shear : array_like, shape (m,)
+        p and q at ``xi`` (any stress unit, e.g. p0); piecewise linear between, zero
+        beyond ``xi[-1]``. p is even in x, q odd (positive away from the axis: q > 0
+        acts in +x for x > 0).
+    x, z : array_like, 1-d
+        Output grid, x/a and depth z/a >= 0.
+    nu : float
+        Poisson's ratio of the body (enters sigma_yy only).
+
+    Returns
+    -------
+    dict of str to ndarray, shape (len(z), len(x))
+        ``sigma_xx``, ``sigma_yy``, ``sigma_zz``, ``sigma_xz`` in the unit of the
+        tractions, tension positive; exact for the piecewise-linear tractions up to
+        round-off.
+    """
+    r, p, q = _profile(xi, pressure, shear)
+    # both halves: p(-x) = p(x), q(-x) = -q(x); a gap or a jump at x = 0 is two pieces
+    # that do not meet
+    starts = np.concatenate([-r[:0:-1], r[:-1]])
+    ends = np.concatenate([-r[-2::-1], r[1:]])
+    pa = np.concatenate([p[:0:-1], p[:-1]])
+    pb = np.concatenate([p[-2::-1], p[1:]])
+    qa = np.concatenate([-q[:0:-1], q[:-1]])
+    qb = np.concatenate([-q[-2::-1], q[1:]])
+    return _halfplane_pieces(starts, ends, pa, pb, qa, qb, x, z, nu)
+
+
+def halfplane_stresses_line(s: Any, pressure: Any, shear: Any, x: Any, z: Any,
+                            nu: float) -> dict[str, np.ndarray]:
+    """:func:`halfplane_stresses` for tractions tabulated over the whole line.
+
+    Parameters
+    ----------
+    s : array_like, shape (m,)
+        Increasing abscissae x/a (any sign) of the tractions, zero outside
+        [s[0], s[-1]].
+    pressure, shear : array_like, shape (m,)
+        p and the shear q in +x (no symmetry assumed: e.g. sliding, q = mu p).
+    x, z, nu
+        As for :func:`halfplane_stresses`.
+
+    Returns
+    -------
+    dict of str to ndarray, shape (len(z), len(x))
+        As :func:`halfplane_stresses`.
+    """
+    from .validate import InputError
+
+    t = np.asarray(s, dtype=float)
+    p = np.asarray(pressure, dtype=float)
+    q = np.asarray(shear, dtype=float)
+    if t.ndim != 1 or t.size < 2 or p.shape != t.shape or q.shape != t.shape \
+            or np.any(np.diff(t) <= 0):
+        raise InputError("s", "an increasing 1-d array, pressure and shear of its shape", t)
+    return _halfplane_pieces(t[:-1], t[1:], p[:-1], p[1:], q[:-1], q[1:], x, z, nu)
+
+
+def _halfplane_pieces(sa: np.ndarray, sb: np.ndarray, pa: np.ndarray, pb: np.ndarray,
+                      qa: np.ndarray, qb: np.ndarray, x: Any, z: Any,
+                      nu: float) -> dict[str, np.ndarray]:
+    """Johnson's Eq. 2.23 integrated exactly over linear pieces [sa, sb] (values a -> b)."""
+    xs, zs = _grid(x, z)
+    h = sb - sa
+    mp, mq = (pb - pa) / h, (qb - qa) / h
+    X, Z = np.meshgrid(xs, zs)
+    xf, zf = X.ravel(), Z.ravel()
+    out = {k: np.empty(xf.size) for k in ("sigma_xx", "sigma_zz", "sigma_xz")}
+    step = max(1, CHUNK // sa.size)
+    for i in range(0, xf.size, step):
+        xc, zc = xf[i:i + step, None], zf[i:i + step, None]
+        # f(s) = A - m u on a piece, u = x - s running from ua = x - sa down to ub = x - sb
+        ap, aq = pa + mp * (xc - sa), qa + mq * (xc - sa)
+        fa, fb = _plane_antiderivatives(xc - sa, zc), _plane_antiderivatives(xc - sb, zc)
+        dm = {k: fa[k] - fb[k] for k in fa}
+        zM3 = np.where(zc > 0, zc * dm["M3"], 0.0)  # z ln(D) -> 0 on the surface
+        sxx = ap * dm["zM2"] - mp * zM3 + aq * dm["M3"] - mq * dm["M4"]
+        szz = ap * dm["z3M0"] - mp * zc * dm["z2M1"] + aq * dm["z2M1"] - mq * zc * dm["zM2"]
+        sxz = ap * dm["z2M1"] - mp * zc * dm["zM2"] + aq * dm["zM2"] - mq * zM3
+        for name, v in (("sigma_xx", sxx), ("sigma_zz", szz), ("sigma_xz", sxz)):
+            out[name][i:i + step] = -(2.0 / math.pi) * v.sum(axis=1)
+    res = {k: v.reshape(X.shape) for k, v in out.items()}
+    res["sigma_yy"] = nu * (res["sigma_xx"] + res["sigma_zz"])
+    return {k: res[k] for k in COMPONENTS["cylinder"]}
+
+
+# ----------------------------------------------------------------------------- half-space
+PANEL = 2.0 * math.pi
+"""Panel width of the xi quadrature times (1 + max r): one period of the fastest
+oscillation, cos((1 + r) xi), a panel of 8 Gauss-Legendre points."""
+
+
+def _xi_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights on panels of width PANEL/(1 + r_max) on [0, xi_max]."""
+    width = PANEL / (1.0 + r_max)
+    panels = max(1, int(math.ceil(xi_max / width)))
+    edges = np.linspace(0.0, xi_max, panels + 1)
+    t, w = _GAUSS
+    half = 0.5 * np.diff(edges)
+    nodes = (0.5 * (edges[:-1] + edges[1:]))[:, None] + half[:, None] * t[None, :]
+    return nodes.ravel(), (half[:, None] * w[None, :]).ravel()
+
+
+def _hankel_tractions(r: np.ndarray, p: np.ndarray, q: np.ndarray,
+                      k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """P(k) = int p J0(k r) r dr and Q(k) = int q J1(k r) r dr of the piecewise-linear p, q.
+
+    Closed form on each piece: int r J0 = x J1 / k^2, int r^2 J0 = (x^2 J1 + x J0 -
+    int_0^x J0) / k^3, int r J1 = (int_0^x J0 - x J0) / k^2, int r^2 J1 = x^2 J2 / k^3
+    (x = k r).
+    """
+    h = np.diff(r)
+    mp, mq = np.diff(p) / h, np.diff(q) / h
+    ap, aq = p[:-1] - mp * r[:-1], q[:-1] - mq * r[:-1]  # f = a + m r on a piece
+    P, Q = np.empty(k.size), np.empty(k.size)
+    step = max(1, CHUNK // r.size)
+    for i in range(0, k.size, step):
+        kc = k[i:i + step, None]
+        x = kc * r[None, :]
+        j0, j1 = sp.j0(x), sp.j1(x)
+        ij0 = sp.itj0y0(x)[0]
+        small = x <= 1.0  # the recurrence J2 = 2 J1/x - J0 cancels at small x
+        j2 = 2.0 * j1 / np.where(small, 1.0, x) - j0
+        j2[small] = sp.jv(2, x[small])
+        g1 = np.diff(x * j1, axis=1)
+        g2 = np.diff(x * x * j1 + x * j0 - ij0, axis=1)
+        k1 = np.diff(ij0 - x * j0, axis=1)
+        k2 = np.diff(x * x * j2, axis=1)
+        kk = kc[:, 0]
+        P[i:i + step] = (g1 @ ap) / kk**2 + (g2 @ mp) / kk**3
+        Q[i:i + step] = (k1 @ aq) / kk**2 + (k2 @ mq) / kk**3
+    return P, Q
+
+
+def _cumulative_moment(r: np.ndarray, p: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """int_0^x p(t) t dt of the piecewise-linear p (zero beyond its last node), exactly."""
+    h = np.diff(r)
+    m = np.diff(p) / h
+    a = p[:-1] - m * r[:-1]
+
+    def piece(lo, hi):
+        return a * (hi**2 - lo**2) / 2.0 + m * (hi**3 - lo**3) / 3.0
+
+    lo = np.minimum(np.maximum(x[:, None], r[None, :-1]), r[None, 1:])
+    return piece(r[None, :-1], lo).sum(axis=1)
+
+
+def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
+                       nu: float) -> dict[str, np.ndarray]:
+    """Axisymmetric stresses in the half-space z >= 0 under tabulated p(r) and radial q(r).
+
+    Parameters
+    ----------
+    xi : array_like, shape (m,)
+        Increasing radii r/a >= 0 of the tabulated tractions (usually 0 ... 1).
+    pressure, shear : array_like, shape (m,)
+        p and the radial shear q at ``xi`` (any stress unit, e.g. p0); piecewise linear
+        between, zero beyond ``xi[-1]``.
+    x, z : array_like, 1-d
+        Output grid: radius r/a >= 0 (negative values are read as |r|) and depth z/a >= 0.
+    nu : float
+        Poisson's ratio of the body.
+
+    Returns
+    -------
+    dict of str to ndarray, shape (len(z), len(x))
+        ``sigma_rr``, ``sigma_tt`` (hoop), ``sigma_zz``, ``sigma_rz`` in the unit of the
+        tractions, tension positive. Error: the xi quadrature's, below 1e-9 of the
+        tractions at z > 0; on z = 0 the shear's part of sigma_rr and sigma_tt carries
+        the truncation at ``XI_SURFACE`` (docs/stresses.md).
+    """
+    r, p, q = _profile(xi, pressure, shear)
+    xs, zs = _grid(x, z)
+    rr = np.abs(xs)
+    out = {k: np.zeros((zs.size, rr.size)) for k in COMPONENTS["sphere"]}
+    inside, surface = zs > 0, zs == 0
+    r_max = float(max(rr.max(), r[-1]))
+    xi_max = 0.0
+    if np.any(inside):
+        xi_max = _DEPTH_CUTOFF / zs[inside].min()
+    if np.any(surface) and np.any(q != 0):
+        xi_max = max(xi_max, XI_SURFACE)
+    if xi_max > 0:
+        k, w = _xi_nodes(xi_max, r_max)
+        P, Q = _hankel_tractions(r, p, q, k)
+        _hankel_sums(out, k, w, P, Q, rr, zs, nu, inside, surface)
+    if np.any(surface):
+        # the pressure's part in closed form (Johnson Ch. 3), q's part from the sums
+        pr = np.interp(rr, r, p, left=p[0], right=0.0)
+        qr = np.interp(rr, r, q, left=q[0], right=0.0)
+        outside = (rr > r[-1]) | (rr < r[0])
+        pr[outside], qr[outside] = 0.0, 0.0
+        with np.errstate(invalid="ignore", divide="ignore"):
+            moment = np.where(rr > 0, _cumulative_moment(r, p, rr) / np.where(rr > 0, rr, 1)**2,
+                              0.5 * p[0])
+        j = np.flatnonzero(surface)
+        out["sigma_zz"][j] = -pr
+        out["sigma_rz"][j] = -qr
+        out["sigma_rr"][j] += -pr + (1 - 2 * nu) * moment
+        out["sigma_tt"][j] += -2 * nu * pr - (1 - 2 * nu) * moment
+    return out
+
+
+def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np.ndarray,
+                 Q: np.ndarray, r: np.ndarray, z: np.ndarray, nu: float,
+                 inside: np.ndarray, surface: np.ndarray) -> None:
+    """Add the xi integrals to ``out``: (J(k r) w) @ (polynomial in k z times e^{-k z}).
+
+    Inside (z > 0) all of the field; on the surface only the shear's part of sigma_rr and
+    sigma_tt (k integrals cut at ``XI_SURFACE``).
+    """
+    zi = z[inside]
+    step = max(1, CHUNK // max(r.size, zi.size, 1))
+    ksurf = k <= XI_SURFACE
+    for i in range(0, k.size, step):
+        kc, wc, Pc, Qc = k[i:i + step], w[i:i + step], P[i:i + step], Q[i:i + step]
+        x = np.outer(r, kc)
+        j0 = sp.j0(x) * wc
+        j1 = sp.j1(x)
+        j1x = np.where(x > 0, j1 / np.where(x > 0, x, 1.0), 0.5) * wc
+        j1 = j1 * wc
+        if zi.size:
+            kz = np.outer(kc, zi)
+            # exact zeros beyond e^-40 (denormals would slow every product down)
+            e0 = np.where(kz < 40.0, np.exp(-np.minimum(kz, 40.0)), 0.0)
+            e1 = kz * e0
+            kP, kQ = (kc * Pc)[:, None], (kc * Qc)[:, None]
+            a1 = (1 - 2 * nu) * kP - 2 * (1 - nu) * kQ  # the J1/(k r) bracket
+            b1 = kQ - kP
+            jin = np.flatnonzero(inside)
+            out["sigma_zz"][jin] += (j0 @ (-kP * e0 + b1 * e1)).T
+            out["sigma_rz"][jin] += (j1 @ (-kQ * e0 + b1 * e1)).T
+            bracket = j1x @ (a1 * e0 + b1 * e1)
+            out["sigma_rr"][jin] += (j0 @ ((2 * kQ - kP) * e0 - b1 * e1)).T + bracket.T
+            out["sigma_tt"][jin] += (j0 @ (2 * nu * b1 * e0)).T - bracket.T
+        if np.any(surface):
+            m = ksurf[i:i + step]
+            kQs = kc * Qc * m
+            rr_part = j0 @ (2 * kQs) - j1x @ (2 * (1 - nu) * kQs)
+            tt_part = j0 @ (2 * nu * kQs) + j1x @ (2 * (1 - nu) * kQs)
+            js = np.flatnonzero(surface)
+            out["sigma_rr"][js] += rr_part[None, :]
+            out["sigma_tt"][js] += tt_part[None, :]
+
+
+# ----------------------------------------------------------------------------- dispatch
+def stress_field(geometry: str, nu: float, xi: Any, pressure: Any, shear: Any, x: Any,
+                 z: Any) -> dict[str, np.ndarray]:
+    """The stress components of ``geometry`` (``COMPONENTS``) on the grid (z, x).
+
+    ``"sphere"``: :func:`halfspace_stresses`; ``"cylinder"``: :func:`halfplane_stresses`
+    (same parameters, same units).
+    """
+    if geometry == "sphere":
+        return halfspace_stresses(xi, pressure, shear, x, z, nu)
+    if geometry == "cylinder":
+        return halfplane_stresses(xi, pressure, shear, x, z, nu)
+    from .validate import InputError
+    raise InputError("geometry", "sphere or cylinder", geometry)
+
+
+# ----------------------------------------------------------------------------- measures
+def _split(geometry: str, s: dict[str, np.ndarray]) -> tuple[np.ndarray, ...]:
+    """(in-plane normal, out-of-plane principal, zz, in-plane shear) of either geometry."""
+    a, b, c, d = (s[k] for k in COMPONENTS[geometry])
+    return a, b, c, d
+
+
+def principal_stresses(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
+    """Principal stresses, largest first, stacked on a new leading axis (3, ...).
+
+    The hoop stress (sphere) or sigma_yy (cylinder) is principal; the other two are the
+    eigenvalues of the in-plane 2 x 2 tensor.
+    """
+    a, b, c, d = _split(geometry, s)
+    mean, radius = 0.5 * (a + c), np.hypot(0.5 * (a - c), d)
+    return -np.sort(-np.stack([mean + radius, b, mean - radius]), axis=0)
+
+
+def von_mises(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
+    """von Mises equivalent stress sqrt(((s1-s2)^2 + (s2-s3)^2 + (s3-s1)^2)/2), from the
+    components: sqrt(((a-b)^2 + (b-c)^2 + (c-a)^2)/2 + 3 d^2)."""
+    a, b, c, d = _split(geometry, s)
+    return np.sqrt(0.5 * ((a - b)**2 + (b - c)**2 + (c - a)**2) + 3.0 * d * d)
+
+
+def tresca(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
+    """Maximum shear stress (s1 - s3)/2, half the spread of the principal stresses."""
+    ps = principal_stresses(geometry, s)
+    return 0.5 * (ps[0] - ps[2])
+
+
+def hydrostatic(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
+    """Mean normal stress (trace / 3), tension positive."""
+    a, b, c, _ = _split(geometry, s)
+    return (a + b + c) / 3.0
+
+
+def derived_measures(geometry: str, s: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """von Mises, Tresca, hydrostatic and the principal stresses (s1 >= s2 >= s3)."""
+    ps = principal_stresses(geometry, s)
+    return {"von_mises": von_mises(geometry, s), "tresca": 0.5 * (ps[0] - ps[2]),
+            "hydrostatic": hydrostatic(geometry, s), "sigma_1": ps[0], "sigma_2": ps[1],
+            "sigma_3": ps[2]}
+
+
+# ----------------------------------------------------------------------------- Solution
+_LONG_NAMES = {
+    "sigma_rr": "radial normal stress / p0", "sigma_tt": "hoop normal stress / p0",
+    "sigma_zz": "normal stress across planes z = const / p0",
+    "sigma_rz": "shear stress sigma_rz / p0", "sigma_xx": "normal stress sigma_xx / p0",
+    "sigma_yy": "out-of-plane normal stress nu (sigma_xx + sigma_zz) / p0",
+    "sigma_xz": "shear stress sigma_xz / p0",
+    "von_mises": "von Mises equivalent stress / p0",
+    "tresca": "maximum shear stress (sigma_1 - sigma_3)/2 / p0",
+    "hydrostatic": "mean normal stress (trace/3) / p0, tension positive",
+    "sigma_1": "largest principal stress / p0", "sigma_2": "middle principal stress / p0",
+    "sigma_3": "smallest principal stress / p0",
+}
+
+
+def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarray]:
+    """Poisson's ratio and tractions (p, q) on the body asked for, refusing what is not
+    covered."""
+    from .validate import InputError
+
+    if body not in ("body", "indenter"):
+        raise InputError("body", "'body' or 'indenter'", body)
+    if float(getattr(solution, "slab_ratio", 0.0)) > 0:
+        raise InputError("slab_ratio", "0 (a half-space or half-plane) for subsurface "
+                         "stresses", solution.slab_ratio,
+                         "subsurface stresses cover the half-space and half-plane only: "
+                         f"slab_ratio must be 0, got {solution.slab_ratio!r} (a layer on a "
+                         "rigid base is not covered)")
+    p = np.asarray(solution.pressure, dtype=float)
+    q = np.asarray(solution.shear, dtype=float)
+    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
+        raise InputError("solution", "a converged case with finite tractions", "NaN tractions",
+                         "the solution's tractions are NaN (a case that did not converge): "
+                         "no stresses from it")
+    if body == "body":
+        return float(solution.nu), p, q
+    if math.isinf(float(solution.indenter_modulus_ratio)):
+        raise InputError("body", "'body' for a rigid indenter", body,
+                         "body must be 'body' for a rigid indenter (it has no stress field), "
+                         "got 'indenter'")
+    return float(solution.indenter_poisson_ratio), p, -q
+
+
+def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
+                        measures: bool = True) -> Any:
+    """The stress field under a solved case, as an xarray Dataset in units of p0.
+
+    Parameters
+    ----------
+    solution : contactlib.result.Solution
+        A solved case (:func:`contactlib.solve`) on a half-space or half-plane; its
+        ``pressure`` and ``shear`` (p/p0, q/p0 on ``xi``, piecewise linear between the
+        points) are the tractions. p0 is the Hertz peak pressure at the same contact
+        radius (docs/conventions.md), so a frictionless case has p = sqrt(1 - xi^2).
+    x, z : array_like, 1-d
+        r/a (sphere) or x/a (cylinder) and the depth z/a >= 0, positive into the body.
+    body : {"body", "indenter"}
+        ``"body"``: the elastic body (the lower one, ``nu``). ``"indenter"``: an elastic
+        indenter, taken as a half-space of its own Poisson's ratio under the same pressure
+        and the opposite shear (Hertz's approximation: the contact is small against R),
+        z then positive into the indenter; refused for a rigid indenter.
+    measures : bool
+        Add ``von_mises``, ``tresca``, ``hydrostatic`` and ``sigma_1`` ... ``sigma_3``.
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimensions (z, x); the components of :data:`COMPONENTS` and the measures, all /p0
+        (CF units ``"1"``), tension positive; attributes ``geometry``, ``poisson_ratio``,
+        ``body``, ``stick_ratio``, ``friction_coefficient``, ``elements`` and ``method``.
+
+    Raises
+    ------
+    contactlib.validate.InputError
+        For a layer (``slab_ratio`` > 0), a case with NaN tractions, ``body="indenter"``
+        with a rigid indenter, or a bad grid.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from contactlib import solve
+    >>> from contactlib.stresses import subsurface_stresses
+    >>> sol = solve("sphere", 0.3, stick_ratio=0.0, n=64)
+    >>> ds = subsurface_stresses(sol, [0.0], [0.0, 1.0])
+    >>> np.round(ds.sigma_zz.values[:, 0], 3)  # Huber: -1/(1 + z^2) on the axis
+    array([-1. , -0.5])
+    """
+    import xarray as xr
+
+    nu, p, q = _tractions_of(solution, body)
+    xs, zs = _grid(x, z)
+    geometry = solution.geometry
+    fields = stress_field(geometry, nu, solution.xi, p, q, xs, zs)
+    if measures:
+        fields.update(derived_measures(geometry, fields))
+    coords = {"z": ("z", zs, {"units": "1", "long_name": "depth / a, positive into the "
+                                                         + ("indenter" if body == "indenter"
+                                                            else "body")}),
+              "x": ("x", xs, {"units": "1", "long_name": ("r / a" if geometry == "sphere"
+                                                          else "x / a")})}
+    data = {name: (("z", "x"), v, {"units": "1", "long_name": _LONG_NAMES[name]})
+            for name, v in fields.items()}
+    attrs = {"geometry": geometry, "poisson_ratio": nu, "body": body,
+             "stick_ratio": float(solution.stick_ratio),
+             "friction_coefficient": float(solution.friction_coefficient),
+             "elements": int(solution.n), "method": str(solution.method),
+             "stress_unit": "p0, the Hertz peak pressure at the same contact radius"}
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def field_maximum(ds: Any, name: str = "tresca") -> dict[str, float]:
+    """Value and place of the largest ``name`` on a Dataset's grid.
+
+    The grid maximum, refined by a parabola through it and its neighbours along each
+    axis (where it has both): value error O(h^2) -> O(h^3) of the grid spacing h for a
+    smooth peak.
+
+    Returns
+    -------
+    dict
+        ``value`` (units of p0), ``x`` and ``z`` (units of a).
+    """
+    v = np.asarray(ds[name].values, dtype=float)
+    xs, zs = np.asarray(ds["x"].values), np.asarray(ds["z"].values)
+    iz, ix = np.unravel_index(int(np.nanargmax(v)), v.shape)
+    value, place = float(v[iz, ix]), {"x": float(xs[ix]), "z": float(zs[iz])}
+    for axis, (i, c) in enumerate(((iz, zs), (ix, xs))):
+        if 0 < i < c.size - 1:
+            f = v[i - 1:i + 2, ix] if axis == 0 else v[iz, i - 1:i + 2]
+            h0, h1 = c[i] - c[i - 1], c[i + 1] - c[i]
+            if abs(h0 - h1) > 1e-9 * h0:
+                continue
+            den = f[0] - 2 * f[1] + f[2]
+            if den < 0:
+                t = 0.5 * (f[0] - f[2]) / den
+                place["z" if axis == 0 else "x"] = float(c[i] + t * h0)
+                value += float(-0.125 * (f[0] - f[2])**2 / den)
+    return {"value": value, **place}
+
+
+def surface_radial_stress(solution: Any, x: Sequence[float] | np.ndarray, *,
+                          body: str = "body") -> np.ndarray:
+    """sigma_rr (sphere) or sigma_xx (cylinder) on the surface z = 0, units of p0.
+
+    At and outside the contact edge (x >= 1) this is the tension that starts cone cracks
+    in brittle bodies: (1 - 2 nu)/(3 x^2) for frictionless Hertz (sphere).
+    """
+    ds = subsurface_stresses(solution, x, [0.0], body=body, measures=False)
+    return ds[COMPONENTS[solution.geometry][0]].values[0]
+
+
+def default_grid() -> tuple[np.ndarray, np.ndarray]:
+    """The grid of ``contactlib solve --subsurface``: x = r/a (x/a) and z = depth/a, each 101
+    equally spaced points on [0, 2] (the field is even in x: sigma_xz odd)."""
+    return np.linspace(0.0, 2.0, 101), np.linspace(0.0, 2.0, 101)
+
+
+def check_subsurface_request(output: Any, slab_ratio: float) -> None:
+    """Refuse, before any solving, a subsurface request that cannot be met.
+
+    Raises
+    ------
+    contactlib.validate.InputError
+        Without an output file, or on a layer (``slab_ratio`` > 0: not covered).
+    """
+    from .validate import InputError
+
+    if output is None:
+        raise InputError("subsurface", "given with an output file", True,
+                         "subsurface needs an output file (--output FILE.nc) for the field")
+    if float(slab_ratio) > 0:
+        raise InputError("slab_ratio", "0 with subsurface", slab_ratio,
+                         "slab_ratio must be 0 for subsurface stresses (a layer on a rigid "
+                         f"base is not covered), got {slab_ratio!r}")
+
+
+def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None, *,
+                    body: str = "body") -> Any:
+    """A solve's dataset (:func:`contactlib.io.to_dataset`) with the stress field added.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        The dataset of ``solution``.
+    solution : contactlib.result.Solution
+        The solved case.
+    x, z : array_like, optional
+        The grid (default :func:`default_grid`).
+    body : {"body", "indenter"}
+        As for :func:`subsurface_stresses`.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``dataset`` with the coordinates ``x``, ``z`` and the variables of
+        :func:`subsurface_stresses` (units of p0), and the attribute ``subsurface_body``.
+    """
+    if x is None or z is None:
+        gx, gz = default_grid()
+        x, z = gx if x is None else x, gz if z is None else z
+    field = subsurface_stresses(solution, x, z, body=body)
+    out = dataset.copy()
+    for name in field.coords:
+        out = out.assign_coords({name: field[name]})
+    for name in field.data_vars:
+        out[name] = field[name]
+    out.attrs["subsurface_body"] = body
+    return out

@@ -13,23 +13,26 @@ in x: q(-x) = -q(x).
 Method
 ------
 Half-plane (plane strain), exact for the piecewise-linear tractions: the Flamant
-kernels (Johnson, *Contact Mechanics*, Eq. 2.23) integrated in closed form over each
-linear piece (antiderivatives of u^k / (u^2 + z^2)^2, k = 0 ... 4); only round-off
-(about 1e-13 p0) is added to the tractions' own discretization. sigma_yy = nu (sigma_xx +
-sigma_zz).
+kernels (Johnson, *Contact Mechanics*, 1985, Ch. 2) integrated in closed form over each
+linear piece (antiderivatives of u^k / (u^2 + z^2)^2, k = 0 ... 4); only round-off is
+added to the tractions' own discretization. sigma_yy = nu (sigma_xx + sigma_zz).
 
 Half-space (axisymmetric): Hankel transforms (Boussinesq's potentials, Sneddon)
 
     sigma_zz = int xi e^{-xi z} J0 [-P (1 + xi z) + Q xi z] dxi,
     sigma_rz = int xi e^{-xi z} J1 [-P xi z - Q (1 - xi z)] dxi,
 
-and sigma_rr, sigma_tt likewise (:func:`halfspace_stresses`), with P(xi) = int p J0(xi r)
-r dr and Q(xi) = int q J1(xi r) r dr in closed form for the piecewise-linear tractions
-(``scipy.special.itj0y0``). The xi integral is Gauss-Legendre on panels of width
-``2/(1 + max r)`` (8 points each) up to 36/z_min (e^{-36} < 3e-16), where z_min is the
-smallest positive depth asked for; the quadrature error is measured at 1e-9 p0 and below
-(tests/test_stresses.py). On the surface (z = 0) the pressure's part is Johnson's closed
-form (sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt - p, Eq. 3.?? of his Ch. 3) and the shear's
+    sigma_rr = int xi e^{-xi z} {J0 [(2Q - P) + (P - Q) xi z] + J1/(xi r) B} dxi,
+    sigma_tt = int xi e^{-xi z} {J0 2 nu (Q - P) - J1/(xi r) B} dxi,
+    B = (1 - 2 nu) P - 2 (1 - nu) Q + (Q - P) xi z,
+
+(Papkovich-Neuber potentials 2G u = grad(phi + z psi) - 4 (1 - nu) psi e_z), with P(xi) =
+int p J0(xi r) r dr and Q(xi) = int q J1(xi r) r dr in closed form for the piecewise-linear
+tractions (``scipy.special.itj0y0``). The xi integral is Gauss-Legendre on panels of width
+``PANEL/(1 + max r)`` = 2 pi/(1 + max r) (8 points each) up to 36/z_min (e^{-36} < 3e-16),
+where z_min is the smallest positive depth asked for; halving the panels changes the
+field by 1e-10 p0 (benchmarks/report_stresses.py, section 3). On the surface (z = 0) the pressure's part is Johnson's closed
+form (sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt - p, Johnson Ch. 3) and the shear's
 part the same Hankel integral cut at ``XI_SURFACE``: its integrand decays only like
 xi^-2, so the surface values of the shear's part carry a truncation error, measured
 (docs/stresses.md).

@@ -47,6 +47,8 @@ MODULES: list[tuple[str, str, list[str] | None]] = [
      "afterwards.", None),
     ("contactlib.convergence", "Convergence studies and the speed-accuracy table.", None),
     ("contactlib.summary", "Key numbers of a set of datasets.", None),
+    ("contactlib.stresses", "The stress field inside the body under the solved tractions, "
+     "von Mises, Tresca and the maxima (docs/stresses.md).", None),
     ("contactlib.plot", "Every figure, importable from the package (save with "
      "``io.write_figure(fig, path, style=plot.style_path())``).", None),
     ("contactlib.plot.base", "The shared base of the figures: style, colours, panels, "

@@ -2,7 +2,7 @@
 
 Truths: Huber's Hertz sphere (axis and surface), McEwen's frictionless cylinder and Smith
 and Liu's sliding cylinder (full field, in the m, n form of Johnson, *Contact
-Mechanics*, §9.2), the maxima of those closed forms found here with scipy, and identities
+Mechanics*, 1985), the maxima of those closed forms found here with scipy, and identities
 (equilibrium, harmonic trace, surface limits, far-field decay) for the axisymmetric
 radial shear, which has no closed form.
 

@@ -45,10 +45,12 @@ Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
   :func:`~contactlib.history_solver.stick_radius`). ``stick_ratio`` is NaN
   without contact.
 
-Frictional work of a step: ``sum_j |(q_j^old + q_j^new)/2| |du_j| A_j`` over
-the elements slipping at the end of the step (trapezoid rule in time, with
-the element's shear-weighted area A_j: ``int (r/r_j) 2 pi r dr`` for a
-ring, ``2 dx`` for a strip pair). Its error falls roughly like 1/steps
+Frictional work of a step: ``sum_j max(0, -(q_j^old + q_j^new)/2 du_j) A_j``
+over the elements slipping at the end of the step and those that slipped
+and separate in it (trapezoid rule in time, each element's term floored at
+0 so that no step dissipates a negative amount, with the element's
+shear-weighted area A_j: ``int (r/r_j) 2 pi r dr`` for a ring, ``2 dx`` for
+a strip pair; :func:`contactlib.energy.step_work`). Its error falls roughly like 1/steps
 (0.2 % at 200 steps a segment for the sphere with c/a = 0.5); a slip zone
 spanning few elements (c/a close to 1, large k) also needs a finer mesh, and
 ``message`` says so when the slip zone at the top load spans fewer than 12

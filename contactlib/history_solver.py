@@ -604,7 +604,8 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
 
     The frictional work of a step is :func:`contactlib.energy.step_work`
     (trapezoid in time over the elements slipping at the end of the step and
-    those that slipped before it and separate in it).
+    those that slipped before it and separate in it, each element's term
+    floored at 0, so the cumulative work never falls).
     A step from no contact starts from the Hertz contact radius of its load
     (:meth:`contactlib.indenter.Indenter.hertz_radius`).
 

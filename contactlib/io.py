@@ -557,7 +557,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
             "indentation (delta R / a_max**2)",
             comment="half-plane: relative to the Flamant reference length a_max")),
         "frictional_work": (sd, r.frictional_work, cf_attrs(
-            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time")),
+            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time, each element's step "
+            "increment floored at 0 (never decreasing)")),
         "state": (ed, r.state.astype(np.int8), cf_attrs(
             "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
             flag_meanings=hs.STATE_MEANINGS,

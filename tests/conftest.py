@@ -24,6 +24,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 
@@ -114,3 +115,18 @@ def factorizations(monkeypatch):
 
     monkeypatch.setattr(default_method.linalg, "lu_factor", counted)
     return count
+
+
+def shear_work_steps(res) -> tuple[np.ndarray, np.ndarray]:
+    """Per step: minus the shear's work on the surface (trapezoid in time) over the moving
+    elements, and the part of it that the elements with a negative term contribute."""
+    lo, hi = res.xi_bounds[:, 0], res.xi_bounds[:, 1]
+    mid = 0.5 * (lo + hi)
+    shear_area = (2.0 * np.pi / 3.0 * (hi**3 - lo**3) / mid if res.geometry == "sphere"
+                  else 2.0 * (hi - lo))  # int (r / r_j) 2 pi r dr, or 2 dx
+    q = res.shear * (2.0 / np.pi if res.geometry == "sphere" else 0.5)  # p0 (history_api)
+    du = np.diff(res.tangential_displacement, axis=0)
+    st = res.state
+    moving = (st[1:] >= 2) | ((st[1:] == 0) & (st[:-1] >= 2))
+    terms = np.where(moving, -0.5 * (q[1:] + q[:-1]) * du * shear_area, 0.0)
+    return terms.sum(axis=1), np.minimum(terms, 0.0).sum(axis=1)

@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 
 import contactlib
+from conftest import shear_work_steps
 from contactlib import history
 
 NU, K, N, STEPS = 0.3, 0.2, 240, 100
@@ -94,10 +95,14 @@ def test_energy_balance_holds_at_every_step_on_a_layer(ratio, base):
     the external work shrinks to the cycle's work, which on thin layers is
     small (2.4e-3 of the half-space's at a_max/h = 2, smooth), so the same
     residual is 0.17 %, 0.78 %, 12 % (smooth) and 0.13 %, 0.27 %, 0.21 %
-    (bonded) of it at a_max/h = 0.5, 1, 2.
+    (bonded) of it at a_max/h = 0.5, 1, 2. The balance is that of the shear's
+    work on the surface: ``frictional_work`` drops the moving elements'
+    negative terms (no step dissipates a negative amount), a step
+    discretisation error that tests/test_history.py sees vanish with the steps.
     """
     res = _cycle(ratio, base)
-    rest = np.abs(res.external_work - res.stored_energy - res.frictional_work)
+    dropped = np.concatenate([[0.0], np.cumsum(-shear_work_steps(res)[1])])
+    rest = np.abs(res.external_work - res.stored_energy - res.frictional_work + dropped)
     loading = slice(1, STEPS + 1)
     assert np.all(rest[loading] <= 1e-4 * res.external_work[loading])
     assert np.all(rest <= 1e-5 * res.external_work.max())

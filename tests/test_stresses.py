@@ -321,6 +321,21 @@ def test_elastic_indenter_gets_the_opposite_shear_and_its_own_nu():
         assert np.array_equal(ds[k].values, v)
 
 
+# ----------------------------------------------------------------------------- figure
+def test_figure_marks_the_maxima(hertz_solution, partial):
+    from contactlib.plot import fig_subsurface
+
+    g = np.linspace(0.0, 1.0, 26)
+    ds = [subsurface_stresses(s, g, g) for s in (hertz_solution, partial[256])]
+    fig = fig_subsurface(ds)
+    maps = [ax for ax in fig.axes if ax.get_label() != "<colorbar>"]
+    assert len(maps) == 4
+    for ax, d, name in zip(maps, ds + ds, ["von_mises"] * 2 + ["tresca"] * 2):
+        top = field_maximum(d, name)
+        crosses = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]
+        assert any(abs(ln.get_ydata()[0] - top["z"]) < 1e-12 for ln in crosses)
+
+
 # ----------------------------------------------------------------------------- command line
 def test_cli_writes_the_field(tmp_path):
     out = tmp_path / "x.nc"

@@ -14,6 +14,8 @@
   per cycle against the loading rate and load-indentation loops.
 * :mod:`contactlib.plot.layers`: the frictionless load and k against a/h on
   layers (smooth and bonded bases).
+* :mod:`contactlib.plot.stresses`: von Mises and Tresca maps inside the body
+  (datasets of :func:`contactlib.stresses.subsurface_stresses`).
 
 Figures take datasets and return a :class:`matplotlib.figure.Figure`; nothing
 here touches the disk or imports the numerics' solvers. Save with
@@ -40,6 +42,7 @@ from contactlib.plot.history import (
 from contactlib.plot.layers import fig_layers
 from contactlib.plot.materials import fig_material_pairs
 from contactlib.plot.paper import fig2_friction, fig3_tractions, fig4_displacement, fig5_work
+from contactlib.plot.stresses import fig_subsurface
 from contactlib.plot.viscoelastic import fig_viscoelastic
 
 __all__ = [
@@ -56,4 +59,5 @@ __all__ = [
     "fig_material_pairs",
     "fig_viscoelastic",
     "fig_layers",
+    "fig_subsurface",
 ]

@@ -1,0 +1,124 @@
+"""Subsurface stresses: von Mises and Tresca maps, frictionless beside partial slip.
+
+One figure, :func:`fig_subsurface`, from datasets of
+:func:`contactlib.stresses.subsurface_stresses` (or a solve's dataset with the field,
+:func:`contactlib.stresses.with_subsurface`): one column a dataset (e.g. c/a = 0, 0.5,
+0.9), the von Mises stress above and the maximum shear (Tresca) below, in units of p0
+on one colour scale a row, depth downward, the field mirrored to negative x (both
+measures are even in x). A white cross marks each map's maximum (grid maximum refined
+by a parabola, :func:`contactlib.stresses.field_maximum`), the dashed line the contact
+(|x| <= a on the surface).
+
+Built on :mod:`contactlib.plot.base` only; nothing here touches the disk.
+
+Examples
+--------
+>>> import numpy as np
+>>> from contactlib import solve
+>>> from contactlib.stresses import subsurface_stresses
+>>> from contactlib.plot.stresses import fig_subsurface
+>>> g = np.linspace(0.0, 1.5, 16)
+>>> ds = [subsurface_stresses(solve("sphere", 0.3, stick_ratio=c, n=32), g, g)
+...       for c in (0.0, 0.5)]
+>>> len(fig_subsurface(ds).axes)
+6
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import xarray as xr
+from matplotlib.colors import Normalize
+from matplotlib.figure import Figure
+
+from contactlib.plot.base import as_list, finish, fmt, k_text, style_context
+
+__all__ = ["fig_subsurface"]
+
+_ROWS = (("von_mises", "von Mises / $p_0$"), ("tresca", "max. shear (Tresca) / $p_0$"))
+
+
+def _mirrored(ds: xr.Dataset, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """x, z and the field on -x ... x (an even field; x = 0 kept once)."""
+    x = np.asarray(ds["x"].values, dtype=float)
+    z = np.asarray(ds["z"].values, dtype=float)
+    v = np.asarray(ds[name].values, dtype=float)
+    if x[0] == 0.0 and np.all(x >= 0):
+        x = np.concatenate([-x[:0:-1], x])
+        v = np.concatenate([v[:, :0:-1], v], axis=1)
+    return x, z, v
+
+
+def _peak(ds: xr.Dataset, name: str) -> tuple[float, float, float]:
+    """(value, x, z) of the largest value on the grid, refined by a parabola per axis."""
+    from contactlib.stresses import field_maximum  # numerics-free helper
+
+    top = field_maximum(ds, name)
+    return top["value"], top["x"], top["z"]
+
+
+def fig_subsurface(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
+    """von Mises (top) and Tresca (bottom) maps, one column a dataset.
+
+    Parameters
+    ----------
+    datasets : xarray.Dataset or sequence of them
+        Fields of :func:`contactlib.stresses.subsurface_stresses` on grids x >= 0, z >= 0
+        (units of a); their ``stick_ratio`` and ``friction_coefficient`` attributes (or
+        variables) title the columns.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        2 rows of maps and one colour bar a row.
+
+    Raises
+    ------
+    ValueError
+        If a dataset lacks ``von_mises`` or ``tresca``.
+    """
+    items = as_list(datasets)
+    for i, ds in enumerate(items):
+        for name, _ in _ROWS:
+            if name not in ds.variables:
+                raise ValueError(f"fig_subsurface: dataset {i} has no {name!r} "
+                                 "(make it with contactlib.stresses.subsurface_stresses)")
+    ncol = len(items)
+    with style_context():
+        fig = Figure(figsize=(0.6 + 2.6 * ncol, 4.6), layout="constrained")
+        axes = fig.subplots(2, ncol, squeeze=False, sharex=True, sharey=True)
+        for row, (name, label) in enumerate(_ROWS):
+            top = max(float(np.nanmax(ds[name].values)) for ds in items)
+            norm = Normalize(0.0, top)
+            mesh = None
+            for col, ds in enumerate(items):
+                ax = axes[row, col]
+                x, z, v = _mirrored(ds, name)
+                mesh = ax.pcolormesh(x, z, v, norm=norm, cmap="viridis", shading="gouraud",
+                                     rasterized=True)
+                ax.contour(x, z, v, levels=np.linspace(0.1, 0.9, 9) * top, colors="white",
+                           linewidths=0.4, alpha=0.6)
+                value, px, pz = _peak(ds, name)
+                for sx in ((px, -px) if px > 0 else (px,)):
+                    ax.plot(sx, pz, marker="x", color="white", ms=6, mew=1.5)
+                ax.plot([-1, 1], [0, 0], color="white", lw=2.0, ls=(0, (3, 2)))
+                ax.text(0.03, 0.04, f"max {value:.3f} at z/a = {pz:.2f}",
+                        transform=ax.transAxes, color="white", fontsize="small")
+                ax.set_ylim(float(z.max()), float(z.min()))
+                if row == 0:
+                    c = float(ds.attrs.get("stick_ratio", np.nan))
+                    k = float(ds.attrs.get("friction_coefficient", np.nan))
+                    if "stick_ratio" in ds.variables:
+                        c = float(ds["stick_ratio"].values)
+                    if "friction_coefficient" in ds.variables:
+                        k = float(ds["friction_coefficient"].values)
+                    ax.set_title(f"c/a = {fmt(c)}, k = {k_text(k)}")
+                if row == 1:
+                    geometry = str(ds.attrs.get("geometry", "sphere"))
+                    ax.set_xlabel("r/a" if geometry == "sphere" else "x/a")
+                if col == 0:
+                    ax.set_ylabel("depth z/a")
+            fig.colorbar(mesh, ax=list(axes[row, :]), label=label, shrink=0.9)
+        return finish(fig)

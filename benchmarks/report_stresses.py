@@ -8,6 +8,7 @@
 4. The partial-slip field as n grows (128, 256, 512).
 5. The sphere against c/a (nu = 0.3, n = 256): k, the maxima of Tresca and von Mises
    and where they are, the surface radial stress at r = a and its largest value.
+6. First yield (von Mises) against c/a and k, both geometries: p0/Y and where.
 """
 
 from __future__ import annotations
@@ -157,9 +158,23 @@ def against_stick_ratio() -> None:
               f"{srr[i]:.4f} ({xs[i]:.3f}) |")
 
 
+def yield_table() -> None:
+    print("\n## 6. First yield (von Mises), nu = 0.3, n = 256")
+    print("| geometry | c/a | k | p0/Y | P/(Y a^2) or P/(Y a) | place (x/a, z/a) |")
+    print("|---|---|---|---|---|---|")
+    for geometry in ("sphere", "cylinder"):
+        for c in (0.0, 0.25, 0.5, 0.75, 0.9):
+            sol = solve(geometry, NU, stick_ratio=c, n=256, energy=False)
+            y = st.first_yield(sol)
+            print(f"| {geometry} | {c:g} | {sol.friction_coefficient:.4g} | "
+                  f"{y['p0_over_yield']:.4f} | {y['load_over_yield']:.4f} | "
+                  f"({y['x']:.2f}, {y['z']:.3f}) |")
+
+
 if __name__ == "__main__":
     closed_forms()
     maxima()
     method_errors()
     convergence()
     against_stick_ratio()
+    yield_table()

@@ -53,7 +53,7 @@ import scipy.special as sp
 __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses", "stress_field", "principal_stresses",
            "von_mises", "tresca", "hydrostatic", "derived_measures", "subsurface_stresses",
            "field_maximum", "surface_radial_stress", "default_grid", "check_subsurface_request",
-           "with_subsurface", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
+           "with_subsurface", "first_yield", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
               "cylinder": ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz")}
@@ -651,3 +651,39 @@ def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None, *
         out[name] = field[name]
     out.attrs["subsurface_body"] = body
     return out
+
+
+def first_yield(solution: Any, x: Any = None, z: Any = None, *,
+                body: str = "body") -> dict[str, float]:
+    """Where and at what peak pressure the body first yields (von Mises).
+
+    The field is linear in the tractions, which scale with p0 for a self-similar case,
+    so yield starts where von Mises / p0 is largest, at p0 / Y = 1 / max(von Mises / p0)
+    for a yield stress Y in tension.
+
+    Parameters
+    ----------
+    solution : contactlib.result.Solution
+        A solved case (half-space or half-plane).
+    x, z : array_like, optional
+        The grid searched (default: r/a (x/a) on [0, 1.5] and z/a on [0, 1], spacing
+        0.01); the maximum is refined by a parabola along each axis
+        (:func:`field_maximum`).
+    body : {"body", "indenter"}
+        As for :func:`subsurface_stresses`.
+
+    Returns
+    -------
+    dict
+        ``p0_over_yield`` (p0 / Y at first yield), ``load_over_yield`` (the load there:
+        P / (Y a^2) for the sphere, P / (Y a) per unit length for the cylinder, from the
+        solution's ``load_ratio``), ``x`` and ``z`` (units of a) of the first yield.
+    """
+    xs = np.linspace(0.0, 1.5, 151) if x is None else x
+    zs = np.linspace(0.0, 1.0, 101) if z is None else z
+    top = field_maximum(subsurface_stresses(solution, xs, zs, body=body), "von_mises")
+    ratio = 1.0 / top["value"]
+    # P_Hertz(a) / (p0 a^2) = 2 pi / 3 (sphere), pi / 2 per unit length (cylinder)
+    hertz = 2.0 * math.pi / 3.0 if solution.geometry == "sphere" else math.pi / 2.0
+    return {"p0_over_yield": ratio, "load_over_yield": ratio * hertz * solution.load_ratio,
+            "x": top["x"], "z": top["z"]}

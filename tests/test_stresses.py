@@ -29,7 +29,8 @@ from scipy.optimize import minimize_scalar
 
 from conftest import ENV, REPO
 from contactlib import io, solve
-from contactlib.stresses import (derived_measures, field_maximum, halfplane_stresses,
+from contactlib.stresses import (derived_measures, field_maximum, first_yield,
+                                 halfplane_stresses,
                                  halfplane_stresses_line, halfspace_stresses,
                                  subsurface_stresses, surface_radial_stress)
 from contactlib.validate import InputError
@@ -177,6 +178,32 @@ def test_mcewen_maximum_shear_is_0_30_at_0_78():
     assert top["x"] == 0.0
     assert abs(top["value"] + best.fun) < 4 * H15_201
     assert abs(top["z"] - best.x) < math.sqrt(4 * H15_201) + 1e-3
+
+
+def test_first_yield_of_the_frictionless_contacts(hertz_solution):
+    """p0/Y = 1/max(von Mises/p0): 1.61 (sphere, on the axis, von Mises = |szz - srr|) and
+    1.79 (cylinder, plane strain, sigma_yy = nu (sxx + szz)) at nu = 0.3, from the closed
+    forms maximized here."""
+    def sphere_vm(z):
+        szz, srr = huber_axis(np.array([z]), NU)
+        return float(abs(szz[0] - srr[0]))
+
+    def cylinder_vm(z):
+        r = mcewen(np.array([0.0]), np.array([z]))
+        sx, sz = r["sigma_xx"][0], r["sigma_zz"][0]
+        sy = NU * (sx + sz)
+        return float(math.sqrt(0.5 * ((sx - sy)**2 + (sy - sz)**2 + (sz - sx)**2)))
+
+    cylinder = solve("cylinder", NU, stick_ratio=0.0, n=256, energy=False)
+    for sol, vm, published in ((hertz_solution, sphere_vm, 1.61), (cylinder, cylinder_vm, 1.79)):
+        best = minimize_scalar(lambda z: -vm(z), bounds=(0.2, 1.2), method="bounded",
+                               options={"xatol": 1e-10})
+        truth = -1.0 / best.fun
+        assert round(truth, 2) == published  # Johnson's textbook values
+        got = first_yield(sol)
+        # von Mises errs like Tresca (4 h^1.5 of the 201 points), relative to about 0.6
+        assert abs(got["p0_over_yield"] - truth) < 4 * H15_201 * truth**2
+        assert got["x"] == 0.0 and abs(got["z"] - best.x) < math.sqrt(4 * H15_201) + 1e-3
 
 
 # ----------------------------------------------------------------------------- radial shear

@@ -9,6 +9,9 @@
 5. The sphere against c/a (nu = 0.3, n = 256): k, the maxima of Tresca and von Mises
    and where they are, the surface radial stress at r = a and its largest value.
 6. First yield (von Mises) against c/a and k, both geometries: p0/Y and where.
+7. Surface radial stress at r = a and its largest value outside, sphere (nu = 0.3),
+   rigid and elastic indenters (E1/E2 = 3 and 0.5, nu1 = 0.2), in the body and in the
+   indenter.
 """
 
 from __future__ import annotations
@@ -122,8 +125,9 @@ def method_errors() -> None:
             if ref is None:
                 ref = f
             else:
-                rows.append(f"XI_SURFACE = {c:g}: surface sigma_rr off by {np.max(np.abs(f - ref)):.1e} "
-                            f"at most, median {np.median(np.abs(f - ref)):.1e}")
+                d = np.abs(f - ref)
+                rows.append(f"XI_SURFACE = {c:g}: surface sigma_rr off by {np.max(d):.1e} "
+                            f"at most, median {np.median(d):.1e}")
     finally:
         st.XI_SURFACE = cut
     print("\n".join(reversed(rows)) + " (against 64000)")
@@ -171,6 +175,23 @@ def yield_table() -> None:
                   f"({y['x']:.2f}, {y['z']:.3f}) |")
 
 
+def indenters() -> None:
+    print("\n## 7. Surface radial stress / p0 of the sphere, nu = 0.3, n = 256 (nu1 = 0.2)")
+    print("| indenter | body | beta | c/a | k | sigma_rr(a, 0) | max outside (r/a) |")
+    print("|---|---|---|---|---|---|---|")
+    xs = np.linspace(1.0, 3.0, 401)
+    for ratio, body in ((np.inf, "body"), (3.0, "body"), (3.0, "indenter"), (0.5, "body"),
+                        (0.5, "indenter")):
+        for c in (0.0, 0.5, 0.9):
+            kw = {} if np.isinf(ratio) else {"indenter_modulus": ratio, "indenter_nu": 0.2}
+            sol = solve("sphere", NU, stick_ratio=c, n=256, energy=False, **kw)
+            srr = st.surface_radial_stress(sol, xs, body=body)
+            i = int(np.argmax(srr))
+            who = "rigid" if np.isinf(ratio) else f"E1/E2 = {ratio:g}"
+            print(f"| {who} | {body} | {sol.dundurs_beta:+.3f} | {c:g} | "
+                  f"{sol.friction_coefficient:.4g} | {srr[0]:.4f} | {srr[i]:.4f} ({xs[i]:.3f}) |")
+
+
 if __name__ == "__main__":
     closed_forms()
     maxima()
@@ -178,3 +199,4 @@ if __name__ == "__main__":
     convergence()
     against_stick_ratio()
     yield_table()
+    indenters()

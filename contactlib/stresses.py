@@ -31,11 +31,11 @@ int p J0(xi r) r dr and Q(xi) = int q J1(xi r) r dr in closed form for the piece
 tractions (``scipy.special.itj0y0``). The xi integral is Gauss-Legendre on panels of width
 ``PANEL/(1 + max r)`` = 2 pi/(1 + max r) (8 points each) up to 36/z_min (e^{-36} < 3e-16),
 where z_min is the smallest positive depth asked for; halving the panels changes the
-field by 1e-10 p0 (benchmarks/report_stresses.py, section 3). On the surface (z = 0) the pressure's part is Johnson's closed
-form (sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt - p, Johnson Ch. 3) and the shear's
-part the same Hankel integral cut at ``XI_SURFACE``: its integrand decays only like
-xi^-2, so the surface values of the shear's part carry a truncation error, measured
-(docs/stresses.md).
+field by 1e-10 p0 (benchmarks/report_stresses.py, section 3). On the surface (z = 0)
+the pressure's part is Johnson's closed form (sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt -
+p, Johnson Ch. 3) and the shear's part the same Hankel integral cut at ``XI_SURFACE``:
+its integrand decays only like xi^-2, so the surface values of the shear's part carry a
+truncation error, 2e-5 p0 at most (docs/stresses.md).
 
 Memory is bounded by working in chunks of about ``CHUNK`` numbers an array (a few arrays
 of 8 * CHUNK bytes at once).
@@ -50,9 +50,10 @@ from typing import Any
 import numpy as np
 import scipy.special as sp
 
-__all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses", "stress_field", "principal_stresses",
-           "von_mises", "tresca", "hydrostatic", "derived_measures", "subsurface_stresses",
-           "field_maximum", "surface_radial_stress", "default_grid", "check_subsurface_request",
+__all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses",
+           "stress_field", "principal_stresses", "von_mises", "tresca", "hydrostatic",
+           "derived_measures", "subsurface_stresses", "field_maximum",
+           "surface_radial_stress", "default_grid", "check_subsurface_request",
            "with_subsurface", "first_yield", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
@@ -511,8 +512,9 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     -------
     xarray.Dataset
         Dimensions (z, x); the components of :data:`COMPONENTS` and the measures, all /p0
-        (CF units ``"1"``), tension positive; attributes ``geometry``, ``poisson_ratio``,
-        ``body``, ``stick_ratio``, ``friction_coefficient``, ``elements`` and ``method``.
+        (CF units ``"1"``), tension positive; attributes ``geometry``, ``poisson_ratio``
+        (of the body asked for), ``body``, ``stick_ratio``, ``friction_coefficient``,
+        ``elements``, ``method``, ``indenter_modulus_ratio`` and ``dundurs_beta``.
 
     Raises
     ------
@@ -549,6 +551,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
              "stick_ratio": float(solution.stick_ratio),
              "friction_coefficient": float(solution.friction_coefficient),
              "elements": int(solution.n), "method": str(solution.method),
+             "indenter_modulus_ratio": float(solution.indenter_modulus_ratio),
+             "dundurs_beta": float(solution.dundurs_beta),
              "stress_unit": "p0, the Hertz peak pressure at the same contact radius"}
     return xr.Dataset(data, coords=coords, attrs=attrs)
 

@@ -337,6 +337,22 @@ def test_layers_and_rigid_indenters_are_refused():
         subsurface_stresses(rigid, [0.0], [-0.5])
 
 
+@pytest.mark.parametrize("ratio", [3.0, 0.5])
+def test_friction_raises_the_edge_tension_of_the_stiffer_body(ratio):
+    """Locked-in shear pulls the stiffer body's surface outward at the edge (more tension)
+    and the more compliant one's inward (less): the classic explanation, which issue 38
+    cites, of why cone-crack loads depend on the indenter."""
+    kw = {"indenter_modulus": ratio, "indenter_nu": NU}
+    edge = {}
+    for c in (0.0, 0.5):
+        sol = solve("sphere", NU, stick_ratio=c, n=128, energy=False, **kw)
+        edge[c] = {b: surface_radial_stress(sol, [1.0], body=b)[0]
+                   for b in ("body", "indenter")}
+    stiffer, softer = ("indenter", "body") if ratio > 1 else ("body", "indenter")
+    assert edge[0.5][stiffer] > edge[0.0][stiffer] + 0.01
+    assert edge[0.5][softer] < edge[0.0][softer] - 0.01
+
+
 def test_elastic_indenter_gets_the_opposite_shear_and_its_own_nu():
     sol = solve("sphere", NU, stick_ratio=0.5, n=64, indenter_modulus=2.0, indenter_nu=0.2,
                 energy=False)
@@ -361,6 +377,23 @@ def test_figure_marks_the_maxima(hertz_solution, partial):
         top = field_maximum(d, name)
         crosses = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]
         assert any(abs(ln.get_ydata()[0] - top["z"]) < 1e-12 for ln in crosses)
+
+
+def test_maxima_and_surface_figures(hertz_solution, partial):
+    from contactlib.plot import fig_stress_maxima, fig_surface_radial_stress
+
+    g = np.linspace(0.0, 1.0, 26)
+    ds = [subsurface_stresses(s, g, g) for s in (hertz_solution, partial[256])]
+    fig = fig_stress_maxima(ds)
+    values = fig.axes[0].get_lines()[0].get_ydata()
+    assert np.allclose(values, [field_maximum(d, "von_mises")["value"] for d in ds])
+    surface = [subsurface_stresses(s, np.linspace(0, 3, 61), [0.0, 0.5])
+               for s in (hertz_solution, partial[256])]
+    fig = fig_surface_radial_stress(surface)
+    line = fig.axes[0].get_lines()[0]
+    x, y = line.get_xdata(), line.get_ydata()
+    i = int(np.argmin(np.abs(x - 2.0)))
+    assert abs(y[i] - (1 - 2 * NU) / 12) < H15_201  # frictionless, r = 2a
 
 
 # ----------------------------------------------------------------------------- command line

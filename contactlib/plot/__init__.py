@@ -42,7 +42,8 @@ from contactlib.plot.history import (
 from contactlib.plot.layers import fig_layers
 from contactlib.plot.materials import fig_material_pairs
 from contactlib.plot.paper import fig2_friction, fig3_tractions, fig4_displacement, fig5_work
-from contactlib.plot.stresses import fig_subsurface
+from contactlib.plot.stresses import (fig_stress_maxima, fig_subsurface,
+                                      fig_surface_radial_stress)
 from contactlib.plot.viscoelastic import fig_viscoelastic
 
 __all__ = [
@@ -60,4 +61,6 @@ __all__ = [
     "fig_viscoelastic",
     "fig_layers",
     "fig_subsurface",
+    "fig_stress_maxima",
+    "fig_surface_radial_stress",
 ]

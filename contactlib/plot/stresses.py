@@ -1,13 +1,16 @@
 """Subsurface stresses: von Mises and Tresca maps, frictionless beside partial slip.
 
-One figure, :func:`fig_subsurface`, from datasets of
+Three figures from datasets of
 :func:`contactlib.stresses.subsurface_stresses` (or a solve's dataset with the field,
 :func:`contactlib.stresses.with_subsurface`): one column a dataset (e.g. c/a = 0, 0.5,
 0.9), the von Mises stress above and the maximum shear (Tresca) below, in units of p0
 on one colour scale a row, depth downward, the field mirrored to negative x (both
 measures are even in x). A white cross marks each map's maximum (grid maximum refined
 by a parabola, :func:`contactlib.stresses.field_maximum`), the dashed line the contact
-(|x| <= a on the surface).
+(|x| <= a on the surface). :func:`fig_stress_maxima` draws the largest von Mises and
+Tresca stresses and their depth against c/a; :func:`fig_surface_radial_stress` the
+surface radial stress near the contact edge (the cone-crack driver), one panel an
+indenter (rigid or elastic, E1/E2) and body (the body or the elastic indenter).
 
 Built on :mod:`contactlib.plot.base` only; nothing here touches the disk.
 
@@ -33,9 +36,10 @@ import xarray as xr
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
-from contactlib.plot.base import as_list, finish, fmt, k_text, style_context
+from contactlib.plot.base import (MARKERS, as_list, finish, fmt, k_text, palette, panel_grid,
+                                  style_context)
 
-__all__ = ["fig_subsurface"]
+__all__ = ["fig_subsurface", "fig_stress_maxima", "fig_surface_radial_stress"]
 
 _ROWS = (("von_mises", "von Mises / $p_0$"), ("tresca", "max. shear (Tresca) / $p_0$"))
 
@@ -49,6 +53,17 @@ def _mirrored(ds: xr.Dataset, name: str) -> tuple[np.ndarray, np.ndarray, np.nda
         x = np.concatenate([-x[:0:-1], x])
         v = np.concatenate([v[:, :0:-1], v], axis=1)
     return x, z, v
+
+
+def _case(ds: xr.Dataset) -> tuple[float, float]:
+    """(c/a, k) of a field: its attributes, or a solve dataset's variables."""
+    c = float(ds.attrs.get("stick_ratio", np.nan))
+    k = float(ds.attrs.get("friction_coefficient", np.nan))
+    if "stick_ratio" in ds.variables:
+        c = float(ds["stick_ratio"].values)
+    if "friction_coefficient" in ds.variables:
+        k = float(ds["friction_coefficient"].values)
+    return c, k
 
 
 def _peak(ds: xr.Dataset, name: str) -> tuple[float, float, float]:
@@ -108,12 +123,7 @@ def fig_subsurface(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                         transform=ax.transAxes, color="white", fontsize="small")
                 ax.set_ylim(float(z.max()), float(z.min()))
                 if row == 0:
-                    c = float(ds.attrs.get("stick_ratio", np.nan))
-                    k = float(ds.attrs.get("friction_coefficient", np.nan))
-                    if "stick_ratio" in ds.variables:
-                        c = float(ds["stick_ratio"].values)
-                    if "friction_coefficient" in ds.variables:
-                        k = float(ds["friction_coefficient"].values)
+                    c, k = _case(ds)
                     ax.set_title(f"c/a = {fmt(c)}, k = {k_text(k)}")
                 if row == 1:
                     geometry = str(ds.attrs.get("geometry", "sphere"))
@@ -121,4 +131,101 @@ def fig_subsurface(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                 if col == 0:
                     ax.set_ylabel("depth z/a")
             fig.colorbar(mesh, ax=list(axes[row, :]), label=label, shrink=0.9)
+        return finish(fig)
+
+
+def fig_stress_maxima(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
+    """The largest von Mises and Tresca stresses (left) and their depth (right) against c/a.
+
+    Parameters
+    ----------
+    datasets : xarray.Dataset or sequence of them
+        Fields of :func:`contactlib.stresses.subsurface_stresses` of one geometry and
+        body at several c/a (the ``stick_ratio`` attribute); the maxima are those of each
+        grid, refined by a parabola (:func:`contactlib.stresses.field_maximum`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two panels and a legend row.
+    """
+    items = sorted(as_list(datasets), key=lambda d: _case(d)[0])
+    cs = np.array([_case(d)[0] for d in items])
+    with style_context():
+        colors = palette()
+        fig, axes, holders = panel_grid(2, (2.4,), 2)
+        handles = []
+        for i, (name, label) in enumerate(_ROWS):
+            peaks = np.array([_peak(d, name) for d in items])
+            style = {"color": colors[i], "marker": MARKERS[i], "ms": 4, "lw": 1.2}
+            (line,) = axes[0, 0].plot(cs, peaks[:, 0], label=label.replace(" / $p_0$", ""),
+                                      **style)
+            axes[0, 1].plot(cs, peaks[:, 2], **style)
+            handles.append(line)
+        axes[0, 0].set_ylabel("largest value / $p_0$")
+        axes[0, 1].set_ylabel("its depth z/a (0: surface)")
+        for ax in axes[0]:
+            ax.set_xlabel("stick ratio c/a")
+        holders[0].legend(handles=handles, loc="upper left", frameon=False)
+        return finish(fig)
+
+
+def fig_surface_radial_stress(datasets: xr.Dataset | Sequence[xr.Dataset],
+                              x_range: tuple[float, float] = (0.5, 2.5)) -> Figure:
+    """Surface radial stress (sigma_rr, or sigma_xx for the cylinder) near the contact edge.
+
+    Parameters
+    ----------
+    datasets : xarray.Dataset or sequence of them
+        Fields of :func:`contactlib.stresses.subsurface_stresses` whose ``z`` holds 0; one
+        panel a distinct (``indenter_modulus_ratio``, ``body``) pair, one line a c/a.
+    x_range : tuple of float
+        The r/a (x/a) shown.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One panel a pair, side by side, and a legend row.
+
+    Raises
+    ------
+    ValueError
+        If a dataset has no surface row (z = 0).
+    """
+    items = as_list(datasets)
+    groups: dict[tuple[float, str], list[xr.Dataset]] = {}
+    for i, ds in enumerate(items):
+        if not np.any(np.asarray(ds["z"].values) == 0.0):
+            raise ValueError(f"fig_surface_radial_stress: dataset {i} has no surface row "
+                             "(z = 0)")
+        key = (float(ds.attrs.get("indenter_modulus_ratio", np.inf)),
+               str(ds.attrs.get("body", "body")))
+        groups.setdefault(key, []).append(ds)
+    with style_context():
+        colors = palette()
+        entries = max(len(g) for g in groups.values())
+        fig, axes, holders = panel_grid(len(groups), (2.6,), entries,
+                                        width=0.7 + 3.0 * len(groups))
+        for j, ((ratio, body), group) in enumerate(groups.items()):
+            ax = axes[0, j]
+            for i, ds in enumerate(sorted(group, key=lambda d: _case(d)[0])):
+                geometry = str(ds.attrs.get("geometry", "sphere"))
+                name = "sigma_rr" if geometry == "sphere" else "sigma_xx"
+                x = np.asarray(ds["x"].values, dtype=float)
+                iz = int(np.flatnonzero(np.asarray(ds["z"].values) == 0.0)[0])
+                keep = (x >= x_range[0]) & (x <= x_range[1])
+                c, k = _case(ds)
+                ax.plot(x[keep], ds[name].values[iz, keep], color=colors[i % len(colors)],
+                        lw=1.2, label=f"c/a = {fmt(c)}, k = {k_text(k)}")
+            ax.axvline(1.0, color="0.6", lw=0.6, ls=(0, (3, 2)), zorder=0)
+            ax.axhline(0.0, color="0.6", lw=0.6, zorder=0)
+            who = "rigid indenter" if np.isinf(ratio) else f"$E_1/E_2$ = {fmt(ratio)}"
+            beta = float(group[0].attrs.get("dundurs_beta", np.nan))
+            ax.set_title(f"{who}, {body}" + ("" if np.isnan(beta) else f", β = {beta:+.3f}"),
+                         fontsize="medium")
+            ax.set_xlabel("r/a on the surface")
+            if j == 0:
+                ax.set_ylabel("surface radial stress / $p_0$ (tension > 0)")
+            holders[j].legend(handles=ax.get_lines()[:len(group)], loc="upper left",
+                              frameon=False)
         return finish(fig)

@@ -35,7 +35,7 @@ def _tracked_files() -> list[Path]:
 
 
 def _doc_pages() -> list[Path]:
-    return [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+    return [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
 
 
 def test_no_tracked_file_points_outside_the_repository():
@@ -57,8 +57,9 @@ def test_no_tracked_file_points_outside_the_repository():
 def test_docs_exist():
     pages = {p.name for p in _doc_pages()}
     for name in ("index.md", "theory.md", "conventions.md", "methods.md", "validation.md",
-                 "workflow.md", "cluster.md", "api.md", "accuracy.md"):
+                 "workflow.md", "cluster.md", "accuracy.md", "getting-started.md", "examples.md"):
         assert name in pages, f"docs/{name} is missing"
+    assert (ROOT / "docs" / "reference" / "api.md").is_file(), "docs/reference/api.md is missing"
 
 
 def _anchors(page: Path) -> set[str]:

@@ -54,7 +54,8 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "stress_field", "principal_stresses", "von_mises", "tresca", "hydrostatic",
            "derived_measures", "subsurface_stresses", "field_maximum",
            "surface_radial_stress", "default_grid", "check_subsurface_request",
-           "with_subsurface", "first_yield", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
+           "with_subsurface", "first_yield", "history_stresses", "COMPONENTS",
+           "XI_SURFACE", "PANEL", "CHUNK"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
               "cylinder": ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz")}
@@ -241,48 +242,62 @@ def _xi_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
     return nodes.ravel(), (half[:, None] * w[None, :]).ravel()
 
 
-def _hankel_tractions(r: np.ndarray, p: np.ndarray, q: np.ndarray,
-                      k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """P(k) = int p J0(k r) r dr and Q(k) = int q J1(k r) r dr of the piecewise-linear p, q.
+class _Pieces:
+    """Tractions as linear pieces: on [sa, sb], p = cp + mp r and q = cq + mq r.
 
-    Closed form on each piece: int r J0 = x J1 / k^2, int r^2 J0 = (x^2 J1 + x J0 -
-    int_0^x J0) / k^3, int r J1 = (int_0^x J0 - x J0) / k^2, int r^2 J1 = x^2 J2 / k^3
-    (x = k r).
+    Adjacent pieces may share an end (continuous tabulated tractions) or not (element
+    tractions of a history); zero outside every piece.
     """
-    h = np.diff(r)
-    mp, mq = np.diff(p) / h, np.diff(q) / h
-    ap, aq = p[:-1] - mp * r[:-1], q[:-1] - mq * r[:-1]  # f = a + m r on a piece
-    P, Q = np.empty(k.size), np.empty(k.size)
-    step = max(1, CHUNK // r.size)
-    for i in range(0, k.size, step):
-        kc = k[i:i + step, None]
-        x = kc * r[None, :]
-        j0, j1 = sp.j0(x), sp.j1(x)
-        ij0 = sp.itj0y0(x)[0]
-        small = x <= 1.0  # the recurrence J2 = 2 J1/x - J0 cancels at small x
-        j2 = 2.0 * j1 / np.where(small, 1.0, x) - j0
-        j2[small] = sp.jv(2, x[small])
-        g1 = np.diff(x * j1, axis=1)
-        g2 = np.diff(x * x * j1 + x * j0 - ij0, axis=1)
-        k1 = np.diff(ij0 - x * j0, axis=1)
-        k2 = np.diff(x * x * j2, axis=1)
-        kk = kc[:, 0]
-        P[i:i + step] = (g1 @ ap) / kk**2 + (g2 @ mp) / kk**3
-        Q[i:i + step] = (k1 @ aq) / kk**2 + (k2 @ mq) / kk**3
-    return P, Q
 
+    def __init__(self, sa: np.ndarray, sb: np.ndarray, pa: np.ndarray, pb: np.ndarray,
+                 qa: np.ndarray, qb: np.ndarray) -> None:
+        h = sb - sa
+        self.sa, self.sb = sa, sb
+        self.mp, self.mq = (pb - pa) / h, (qb - qa) / h
+        self.cp, self.cq = pa - self.mp * sa, qa - self.mq * sa
+        self.nodes = np.union1d(sa, sb)
+        self.ia, self.ib = np.searchsorted(self.nodes, sa), np.searchsorted(self.nodes, sb)
 
-def _cumulative_moment(r: np.ndarray, p: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """int_0^x p(t) t dt of the piecewise-linear p (zero beyond its last node), exactly."""
-    h = np.diff(r)
-    m = np.diff(p) / h
-    a = p[:-1] - m * r[:-1]
+    @classmethod
+    def from_nodes(cls, r: np.ndarray, p: np.ndarray, q: np.ndarray) -> "_Pieces":
+        return cls(r[:-1], r[1:], p[:-1], p[1:], q[:-1], q[1:])
 
-    def piece(lo, hi):
-        return a * (hi**2 - lo**2) / 2.0 + m * (hi**3 - lo**3) / 3.0
+    def at(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p and q at ``x`` (the last piece starting at or before x; 0 outside them all)."""
+        i = np.clip(np.searchsorted(self.sa, x, side="right") - 1, 0, self.sa.size - 1)
+        inside = (x >= self.sa[i]) & (x <= self.sb[i])
+        p = np.where(inside, self.cp[i] + self.mp[i] * x, 0.0)
+        q = np.where(inside, self.cq[i] + self.mq[i] * x, 0.0)
+        return p, q
 
-    lo = np.minimum(np.maximum(x[:, None], r[None, :-1]), r[None, 1:])
-    return piece(r[None, :-1], lo).sum(axis=1)
+    def moment(self, x: np.ndarray) -> np.ndarray:
+        """int_0^x p(t) t dt, exactly."""
+        lo = np.minimum(np.maximum(x[:, None], self.sa[None, :]), self.sb[None, :])
+        return (self.cp * (lo**2 - self.sa**2) / 2.0
+                + self.mp * (lo**3 - self.sa**3) / 3.0).sum(axis=1)
+
+    def hankel(self, k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """P(k) = int p J0(k r) r dr and Q(k) = int q J1(k r) r dr, in closed form.
+
+        On each piece int r J0 = x J1 / k^2, int r^2 J0 = (x^2 J1 + x J0 - int_0^x J0) /
+        k^3, int r J1 = (int_0^x J0 - x J0) / k^2, int r^2 J1 = x^2 J2 / k^3 (x = k r).
+        """
+        P, Q = np.empty(k.size), np.empty(k.size)
+        step = max(1, CHUNK // self.nodes.size)
+        for i in range(0, k.size, step):
+            kc = k[i:i + step, None]
+            x = kc * self.nodes[None, :]
+            j0, j1 = sp.j0(x), sp.j1(x)
+            ij0 = sp.itj0y0(x)[0]
+            small = x <= 1.0  # the recurrence J2 = 2 J1/x - J0 cancels at small x
+            j2 = 2.0 * j1 / np.where(small, 1.0, x) - j0
+            j2[small] = sp.jv(2, x[small])
+            kk = kc[:, 0]
+            d = [g[:, self.ib] - g[:, self.ia]
+                 for g in (x * j1, x * x * j1 + x * j0 - ij0, ij0 - x * j0, x * x * j2)]
+            P[i:i + step] = (d[0] @ self.cp) / kk**2 + (d[1] @ self.mp) / kk**3
+            Q[i:i + step] = (d[2] @ self.cq) / kk**2 + (d[3] @ self.mq) / kk**3
+        return P, Q
 
 
 def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
@@ -310,29 +325,32 @@ def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
         the truncation at ``XI_SURFACE`` (docs/stresses.md).
     """
     r, p, q = _profile(xi, pressure, shear)
+    return _halfspace_pieces(_Pieces.from_nodes(r, p, q), x, z, nu)
+
+
+def _halfspace_pieces(pieces: _Pieces, x: Any, z: Any, nu: float) -> dict[str, np.ndarray]:
+    """The half-space field of tractions given as linear pieces (:func:`halfspace_stresses`)."""
     xs, zs = _grid(x, z)
     rr = np.abs(xs)
     out = {k: np.zeros((zs.size, rr.size)) for k in COMPONENTS["sphere"]}
     inside, surface = zs > 0, zs == 0
-    r_max = float(max(rr.max(), r[-1]))
+    r_max = float(max(rr.max(), pieces.sb.max()))
     xi_max = 0.0
     if np.any(inside):
         xi_max = _DEPTH_CUTOFF / zs[inside].min()
-    if np.any(surface) and np.any(q != 0):
+    if np.any(surface) and (np.any(pieces.cq != 0) or np.any(pieces.mq != 0)):
         xi_max = max(xi_max, XI_SURFACE)
     if xi_max > 0:
         k, w = _xi_nodes(xi_max, r_max)
-        P, Q = _hankel_tractions(r, p, q, k)
+        P, Q = pieces.hankel(k)
         _hankel_sums(out, k, w, P, Q, rr, zs, nu, inside, surface)
     if np.any(surface):
         # the pressure's part in closed form (Johnson Ch. 3), q's part from the sums
-        pr = np.interp(rr, r, p, left=p[0], right=0.0)
-        qr = np.interp(rr, r, q, left=q[0], right=0.0)
-        outside = (rr > r[-1]) | (rr < r[0])
-        pr[outside], qr[outside] = 0.0, 0.0
+        pr, qr = pieces.at(rr)
+        p_axis = pieces.at(np.zeros(1))[0][0]
         with np.errstate(invalid="ignore", divide="ignore"):
-            moment = np.where(rr > 0, _cumulative_moment(r, p, rr) / np.where(rr > 0, rr, 1)**2,
-                              0.5 * p[0])
+            moment = np.where(rr > 0, pieces.moment(rr) / np.where(rr > 0, rr, 1)**2,
+                              0.5 * p_axis)
         j = np.flatnonzero(surface)
         out["sigma_zz"][j] = -pr
         out["sigma_rz"][j] = -qr
@@ -691,3 +709,87 @@ def first_yield(solution: Any, x: Any = None, z: Any = None, *,
     hertz = 2.0 * math.pi / 3.0 if solution.geometry == "sphere" else math.pi / 2.0
     return {"p0_over_yield": ratio, "load_over_yield": ratio * hertz * solution.load_ratio,
             "x": top["x"], "z": top["z"]}
+
+
+def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "body",
+                     measures: bool = True) -> Any:
+    """The stress field under one step of a loading history, as an xarray Dataset.
+
+    Parameters
+    ----------
+    result : contactlib.history_api.HistoryResult
+        A followed load path (:func:`contactlib.history`) on a half-space or half-plane.
+        Its tractions are element-wise, as the history solver has them: on element j
+        (edges ``xi_bounds[j]``) the pressure is constant and the shear is q_j r / r_j
+        (sphere) or constant (cylinder, odd in x), r_j the midpoint ``xi[j]``.
+    step : int
+        The step, 0 ... S (negative counts from the end).
+    x, z : array_like, 1-d
+        r / a_max (x / a_max) and the depth z / a_max >= 0.
+    body : {"body", "indenter"}
+        As for :func:`subsurface_stresses`.
+    measures : bool
+        Add the derived measures (:func:`derived_measures`).
+
+    Returns
+    -------
+    xarray.Dataset
+        As :func:`subsurface_stresses`, lengths in units of a_max and stresses in units of
+        p0(a_max), the Hertz peak pressure at a_max (docs/conventions.md, histories);
+        attributes ``step``, ``load_ratio`` and ``contact_radius`` of the step. A
+        viscoelastic body's field is its elastic one: under given tractions the stresses
+        of a half-space depend on Poisson's ratio alone, which contactlib's relaxation
+        keeps constant.
+
+    Raises
+    ------
+    contactlib.validate.InputError
+        As :func:`subsurface_stresses`, and for a step out of range.
+    """
+    import xarray as xr
+
+    from .validate import InputError
+
+    steps = np.asarray(result.pressure).shape[0]
+    if not isinstance(step, (int, np.integer)) or not -steps <= int(step) < steps:
+        raise InputError("step", f"an integer in [-{steps}, {steps - 1}]", step)
+    step = int(step) % steps
+
+    class _Step:  # the step's tractions in the shape _tractions_of reads
+        pressure = np.asarray(result.pressure)[step]
+        shear = np.asarray(result.shear)[step]
+
+    for name in ("slab_ratio", "nu", "indenter_modulus_ratio", "indenter_poisson_ratio"):
+        setattr(_Step, name, getattr(result, name, math.inf if "modulus" in name else 0.0))
+    nu, p, q = _tractions_of(_Step, body)
+    xs, zs = _grid(x, z)
+    bounds = np.asarray(result.xi_bounds, dtype=float)
+    mid = np.asarray(result.xi, dtype=float)
+    sa, sb = bounds[:, 0], bounds[:, 1]
+    geometry = result.geometry
+    if geometry == "sphere":  # q = q_j r / r_j on element j
+        fields = _halfspace_pieces(_Pieces(sa, sb, p, p, q * sa / mid, q * sb / mid), xs, zs,
+                                   nu)
+    else:  # both sides: p even, q odd, constant on each element
+        fields = _halfplane_pieces(np.concatenate([-sb[::-1], sa]),
+                                   np.concatenate([-sa[::-1], sb]),
+                                   np.concatenate([p[::-1], p]), np.concatenate([p[::-1], p]),
+                                   np.concatenate([-q[::-1], q]), np.concatenate([-q[::-1], q]),
+                                   xs, zs, nu)
+    if measures:
+        fields.update(derived_measures(geometry, fields))
+    into = "indenter" if body == "indenter" else "body"
+    coords = {"z": ("z", zs, {"units": "1", "long_name": f"depth / a_max, into the {into}"}),
+              "x": ("x", xs, {"units": "1", "long_name": ("r / a_max" if geometry == "sphere"
+                                                          else "x / a_max")})}
+    data = {name: (("z", "x"), v, {"units": "1",
+                                   "long_name": _LONG_NAMES[name].replace("p0", "p0(a_max)")})
+            for name, v in fields.items()}
+    attrs = {"geometry": geometry, "poisson_ratio": nu, "body": body, "step": step,
+             "load_ratio": float(np.asarray(result.load_ratio)[step]),
+             "contact_radius": float(np.asarray(result.contact_radius)[step]),
+             "friction_coefficient": float(result.friction), "elements": int(result.n),
+             "indenter_modulus_ratio": float(getattr(result, "indenter_modulus_ratio",
+                                                     math.inf)),
+             "stress_unit": "p0(a_max), the Hertz peak pressure at a_max"}
+    return xr.Dataset(data, coords=coords, attrs=attrs)

@@ -30,7 +30,7 @@ from scipy.optimize import minimize_scalar
 from conftest import ENV, REPO
 from contactlib import io, solve
 from contactlib.stresses import (derived_measures, field_maximum, first_yield,
-                                 halfplane_stresses,
+                                 halfplane_stresses, history_stresses,
                                  halfplane_stresses_line, halfspace_stresses,
                                  subsurface_stresses, surface_radial_stress)
 from contactlib.validate import InputError
@@ -362,6 +362,46 @@ def test_elastic_indenter_gets_the_opposite_shear_and_its_own_nu():
     assert ds.attrs["poisson_ratio"] == 0.2
     for k, v in own.items():
         assert np.array_equal(ds[k].values, v)
+
+
+# ----------------------------------------------------------------------------- history steps
+def test_history_step_frictionless_is_hertz():
+    """At the reference load a frictionless history is Hertz's contact at a_max: Huber
+    (sphere) and McEwen (cylinder) on the axis. The history's tractions are element-wise
+    (h = 1.2/200 = 0.006): at depth >= 0.1 their field errs by O(h^2) = 4e-5."""
+    import contactlib
+
+    z = np.linspace(0.1, 2.0, 20)
+    sphere = history_stresses(contactlib.history("sphere", NU, 0.0, [0, 1], 4, n=200), -1,
+                              [0.0], z)
+    szz, srr = huber_axis(z, NU)
+    assert np.max(np.abs(sphere.sigma_zz.values[:, 0] - szz)) < 1e-4
+    assert np.max(np.abs(sphere.sigma_rr.values[:, 0] - srr)) < 1e-4
+    cylinder = history_stresses(contactlib.history("cylinder", NU, 0.0, [0, 1], 4, n=200), 4,
+                                [0.0], z)
+    ref = mcewen(np.zeros_like(z), z)
+    for k in ("sigma_xx", "sigma_zz"):
+        assert np.max(np.abs(cylinder[k].values[:, 0] - ref[k])) < 1e-4, k
+
+
+def test_history_step_equilibrium_with_partial_slip():
+    """int sigma_zz 2 pi r dr = -P at z = 0.5: P / (p0 a_max^2) = 2 pi/3 times the step's
+    load ratio (to the Boussinesq tail beyond r = 64: z^3/64^3 = 5e-7)."""
+    import contactlib
+
+    res = contactlib.history("sphere", NU, 0.2, [0, 1], 4, n=100)
+    edges = np.array([0.0, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0])
+    t, w = np.polynomial.legendre.leggauss(24)
+    half, mid = np.diff(edges)[:, None] / 2, (edges[:-1] + edges[1:])[:, None] / 2
+    r, wr = (mid + half * t).ravel(), (half * w).ravel()
+    for step in (2, 4):
+        ds = history_stresses(res, step, r, [0.5], measures=False)
+        assert 0 < res.stick_ratio[step] < 1  # partial slip
+        total = 2 * np.pi * np.sum(wr * ds.sigma_zz.values[0] * r)
+        load = 2 * np.pi / 3 * res.load_ratio[step]
+        assert abs(total + load) < 1e-6 * load
+    with pytest.raises(InputError, match="step must be"):
+        history_stresses(res, 5, [0.0], [0.5])
 
 
 # ----------------------------------------------------------------------------- figure

@@ -1,8 +1,8 @@
 """Write a sweep to netCDF with the command line, then read it with xarray.
 
-Runs ``contactlib sweep`` (the same as typing it in a shell) into a temporary folder,
-opens the dataset with xarray, and shows its variables, their units and the
-friction coefficient k against the stick ratio; the conventions of every variable
+Runs ``contactlib sweep`` (the same as typing it in a shell) into a
+temporary folder, opens the dataset with xarray, and shows some of its
+variables and k against the stick ratio; the conventions of every variable
 are in docs/conventions.md.
 
     python examples/read_dataset.py
@@ -17,15 +17,16 @@ import xarray as xr
 
 with tempfile.TemporaryDirectory() as tmp:
     path = Path(tmp) / "sweep.nc"
-    subprocess.run([sys.executable, "-m", "contactlib", "sweep", "--geometry", "cylinder",
-                    "--nu", "0.3", "--stick-ratios", "0.2,0.4,0.6,0.8", "--output", str(path)],
-                   check=True)
+    subprocess.run([sys.executable, "-m", "contactlib", "sweep",
+                    "--geometry", "cylinder", "--nu", "0.3",
+                    "--stick-ratios", "0.2,0.4,0.6,0.8",
+                    "--output", str(path)], check=True)
 
     with xr.open_dataset(path) as ds:
         print(ds.attrs.get("title", ""), "\n")
-        for name in ("friction_coefficient", "load_ratio", "error_estimate", "pressure"):
+        for name in ("friction_coefficient", "error_estimate", "pressure"):
             var = ds[name]
-            print(f"{name:22s} {var.dims}: {var.attrs.get('long_name', '')}")
+            print(f"{name:21s} {var.dims}: {var.attrs.get('long_name', '')}")
         print()
         k = ds["friction_coefficient"]
         for ratio, value in zip(ds["stick_ratio"].values, k.values):

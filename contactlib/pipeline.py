@@ -118,7 +118,9 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
     Always: ``friction_coefficient``, ``load_ratio`` and the solver status.
     ``k_curve`` adds the consistency flags (needs ``checks``), ``stresses``
     the pressure and shear, ``displacements`` the tangential displacement
-    (needs ``profiles``), ``energy`` the frictional work (needs ``work``).
+    (needs ``profiles``), ``energy`` the frictional work (needs ``work``),
+    ``subsurface`` the stress field inside the body
+    (:func:`contactlib.stresses.scene_subsurface`).
     Global attributes add ``scene`` and ``scene_config_hash`` (provenance).
     The conventions (names, CF attributes) are those of
     :func:`contactlib.io.scene_to_dataset`.
@@ -154,6 +156,11 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
         tolerance = scene.tolerance
         elements = np.array([int(r.elements) for r in records], dtype=np.int32)
         estimate = np.array([float(r.error_estimate) for r in records])
-    return scene_to_dataset(sols, outputs=scene.outputs, scene=scene.name,
-                            config_hash=scene.hash, violations=violations, elements=elements,
-                            error_estimate=estimate, tolerance=tolerance)
+    ds = scene_to_dataset(sols, outputs=scene.outputs, scene=scene.name,
+                          config_hash=scene.hash, violations=violations, elements=elements,
+                          error_estimate=estimate, tolerance=tolerance)
+    if "subsurface" in want:
+        from .stresses import scene_subsurface
+        ds = scene_subsurface(ds, scene, [stages.profiles(geom, rec, xi, displacements=False)
+                                          for rec in records], xi)
+    return ds

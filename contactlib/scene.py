@@ -38,7 +38,7 @@ from .geometry import Geometry
 from .indenter import indenter
 from .operators import parts_needed
 from .result import short_repr
-from .validate import OUTPUTS
+from .validate import DEFAULT_OUTPUTS, OUTPUTS
 
 # No solver module (stages, and scipy with it) is imported here: the workflow imports
 # this module in Snakemake's own process, which builds the DAG before any job starts.
@@ -48,7 +48,7 @@ __all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "pars
 
 KINDS = ("self-similar", "history")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
-         "slab_ratio", "base", "outputs", "indenter", "body")
+         "slab_ratio", "base", "outputs", "indenter", "body", "subsurface_grid")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
                  "duration")
@@ -90,13 +90,17 @@ class Scene:
     base : {"smooth", "bonded"}
         The layer's rigid base (key ``base``, default smooth).
     outputs : tuple of str
-        Subset of ``k_curve``, ``stresses``, ``displacements``, ``energy``.
+        Subset of ``k_curve``, ``stresses``, ``displacements``, ``energy``,
+        ``subsurface`` (default: all but ``subsurface``).
     hash : str
         :func:`config_hash` of the scene's mapping as configured.
     tolerance : float or None
         Relative error in k the scene asked for (then ``method`` and ``n``
         were picked by :func:`contactlib.accuracy.plan`, and the solve
         checks the error a posteriori, refining n where needed).
+    subsurface_grid : tuple
+        ``((x0, x1, nx), (z0, z1, nz))`` of the ``subsurface`` output's grid (key
+        ``subsurface_grid``, default :data:`contactlib.validate.SUBSURFACE_GRID`).
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -116,6 +120,7 @@ class Scene:
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
     base: str = "smooth"
+    subsurface_grid: tuple = validate.SUBSURFACE_GRID
 
     @property
     def geometry_object(self) -> Geometry:
@@ -282,10 +287,18 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     nu = bad.check("nu", validate.nu, raw.get("nu")) if "nu" in raw else None
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0))
     base = bad.check("base", validate.base, raw.get("base", "smooth"))
-    outputs = raw.get("outputs", list(OUTPUTS))
+    outputs = raw.get("outputs", list(DEFAULT_OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
         bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
+        outputs = []
+    grid = bad.check("subsurface_grid", validate.subsurface_grid, raw.get("subsurface_grid", {}))
+    if "subsurface" in outputs:
+        if isinstance(slab, float) and slab > 0:
+            bad.add("outputs", "subsurface covers the half-space and half-plane only (slab_ratio "
+                               f"0), got slab_ratio {slab!r}")
+    elif "subsurface_grid" in raw:
+        bad.add("subsurface_grid", "given without subsurface in outputs")
     ind = _scene_indenter(raw, nu, bad)
     n = None
     if None not in (geometry, method, nu, slab, base):  # ... then what depends on several keys
@@ -307,7 +320,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
                  tolerance=tolerance, max_error=max_error, indenter_modulus=ind[0],
-                 indenter_nu=ind[1], base=base)
+                 indenter_nu=ind[1], base=base, subsurface_grid=grid)
 
 
 @dataclass(frozen=True, repr=False)

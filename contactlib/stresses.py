@@ -54,7 +54,8 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "stress_field", "principal_stresses", "von_mises", "tresca", "hydrostatic",
            "derived_measures", "subsurface_stresses", "field_maximum",
            "surface_radial_stress", "default_grid", "check_subsurface_request",
-           "with_subsurface", "first_yield", "history_stresses", "COMPONENTS",
+           "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
+           "COMPONENTS",
            "XI_SURFACE", "PANEL", "CHUNK"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
@@ -793,3 +794,53 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
                                                      math.inf)),
              "stress_unit": "p0(a_max), the Hertz peak pressure at a_max"}
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.ndarray]],
+                     xi: np.ndarray) -> Any:
+    """A scene's dataset with the ``subsurface`` output: the field of every stick ratio.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        The scene's dataset (:func:`contactlib.io.scene_to_dataset`), dimension
+        ``stick_ratio``.
+    scene : contactlib.scene.Scene
+        The scene (its ``geometry``, ``nu`` and ``subsurface_grid``).
+    profiles : sequence of dict
+        One a stick ratio, in the dataset's order: ``pressure`` and ``shear`` (p/p0,
+        q/p0) on ``xi``.
+    xi : ndarray
+        The profiles' abscissae.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``dataset`` with the coordinates ``x``, ``z`` and the variables of
+        :func:`subsurface_stresses` on (stick_ratio, z, x), in units of p0; NaN for a case
+        whose tractions are NaN (not converged). The body's field (an elastic indenter's
+        is not written); attribute ``subsurface_body``.
+    """
+    (x0, x1, nx), (z0, z1, nz) = scene.subsurface_grid
+    xs, zs = np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
+    geometry = scene.geometry
+    names = COMPONENTS[geometry] + ("von_mises", "tresca", "hydrostatic", "sigma_1",
+                                    "sigma_2", "sigma_3")
+    stack = {name: np.full((len(profiles), zs.size, xs.size), np.nan) for name in names}
+    for i, prof in enumerate(profiles):
+        p, q = np.asarray(prof["pressure"]), np.asarray(prof["shear"])
+        if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
+            continue
+        fields = stress_field(geometry, scene.nu, xi, p, q, xs, zs)
+        fields.update(derived_measures(geometry, fields))
+        for name in names:
+            stack[name][i] = fields[name]
+    out = dataset.assign_coords(
+        z=("z", zs, {"units": "1", "long_name": "depth / a, positive into the body"}),
+        x=("x", xs, {"units": "1", "long_name": "r / a" if geometry == "sphere" else "x / a"}))
+    dims = ("stick_ratio", "z", "x") if "stick_ratio" in dataset.dims else ("z", "x")
+    for name in names:
+        value = stack[name] if len(dims) == 3 else stack[name][0]
+        out[name] = (dims, value, {"units": "1", "long_name": _LONG_NAMES[name]})
+    out.attrs["subsurface_body"] = "body"
+    return out

@@ -26,6 +26,7 @@ nu | nu must be in (-1, 0.5], got 0.7
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from numbers import Integral, Real
 from typing import Any, Callable, Iterable
 
@@ -39,6 +40,7 @@ __all__ = [
     "MIN_TOLERANCE", "MAX_TOLERANCE", "MIN_PLANNED_TOLERANCE", "planned_tolerance",
     "indenter_modulus", "indenter_nu", "indenter_material",
     "indenter_mapping", "BASES", "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
+    "DEFAULT_OUTPUTS", "SUBSURFACE_GRID", "subsurface_grid",
 ]
 
 # ----------------------------------------------------------------------------- limits
@@ -49,8 +51,16 @@ METHODS: tuple[str, ...] = ("default", "paper", "paper-literal", "extrapolated")
 """Self-similar methods: ours, the paper's scheme, the paper's scheme as printed, and ours
 on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
 
-OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy")
+OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy", "subsurface")
 """What a self-similar scene may ask for (``outputs``), in the order the stages run them."""
+
+DEFAULT_OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy")
+"""The outputs of a scene that names none (``subsurface``, the costliest, only when asked)."""
+
+SUBSURFACE_GRID: tuple[tuple[float, float, int], tuple[float, float, int]] = (
+    (0.0, 2.0, 101), (0.0, 2.0, 101))
+"""Default grid of the ``subsurface`` output: x = r/a (x/a) and z = depth/a as
+``(start, stop, points)`` of equally spaced points."""
 
 BASES: tuple[str, ...] = ("smooth", "bonded")
 """Rigid bases under a layer: frictionless (the paper's slab) or bonded."""
@@ -487,3 +497,38 @@ def duration(value: Any, segments: int, relaxed: bool) -> tuple[float, ...]:
                          f"duration must give one number or one a path segment "
                          f"({segments}), got {len(items)}: {value!r}")
     return tuple(number("duration", v, 0.0, None, lo_open=True) for v in items)
+
+
+def subsurface_grid(value: Any) -> tuple[tuple[float, float, int], tuple[float, float, int]]:
+    """A ``subsurface`` grid: ``{"x": [start, stop, points], "z": [start, stop, points]}``.
+
+    Both axes in units of a; z (depth) from >= 0, x may start below 0 (cylinder); stop >
+    start; 2 ... 1001 points. A missing axis takes :data:`SUBSURFACE_GRID`'s.
+
+    Returns
+    -------
+    tuple
+        ``((x0, x1, nx), (z0, z1, nz))``.
+
+    Raises
+    ------
+    InputError
+        Naming the axis and what a good value is.
+    """
+    req = ("a mapping with x and/or z, each [start, stop, points] (start < stop, z start "
+           ">= 0, 2 ... 1001 points)")
+    if not isinstance(value, Mapping) or not set(value) <= {"x", "z"}:
+        raise InputError("subsurface_grid", req, value)
+    out = []
+    for axis, default in zip(("x", "z"), SUBSURFACE_GRID):
+        spec = value.get(axis, default)
+        if not _sequence(spec) or len(spec) != 3:
+            raise InputError(f"subsurface_grid.{axis}", "[start, stop, points]", spec)
+        lo = number(f"subsurface_grid.{axis} start", spec[0], 0.0 if axis == "z" else None)
+        hi = number(f"subsurface_grid.{axis} stop", spec[1])
+        if not hi > lo:
+            raise InputError(f"subsurface_grid.{axis}", "[start, stop, points] with stop > "
+                             "start", spec)
+        out.append((lo, hi, integer(f"subsurface_grid.{axis} points", spec[2], 2, 1001)))
+    return out[0], out[1]
+

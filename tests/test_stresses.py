@@ -404,6 +404,45 @@ def test_history_step_equilibrium_with_partial_slip():
         history_stresses(res, 5, [0.0], [0.5])
 
 
+# ----------------------------------------------------------------------------- scenes
+def _scene(**extra):
+    from contactlib.scene import parse_scene
+
+    raw = {"geometry": "sphere", "nu": NU, "n": 64, "stick_ratios": [0.0, 0.5], **extra}
+    return parse_scene("stress-demo", raw)
+
+
+def test_scene_subsurface_output_is_the_api_field():
+    from contactlib import pipeline
+
+    assert "subsurface" not in _scene().outputs  # only when asked for
+    scene = _scene(outputs=["k_curve", "subsurface"],
+                   subsurface_grid={"x": [0.0, 1.5, 16], "z": [0.0, 1.0, 11]})
+    parts = {p: pipeline.influence(scene.influence_spec(), p) for p in scene.parts}
+    records = pipeline.solve(scene, parts["normal"], parts["shear"])
+    ds = pipeline.assemble(scene, records, checks=pipeline.check(records))
+    assert ds.von_mises.dims == ("stick_ratio", "z", "x")
+    assert ds.attrs["outputs"] == "k_curve subsurface"
+    for i, c in enumerate((0.0, 0.5)):
+        ref = subsurface_stresses(solve("sphere", NU, stick_ratio=c, n=64, energy=False),
+                                  np.linspace(0.0, 1.5, 16), np.linspace(0.0, 1.0, 11))
+        for name in ("von_mises", "tresca", "sigma_rr", "sigma_rz"):
+            assert np.max(np.abs(ds[name].values[i] - ref[name].values)) < 1e-12, name
+
+
+@pytest.mark.parametrize("extra,key", [
+    ({"outputs": ["subsurface"], "slab_ratio": 0.5}, "outputs"),
+    ({"subsurface_grid": {"x": [0, 1, 11]}}, "subsurface_grid"),
+    ({"outputs": ["subsurface"], "subsurface_grid": {"z": [-1, 1, 11]}}, "subsurface_grid"),
+    ({"outputs": ["subsurface"], "subsurface_grid": {"x": [0, 1, 1]}}, "subsurface_grid"),
+])
+def test_scene_subsurface_refusals(extra, key):
+    from contactlib.scene import ConfigError
+
+    with pytest.raises(ConfigError, match=f"scenes.stress-demo.{key}"):
+        _scene(**extra)
+
+
 # ----------------------------------------------------------------------------- figure
 def test_figure_marks_the_maxima(hertz_solution, partial):
     from contactlib.plot import fig_subsurface

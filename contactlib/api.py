@@ -16,7 +16,7 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from . import stages, validate
+from . import profiles, stages, validate
 from .default_method import DiscreteSolution, solve_default
 from .discrete import SelfSimilarSolution
 from .geometry import Geometry
@@ -43,7 +43,8 @@ def output_grid() -> np.ndarray:
 
 # ----------------------------------------------------------------------------- validation
 def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.inf,
-                     indenter_nu=None, base="smooth") -> tuple[Geometry, int, str]:
+                     indenter_nu=None, base="smooth", profile="paraboloid",
+                     exponent=None) -> tuple[Geometry, int, str]:
     """The problem's arguments, checked one by one with :mod:`contactlib.validate`."""
     geometry = validate.geometry(geometry)
     method = validate.method(method)
@@ -52,7 +53,13 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
     slab = validate.slab_ratio(slab_ratio, geometry, base)
     n = validate.n(n, method)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
-    return Geometry(geometry, nu, slab, ratio, nu1, base), n, method
+    shape = profiles.profile(profile, exponent)
+    if not shape.is_paraboloid and method != "default":
+        raise validate.InputError("method", f"'default' for the {shape.name} profile", method,
+                                  f"method {method!r} is measured for the paraboloid only (the "
+                                  "paper's scheme and the extrapolated method's error model); "
+                                  f"use method 'default' for the {shape.name} profile")
+    return Geometry(geometry, nu, slab, ratio, nu1, base, profile=shape), n, method
 
 
 # ----------------------------------------------------------------------------- post-processing
@@ -68,6 +75,11 @@ def _finish(geom: Geometry, d: SelfSimilarSolution, method: str, n: int,
 def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_energy: bool,
                  message: str = "") -> Solution:
     xi = output_grid()
+    if want_energy and not geom.profile.is_paraboloid:  # the work's scaling is Hertz's
+        want_energy = False
+        message = "; ".join(x for x in (message, "frictional work not computed for the "
+                                        f"{geom.profile.name} profile (its scaling in a is "
+                                        "the paraboloid's)") if x)
     work = stages.work_case(geom, rec) if want_energy else float("nan")
     profile: dict[str, Any] = stages.profiles(geom, rec, xi, displacements=False)
     # u needs the kernels at every xi: computed when the caller first reads it
@@ -203,6 +215,15 @@ def _check_planned(tolerance, n, method) -> float | None:
     return tol
 
 
+def _check_planned_profile(planned: float | None, geom: Geometry) -> None:
+    """A tolerance is planned from error models measured on the paraboloid only."""
+    if planned is not None and not geom.profile.is_paraboloid:
+        raise validate.InputError("tolerance", "given for the paraboloid only", planned,
+                                  "tolerance plans n from error models measured on the "
+                                  f"paraboloid; for the {geom.profile.name} profile give n "
+                                  "and read error_estimate")
+
+
 def _planned_sweep(geom: Geometry, ratios: Sequence[float], tolerance: float, energy: bool,
                    progress: Callable[[int, int], None] | None = None) -> list[Solution]:
     """Cases solved with the planned method and n, refined to the tolerance."""
@@ -295,7 +316,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
           max_error: float = validate.DEFAULT_MAX_ERROR, base: str = "smooth",
-          tolerance: float | None = None) -> Solution:
+          tolerance: float | None = None, profile: str = "paraboloid",
+          exponent: float | None = None) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -350,7 +372,16 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         doubled where the case's own estimate falls short, and ``max_error``
         becomes the tolerance. Refused, naming ``tolerance``, where no method
         is predicted to meet it (e.g. 1e-6 at c/a = 0.9999); with
-        stick_ratio, not friction.
+        stick_ratio, not friction; paraboloid only.
+    profile : {"paraboloid", "cone", "power"}
+        The indenter's shape h ~ r^d (:mod:`contactlib.profiles`): ``"paraboloid"``
+        (default, Hertz, d = 2), ``"cone"`` (d = 1; a wedge for the cylinder) or
+        ``"power"`` with ``exponent``. Other profiles take the default method; their
+        ``load_ratio`` is P over the profile's own frictionless load, the pressure is in
+        units of the peak pressure of the paraboloid with that load, and no frictional
+        work is computed (NaN).
+    exponent : float, optional
+        d for ``profile="power"``, in [0.5, 8] (omitted otherwise).
 
     Returns
     -------
@@ -380,7 +411,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     """
     planned = _check_planned(tolerance, n, method)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
-                                       indenter_nu, base)
+                                       indenter_nu, base, profile, exponent)
+    _check_planned_profile(planned, geom)
     energy = validate.flag("energy", energy)
     max_error = validate.max_error(max_error)
     if (stick_ratio is None) == (friction is None):
@@ -402,7 +434,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
-                     max_error=max_error, base=base)
+                     max_error=max_error, base=base, profile=profile, exponent=exponent)
     if k == 0.0:
         return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
                        max_error=max_error)
@@ -438,7 +470,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
           max_error: float = validate.DEFAULT_MAX_ERROR,
-          base: str = "smooth", tolerance: float | None = None) -> list[Solution]:
+          base: str = "smooth", tolerance: float | None = None,
+          profile: str = "paraboloid", exponent: float | None = None) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -453,6 +486,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ----------
     geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error, base
         As for :func:`solve`.
+    profile, exponent
+        As for :func:`solve` (default the paraboloid).
     tolerance : float, optional
         As for :func:`solve`: planned over all the stick ratios (a list, not
         ``"all"``) at one method and n; where no single n meets it at all of
@@ -488,7 +523,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
         raise validate.InputError("stick_ratios", "a list of stick ratios with a tolerance "
                                   "('all' means m/n and needs a given n)", stick_ratios)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
-                                       indenter_nu, base)
+                                       indenter_nu, base, profile, exponent)
+    _check_planned_profile(planned, geom)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)

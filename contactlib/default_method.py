@@ -9,7 +9,8 @@ Discretization (units E* = a = R = 1)
   shape = 1 for the cylinder (phi(0) = 0: q is odd in x); q(a) = 0.
 * Collocation at every node: w = delta - r^2/2 (normal, delta unknown); in the
   stick zone (nodes 1..M, node M at c) u = C r^2 with C unknown (the
-  self-similar adherence condition, paper Eq. 8); in the slip zone (nodes
+  self-similar adherence condition, paper Eq. 8); for a power-law profile
+  (:mod:`contactlib.profiles`) w = delta - r^d/d and u = C r^d; in the slip zone (nodes
   M..N-1) q = k p (Coulomb, traction ratio).
 
 With k given, these equations are square; both conditions at c make the
@@ -229,7 +230,8 @@ class DiscreteSolution(SelfSimilarSolution):
     def slip_samples(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(x, weights, q, s) on the slip zone: its nodes and element midpoints (Simpson).
 
-        s = 2u - xi du/dxi is the self-similar slip rate. At the nodes u and
+        s = d u - xi du/dxi is the self-similar slip rate (d the profile's exponent: 2 for
+        the paraboloid, where u ~ a^2). At the nodes u and
         du/dxi come free from the solve (``nodal_u``, ``nodal_du``); only the
         midpoints need the exact kernels, one point an element. Simpson's
         rule on the slip elements integrates the work to within 2e-6 relative
@@ -247,7 +249,8 @@ class DiscreteSolution(SelfSimilarSolution):
         physical root of Newton's iteration from another one.
         """
         return _node_flags(self.mesh, self.geometry.shear_shape(self.mesh.nodes) * self.phi,
-                           self.p, self.k, self.nodal_u, self.nodal_du)
+                           self.p, self.k, self.nodal_u, self.nodal_du,
+                           self.geometry.profile.exponent)
 
     def displacements(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(w, u, du/dx) at points x."""
@@ -271,6 +274,7 @@ class DiscreteSolution(SelfSimilarSolution):
 def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
     """Slip-zone samples: Simpson (nodes + midpoints; default) or Gauss points (order > 0)."""
     r, m = sol.mesh.nodes, sol.mesh.stick_index
+    d = sol.geometry.profile.exponent  # s = d u - x du/dx (u ~ a^d at fixed r/a)
     if order is None and sol.nodal_u is not None:
         xn = r[m:]
         h = np.diff(xn)
@@ -286,22 +290,24 @@ def _slip_samples(sol: "DiscreteSolution", order: int | None = None):
         wn[1:] += h * (2.0 - 3.0 * t) / (6.0 * (1.0 - t))
         xs = np.concatenate([xn, mid])
         ws = np.concatenate([wn, h / (6.0 * t * (1.0 - t))])
-        s_nodes = 2.0 * sol.nodal_u[m:] - xn * sol.nodal_du[m:]
-        ss = np.concatenate([s_nodes, 2.0 * u_mid - mid * du_mid])
+        s_nodes = d * sol.nodal_u[m:] - xn * sol.nodal_du[m:]
+        ss = np.concatenate([s_nodes, d * u_mid - mid * du_mid])
         return xs, ws, sol.shear(xs), ss
     xs, ws = slip_points(r, m, max(order or 4, 2))
     u, du = sol.tangential(xs)
-    return xs, ws, sol.shear(xs), 2.0 * u - xs * du
+    return xs, ws, sol.shear(xs), d * u - xs * du
 
 
-def _node_flags(mesh: Mesh, q: np.ndarray, p: np.ndarray, k: float, nodal_u, nodal_du) -> dict:
-    """Consistency flags at the nodes: stick nodes 1..M-1, slip nodes M..N-1 (k's sign ignored)."""
+def _node_flags(mesh: Mesh, q: np.ndarray, p: np.ndarray, k: float, nodal_u, nodal_du,
+                exponent: float = 2.0) -> dict:
+    """Consistency flags at the nodes: stick nodes 1..M-1, slip nodes M..N-1 (k's sign ignored);
+    the slip rate is exponent * u - r du/dr (the profile's d)."""
     r, m, nn = mesh.nodes, mesh.stick_index, mesh.n
     if nodal_u is None or nodal_du is None or not np.isfinite(k):
         return {**dict.fromkeys(checks.FLAG_NAMES, False),
                 **dict.fromkeys(checks.VIOLATION_NAMES, np.nan)}
     return checks.flags(q[1:m], p[1:m], abs(k), q[m:nn],
-                        2.0 * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
+                        exponent * nodal_u[m:nn] - r[m:nn] * nodal_du[m:nn])
 
 
 def _tie_columns(geometry: Contact, q_ops: np.ndarray) -> np.ndarray:
@@ -495,8 +501,9 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
     a0[nr:, :nn] = pw[1][1:m + 1, :-1]
     a0[nr:, nn] = 0.0
     _put_shear(tie, qw[1][1:m + 1], m, nn, shape, a0[nr:, nn + 1:nn + m], a1b[nr:])
-    a0[nr:, nn + m] = -(r[stick_rows] ** 2)
-    b = np.concatenate([-0.5 * r**2, np.zeros(m)])
+    prof = geometry.profile  # the gap h(r) and the adherence u = C r^d (r^2/2, r^2 for Hertz)
+    a0[nr:, nn + m] = -prof.adherence(r[stick_rows])
+    b = np.concatenate([-prof.gap(r), np.zeros(m)])
     if axis is not None:  # rows 0 ... M: w(0) - w(r_{M+1}), w(r_i) - w(0) (i = 1 ... M)
         dqx = _tie_columns(geometry, axis[1])
         near = np.arange(m + 1)
@@ -506,7 +513,7 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
         a0[near, nn] = 0.0  # delta drops out of every difference
         a0[near, nn + 1:nn + m] = sign * dqx[at][:, stick_cols]
         a1b[near] = sign * dqx[at][:, slip_cols] / shape[slip_nodes]
-        b[0] = 0.5 * r[m + 1] ** 2  # w(0) - w(r_{M+1}); -r_i^2/2 for the others as before
+        b[0] = prof.gap(r[m + 1])  # w(0) - w(r_{M+1}); -h(r_i) for the others as before
     if edge is not None:  # rows i0+1 ...: w(r_i) - w(r_ref) = -(r_i^2 - r_ref^2)/2
         i0, dp, dq, up, uq = edge[:5]
         rows = slice(i0 + 1, i0 + 1 + dp.shape[0])
@@ -515,12 +522,12 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
         a0[rows, :nn] = dp[:, :-1]
         a0[rows, nn] = 0.0
         _put_shear(tie, dq, m, nn, shape, a0[rows, nn + 1:nn + m], a1b[rows])
-        b[rows] = -0.5 * (r[rows] - ref) * (r[rows] + ref)
+        b[rows] = -prof.gap_difference(r[rows], ref)
         srows = slice(nr + i0, nr + m)  # stick rows of the nodes i0 + 1 ... M
         sref = ref[:m - i0]
         a0[srows, :nn] = up[:m - i0, :-1]
         _put_shear(tie, uq[:m - i0], m, nn, shape, a0[srows, nn + 1:nn + m], a1b[srows])
-        a0[srows, nn + m] = -(r[i0 + 1:m + 1] - sref) * (r[i0 + 1:m + 1] + sref)
+        a0[srows, nn + m] = -prof.adherence_difference(r[i0 + 1:m + 1], sref)
     return PartialSlipSystem(a0, a1b, b, slip_nodes, shape, nn, m)
 
 
@@ -763,7 +770,7 @@ def _nodal_operators(geometry: Contact, mesh: Mesh,
 def _frictionless(geometry: Contact, mesh: Mesh, pw: np.ndarray) -> DiscreteSolution:
     """c/a = 0: q = 0, one linear solve for p and delta."""
     r, nn = mesh.nodes, mesh.n
-    rhs = -0.5 * r**2
+    rhs = -geometry.profile.gap(r)
     a = np.hstack([pw[0][:, :-1], -np.ones((nn + 1, 1))])
     x = linalg.solve(a, rhs)
     res = np.linalg.norm(a @ x - rhs) / np.linalg.norm(rhs)
@@ -780,9 +787,9 @@ def _full_adhesion(geometry: Contact, mesh: Mesh, pw: np.ndarray,
     stick_rows = np.arange(1, m + 1)
     top = np.hstack([pw[0][:, :-1], -np.ones((nn + 1, 1)), qx[0], np.zeros((nn + 1, 1))])
     bot = np.hstack([pw[1][stick_rows, :-1], np.zeros((m, 1)), qx[1][stick_rows],
-                     -(r[stick_rows] ** 2)[:, None]])
+                     -geometry.profile.adherence(r[stick_rows])[:, None]])
     a = np.vstack([top, bot])
-    b = np.concatenate([-0.5 * r**2, np.zeros(m)])
+    b = np.concatenate([-geometry.profile.gap(r), np.zeros(m)])
     x = linalg.solve(a, b)
     res = np.linalg.norm(a @ x - b) / np.linalg.norm(b)
     p = np.append(x[:nn], 0.0)
@@ -975,8 +982,8 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
     if np.isfinite(k) and k * sigma < 0.0 and not tensile:  # the root slips against sign(beta)
         # physical when consistent at every node (e.g. a thin or nearly incompressible
         # slab, whose surface moves outward under a rigid indenter)
-        reversed_ok = _node_flags(mesh, system.shape * phi, p, k, nodal_u,
-                                  nodal_du)["consistent"]
+        reversed_ok = _node_flags(mesh, system.shape * phi, p, k, nodal_u, nodal_du,
+                                  geometry.profile.exponent)["consistent"]
     way = "outward (q = -k p)" if k < 0 else "inward (q = k p)"
     k = abs(k) if reversed_ok else sigma * k  # report k >= 0
     if not (np.isfinite(k) and k > 0.0):  # never a negative (or non-finite) k as if good

@@ -49,12 +49,13 @@ True
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from .body import ElasticBody, ViscoelasticBody
 from .indenter import Displacements, Indenter, indenter
+from .profiles import PARABOLOID, Profile
 
 __all__ = ["Contact", "contact"]
 
@@ -70,6 +71,9 @@ class Contact:
         (``modulus_ratio`` E1/E2 and ``nu``).
     body : ElasticBody
         The body under it (its ``slab_ratio`` in units of the contact radius).
+    profile : Profile
+        The indenter's shape, keyword only (default :data:`~contactlib.profiles.PARABOLOID`:
+        Hertz's r^2/(2R)); see :mod:`contactlib.profiles`.
 
     Notes
     -----
@@ -82,6 +86,7 @@ class Contact:
 
     indenter: Indenter
     body: ElasticBody
+    profile: Profile = field(default=PARABOLOID, kw_only=True)
 
     # ------------------------------------------------------------------ materials
     @property
@@ -255,13 +260,23 @@ class Contact:
     # ------------------------------------------------------------------ Hertz and measures
     @property
     def p0(self) -> float:
-        """Hertz peak pressure at a = 1 (units E* a/R)."""
-        return self.indenter.p0
+        """Hertz peak pressure at a = 1 (units E* a/R): the pressure unit.
+
+        For another profile, the peak pressure of the paraboloid with the same
+        frictionless load (:meth:`~contactlib.profiles.Profile.reference_pressure`)."""
+        if self.profile.is_paraboloid:
+            return self.indenter.p0
+        return self.profile.reference_pressure(self.indenter.name == "sphere")
 
     @property
     def hertz_load(self) -> float:
-        """Hertz load at a = 1 (E* a^3/R, or E* a^2/R per unit length)."""
-        return self.indenter.hertz_load
+        """Hertz load at a = 1 (E* a^3/R, or E* a^2/R per unit length): the load unit.
+
+        For another profile, its own frictionless load at a = 1
+        (:meth:`~contactlib.profiles.Profile.frictionless_load`)."""
+        if self.profile.is_paraboloid:
+            return self.indenter.hertz_load
+        return self.profile.frictionless_load(self.indenter.name == "sphere")
 
     def shear_shape(self, x: np.ndarray) -> np.ndarray:
         """Shear = shape(x) * phi(x): shape r for the sphere, 1 for the cylinder."""
@@ -285,7 +300,8 @@ class Contact:
 def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
             indenter_modulus: float = math.inf, indenter_nu: float | None = None,
             base: str = "smooth",
-            relaxation: tuple[tuple[float, float], ...] = ()) -> Contact:
+            relaxation: tuple[tuple[float, float], ...] = (),
+            profile: Profile = PARABOLOID) -> Contact:
     """The model of the public interface's names: an indenter on an elastic body.
 
     Parameters
@@ -304,7 +320,9 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
     relaxation : tuple of (g, tau), optional
         Prony terms of a viscoelastic body (:class:`~contactlib.body.ViscoelasticBody`;
         its kernels are the elastic ones at E(0)); empty: elastic.
+    profile : Profile
+        The indenter's shape (default the paraboloid; :func:`contactlib.profiles.profile`).
     """
     body = ViscoelasticBody(nu, slab_ratio, base, relaxation=tuple(relaxation)) \
         if relaxation else ElasticBody(nu, slab_ratio, base)
-    return Contact(indenter(geometry, indenter_modulus, indenter_nu), body)
+    return Contact(indenter(geometry, indenter_modulus, indenter_nu), body, profile=profile)

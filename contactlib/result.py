@@ -320,6 +320,11 @@ class Solution:
         Dundurs' beta of the pair (> 0: slip inward, q = k p; < 0: outward, q = -k p).
     base : str
         The layer's rigid base, "smooth" or "bonded" (irrelevant at a/h = 0).
+    profile : str
+        The indenter's profile: "paraboloid" (Hertz, the default), "cone" or "power"
+        (:mod:`contactlib.profiles`).
+    exponent : float
+        Its exponent d, h ~ r^d (2 for the paraboloid, 1 for the cone).
     error_estimate : float
         Estimated relative error of ``friction_coefficient`` (embedded
         solves on the nested meshes n/4 and n/2; 0 where k is exact).
@@ -375,6 +380,8 @@ class Solution:
     indenter_poisson_ratio: float = float("nan")
     dundurs_beta: float = float("nan")
     base: str = "smooth"
+    profile: str = "paraboloid"
+    exponent: float = 2.0
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:.10g}, method = {self.method}, n = {self.n}"
@@ -382,6 +389,8 @@ class Solution:
             head += f", a/h = {self.slab_ratio:g}"
         if self.slab_ratio > 0:
             head += f" ({self.base} base)"
+        if self.profile != "paraboloid":
+            head += f", profile = {self.profile} (d = {self.exponent:g})"
         if self.indenter_modulus_ratio != float("inf"):
             head += (f", E1/E2 = {self.indenter_modulus_ratio:g}, nu1 = "
                      f"{self.indenter_poisson_ratio:g}, beta = {self.dundurs_beta:.4g}")

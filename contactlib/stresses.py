@@ -369,6 +369,7 @@ def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np
     sigma_tt (k integrals cut at ``XI_SURFACE``).
     """
     zi = z[inside]
+    zmin = float(zi.min()) if zi.size else math.inf
     step = max(1, CHUNK // max(r.size, zi.size, 1))
     ksurf = k <= XI_SURFACE
     for i in range(0, k.size, step):
@@ -378,7 +379,7 @@ def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np
         j1 = sp.j1(x)
         j1x = np.where(x > 0, j1 / np.where(x > 0, x, 1.0), 0.5) * wc
         j1 = j1 * wc
-        if zi.size:
+        if zi.size and kc[0] * zmin < 40.0:  # else e^{-k z} < 4e-18 at every depth
             kz = np.outer(kc, zi)
             # exact zeros beyond e^-40 (denormals would slow every product down)
             e0 = np.where(kz < 40.0, np.exp(-np.minimum(kz, 40.0)), 0.0)

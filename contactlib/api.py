@@ -75,11 +75,6 @@ def _finish(geom: Geometry, d: SelfSimilarSolution, method: str, n: int,
 def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_energy: bool,
                  message: str = "") -> Solution:
     xi = output_grid()
-    if want_energy and not geom.profile.is_paraboloid:  # the work's scaling is Hertz's
-        want_energy = False
-        message = "; ".join(x for x in (message, "frictional work not computed for the "
-                                        f"{geom.profile.name} profile (its scaling in a is "
-                                        "the paraboloid's)") if x)
     work = stages.work_case(geom, rec) if want_energy else float("nan")
     profile: dict[str, Any] = stages.profiles(geom, rec, xi, displacements=False)
     # u needs the kernels at every xi: computed when the caller first reads it
@@ -378,8 +373,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         (default, Hertz, d = 2), ``"cone"`` (d = 1; a wedge for the cylinder) or
         ``"power"`` with ``exponent``. Other profiles take the default method; their
         ``load_ratio`` is P over the profile's own frictionless load, the pressure is in
-        units of the peak pressure of the paraboloid with that load, and no frictional
-        work is computed (NaN).
+        units of the peak pressure of the paraboloid with that load, and the work in
+        units of E* (A d)^2 a^(2d+1) (per unit length a^(2d)) for h = A r^d.
     exponent : float, optional
         d for ``profile="power"``, in [0.5, 8] (omitted otherwise).
 

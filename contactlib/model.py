@@ -288,8 +288,13 @@ class Contact:
 
     @property
     def work_factor(self) -> float:
-        """V = factor * int_c^1 xi^power q (-s) dxi (see :mod:`contactlib.energy`)."""
-        return self.indenter.work_factor
+        """V = factor * int_c^1 xi^power q (-s) dxi (see :mod:`contactlib.energy`).
+
+        The loading half-cycle integrates q ds/da ~ a^(2d) over a (rings) or a^(2d - 1)
+        (strips): 2 pi/(2d + 1) and 1/d, 2 pi/5 and 1/2 for the paraboloid."""
+        if self.profile.is_paraboloid:
+            return self.indenter.work_factor
+        return self.profile.work_factor(self.indenter.name == "sphere")
 
     @property
     def work_weight_power(self) -> int:

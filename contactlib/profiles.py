@@ -148,6 +148,13 @@ class Profile:
         load = self.frictionless_load(axisymmetric)
         return load * 1.5 / math.pi if axisymmetric else load * 2.0 / math.pi
 
+    def work_factor(self, axisymmetric: bool) -> float:
+        """The frictional work's factor of a monotonic loading to a = 1 (units E* (A d)^2
+        a^(2d+1), per unit length a^(2d)): fields ~ a^(d-1) times slip rates ~ a^(d-1)
+        over the area a^2 (a), integrated in a: 2 pi/(2d + 1) and 2/(2d)."""
+        d = self.exponent
+        return 2.0 * math.pi / (2.0 * d + 1.0) if axisymmetric else 1.0 / d
+
     def frictionless_pressure(self, x: np.ndarray, axisymmetric: bool) -> np.ndarray:
         """p(x) at a = 1 for the paraboloid and the cone/wedge (closed forms; E* = 1).
 

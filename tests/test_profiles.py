@@ -122,7 +122,27 @@ def test_friction_inverse_on_a_cone():
     k = api.solve("cylinder", 0.3, stick_ratio=0.5, n=128, profile="cone")
     back = api.solve("cylinder", 0.3, friction=k.friction_coefficient, n=128, profile="cone")
     assert back.resolved and abs(back.stick_ratio - 0.5) < 1e-8
-    assert math.isnan(back.frictional_work) and "not computed" in back.message
+
+
+def test_work_scaling_is_continuous_through_the_paraboloid():
+    """d = 2 -+ 0.001 through the generic r^d/d path against Hertz's own constants
+    (2 pi/5): the work moves linearly in d, with no jump at d = 2."""
+    w2 = api.solve("sphere", 0.3, stick_ratio=0.5, n=128).frictional_work
+    lo, hi = (api.solve("sphere", 0.3, stick_ratio=0.5, n=128, profile="power",
+                        exponent=d).frictional_work for d in (1.999, 2.001))
+    assert abs(hi - lo) > 1e-5 * w2  # d matters ...
+    assert abs(lo + hi - 2.0 * w2) < 1e-3 * abs(hi - lo)  # ... smoothly, no jump at d = 2
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_cone_work_converges_and_its_estimate_covers_the_error(geometry):
+    w = [api.solve(geometry, 0.3, stick_ratio=0.5, n=n, profile="cone")
+         for n in (128, 256, 512)]
+    v = [s.frictional_work for s in w]
+    limit = v[2] + (v[2] - v[1]) / 3.0  # Richardson, second order (ratio measured 3.7)
+    assert 3.0 < (v[1] - v[0]) / (v[2] - v[1]) < 5.0
+    err = abs(v[1] / limit - 1.0)
+    assert err <= w[1].work_error_estimate <= 3.0 * err
 
 
 @pytest.mark.parametrize("kw, name", [

@@ -29,7 +29,8 @@ from scipy.optimize import minimize_scalar
 
 from conftest import ENV, REPO
 from contactlib import io, solve
-from contactlib.stresses import (derived_measures, field_maximum, first_yield,
+from contactlib.stresses import (derived_measures, field_error_estimate, field_maximum,
+                                 first_yield,
                                  halfplane_stresses, history_stresses,
                                  halfplane_stresses_line, halfspace_stresses,
                                  subsurface_stresses, surface_radial_stress)
@@ -307,6 +308,22 @@ def test_partial_slip_field_converges_in_n(partial):
     d2 = np.max(np.abs(vm[512] - vm[256]))
     assert d2 < 0.6 * d1  # converges (measured order below)
     assert d2 < 1e-3
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("c", [0.5, 0.9])
+def test_field_error_estimate_covers_the_fourfold_refined_field_at_the_maxima(geometry, c):
+    x, z = np.linspace(0.0, 1.5, 31), np.linspace(0.0, 1.5, 31)
+    sol = solve(geometry, NU, stick_ratio=c, n=128, energy=False)
+    est = field_error_estimate(sol, x, z)
+    field = subsurface_stresses(sol, x, z)
+    fine = subsurface_stresses(solve(geometry, NU, stick_ratio=c, n=512, energy=False), x, z)
+    for name in ("von_mises", "tresca"):
+        top = field_maximum(field, name)
+        iz, ix = int(np.argmin(np.abs(z - top["z"]))), int(np.argmin(np.abs(x - top["x"])))
+        err = abs(field[name].values[iz, ix] - fine[name].values[iz, ix])
+        assert err <= est[name].values[iz, ix], (name, err, est[name].values[iz, ix])
+        assert est[name].values[iz, ix] < 3e-3  # and it is small: n = 128 resolves the field
 
 
 def test_measures_from_components():

@@ -286,6 +286,13 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                      help="number of elements across the half-contact "
                           "(integer >= 2; library default if omitted)")
     sub.add_argument("--method", metavar="NAME", default="default", help=_METHOD_HELP)
+    sub.add_argument("--profile", metavar="{paraboloid,cone,power}", default="paraboloid",
+                     help="the indenter's shape h ~ r^d: paraboloid (Hertz, d = 2), cone "
+                          "(d = 1; a wedge for the cylinder) or power (d = --exponent); "
+                          "other than paraboloid with the default method only; default: "
+                          "paraboloid")
+    sub.add_argument("--exponent", metavar="D", default=None,
+                     help="d of --profile power, in [0.5, 8]")
     _layer_options(sub, "a")
     _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
@@ -440,6 +447,18 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
     if base != "smooth":  # likewise: the keyword only when not the default
         kwargs["base"] = base
+    if args.profile != "paraboloid" or args.exponent is not None:  # likewise
+        from contactlib import profiles
+
+        exponent = None if args.exponent is None else _float(args.exponent)
+        try:
+            shape = profiles.profile(args.profile, exponent)
+        except ValueError as exc:  # shown with the option it names
+            text = args.exponent if getattr(exc, "name", "") == "exponent" else args.profile
+            raise _usage(exc, text) from None
+        kwargs["profile"] = shape.name
+        if shape.name == "power":
+            kwargs["exponent"] = shape.exponent
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
@@ -525,7 +544,9 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     for option, given in (("--nu", args.nu is not None),
                           ("--indenter-modulus", args.indenter_modulus != "inf"),
                           ("--indenter-nu", args.indenter_nu is not None),
-                          ("--slab-ratio", args.slab_ratio != "0")):
+                          ("--slab-ratio", args.slab_ratio != "0"),
+                          ("--profile", getattr(args, "profile", "paraboloid") != "paraboloid"
+                           or getattr(args, "exponent", None) is not None)):
         if given:
             raise UsageError(f"{option} is not used with physical units (--radius, --body, "
                              f"--indenter, --thickness give the problem), got {option} with "
@@ -727,12 +748,17 @@ def _head(sol: Solution, n_text: str | None = None) -> str:
         head += f", a/h = {sol.slab_ratio:g}"
     if sol.slab_ratio > 0:
         head += f" ({getattr(sol, 'base', 'smooth')} base)"
+    if getattr(sol, "profile", "paraboloid") != "paraboloid":
+        head += f", profile = {sol.profile} (d = {sol.exponent:g})"
     return head + _indenter_text(sol)
 
 
 def format_summary(sol: Solution) -> str:
     """Human-readable summary of one solution (several lines)."""
     work_scale = f"V R^2/(E* a^{_indenter(sol.geometry).work_exponent})"
+    if getattr(sol, "profile", "paraboloid") != "paraboloid":  # h = A r^d
+        power = 2.0 * sol.exponent + (1.0 if sol.geometry == "sphere" else 0.0)
+        work_scale = f"V/(E* (A d)^2 a^{power:g}), h = A r^d"
     lines = [
         _head(sol),
         f"  c/a    = {_g(sol.stick_ratio)}",

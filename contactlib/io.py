@@ -162,7 +162,7 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
 }
 
 _SHARED_FIELDS = ("geometry", "nu", "method", "slab_ratio", "base",
-                  "indenter_modulus_ratio", "indenter_poisson_ratio")
+                  "indenter_modulus_ratio", "indenter_poisson_ratio", "profile", "exponent")
 
 
 def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
@@ -386,6 +386,9 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
     if max_errors:
         attrs["max_error"] = max(max_errors)
     attrs.update(_layer_attrs(ind, first))
+    if getattr(first, "profile", "paraboloid") != "paraboloid":  # Hertz's files stay as they were
+        attrs["profile"] = str(first.profile)  # h = A r^d (contactlib.profiles)
+        attrs["profile_exponent"] = float(first.exponent)
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
     attrs["contactlib_version"] = version()

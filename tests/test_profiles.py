@@ -159,3 +159,41 @@ def test_bad_profiles_are_refused_by_name(kw, name):
     with pytest.raises(validate.InputError) as err:
         api.solve("sphere", 0.3, stick_ratio=0.5, **kw)
     assert err.value.name == name
+
+
+def test_command_line_profile_and_its_dataset(tmp_path):
+    import subprocess
+    import sys
+
+    import xarray as xr
+
+    out = tmp_path / "cone.nc"
+    cmd = [sys.executable, "-m", "contactlib", "sweep", "--geometry", "cylinder", "--nu", "0.3",
+           "--stick-ratios", "0.5", "--n", "64", "--profile", "cone", "--output", str(out)]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert "profile = cone (d = 1)" in r.stdout
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["profile"] == "cone" and ds.attrs["profile_exponent"] == 1.0
+        k = float(ds["friction_coefficient"][0])
+    assert k == api.solve("cylinder", 0.3, stick_ratio=0.5, n=64, profile="cone",
+                          energy=False).friction_coefficient
+
+
+@pytest.mark.parametrize("extra, option", [
+    (["--profile", "flat"], "--profile"),
+    (["--profile", "power"], "--exponent"),
+    (["--profile", "power", "--exponent", "x"], "--exponent"),
+    (["--profile", "cone", "--exponent", "2"], "--exponent"),
+    (["--profile", "cone", "--method", "paper", "--n", "16"], "--method"),
+])
+def test_command_line_refuses_bad_profiles_in_one_line(extra, option):
+    import subprocess
+    import sys
+
+    cmd = [sys.executable, "-m", "contactlib", "solve", "--geometry", "sphere", "--nu", "0.3",
+           "--stick-ratio", "0.5", *extra]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    assert r.returncode == 2
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and option in lines[0]

@@ -55,9 +55,7 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "derived_measures", "subsurface_stresses", "field_maximum",
            "surface_radial_stress", "default_grid", "check_subsurface_request",
            "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
-           "field_error_estimate",
-           "COMPONENTS",
-           "XI_SURFACE", "PANEL", "CHUNK"]
+           "field_error_estimate", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
               "cylinder": ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz")}
@@ -407,10 +405,24 @@ def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np
 # ----------------------------------------------------------------------------- dispatch
 def stress_field(geometry: str, nu: float, xi: Any, pressure: Any, shear: Any, x: Any,
                  z: Any) -> dict[str, np.ndarray]:
-    """The stress components of ``geometry`` (``COMPONENTS``) on the grid (z, x).
+    """The stress components of ``geometry`` (:data:`COMPONENTS`) on the grid (z, x).
 
-    ``"sphere"``: :func:`halfspace_stresses`; ``"cylinder"``: :func:`halfplane_stresses`
-    (same parameters, same units).
+    Parameters
+    ----------
+    geometry : {"sphere", "cylinder"}
+        :func:`halfspace_stresses` or :func:`halfplane_stresses`.
+    nu : float
+        Poisson's ratio of the body.
+    xi, pressure, shear : array_like, shape (m,)
+        Tabulated tractions on r/a (x/a) >= 0, piecewise linear between, in any stress
+        unit (p0 for a Solution's ``pressure`` and ``shear``).
+    x, z : array_like, 1-d
+        Output grid, r/a (x/a) and depth z/a >= 0.
+
+    Returns
+    -------
+    dict of str to ndarray, shape (len(z), len(x))
+        The components, in the unit of the tractions, tension positive.
     """
     if geometry == "sphere":
         return halfspace_stresses(xi, pressure, shear, x, z, nu)
@@ -432,6 +444,18 @@ def principal_stresses(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
 
     The hoop stress (sphere) or sigma_yy (cylinder) is principal; the other two are the
     eigenvalues of the in-plane 2 x 2 tensor.
+
+    Parameters
+    ----------
+    geometry : {"sphere", "cylinder"}
+        Which components ``s`` holds (:data:`COMPONENTS`).
+    s : dict of str to ndarray
+        The components (any stress unit), e.g. from :func:`stress_field`.
+
+    Returns
+    -------
+    ndarray, shape (3, ...)
+        sigma_1 >= sigma_2 >= sigma_3, in the unit of ``s``.
     """
     a, b, c, d = _split(geometry, s)
     mean, radius = 0.5 * (a + c), np.hypot(0.5 * (a - c), d)
@@ -439,26 +463,45 @@ def principal_stresses(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
 
 
 def von_mises(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
-    """von Mises equivalent stress sqrt(((s1-s2)^2 + (s2-s3)^2 + (s3-s1)^2)/2), from the
-    components: sqrt(((a-b)^2 + (b-c)^2 + (c-a)^2)/2 + 3 d^2)."""
+    """von Mises equivalent stress, in the unit of ``s``.
+
+    sqrt(((s1-s2)^2 + (s2-s3)^2 + (s3-s1)^2)/2), from the components as sqrt(((a-b)^2 +
+    (b-c)^2 + (c-a)^2)/2 + 3 d^2) (a, b, c the normal stresses, d the in-plane shear).
+    Parameters as for :func:`principal_stresses`.
+    """
     a, b, c, d = _split(geometry, s)
     return np.sqrt(0.5 * ((a - b)**2 + (b - c)**2 + (c - a)**2) + 3.0 * d * d)
 
 
 def tresca(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
-    """Maximum shear stress (s1 - s3)/2, half the spread of the principal stresses."""
+    """Maximum shear stress (s1 - s3)/2, half the spread of the principal stresses.
+
+    In the unit of ``s``; parameters as for :func:`principal_stresses`.
+    """
     ps = principal_stresses(geometry, s)
     return 0.5 * (ps[0] - ps[2])
 
 
 def hydrostatic(geometry: str, s: dict[str, np.ndarray]) -> np.ndarray:
-    """Mean normal stress (trace / 3), tension positive."""
+    """Mean normal stress (trace / 3), tension positive, in the unit of ``s``.
+
+    Parameters as for :func:`principal_stresses`.
+    """
     a, b, c, _ = _split(geometry, s)
     return (a + b + c) / 3.0
 
 
 def derived_measures(geometry: str, s: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
-    """von Mises, Tresca, hydrostatic and the principal stresses (s1 >= s2 >= s3)."""
+    """von Mises, Tresca, hydrostatic and the principal stresses (s1 >= s2 >= s3).
+
+    Parameters as for :func:`principal_stresses`.
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``von_mises``, ``tresca``, ``hydrostatic``, ``sigma_1``, ``sigma_2``,
+        ``sigma_3``, in the unit of ``s``.
+    """
     ps = principal_stresses(geometry, s)
     return {"von_mises": von_mises(geometry, s), "tresca": 0.5 * (ps[0] - ps[2]),
             "hydrostatic": hydrostatic(geometry, s), "sigma_1": ps[0], "sigma_2": ps[1],
@@ -582,8 +625,15 @@ def field_maximum(ds: Any, name: str = "tresca") -> dict[str, float]:
     """Value and place of the largest ``name`` on a Dataset's grid.
 
     The grid maximum, refined by a parabola through it and its neighbours along each
-    axis (where it has both): value error O(h^2) -> O(h^3) of the grid spacing h for a
-    smooth peak.
+    axis (where it has both, equally spaced): value error O(h^2) -> O(h^3) of the grid
+    spacing h for a smooth peak.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A field of :func:`subsurface_stresses` (dimensions z, x).
+    name : str
+        The variable, e.g. ``"tresca"`` or ``"von_mises"``.
 
     Returns
     -------
@@ -614,15 +664,39 @@ def surface_radial_stress(solution: Any, x: Sequence[float] | np.ndarray, *,
 
     At and outside the contact edge (x >= 1) this is the tension that starts cone cracks
     in brittle bodies: (1 - 2 nu)/(3 x^2) for frictionless Hertz (sphere).
+
+    Parameters
+    ----------
+    solution : contactlib.result.Solution
+        A solved case on a half-space or half-plane.
+    x : array_like, 1-d
+        r/a (x/a) on the surface.
+    body : {"body", "indenter"}
+        As for :func:`subsurface_stresses`.
+
+    Returns
+    -------
+    ndarray
+        The radial (x) normal stress / p0 at ``x``, tension positive.
     """
     ds = subsurface_stresses(solution, x, [0.0], body=body, measures=False)
     return ds[COMPONENTS[solution.geometry][0]].values[0]
 
 
 def default_grid() -> tuple[np.ndarray, np.ndarray]:
-    """The grid of ``contactlib solve --subsurface``: x = r/a (x/a) and z = depth/a, each 101
-    equally spaced points on [0, 2] (the field is even in x: sigma_xz odd)."""
-    return np.linspace(0.0, 2.0, 101), np.linspace(0.0, 2.0, 101)
+    """The grid of ``contactlib solve --subsurface``: x = r/a (x/a) and z = depth/a.
+
+    :data:`contactlib.validate.SUBSURFACE_GRID`, 101 equally spaced points on [0, 2] each
+    (the field is even in x, sigma_xz odd).
+
+    Returns
+    -------
+    x, z : ndarray
+    """
+    from .validate import SUBSURFACE_GRID
+
+    (x0, x1, nx), (z0, z1, nz) = SUBSURFACE_GRID
+    return np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
 
 
 def check_subsurface_request(output: Any, slab_ratio: float) -> None:

@@ -274,6 +274,26 @@ def test_radial_shear_surface_limit(partial):
     assert np.max(np.abs(lim["sigma_zz"])) < 2e-4
 
 
+def test_radial_shear_near_the_surface_against_the_disc_kernels():
+    """q = r on r < a (one linear piece, zero outside): the surface stresses follow from
+    the surface displacement u of contactlib.kernels.disc.shear_disc (the paper's elliptic
+    closed forms, tested there against Boussinesq/Cerruti integration) by Hooke's law
+    with sigma_zz = 0: sigma_rr = E* (du/dr + nu u/r), sigma_tt = E* (u/r + nu du/dr)
+    (E* = 1 there, and the unit of q here). The field at z = 0.001 and 0.002,
+    extrapolated linearly to z = 0, has an O(z^2) error: measured 6e-5 at (0.002, 0.004)
+    and 1.5e-5 at (0.001, 0.002), falling 4x a halving."""
+    from contactlib.kernels.disc import shear_disc
+
+    r = np.array([0.3, 0.6, 1.5, 2.0])  # away from the jump of q at r = a
+    _, u, du = shear_disc(r, 1.0, NU)
+    f = halfspace_stresses([0.0, 1.0], [0.0, 0.0], [0.0, 1.0], r, [0.001, 0.002], NU)
+    lim = {k: 2 * v[0] - v[1] for k, v in f.items()}
+    assert np.max(np.abs(lim["sigma_rr"] - (du + NU * u / r))) < 3e-5
+    assert np.max(np.abs(lim["sigma_tt"] - (u / r + NU * du))) < 3e-5
+    assert np.max(np.abs(lim["sigma_rz"] + np.where(r < 1, r, 0.0))) < 3e-5
+    assert np.max(np.abs(lim["sigma_zz"])) < 3e-5
+
+
 def test_radial_shear_surface_value_on_the_axis(partial):
     """sigma_rr(0, 0) = (1 + nu) int_0^1 q(t)/t dt - (1 + 2 nu) p(0)/2 in closed form for
     the piecewise-linear q; the surface integral is cut at XI_SURFACE = 4000, whose

@@ -45,6 +45,21 @@ H15_201 = (1.0 / 200)**1.5  # 3.5e-4, a Solution's 201 points
 
 
 # ----------------------------------------------------------------------------- closed forms
+def huber(r: np.ndarray, z: np.ndarray, nu: float) -> dict[str, np.ndarray]:
+    """Huber's (1904) field under Hertz pressure (a = p0 = 1, r > 0, z > 0), tension
+    positive, in the form of Johnson, Contact Mechanics (1985), Ch. 3: with u the positive
+    root of r^2/(1 + u) + z^2/u = 1 (spheroidal coordinate) and t = z/sqrt(u)."""
+    s = r**2 + z**2 - 1.0
+    u = 0.5 * (s + np.sqrt(s**2 + 4.0 * z**2))
+    su, t = np.sqrt(u), z / np.sqrt(u)
+    edge = (1 - 2 * nu) / 3 / r**2 * (1 - t**3)
+    atan = (1 + nu) * su * np.arctan(1.0 / su)
+    return {"sigma_rr": edge + t**3 * u / (u**2 + z**2) + t * ((1 - nu) * u / (1 + u) + atan - 2),
+            "sigma_tt": -edge - t * (2 * nu + (1 - nu) * u / (1 + u) - atan),
+            "sigma_zz": -t**3 * u / (u**2 + z**2),
+            "sigma_rz": -r * z**2 / (u**2 + z**2) * su / (1 + u)}
+
+
 def huber_axis(z: np.ndarray, nu: float) -> tuple[np.ndarray, np.ndarray]:
     """sigma_zz/p0 and sigma_rr/p0 on the axis under Hertz pressure (a = 1)."""
     szz = -1.0 / (1.0 + z**2)
@@ -100,6 +115,16 @@ def test_huber_axis_from_exact_samples():
     assert np.max(np.abs(f["sigma_rr"][:, 0] - srr)) < H15
     assert np.max(np.abs(f["sigma_tt"][:, 0] - srr)) < H15  # axis: sigma_tt = sigma_rr
     assert np.max(np.abs(f["sigma_rz"][:, 0])) < 1e-12
+
+
+def test_huber_field_from_exact_samples():
+    """The whole field off the axis and below the surface (each of the four components
+    against Huber's closed form; the surface and the axis are tested apart)."""
+    r, z = np.linspace(0.05, 2.5, 25), np.linspace(0.05, 2.0, 20)
+    f = halfspace_stresses(XI, HERTZ, 0 * XI, r, z, NU)
+    ref = huber(*np.meshgrid(r, z), NU)
+    for k, v in ref.items():
+        assert np.max(np.abs(f[k] - v)) < 4 * H15, k
 
 
 def test_huber_axis_through_a_solution(hertz_solution):

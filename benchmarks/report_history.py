@@ -347,8 +347,9 @@ def error_check(geometry: str, k: float, path: str, n: int, steps: int,
     c = np.nan_to_num(res.stick_ratio * res.contact_radius)
     c_ref = np.nan_to_num(ref.stick_ratio * ref.contact_radius)[::4]
     w, w_ref = res.frictional_work, ref.frictional_work[::4]
-    true = {"c": np.abs(c - c_ref),
-            "w": np.divide(np.abs(w - w_ref), w_ref, out=np.zeros_like(w), where=w_ref > 0)}
+    true = {"c": np.abs(c - c_ref),  # the work relative to the path's total (the estimate's)
+            "w": np.abs(w - w_ref) / ref.frictional_work[-1] if ref.frictional_work[-1] > 0
+            else np.zeros_like(w)}
     est = {"c": res.stick_radius_error_estimate, "w": res.work_error_estimate}
     annulus = hs.annulus_resolved(k, res.state) & (res.load_ratio > 0)
     out = {"resolved": int(res.resolved[1:].sum()), "steps": res.load_ratio.size - 1,

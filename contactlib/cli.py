@@ -841,6 +841,10 @@ def format_history(res: Any) -> str:
     if res.resolved is not None:
         rows.append(f"  resolved steps (max error {res.max_error:g}): "
                     f"{int(res.resolved[1:].sum())}/{total}")
+    verdicts = getattr(res, "resolved_quantities", None)
+    if verdicts:
+        rows.append("  resolved quantities: " + ", ".join(
+            f"{name.replace('_', ' ')} {_yes(ok)}" for name, ok in verdicts.items()))
     if res.message:
         rows.append(f"  message: {res.message}")
     return "\n".join(rows)

@@ -45,12 +45,14 @@ Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
   :func:`~contactlib.history_solver.stick_radius`). ``stick_ratio`` is NaN
   without contact.
 
-Frictional work of a step: ``sum_j max(0, -(q_j^old + q_j^new)/2 du_j) A_j``
-over the elements slipping at the end of the step and those that slipped
-and separate in it (trapezoid rule in time, each element's term floored at
-0 so that no step dissipates a negative amount, with the element's
-shear-weighted area A_j: ``int (r/r_j) 2 pi r dr`` for a ring, ``2 dx`` for
-a strip pair; :func:`contactlib.energy.step_work`). Its error falls roughly like 1/steps
+Frictional work of a step: ``-sum_j (q_j^old + q_j^new)/2 du_j A_j`` over
+the elements slipping at the end of the step and those that slipped and
+separate in it (trapezoid rule in time, with the element's shear-weighted
+area A_j: ``int (r/r_j) 2 pi r dr`` for a ring, ``2 dx`` for a strip pair;
+:func:`contactlib.energy.step_work`). Where a step's sum is negative (the
+end of an unloading) the fall is taken from the steps before it
+(:func:`contactlib.energy.monotone_work`): no step dissipates a negative
+amount, and the path's total is the trapezoid sum. Its error falls roughly like 1/steps
 (0.2 % at 200 steps a segment for the sphere with c/a = 0.5); a slip zone
 spanning few elements (c/a close to 1, large k) also needs a finer mesh, and
 ``message`` says so when the slip zone at the top load spans fewer than 12
@@ -92,7 +94,9 @@ MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
-_MIN_SPLIT_STEPS = 40  # fewer steps a segment: one coarse run (B would be too coarse)
+_MIN_ORDER_STEPS = 40  # fewer steps a segment: no run C, order 1 (C would be too coarse)
+WORK_FLOOR = 1e-4  # the work's error scale: at least this fraction of the indenter's work
+_ADVICE_MARGIN = 2.0  # advice aims at max_error / 2 (see _advice)
 
 
 @dataclass(repr=False)
@@ -132,10 +136,30 @@ class HistoryResult:
         Estimated absolute error of the stick radius c / a_max (NaN when the
         estimate was skipped); see :func:`history`.
     work_error_estimate : ndarray
-        Estimated relative error of ``frictional_work`` (NaN when skipped).
+        Estimated error of ``frictional_work`` relative to ``work_scale``,
+        the path's total frictional work (NaN when skipped); at the last
+        step the relative error of the path's work.
+    energy_error_estimate : ndarray
+        Estimated error of ``external_work``, ``stored_energy`` and
+        ``viscous_work`` (the largest) relative to ``energy_scale``, the
+        largest external work of the path; ``inf`` where a value is not
+        finite (NaN when skipped).
+    work_scale, energy_scale : float
+        The scales of the two estimates (units of ``frictional_work``):
+        the path's total frictional work, at least ``WORK_FLOOR`` (1e-4)
+        times ``energy_scale``; the largest external work.
     resolved : ndarray of bool
-        The step converged, its slip zone is absent or spans at least 12
-        elements, and neither estimate exceeds ``max_error``.
+        The step converged, every value it reports is finite, its slip zone
+        is absent or spans at least 12 elements, and no estimate exceeds
+        ``max_error``.
+    resolved_quantities : dict of str to bool
+        Whether ``frictional_work``, ``stick_radius`` and ``energies`` are
+        resolved along the whole path (every step converged and within
+        ``max_error`` at the quantity's scale; the work also needs a slip
+        zone of at least 12 elements at the top load; the stick radius is
+        not judged at the steps that move the contact edge over more than
+        an element, from or to no contact, where each step is a one-step
+        load that no refinement of equal steps resolves).
     max_error : float
         The accuracy a step must reach to be resolved.
     relaxation, durations : tuple
@@ -201,6 +225,10 @@ class HistoryResult:
     stored_energy: np.ndarray | None = None
     viscous_work: np.ndarray | None = None
     base: str = "smooth"  # the layer's rigid base (irrelevant at slab_ratio 0)
+    energy_error_estimate: np.ndarray | None = None
+    work_scale: float = math.nan
+    energy_scale: float = math.nan
+    resolved_quantities: dict[str, bool] | None = None
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -256,21 +284,65 @@ def creep_extent(model: Contact) -> float:
     return hs.MESH_EXTENT * model.indenter.hertz_radius(1.0 / relaxed)
 
 
-def _refinement(n: int, steps: int, err_c: float, err_w: float, max_error: float) -> str:
-    """What would resolve the path's last step: n and steps scaled by estimate / max_error.
+def _relative(error: np.ndarray, scale: float) -> np.ndarray:
+    """``error / scale``; 0 where the error is 0 (whatever the scale), inf where NaN."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = np.where(error == 0.0, 0.0, error / scale)
+    return np.where(np.isnan(out), np.inf, out)
 
-    Both errors fall about like 1/n and 1/steps together (the work's mesh and step
-    parts are first order; the stick radius is good to a fraction of an element),
-    so refining both by the ratio r of the last step's larger estimate to
-    ``max_error`` resolves it; the time grows like r^3 or more.
+
+def _finite_steps(raw: hs.RawHistory, energies: Sequence[str]) -> np.ndarray:
+    """Per step: every reported number is finite (NaN is never resolved; the stick radius is
+    NaN by definition without contact and not judged here)."""
+    ok = np.all(np.isfinite(raw.p) & np.isfinite(raw.q) & np.isfinite(raw.u), axis=1)
+    for name in ("work", "delta", "contact_radius") + tuple(energies):
+        ok &= np.isfinite(getattr(raw, name))
+    return ok
+
+
+def _advice(n: int, steps: int, needs: dict[str, tuple[float, float]],
+            max_error: float) -> str:
+    """The run predicted to resolve the path, if the tool accepts one.
+
+    ``needs`` maps a quantity to (its largest estimate / ``max_error``, the
+    order p of its error under joint refinement of n and steps, measured
+    by :func:`contactlib.history_solver.error_estimates`; 1 for the stick
+    radius), and ``slip_zone`` to (12 / the slip zone's elements at the top
+    load, 1). The run aims at estimates of ``max_error / 2``: an estimate
+    moves by about a factor 2 between neighbouring runs (the stick radius's
+    differences on element edges come in whole elements), so a run aimed at
+    ``max_error`` itself would miss it about half the time. Refining both
+    by r divides the estimate by r^p, so the run is ``r = max
+    (ratio^(1/p))`` times n and steps. Where that exceeds ``MAX_N`` or
+    ``MAX_STEPS``, the largest accepted refinement is advised if it is
+    predicted to reach ``max_error`` (without the margin); else no run is
+    advised and the text says what that refinement is predicted to reach.
     """
-    ratio = max(err_c, err_w) / max_error
-    if not np.isfinite(ratio) or ratio <= 1.0:
-        return "use a larger n and more steps"
-    r = math.ceil(ratio * 10.0) / 10.0
-    return (f"the last step's estimate is {r:g} x max_error; about n = "
-            f"{min(math.ceil(r * n), MAX_N)} with {math.ceil(r * steps)} steps a segment "
-            f"would resolve it")
+    if not any(ratio > 1.0 for ratio, _ in needs.values()):
+        return ""
+    # aim at half of max_error: an estimate moves by about a factor 2 between neighbouring
+    # runs (the stick radius's element-edge differences come in whole elements)
+    needs = {q: (ratio * (_ADVICE_MARGIN if q != "slip_zone" else 1.0), order)
+             for q, (ratio, order) in needs.items()}
+    needs = {q: (ratio, order) for q, (ratio, order) in needs.items() if ratio > 1.0}
+    if not all(math.isfinite(ratio) for ratio, _ in needs.values()):
+        return "an estimate is not finite: no run can be advised"
+    r = max(ratio ** (1.0 / order) for ratio, order in needs.values())
+    n_new, steps_new = math.ceil(r * n), math.ceil(r * steps)
+    if n_new <= MAX_N and steps_new <= MAX_STEPS:
+        return f"n = {n_new} with {steps_new} steps a segment is predicted to resolve it"
+    r_max = min(MAX_N / n, MAX_STEPS / steps)
+    reach = max([ratio / r_max ** order for q, (ratio, order) in needs.items()
+                 if q != "slip_zone"] or [0.0]) * max_error / _ADVICE_MARGIN
+    slip_ok = needs.get("slip_zone", (1.0, 1.0))[0] <= r_max
+    n_max, steps_max = math.floor(r_max * n), math.floor(r_max * steps)
+    if reach <= max_error and slip_ok:  # the margin does not fit, the prediction does
+        return (f"n = {n_max} with {steps_max} steps a segment (the largest the tool "
+                f"accepts) is predicted to resolve it, estimates about {reach:.2g}")
+    limit = f"n <= {MAX_N}" if n_new > MAX_N else f"steps <= {MAX_STEPS}"
+    return (f"no accepted run resolves it ({limit}: it needs n = {n_new}, "
+            f"{steps_new} steps); n = {n_max}, {steps_max} steps a segment is predicted "
+            f"to reach {reach:.2g}")
 
 
 # ----------------------------------------------------------------------------- public API
@@ -312,9 +384,10 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         ``progress(i, total)`` after each step of the main run.
     max_error : float
         Accuracy a step must reach to be flagged ``resolved``, in (0, 1): the
-        bound on both the stick radius error (units of a_max) and the relative
-        error of the cumulative frictional work. Default 1e-2, a history's own
-        (see the notes).
+        bound on the stick radius error (units of a_max), on the error of the
+        cumulative frictional work relative to the path's total work, and on
+        the energies' error relative to the path's largest external work.
+        Default 1e-3 (see the notes).
     error_estimate : bool
         Estimate the errors from an embedded coarser run (default). If False
         the estimates are NaN and ``resolved`` reflects only convergence and
@@ -348,32 +421,37 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     -----
     Error estimates: the same path is followed on a mesh of ``n // 2``
     elements with ``steps // 2`` steps a segment (run A) and, from 40 steps a
-    segment, on the same coarse mesh with ``steps // 4`` (run B); their
+    segment, on ``n // 4`` elements with ``steps // 4`` (run C); their
     values are interpolated to the same point of the path (see
-    :func:`contactlib.history_solver.error_estimates`). The work error is the
-    mesh error and the step error estimated separately and added as absolute
-    values, so that errors of opposite sign do not cancel; the stick radius
-    error is this run minus run A (not across a jump of A's stick radius),
-    at least half an element wherever the stick edge is an element edge.
-    Measured against runs refined fourfold (4n elements, 4x steps;
-    ``benchmarks/report_history.py errors errors_default``, docs/accuracy.md):
-    at n = 120, 50 steps (17 paths: sphere and half-plane, nu = 0.3 and 0,
-    k = 0.05 ... 0.5, cycles and fretting) the estimates are at least 0.36
-    (stick radius) and 0.57 (work) of the error at every step whose slip
-    annulus is resolved, and at most 9.3 and 8.5 times the largest error of a
-    path segment; at the default n = 240 and 200 steps at least 0.40 and
-    0.75 (0.49 over all steps), at most 2.0 and 4.0 times. The estimate
-    costs 26 ... 38 % of the run (CPU time, the default config's history
-    scenes).
+    :func:`contactlib.history_solver.error_estimates`). The work's and the
+    energies' order of convergence under this joint refinement is measured
+    from the three runs, and their error is this run minus run A over
+    ``2^p - 1`` (Richardson); the stick radius error is this run minus run A
+    (not across a jump of A's stick radius), at least half an element
+    wherever the stick edge is an element edge. Measured against runs
+    refined fourfold (4n elements, 4x steps;
+    ``benchmarks/report_history_estimates.py``, docs/accuracy.md) at n =
+    120, 50 steps: the cycle work's estimate is 0.52 ... 1.25 times its error
+    (sphere and half-plane cycles and fretting, a viscoelastic body;
+    measured orders 1.5 ... 2.1), 16 times on a layer whose slip annulus
+    spans under 12 elements (the runs are not asymptotic there, the
+    measured order falls to its bound 1/2); the stick radius's is 1.4 ... 36
+    times its error at the top load (the sub-element edge converges faster
+    than the differences show) and covers it along the path (at least 0.68
+    of it), at most 9.9 times a segment's largest error. The estimate costs
+    about a third of the run.
 
-    ``max_error`` defaults to 1e-3, as for self-similar cases. The
-    default n = 240 and 200 steps a segment give the cumulative
-    work to about 1 % while loading (0.05 ... 0.4 % at the end of a cycle,
-    truth n = 960, 800 steps) and an element-edge stick radius to a quarter
-    of an element, so at the defaults a history is flagged unless it asks
-    for ``max_error=1e-2`` (as the workflow's history scenes do); 1e-3
-    needs about 4 n and 4x steps. The ``message`` of a flagged history
-    names the n and steps that would resolve its last step.
+    A step is flagged where a quantity is off by more than ``max_error`` at
+    its own scale (above); ``resolved_quantities`` and ``message`` say which
+    quantities the path resolves, and a flagged history's ``message`` names
+    the n and steps that the measured orders predict will resolve it (aimed
+    at ``max_error / 2``), or says that no run within ``MAX_N`` and
+    ``MAX_STEPS`` is predicted to. ``max_error`` defaults to 1e-3, as for
+    self-similar cases; the default n = 240 and 200 steps a segment give a
+    cycle's work to about 2e-3 (sphere, k = 0.2) and an element-edge stick
+    radius to half an element (0.0025 a_max), so a default history is
+    flagged at 1e-3 unless it asks for ``max_error=1e-2`` (as the workflow's
+    history scenes do).
 
     Measured against the self-similar solver (sphere, nu = 0.3, monotonic
     loading): c/a within 0.25 % for c/a = 0.2 ... 0.9 at n = 120 ... 480 and
@@ -430,6 +508,10 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     raw = hs.run_history(ops, k, levels, progress=progress, times=times_of(steps))
     err_c = np.full(levels.size, np.nan)
     err_w = np.full(levels.size, np.nan)
+    err_e = np.full(levels.size, np.nan)
+    energy_scale = float(np.max(np.abs(raw.external_work)))  # NaN if any step's is
+    work_scale = max(float(np.max(raw.work)), WORK_FLOOR * energy_scale)
+    energies = ("external_work", "stored_energy") + (("viscous_work",) if prony else ())
     if error_estimate:
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
@@ -437,17 +519,21 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         ops_c = hs.build_operators(model, n_c, extent)
         raw_c = hs.run_history(ops_c, k, levels_c, times=times_of(steps_c))
         coarser = (None, None, None)
-        if steps >= _MIN_SPLIT_STEPS:  # separate step error: the same mesh, half the steps again
+        if steps >= _MIN_ORDER_STEPS:  # the order measured: half the mesh and steps again
             steps_b = steps_c // 2
             levels_b, segment_b = load_levels(levels_in, steps_b)
-            coarser = (hs.run_history(ops_c, k, levels_b, times=times_of(steps_b)), steps_b,
+            ops_b = hs.build_operators(model, max(n_c // 2, 8), extent)
+            coarser = (hs.run_history(ops_b, k, levels_b, times=times_of(steps_b)), steps_b,
                        segment_b)
-        err_c, err_w = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c, segment_c,
-                                          *coarser)
+        err_c, diffs, orders = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c,
+                                                  segment_c, *coarser, energies=energies)
+        err_w = _relative(diffs["work"], work_scale)
+        err_e = np.max([_relative(diffs[name], energy_scale) for name in energies], axis=0)
     annulus = hs.annulus_resolved(k, raw.state)
-    with np.errstate(invalid="ignore"):
-        accurate = ~((err_c > max_error) | (err_w > max_error))  # NaN: not estimated
-    resolved = raw.converged & annulus & accurate
+    finite = _finite_steps(raw, energies)
+    with np.errstate(invalid="ignore"):  # a NaN estimate: not estimated
+        ok_c, ok_w, ok_e = (~(e > max_error) for e in (err_c, err_w, err_e))
+    resolved = raw.converged & annulus & finite & ok_c & ok_w & ok_e
 
     with np.errstate(invalid="ignore", divide="ignore"):
         stick_ratio = np.where(raw.contact_radius > 0, raw.stick_radius / raw.contact_radius,
@@ -466,18 +552,49 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     if np.any(raw.state[:, -2:] > 0):
         notes.append("the contact reached the end of the mesh: results are not valid")
         resolved[:] = False
+    labels = {"frictional_work": "frictional work", "stick_radius": "stick radius",
+              "energies": "energies"}
+    loaded = slice(1, None)
+    # steps that move the contact edge by more than an element (from or to no contact): each
+    # is a one-step load of its own, whose stick radius no refinement of equal steps resolves
+    jump = np.concatenate([[False], np.abs(np.diff(raw.contact_radius)) > ops.edges[1]])
+    regular = ~jump if not jump[loaded].all() else np.ones(levels.size, dtype=bool)
+    verdicts = {  # a quantity is resolved where every step resolves it
+        "frictional_work": bool(np.all((raw.converged & np.isfinite(raw.work) & ok_w)[loaded])
+                                and not 0 < slipping < _MIN_SLIP_ELEMENTS),
+        "stick_radius": bool(np.all((raw.converged & (ok_c | ~regular))[loaded])),
+        "energies": bool(np.all((raw.converged & finite & ok_e)[loaded]))}
+    if np.any(raw.state[:, -2:] > 0):
+        verdicts = dict.fromkeys(verdicts, False)
+    with np.errstate(invalid="ignore"):
+        worst = {"frictional_work": (np.max(err_w), "of its total"),
+                 "stick_radius": (np.max(err_c[regular]), "a_max"),
+                 "energies": (np.max(err_e), "of peak external work")}
+    if error_estimate:
+        parts = [f"{labels[q]} ({worst[q][0]:.2g} {worst[q][1]})"
+                 for q, ok in verdicts.items() if not ok]
+        good = [labels[q] for q, ok in verdicts.items() if ok]
+        notes.append(f"resolved to max_error {max_error:g}: {', '.join(good) or 'nothing'}"
+                     + (f"; not: {', '.join(parts)}" if parts else ""))
     if not resolved[1:].all():
-        why = []
-        if not annulus.all():
-            why.append(f"{np.count_nonzero(~annulus)} with a slip zone under "
-                       f"{_MIN_SLIP_ELEMENTS} elements")
-        if not accurate.all():
-            why.append(f"{np.count_nonzero(~accurate)} estimated above max_error = "
-                       f"{max_error:g} (stick radius error up to {np.nanmax(err_c):.2g} a_max, "
-                       f"relative work error up to {np.nanmax(err_w):.2g})")
-        notes.append(f"{np.count_nonzero(~resolved[1:])} of {levels.size - 1} steps are flagged "
-                     f"not resolved ({'; '.join(why) or 'not converged'}): "
-                     f"{_refinement(n, steps, err_c[-1], err_w[-1], max_error)}")
+        why = [f"{np.count_nonzero(~ok[loaded])} {what}" for ok, what in (
+            (raw.converged, "not converged"), (finite, "not finite"),
+            (annulus, f"slip zone under {_MIN_SLIP_ELEMENTS} elements"),
+            (ok_c, "stick radius"), (ok_w, "work"), (ok_e, "energies"),
+            (ok_c | regular, "with the contact edge moving over an element, not judged"))
+            if not ok[loaded].all()]
+        advice = ""
+        if error_estimate:
+            needs = {"stick_radius": (worst["stick_radius"][0] / max_error, 1.0),
+                     "frictional_work": (worst["frictional_work"][0] / max_error,
+                                         orders["work"]),
+                     "energies": (worst["energies"][0] / max_error,
+                                  min(orders[e] for e in energies))}
+            if 0 < slipping < _MIN_SLIP_ELEMENTS:  # the slip zone's elements grow like n
+                needs["slip_zone"] = (_MIN_SLIP_ELEMENTS / slipping, 1.0)
+            advice = _advice(n, steps, needs, max_error)
+        notes.append(f"{np.count_nonzero(~resolved[1:])}/{levels.size - 1} steps flagged "
+                     f"({', '.join(why)})" + (f"; {advice}" if advice else ""))
     if model.decoupled and k > 0:
         cause = "nu = 0.5" if model.indenter.rigid else "beta = 0"
         notes.append(f"{cause}: the normal and tangential problems decouple; no shear arises")
@@ -491,6 +608,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         tangential_displacement=raw.u, converged=raw.converged,
         iterations=raw.iterations, residual_norm=raw.residual, message="; ".join(notes),
         stick_radius_error_estimate=err_c, work_error_estimate=err_w, resolved=resolved,
+        energy_error_estimate=err_e, work_scale=work_scale, energy_scale=energy_scale,
+        resolved_quantities=verdicts,
         max_error=max_error, indenter_modulus_ratio=float(ratio),
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
         dundurs_beta=float(model.beta), relaxation=prony, durations=durations,

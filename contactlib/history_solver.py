@@ -85,8 +85,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy import linalg
 
-from .energy import (decay_integrals, dot, mean_traction, step_external_work, step_work,
-                     stored_energy, viscous_step_work)
+from .energy import (decay_integrals, dot, mean_traction, monotone_work, step_external_work,
+                     step_work, stored_energy, viscous_step_work)
 from .model import Contact
 from .validate import HISTORY_MESH_EXTENT
 from .operators import step_operator
@@ -95,7 +95,7 @@ __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS"
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
            "stick_radius", "MESH_EXTENT", "RawHistory", "run_history",
            "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates",
-           "annulus_resolved", "straddle"]
+           "annulus_resolved", "straddle", "measured_order", "ORDER_MIN", "ORDER_MAX"]
 
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"
@@ -103,6 +103,9 @@ MESH_EXTENT = HISTORY_MESH_EXTENT  # mesh length over a_max (validate bounds lay
 
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
 MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
+# bounds of a measured order of convergence (error_estimates): below 1/2 the runs are not
+# converging, and above 3 the three runs' differences are at round-off or coincidence
+ORDER_MIN, ORDER_MAX = 0.5, 3.0
 _MAX_DURATIONS = 4  # step durations whose scaled operators a viscoelastic run keeps
 # the LAPACK routines behind scipy.linalg.lu_factor / lu_solve, called without their
 # wrappers' checks (a step's many small systems made those a tenth of its time)
@@ -604,8 +607,8 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
 
     The frictional work of a step is :func:`contactlib.energy.step_work`
     (trapezoid in time over the elements slipping at the end of the step and
-    those that slipped before it and separate in it, each element's term
-    floored at 0, so the cumulative work never falls).
+    those that slipped before it and separate in it); the cumulative work is
+    :func:`contactlib.energy.monotone_work` of its sums, so it never falls.
     A step from no contact starts from the Hertz contact radius of its load
     (:meth:`contactlib.indenter.Indenter.hertz_radius`).
 
@@ -723,6 +726,7 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
         p_old, w_old = res.p, d[0]
         if progress is not None:
             progress(i, steps - 1)
+    out.work = monotone_work(out.work)  # no step dissipates a negative amount
     return out
 
 
@@ -829,33 +833,56 @@ def straddle(diff: np.ndarray, a: np.ndarray, segment: np.ndarray, touching: np.
     return out
 
 
+def measured_order(fine: np.ndarray, coarse: np.ndarray, coarser: np.ndarray) -> float:
+    """Order of convergence of one quantity measured from three runs refined twofold each.
+
+    Parameters
+    ----------
+    fine, coarse, coarser : ndarray
+        The quantity at the same points of the path (steps that all three
+        runs have) from runs with (n, S), (n/2, S/2) and (n/4, S/4) elements
+        and steps a segment.
+
+    Returns
+    -------
+    float
+        ``log2(max|coarse - coarser| / max|fine - coarse|)``, kept within
+        ``[ORDER_MIN, ORDER_MAX]``; ``ORDER_MIN`` where the fine difference
+        does not shrink or a difference is not finite (no asymptotic
+        convergence seen: the estimate then takes the slowest order).
+    """
+    d1 = float(np.max(np.abs(fine - coarse), initial=0.0))
+    d2 = float(np.max(np.abs(coarse - coarser), initial=0.0))
+    if not (np.isfinite(d1) and np.isfinite(d2)) or d1 <= 0.0 or d2 <= d1:
+        return ORDER_MIN if not d1 == d2 == 0.0 else ORDER_MAX
+    return float(np.clip(np.log2(d2 / d1), ORDER_MIN, ORDER_MAX))
+
+
 def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.ndarray,
                     coarse: RawHistory, steps_coarse: int, segment_coarse: np.ndarray,
                     coarser: RawHistory | None = None, steps_coarser: int | None = None,
-                    segment_coarser: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Per-step error estimates of the stick radius and of the cumulative work.
+                    segment_coarser: np.ndarray | None = None,
+                    energies: tuple[str, ...] = ()
+                    ) -> tuple[np.ndarray, dict[str, np.ndarray], dict[str, float]]:
+    """Per-step error estimates of the stick radius, the cumulative work and the energies.
 
-    ``coarse`` (A) is the same path on a coarser mesh (about n/2 elements)
-    with about half the steps; ``coarser`` (B), if given, is the path on the
-    same coarse mesh with about a quarter of the steps. Both are interpolated
-    onto the fine steps by path coordinate (:func:`path_interpolate`).
+    ``coarse`` (A) is the same path with about n/2 elements and half the
+    steps; ``coarser`` (C), if given, the path with about n/4 elements and a
+    quarter of the steps. Both are interpolated onto the fine run's (F)
+    steps by path coordinate (:func:`path_interpolate`).
 
-    With B the mesh error and the step error of the work are estimated
-    separately and added as absolute values, so that errors of opposite sign cannot cancel:
-    ``S = A - B`` is the step refinement difference on the coarse mesh, and
-    for a step error of first order the step part of ``F - A`` (F the fine
-    run) is ``S / 2``, which leaves the mesh refinement difference
-    ``M = F - A - S / 2``. The estimate is ``|M| + |S| / 2``: ``|M|`` is the
-    mesh error of F for first order in the element size and three times it
-    for second order; ``|S| / 2`` is the step error of F for first order in
-    the step and 1.3 times it for order 0.6 (``S / 2`` over ``2^p (2^p - 1)``
-    times the error). Without B (fewer than 40 steps a segment,
-    where B would be too coarse) the estimate
-    is ``|F - A|``, where the two errors may cancel. The stick radius always
-    takes ``|F - A|``: its step error is small (the advancing stick edge is
-    resolved below the element size at every step), and the split estimate
-    overstated its error up to 25-fold in the fretting paths of
-    ``benchmarks/report_history.py errors``. Where A's stick radius jumps
+    The work and the energies: with C, their order of convergence under the
+    joint refinement of mesh and steps, ``p``, is measured from the three
+    runs at the steps they share (:func:`measured_order`), and the error of
+    F is ``|F - A| / (2^p - 1)`` (Richardson: an error ``E h^p`` leaves
+    ``F - A = E h^p (1 - 2^p)``). The cumulative work of a cycle converges
+    about like the second power of the element size and of the step (the
+    floored trapezoid rule, :func:`contactlib.energy.step_work`); assuming
+    first order had overstated its error 3-4 fold. Without C (fewer than
+    40 steps a segment, :func:`contactlib.history`) the order is taken as 1 and the
+    estimate is ``|F - A|``. The stick radius takes ``|F - A|``
+    (order 1: where it is an element edge its error is a fraction of the
+    element). Where A's stick radius jumps
     between two of its steps (the stick zone collapsing near the top of a
     reloading) the fine steps in between take at most their neighbours'
     difference (:func:`straddle`): the interpolated coarse value there is
@@ -882,15 +909,19 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     coarse, steps_coarse, segment_coarse
         Run A, its steps a segment and segments.
     coarser, steps_coarser, segment_coarser
-        Run B, its steps a segment and segments (optional).
+        Run C, its steps a segment and segments (optional).
+    energies : tuple of str
+        Further cumulative energies of :class:`RawHistory` (``external_work``,
+        ``stored_energy``, ``viscous_work``) estimated as the work is.
 
     Returns
     -------
-    (stick_radius_error, work_error)
+    (stick_radius_error, energy_errors, orders)
         Absolute error of the stick radius in units of a_max (0 without
-        contact) and relative error of the cumulative frictional work (0
-        while the runs have done no work, ``inf`` where only a coarse run
-        has).
+        contact); a dict of the absolute errors of ``work`` and of each of
+        ``energies`` (units of the work; ``inf`` where a value of any run
+        is not finite), which the caller scales (:func:`contactlib.history`);
+        and a dict of the orders ``p`` used, with ``stick_radius`` 1.
     """
     x = np.arange(segment.size) / steps
 
@@ -898,27 +929,35 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
                       name: str) -> np.ndarray:
         values = getattr(run, name)
         return path_interpolate(x, segment, np.arange(seg.size) / n_steps, seg,
-                                np.nan_to_num(values))
+                                np.nan_to_num(values) if name == "stick_radius" else values)
 
-    def estimate(name: str, split: bool) -> np.ndarray:
-        f = np.nan_to_num(getattr(fine, name))  # no contact: no stick zone
+    def estimate(name: str) -> tuple[np.ndarray, float]:
+        f = getattr(fine, name)
+        if name == "stick_radius":
+            f = np.nan_to_num(f)  # no contact: no stick zone
         a = coarse_values(coarse, steps_coarse, segment_coarse, name)
-        if coarser is None or not split:
-            diff = np.abs(f - a)
-            if not split and steps == 2 * steps_coarse:
+        diff = np.abs(f - a)
+        if name == "stick_radius":
+            if steps == 2 * steps_coarse:
                 diff = straddle(diff, a, segment, fine.contact_radius > 0, h)
-            return _window_max(diff, segment)
-        s = a - coarse_values(coarser, steps_coarser, segment_coarser, name)
-        return _window_max(np.abs(f - a - 0.5 * s) + 0.5 * np.abs(s), segment)
+            return _window_max(diff, segment), 1.0
+        if coarser is None:
+            return _window_max(diff, segment), 1.0
+        common = (np.arange(segment.size) * steps_coarser) % steps == 0  # C's own steps
+        c = coarse_values(coarser, steps_coarser, segment_coarser, name)
+        p = measured_order(f[common], a[common], c[common])
+        return _window_max(diff, segment) / (2.0**p - 1.0), p
 
     c_fine = np.nan_to_num(fine.stick_radius)
     h = float(ops.edges[1] - ops.edges[0])
     half = 0.5 * h * np.rint(c_fine / (0.5 * h))  # element edges and midpoints
     on_grid = (np.abs(c_fine - half) <= 1e-12) & (c_fine < fine.contact_radius)
-    err_c = estimate("stick_radius", split=False)
+    err_c, orders = estimate("stick_radius")[0], {"stick_radius": 1.0}
     err_c = np.where(on_grid, np.maximum(err_c, 0.5 * h), err_c)
     err_c[np.isnan(fine.stick_radius)] = 0.0
-    diff = estimate("work", split=True)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        err_w = np.where(fine.work > 0.0, diff / fine.work, np.where(diff > 0.0, np.inf, 0.0))
-    return err_c, err_w
+    diffs = {}
+    with np.errstate(invalid="ignore"):
+        for name in ("work",) + tuple(energies):
+            d, orders[name] = estimate(name)
+            diffs[name] = np.where(np.isfinite(d), d, np.inf)  # a NaN is never small
+    return err_c, diffs, orders

@@ -560,8 +560,9 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
             "indentation (delta R / a_max**2)",
             comment="half-plane: relative to the Flamant reference length a_max")),
         "frictional_work": (sd, r.frictional_work, cf_attrs(
-            "cumulative frictional work", comment=work_scale + "; trapezoid rule in time, each element's step "
-            "increment floored at 0 (never decreasing)")),
+            "cumulative frictional work",
+            comment=work_scale + "; trapezoid rule in time, a fall taken from the steps "
+                                 "before it (never decreasing)")),
         "state": (ed, r.state.astype(np.int8), cf_attrs(
             "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
             flag_meanings=hs.STATE_MEANINGS,
@@ -583,20 +584,30 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     }
     if r.resolved is not None:
         coarse = ("from the same path on about half the elements with half the steps a "
-                  "segment, interpolated by path coordinate; NaN: not estimated")
+                  "segment (and a quarter of both, which measures the order of "
+                  "convergence), interpolated by path coordinate; NaN: not estimated")
         data["stick_radius_error_estimate"] = (sd, r.stick_radius_error_estimate, cf_attrs(
             "estimated absolute error of the central stick zone radius over a_max (dc/a_max)",
             comment=coarse + "; at least half an element where the stick edge is an element "
                              "edge; 0 without contact; the error of stick_ratio is this over "
                              "contact_radius"))
         data["work_error_estimate"] = (sd, r.work_error_estimate, cf_attrs(
-            "estimated relative error of the cumulative frictional work",
-            comment=coarse + "; 0 while no work is done"))
+            "estimated error of the cumulative frictional work relative to the path's "
+            "total frictional work (attribute work_scale)",
+            comment=coarse + "; the scale is at least 1e-4 of the indenter's largest work "
+                             "(attribute energy_scale); at the end, the relative error of "
+                             "the path's work; 0 while no work is done"))
+        if r.energy_error_estimate is not None:
+            data["energy_error_estimate"] = (sd, r.energy_error_estimate, cf_attrs(
+                "estimated error of the external work, stored energy and viscous work "
+                "relative to the indenter's largest work (attribute energy_scale)",
+                comment=coarse + "; the largest of the three; inf where a value is not "
+                                 "finite"))
         data["resolved"] = (sd, r.resolved.astype(bool), cf_attrs(
             "step resolved to max_error",
-            comment=f"converged, slip zone absent or over at least {hs.MIN_SLIP_ELEMENTS} "
-                    f"elements, and both error estimates within the max_error attribute",
-            **bool_flags))
+            comment=f"converged, every value finite, slip zone absent or over at least "
+                    f"{hs.MIN_SLIP_ELEMENTS} elements, and every error estimate within the "
+                    f"max_error attribute", **bool_flags))
     attrs: dict[str, Any] = {
         "title": f"contactlib loading history ({r.geometry})",
         "geometry": r.geometry,
@@ -614,6 +625,11 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         _add_viscoelastic(r, data, attrs, sd, work_scale)
     if r.resolved is not None:
         attrs["max_error"] = float(r.max_error)
+        if getattr(r, "resolved_quantities", None):
+            attrs["work_scale"] = float(r.work_scale)
+            attrs["energy_scale"] = float(r.energy_scale)
+            attrs["resolved_quantities"] = " ".join(
+                name for name, ok in r.resolved_quantities.items() if ok)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
     if r.message:
         attrs["message"] = r.message

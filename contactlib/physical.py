@@ -921,6 +921,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
           else np.asarray(res.viscous_work) * w_unit)
     err_w = np.asarray(res.work_error_estimate if res.work_error_estimate is not None
                        else np.full(wf.shape, np.nan), dtype=float)
+    w_scale = float(getattr(res, "work_scale", np.nan)) * w_unit
     err_c = np.asarray(res.stick_radius_error_estimate
                        if res.stick_radius_error_estimate is not None
                        else np.full(wf.shape, np.nan), dtype=float) * a_max
@@ -931,7 +932,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     for s, e in cycles:
         js, je = res.segment_end(s) if s else 0, res.segment_end(e)
         cyc_f.append(wf[je] - wf[js])
-        cyc_e.append(abs(err_w[je] * wf[je]) + (abs(err_w[js] * wf[js]) if js else 0.0))
+        # the work's estimate is relative to the path's total work (res.work_scale)
+        cyc_e.append(abs(err_w[je] * w_scale) + (abs(err_w[js] * w_scale) if js else 0.0))
         cyc_v.append(wv[je] - wv[js])
     time = None if res.time is None else np.asarray(res.time) + (t_points[0] if t_points
                                                                  is not None else 0.0)

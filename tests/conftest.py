@@ -117,9 +117,14 @@ def factorizations(monkeypatch):
     return count
 
 
-def shear_work_steps(res) -> tuple[np.ndarray, np.ndarray]:
-    """Per step: minus the shear's work on the surface (trapezoid in time) over the moving
-    elements, and the part of it that the elements with a negative term contribute."""
+def trapezoid_work(res) -> np.ndarray:
+    """Cumulative frictional work by the plain trapezoid rule, from the result's arrays.
+
+    Minus the shear's work on the surface, ``-sum As_j (q_old + q_new)_j / 2 du_j`` over
+    the elements slipping at the end of a step and those slipping before it that
+    separate in it, summed over the steps (0 at step 0); ``As_j`` the shear-weighted
+    element area. The history reports its lower monotone envelope.
+    """
     lo, hi = res.xi_bounds[:, 0], res.xi_bounds[:, 1]
     mid = 0.5 * (lo + hi)
     shear_area = (2.0 * np.pi / 3.0 * (hi**3 - lo**3) / mid if res.geometry == "sphere"
@@ -129,4 +134,4 @@ def shear_work_steps(res) -> tuple[np.ndarray, np.ndarray]:
     st = res.state
     moving = (st[1:] >= 2) | ((st[1:] == 0) & (st[:-1] >= 2))
     terms = np.where(moving, -0.5 * (q[1:] + q[:-1]) * du * shear_area, 0.0)
-    return terms.sum(axis=1), np.minimum(terms, 0.0).sum(axis=1)
+    return np.concatenate([[0.0], np.cumsum(terms.sum(axis=1))])

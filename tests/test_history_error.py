@@ -8,11 +8,13 @@ over largest error, segment by segment).
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
 from contactlib import history_solver as hs
-from contactlib.history_api import DEFAULT_MAX_ERROR, history
+from contactlib.history_api import DEFAULT_MAX_ERROR, MAX_N, MAX_STEPS, MIN_N, history
 from contactlib.io import history_to_dataset
 
 NU = 0.3
@@ -30,6 +32,8 @@ def stick_radius(res) -> np.ndarray:
 def test_estimates_cover_the_error_of_a_fourfold_refinement(geometry, k, path):
     """Estimate / true error >= 1/3 at every loaded step; segment maxima within 10x.
 
+    The work's error is relative to the path's total work (the estimate's scale).
+
     Measured at n = 60, 20 steps (truth n = 240, 80 steps): the smallest
     estimate / error is 0.75 (stick radius) and 0.44 (work), the largest
     segment inflation 9 (stick radius, cylinder k = 0.1 fretting) and 6.8 (work).
@@ -40,8 +44,7 @@ def test_estimates_cover_the_error_of_a_fourfold_refinement(geometry, k, path):
     assert res.converged.all() and ref.converged.all()
     w_ref = ref.frictional_work[::4]
     true = {"stick radius": np.abs(stick_radius(res) - stick_radius(ref)[::4]),
-            "work": np.divide(np.abs(res.frictional_work - w_ref), w_ref,
-                              out=np.zeros_like(w_ref), where=w_ref > 0)}
+            "work": np.abs(res.frictional_work - w_ref) / ref.frictional_work[-1]}
     est = {"stick radius": res.stick_radius_error_estimate, "work": res.work_error_estimate}
     loaded = res.load_ratio > 0
     for name in true:
@@ -64,13 +67,18 @@ def test_dataset_carries_estimates_flags_and_max_error():
     assert ds["resolved"].dtype == bool
     assert ds.attrs["max_error"] == 0.05
     assert "a_max" in ds["stick_radius_error_estimate"].attrs["long_name"]
-    assert "relative" in ds["work_error_estimate"].attrs["long_name"]
-    # resolved = converged, slip zone resolved, both estimates within max_error
+    assert "total frictional work" in ds["work_error_estimate"].attrs["long_name"]
+    assert ds["energy_error_estimate"].dims == ("step",)
+    assert ds.attrs["work_scale"] == res.work_scale == res.frictional_work[-1]
+    assert ds.attrs["resolved_quantities"] == " ".join(
+        q for q, ok in res.resolved_quantities.items() if ok)
+    # resolved = converged, values finite, slip zone resolved, every estimate within max_error
     annulus = hs.annulus_resolved(0.2, res.state)
-    within = (res.stick_radius_error_estimate <= 0.05) & (res.work_error_estimate <= 0.05)
+    within = ((res.stick_radius_error_estimate <= 0.05) & (res.work_error_estimate <= 0.05)
+              & (res.energy_error_estimate <= 0.05))
     assert np.array_equal(res.resolved, res.converged & annulus & within)
     assert res.resolved.any() and not res.resolved.all()
-    assert "not resolved" in res.message
+    assert "steps flagged" in res.message and "resolved to max_error 0.05" in res.message
 
 
 def test_default_max_error_and_skipped_estimate():
@@ -146,3 +154,103 @@ def test_coarse_jump_between_two_coarse_steps_is_not_an_error():
     smooth = np.linspace(0.5, 0.3, 9)  # a steady change: not a jump
     d = np.abs(smooth + 0.003 * (np.arange(9) % 2) - smooth)
     np.testing.assert_array_equal(hs.straddle(d, smooth, segment, touching, h), d)
+
+
+def _work_flags_against_a_fourfold_refinement(geometry, nu, k, path, kwargs, max_error):
+    """(cycle work estimate / true error, true errors of the steps flagged for the work, of
+    those not flagged), the work relative to the refined path's total work."""
+    n, steps = 120, 50
+    res = history(geometry, nu, k, path, steps, n=n, max_error=max_error, **kwargs)
+    ref = history(geometry, nu, k, path, 4 * steps, n=4 * n, error_estimate=False, **kwargs)
+    assert res.converged.all() and ref.converged.all()
+    true = np.abs(res.frictional_work - ref.frictional_work[::4]) / ref.frictional_work[-1]
+    flagged = res.work_error_estimate > max_error
+    return res.work_error_estimate[-1] / true[-1], true[flagged], true[~flagged]
+
+
+WORK_CASES = {  # label: geometry, nu, k, path, keyword arguments
+    "sphere cycle": ("sphere", NU, 0.2, (0, 1, 0), {}),
+    "cylinder cycle": ("cylinder", NU, 0.3, (0, 1, 0), {}),
+    "sphere fretting": ("sphere", NU, 0.2, (0, 1, 0.5, 1, 0.5), {}),
+    "cylinder fretting nu=0": ("cylinder", 0.0, 0.2, (0, 1, 0.5, 1, 0.5), {}),
+    "sphere viscoelastic": ("sphere", NU, 0.2, (0, 1, 0),
+                            {"relaxation": [(0.5, 1.0)], "duration": 1.0}),
+}
+
+
+@pytest.mark.parametrize("case", [pytest.param(c, marks=pytest.mark.slow)
+                                  if c != "sphere cycle" else c for c in WORK_CASES])
+def test_cycle_work_estimate_is_tight_and_its_flags_mean_an_error(case):
+    """n = 120, 50 steps against 480, 200: the cycle work's estimate within a factor 3 of its
+    error either way (measured 0.52 ... 1.25, benchmarks/report_history_estimates.py), and a
+    step is flagged for the work only if its error, relative to the path's total work, is
+    above max_error / 3; an unflagged step's error is below 3 max_error.
+
+    (Before the estimate measured its order of convergence it assumed first order and was
+    3-4 times the error; relative to the work done so far every step was flagged.)
+    """
+    geometry, nu, k, path, kwargs = WORK_CASES[case]
+    max_error = 1e-2
+    ratio, flagged, unflagged = _work_flags_against_a_fourfold_refinement(
+        geometry, nu, k, path, kwargs, max_error)
+    assert 1 / 3 <= ratio <= 3
+    assert np.all(flagged > max_error / 3)
+    assert np.all(unflagged <= 3 * max_error)
+
+
+def test_a_value_that_is_not_finite_is_never_resolved():
+    """A viscoelastic run with a duration of 1e-300 tau: its viscous work overflows to NaN.
+    Those steps (and the energies) are not resolved, whatever the other estimates say."""
+    with np.errstate(all="ignore"):
+        res = history("sphere", NU, 0.2, [0, 1, 0], 20, n=60, relaxation=[(0.5, 1.0)],
+                      duration=1e-300, max_error=0.9)
+    bad = ~np.isfinite(res.viscous_work)
+    assert bad.any()
+    assert not res.resolved[bad].any()
+    assert np.all(np.isinf(res.energy_error_estimate[bad]))
+    assert res.resolved_quantities["energies"] is False
+
+
+@pytest.mark.parametrize("steps", [40, 100_000])
+def test_advice_names_a_run_the_tool_accepts(steps):
+    """The advised n and steps are within the limits; where the prediction needs more, the
+    message says no accepted run is predicted to resolve it."""
+    res = history("sphere", NU, 0.2, [0, 1], min(steps, 40), n=60, max_error=1e-4)
+    text = res.message
+    if "no accepted run" in text:
+        m = re.search(r"n = (\d+), (\d+) steps a segment is predicted to reach", text)
+    else:
+        m = re.search(r"n = (\d+) with (\d+) steps a segment "
+                      r"(?:\(the largest the tool accepts\) )?is predicted to resolve", text)
+    assert m, text
+    n_new, steps_new = int(m.group(1)), int(m.group(2))
+    assert MIN_N <= n_new <= MAX_N and 1 <= steps_new <= MAX_STEPS
+
+
+def test_advised_run_resolves_what_it_was_advised_for():
+    """The measured convergence's prediction holds: sphere k = 0.2, 0 -> 1 -> 0 at n = 60 and
+    40 steps with max_error 2e-2 advises a run; that run resolves the frictional work and the
+    stick radius to 2e-2 (its own estimates)."""
+    max_error = 2e-2
+    res = history("sphere", NU, 0.2, [0, 1, 0], 40, n=60, max_error=max_error)
+    m = re.search(r"n = (\d+) with (\d+) steps a segment "
+                  r"(?:\(the largest the tool accepts\) )?is predicted to resolve", res.message)
+    assert m, res.message
+    again = history("sphere", NU, 0.2, [0, 1, 0], int(m.group(2)), n=int(m.group(1)),
+                    max_error=max_error)
+    assert again.resolved_quantities["frictional_work"]
+    assert again.resolved_quantities["stick_radius"]
+
+
+@pytest.mark.slow
+def test_cycle_work_estimate_covers_a_thin_annulus_on_a_layer():
+    """Sphere on a layer, a_max/h = 1 (slip annulus under 12 elements at n = 120): the runs
+    are not in the asymptotic range (the measured order falls to the bound 1/2), and the
+    estimate then errs high (measured 16 times the error), never low; the path is not
+    resolved."""
+    kwargs = {"slab_ratio": 1.0}
+    ratio, _, _ = _work_flags_against_a_fourfold_refinement("sphere", NU, 0.2, (0, 1, 0), kwargs,
+                                                            1e-2)
+    assert ratio >= 1 / 3
+    res = history("sphere", NU, 0.2, [0, 1, 0], 50, n=120, max_error=1e-2, **kwargs)
+    assert not res.resolved_quantities["frictional_work"]

@@ -718,8 +718,7 @@ def check_subsurface_request(output: Any, slab_ratio: float) -> None:
                          f"base is not covered), got {slab_ratio!r}")
 
 
-def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None, *,
-                    body: str = "body") -> Any:
+def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None) -> Any:
     """A solve's dataset (:func:`contactlib.io.to_dataset`) with the stress field added.
 
     Parameters
@@ -730,25 +729,32 @@ def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None, *
         The solved case.
     x, z : array_like, optional
         The grid (default :func:`default_grid`).
-    body : {"body", "indenter"}
-        As for :func:`subsurface_stresses`.
 
     Returns
     -------
     xarray.Dataset
         ``dataset`` with the coordinates ``x``, ``z`` and the variables of
-        :func:`subsurface_stresses` (units of p0), and the attribute ``subsurface_body``.
+        :func:`subsurface_stresses` for the body (units of p0); with an elastic indenter
+        also the indenter's field, each variable prefixed ``indenter_`` (z then into the
+        indenter); the attribute ``subsurface_body`` (``"body"`` or ``"body indenter"``).
     """
     if x is None or z is None:
         gx, gz = default_grid()
         x, z = gx if x is None else x, gz if z is None else z
-    field = subsurface_stresses(solution, x, z, body=body)
+    field = subsurface_stresses(solution, x, z)
     out = dataset.copy()
     for name in field.coords:
         out = out.assign_coords({name: field[name]})
     for name in field.data_vars:
         out[name] = field[name]
-    out.attrs["subsurface_body"] = body
+    bodies = ["body"]
+    if not math.isinf(float(solution.indenter_modulus_ratio)):
+        other = subsurface_stresses(solution, x, z, body="indenter")
+        for name in other.data_vars:
+            out["indenter_" + name] = other[name].assign_attrs(
+                long_name=other[name].attrs["long_name"] + " in the indenter (z into it)")
+        bodies.append("indenter")
+    out.attrs["subsurface_body"] = " ".join(bodies)
     return out
 
 
@@ -894,31 +900,43 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
     xarray.Dataset
         ``dataset`` with the coordinates ``x``, ``z`` and the variables of
         :func:`subsurface_stresses` on (stick_ratio, z, x), in units of p0; NaN for a case
-        whose tractions are NaN (not converged). The body's field (an elastic indenter's
-        is not written); attribute ``subsurface_body``.
+        whose tractions are NaN (not converged). With an elastic indenter also its field
+        (prefix ``indenter_``; its Poisson's ratio, the opposite shear, z into it, as
+        :func:`subsurface_stresses` with ``body="indenter"``); attribute
+        ``subsurface_body``.
     """
     (x0, x1, nx), (z0, z1, nz) = scene.subsurface_grid
     xs, zs = np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
     geometry = scene.geometry
     names = COMPONENTS[geometry] + ("von_mises", "tresca", "hydrostatic", "sigma_1",
                                     "sigma_2", "sigma_3")
-    stack = {name: np.full((len(profiles), zs.size, xs.size), np.nan) for name in names}
+    bodies = {"": (float(scene.nu), 1.0)}  # prefix: (Poisson's ratio, sign of the shear)
+    if not math.isinf(float(scene.indenter_modulus)):
+        nu1 = scene.nu if scene.indenter_nu is None else scene.indenter_nu
+        bodies["indenter_"] = (float(nu1), -1.0)
+    stack = {prefix + name: np.full((len(profiles), zs.size, xs.size), np.nan)
+             for prefix in bodies for name in names}
     for i, prof in enumerate(profiles):
         p, q = np.asarray(prof["pressure"]), np.asarray(prof["shear"])
         if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
             continue
-        fields = stress_field(geometry, scene.nu, xi, p, q, xs, zs)
-        fields.update(derived_measures(geometry, fields))
-        for name in names:
-            stack[name][i] = fields[name]
+        for prefix, (nu, sign) in bodies.items():
+            fields = stress_field(geometry, nu, xi, p, sign * q, xs, zs)
+            fields.update(derived_measures(geometry, fields))
+            for name in names:
+                stack[prefix + name][i] = fields[name]
     out = dataset.assign_coords(
-        z=("z", zs, {"units": "1", "long_name": "depth / a, positive into the body"}),
+        z=("z", zs, {"units": "1", "long_name": "depth / a, positive into the body "
+                                                "(into the indenter for indenter_*)"}),
         x=("x", xs, {"units": "1", "long_name": "r / a" if geometry == "sphere" else "x / a"}))
     dims = ("stick_ratio", "z", "x") if "stick_ratio" in dataset.dims else ("z", "x")
-    for name in names:
-        value = stack[name] if len(dims) == 3 else stack[name][0]
-        out[name] = (dims, value, {"units": "1", "long_name": _LONG_NAMES[name]})
-    out.attrs["subsurface_body"] = "body"
+    for prefix in bodies:
+        for name in names:
+            value = stack[prefix + name]
+            long_name = _LONG_NAMES[name] + (" in the indenter" if prefix else "")
+            out[prefix + name] = (dims, value if len(dims) == 3 else value[0],
+                                  {"units": "1", "long_name": long_name})
+    out.attrs["subsurface_body"] = "body indenter" if len(bodies) > 1 else "body"
     return out
 
 

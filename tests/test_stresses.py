@@ -492,6 +492,21 @@ def test_scene_subsurface_output_is_the_api_field():
             assert np.max(np.abs(ds[name].values[i] - ref[name].values)) < 1e-12, name
 
 
+def test_scene_subsurface_holds_the_indenter_field_too():
+    from contactlib import pipeline
+
+    scene = _scene(outputs=["subsurface"], indenter={"modulus_ratio": 2.0, "nu": 0.2},
+                   subsurface_grid={"x": [0.0, 1.5, 7], "z": [0.0, 1.0, 5]})
+    parts = {p: pipeline.influence(scene.influence_spec(), p) for p in scene.parts}
+    ds = pipeline.assemble(scene, pipeline.solve(scene, parts["normal"], parts["shear"]))
+    assert ds.attrs["subsurface_body"] == "body indenter"
+    sol = solve("sphere", NU, stick_ratio=0.5, n=64, indenter_modulus=2.0, indenter_nu=0.2,
+                energy=False)
+    ref = subsurface_stresses(sol, np.linspace(0.0, 1.5, 7), np.linspace(0.0, 1.0, 5),
+                              body="indenter")
+    assert np.max(np.abs(ds.indenter_von_mises.values[1] - ref.von_mises.values)) < 1e-12
+
+
 @pytest.mark.parametrize("extra,key", [
     ({"outputs": ["subsurface"], "slab_ratio": 0.5}, "outputs"),
     ({"subsurface_grid": {"x": [0, 1, 11]}}, "subsurface_grid"),
@@ -551,6 +566,25 @@ def test_cli_writes_the_field(tmp_path):
     top = field_maximum(ds, "tresca")  # McEwen on the default grid (spacing 0.02)
     assert abs(top["value"] - 0.3004) < 4 * H15_201 + 1e-4  # + 4 decimals of the truth
     assert abs(top["z"] - 0.786) < 0.02
+
+
+def test_cli_writes_both_fields_for_an_elastic_indenter(tmp_path):
+    out = tmp_path / "x.nc"
+    run = subprocess.run([sys.executable, "-m", "contactlib", "solve", "--geometry",
+                          "sphere", "--nu", "0.3", "--stick-ratio", "0.5", "--n", "64",
+                          "--indenter-modulus", "2", "--indenter-nu", "0.2", "--subsurface",
+                          "--output", str(out)], capture_output=True, text=True, env=ENV,
+                         cwd=REPO)
+    assert run.returncode == 0, run.stderr
+    ds = io.read_dataset(out)
+    assert ds.attrs["subsurface_body"] == "body indenter"
+    sol = solve("sphere", NU, stick_ratio=0.5, n=64, indenter_modulus=2.0, indenter_nu=0.2)
+    x, z = ds.x.values, ds.z.values[:3]
+    body, indenter = (subsurface_stresses(sol, x, z, body=b) for b in ("body", "indenter"))
+    for name in ("von_mises", "sigma_rr"):
+        assert np.allclose(ds[name].values[:3], body[name].values, rtol=0, atol=1e-12)
+        assert np.allclose(ds["indenter_" + name].values[:3], indenter[name].values, rtol=0,
+                           atol=1e-12)
 
 
 def test_cli_refuses_a_layer_before_solving(tmp_path):

@@ -593,16 +593,22 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
                              "contact_radius"))
         data["work_error_estimate"] = (sd, r.work_error_estimate, cf_attrs(
             "estimated error of the cumulative frictional work relative to the path's "
-            "total frictional work (attribute work_scale)",
+            "total frictional work (variable work_scale)",
             comment=coarse + "; the scale is at least 1e-4 of the indenter's largest work "
-                             "(attribute energy_scale); at the end, the relative error of "
+                             "(variable energy_scale); at the end, the relative error of "
                              "the path's work; 0 while no work is done"))
         if r.energy_error_estimate is not None:
             data["energy_error_estimate"] = (sd, r.energy_error_estimate, cf_attrs(
                 "estimated error of the external work, stored energy and viscous work "
-                "relative to the indenter's largest work (attribute energy_scale)",
+                "relative to the indenter's largest work (variable energy_scale)",
                 comment=coarse + "; the largest of the three; inf where a value is not "
                                  "finite"))
+        for name, what in (("work_scale", "the path's total frictional work, at least 1e-4 "
+                                          "of energy_scale"),
+                           ("energy_scale", "the path's largest external work")):
+            data[name] = ((), float(getattr(r, name, np.nan)), cf_attrs(
+                f"scale of the history's {name.split('_')[0]} error estimates",
+                comment=what + "; units of frictional_work"))
         data["resolved"] = (sd, r.resolved.astype(bool), cf_attrs(
             "step resolved to max_error",
             comment=f"converged, every value finite, slip zone absent or over at least "
@@ -626,8 +632,6 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     if r.resolved is not None:
         attrs["max_error"] = float(r.max_error)
         if getattr(r, "resolved_quantities", None):
-            attrs["work_scale"] = float(r.work_scale)
-            attrs["energy_scale"] = float(r.energy_scale)
             attrs["resolved_quantities"] = " ".join(
                 name for name, ok in r.resolved_quantities.items() if ok)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
@@ -678,7 +682,8 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     xarray.Dataset
         Every variable gains a leading ``friction_coefficient`` dimension
         (coordinate: k, increasing); the ``friction_coefficient`` attribute
-        is dropped, ``message`` joins the members' notes.
+        is dropped, ``message`` joins the members' notes and
+        ``resolved_quantities`` their verdicts ("k = 0.1: ...; k = 0.2: ...").
 
     Raises
     ------
@@ -709,7 +714,7 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     for i in order:
         ds = items[i].copy()
         ds.attrs = {k: v for k, v in ds.attrs.items()
-                    if k not in ("friction_coefficient", "message")}
+                    if k not in ("friction_coefficient", "message", "resolved_quantities")}
         members.append(ds)
     shared = ("xi_bounds", "segment", "load_ratio", "time")  # the path and the mesh: no k
     varying = [v for v in members[0].data_vars if v not in shared]
@@ -721,6 +726,10 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
              if items[i].attrs.get("message")]
     if notes:
         out.attrs["message"] = "; ".join(notes)
+    resolved = [f"k = {ks[i]:g}: {items[i].attrs['resolved_quantities'] or 'none'}"
+                for i in order if "resolved_quantities" in items[i].attrs]
+    if resolved:
+        out.attrs["resolved_quantities"] = "; ".join(resolved)
     return out
 
 

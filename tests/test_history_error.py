@@ -15,7 +15,7 @@ import pytest
 
 from contactlib import history_solver as hs
 from contactlib.history_api import DEFAULT_MAX_ERROR, MAX_N, MAX_STEPS, MIN_N, history
-from contactlib.io import history_to_dataset
+from contactlib.io import history_to_dataset, stack_histories
 
 NU = 0.3
 PATHS = {"cycle": (0, 1, 0), "fretting": (0, 1, 0.5, 1, 0.5, 1, 0.5, 1)}
@@ -69,7 +69,7 @@ def test_dataset_carries_estimates_flags_and_max_error():
     assert "a_max" in ds["stick_radius_error_estimate"].attrs["long_name"]
     assert "total frictional work" in ds["work_error_estimate"].attrs["long_name"]
     assert ds["energy_error_estimate"].dims == ("step",)
-    assert ds.attrs["work_scale"] == res.work_scale == res.frictional_work[-1]
+    assert float(ds["work_scale"]) == res.work_scale == res.frictional_work[-1]
     assert ds.attrs["resolved_quantities"] == " ".join(
         q for q, ok in res.resolved_quantities.items() if ok)
     # resolved = converged, values finite, slip zone resolved, every estimate within max_error
@@ -254,3 +254,14 @@ def test_cycle_work_estimate_covers_a_thin_annulus_on_a_layer():
     assert ratio >= 1 / 3
     res = history("sphere", NU, 0.2, [0, 1, 0], 50, n=120, max_error=1e-2, **kwargs)
     assert not res.resolved_quantities["frictional_work"]
+
+
+def test_stacked_histories_keep_each_k_s_scales_and_verdicts():
+    """The estimate scales and verdicts differ by k: stacking keeps them per k."""
+    runs = [history("sphere", NU, k, [0, 1, 0], 10, n=40, max_error=0.05) for k in (0.1, 0.3)]
+    ds = stack_histories([history_to_dataset(r) for r in runs])
+    np.testing.assert_array_equal(ds["work_scale"].values, [r.work_scale for r in runs])
+    np.testing.assert_array_equal(ds["energy_scale"].values, [r.energy_scale for r in runs])
+    for k, r in zip((0.1, 0.3), runs):
+        verdict = " ".join(q for q, ok in r.resolved_quantities.items() if ok) or "none"
+        assert f"k = {k:g}: {verdict}" in ds.attrs["resolved_quantities"]

@@ -124,11 +124,14 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
 
     Raises
     ------
-    ValueError
-        When the stick zone lies outside [SMALLEST_STICK_RATIO,
+    contactlib.validate.SolverLimit
+        A :class:`ValueError` for valid input the method cannot answer: when
+        the stick zone lies outside [SMALLEST_STICK_RATIO,
         LARGEST_STICK_RATIO] (the message gives the small-k estimate
         c/a ~ 4 exp(-A/k), A = k ln(4 a/c) at the floor), or when no
         converged root is found (the message names where the solutions end).
+        Its ``remedies`` name the calls that answer the case (full adhesion,
+        a history, a larger n).
     """
     cache: dict[float, DiscreteSolution] = {}
     blocks = StickBlocks()  # this search's store of stick blocks, shared by its solves
@@ -170,14 +173,16 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
         k_floor = flo + friction
         amp = k_floor * np.log(4.0 / lo)  # k ~ A / ln(4 a/c) for small stick zones
         log10_c = (np.log(4.0) - amp / friction) / np.log(10.0)
-        raise ValueError(f"friction {friction!r} gives a stick zone below c/a = {lo:.3g}, the "
-                         f"smallest resolved (k = {k_floor:.4g} there); by the small-k law "
-                         f"k ~ {amp:.3g}/ln(4 a/c) it is c/a ~ 1e{log10_c:.0f}: nearly the whole "
-                         "contact slips; use friction 0 for Hertz")
+        raise validate.SolverLimit(
+            f"friction {friction!r} gives a stick zone below c/a = {lo:.3g}, the smallest "
+            f"resolved (k = {k_floor:.4g} there); by the small-k law k ~ {amp:.3g}/ln(4 a/c) "
+            f"it is c/a ~ 1e{log10_c:.0f}: nearly the whole contact slips; use friction 0 for "
+            "Hertz", [("solve", {"friction": 0.0})])
     if fhi < 0:
-        raise ValueError(f"friction {friction!r} is too large: the stick zone covers more than "
-                         f"{hi:.5f} of the contact, the largest resolved (k = "
-                         f"{fhi + friction:.4g} there); use stick_ratio 1 (full adhesion)")
+        raise validate.SolverLimit(
+            f"friction {friction!r} is too large: the stick zone covers more than {hi:.5f} of "
+            f"the contact, the largest resolved (k = {fhi + friction:.4g} there); use "
+            "stick_ratio 1 (full adhesion)", [("solve", {"stick_ratio": 1.0})])
     from scipy import optimize  # here, not at import: it costs a workflow job 0.3 s
 
     try:
@@ -194,8 +199,12 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
                 "`history` with this friction and load path 0,1, which assumes no "
                 "self-similar stick zone and shows where slip occurs") if c > 0.5 else (
                 "; a larger n resolves smaller stick zones")
-        raise ValueError(f"friction {friction!r}: no converged stick ratio found; the solutions "
-                         f"end at c/a = {c:.7f} ({why}){hint}")
+        remedies = [("solve", {"stick_ratio": 1.0}),
+                    ("history", {"friction": friction, "load_path": [0.0, 1.0]})] \
+            if c > 0.5 else ([("solve", {"n": min(4 * n, validate.MAX_N)})]
+                             if n < validate.MAX_N else [])
+        raise validate.SolverLimit(f"friction {friction!r}: no converged stick ratio found; "
+                                   f"the solutions end at c/a = {c:.7f} ({why}){hint}", remedies)
     return c, d
 
 
@@ -386,7 +395,13 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     Raises
     ------
     ValueError
-        For invalid input; the message names the argument.
+        For invalid input (:class:`contactlib.validate.InputError`); the
+        message names the argument.
+    contactlib.validate.SolverLimit
+        A :class:`ValueError` for a ``friction`` the self-similar solution
+        cannot reach (the contact most likely fully stuck, or the stick zone
+        below the smallest resolved); its ``remedies`` name the calls that
+        answer it.
 
     Examples
     --------

@@ -6,8 +6,12 @@ so that bad input ends with exit status 2 and exactly one line on stderr::
     contactlib: error: --nu must be a number in (-1, 0.5], got 'abc'
 
 Errors raised by the library as :class:`ValueError` are reported the same way
-(status 2); any other exception gives one line and status 1 (``--debug``
-adds the traceback). ``--output`` is checked before any computing (missing
+(status 2), except valid input that the solver cannot answer
+(:class:`contactlib.validate.SolverLimit`, e.g. a friction so large that the
+contact is most likely fully stuck): status 3, its reason on one line and then
+one line ``contactlib: answer it with: contactlib ...`` for each command that
+answers the case, with the arguments filled in. Any other exception gives one
+line and status 1 (``--debug`` adds the traceback). ``--output`` is checked before any computing (missing
 parent folders are created; an unwritable place, a path through a file or a
 name too long is bad input), and the file is written only after success.
 Negative numbers, also in exponent form (``--nu -1e-3``), are option values,
@@ -37,7 +41,8 @@ from contactlib import __version__
 from contactlib import validate
 from contactlib.result import Solution
 
-__all__ = ["main", "build_parser", "check_output", "UsageError"]
+__all__ = ["main", "build_parser", "check_output", "UsageError", "SolverLimitError",
+           "EXIT_BAD_INPUT", "EXIT_SOLVER_LIMIT"]
 
 PROG = "contactlib"
 # argument strings that are values, not options: a negative number in any form
@@ -46,8 +51,26 @@ _NEGATIVE_NUMBER = re.compile(r"^-(\.?[0-9]|inf|nan)", re.IGNORECASE)
 _INT_RE = re.compile(r"^\s*\+?[0-9]+\s*$")
 
 
+EXIT_BAD_INPUT = 2
+"""Exit status of bad input (one line on stderr naming the option)."""
+EXIT_SOLVER_LIMIT = 3
+"""Exit status of valid input the solver cannot answer (:class:`SolverLimitError`)."""
+
+
 class UsageError(Exception):
     """Bad command-line input; the message is one line naming the option."""
+
+
+class SolverLimitError(Exception):
+    """Valid input the solver cannot answer (exit status 3).
+
+    ``limit`` is the library's :class:`contactlib.validate.SolverLimit`, whose
+    ``remedies`` :func:`main` turns into commands.
+    """
+
+    def __init__(self, limit: ValueError) -> None:
+        self.limit = limit
+        super().__init__(str(limit))
 
 
 # --------------------------------------------------------------------------
@@ -649,6 +672,8 @@ def _run_physical(kwargs: dict[str, Any], output: str | None, command: str) -> i
     else:
         try:
             res = _warned(lambda: physical.physical_solve(**kwargs))
+        except validate.SolverLimit as exc:  # valid input beyond the method: status 3
+            raise SolverLimitError(exc) from exc
         except ValueError as exc:
             raise _usage(exc) from exc
     if output is not None:
@@ -818,6 +843,9 @@ def format_history(res: Any) -> str:
     head += _indenter_text(res)
     errors = getattr(res, "work_error_estimate", None)
     shown = errors is not None and any(math.isfinite(float(e)) for e in errors)
+    zero_below = _zero_work(res)
+    zeros = shown and any(abs(float(res.frictional_work[res.segment_end(i)])) <= zero_below
+                          for i in range(1, len(res.load_path)))
     rows = [head, f"{'segment':>7} {'P/P_max':>9} {'a/a_max':>9} {'c/a':>8} "
                   f"{'V segment':>11} {'V total':>11}" + (f" {'V error':>8}" if shown else "")]
     seg_work = res.segment_work()
@@ -826,10 +854,13 @@ def format_history(res: Any) -> str:
         rows.append(f"{i:7d} {res.load_ratio[j]:9.4f} {res.contact_radius[j]:9.5f} "
                     f"{_g(float(res.stick_ratio[j]), 5):>8} {seg_work[i - 1]:11.5g} "
                     f"{res.frictional_work[j]:11.5g}"
-                    + (f" {float(errors[j]):8.1e}" if shown else ""))
+                    + (f" {_relative_text(float(errors[j]), res.frictional_work[j], zero_below)}"
+                       if shown else ""))
     total = res.converged.size - 1
-    rows.append(f"  work in {work_scale}" + ("; V error: estimated relative error of V total"
-                                             if shown else "") + "; converged steps: "
+    rows.append(f"  work in {work_scale}" + ("; V error: estimated error of V total relative to "
+                                             "the path's total work" if shown else "")
+                + ("; (zero): V total is zero at its scale" if zeros else "")
+                + "; converged steps: "
                 f"{int(res.converged[1:].sum())}/{total} "
                 f"(at most {_count(int(res.iterations.max()), 'iteration')})")
     if getattr(res, "relaxation", ()):  # a viscoelastic body: its time and energies
@@ -848,6 +879,23 @@ def format_history(res: Any) -> str:
     if res.message:
         rows.append(f"  message: {res.message}")
     return "\n".join(rows)
+
+
+def _zero_work(res: Any) -> float:
+    """The frictional work of a history at or below which it is zero at its scale: a
+    fraction ``WORK_FLOOR`` of the path's largest external work (0 where unknown)."""
+    from contactlib.history_api import WORK_FLOOR
+
+    scale = float(getattr(res, "energy_scale", math.nan))
+    return WORK_FLOOR * scale if math.isfinite(scale) else 0.0
+
+
+def _relative_text(error: float, value: float, zero_below: float = 0.0) -> str:
+    """An 8-character relative error, or ``(zero)`` for a value that is zero at its scale
+    (no relative error is printed for it)."""
+    if abs(float(value)) <= zero_below:
+        return f"{'(zero)':>8}"
+    return f"{error:8.1e}"
 
 
 def _progress_printer(stream: TextIO, label: str = "sweep") -> Callable[[int, int], None] | None:
@@ -900,6 +948,8 @@ def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType,
             from contactlib.stresses import check_subsurface_request
             check_subsurface_request(output, kwargs.get("slab_ratio", 0.0))
         sol = api.solve(**kwargs)
+    except validate.SolverLimit as exc:  # valid input beyond the method: status 3
+        raise SolverLimitError(exc) from exc
     except ValueError as exc:  # the library's own input validation
         raise _usage(exc) from exc
     if output is not None and subsurface:  # the solve's dataset and the stress field
@@ -922,6 +972,8 @@ def _progress(label: str):
     progress = _progress_printer(sys.stderr, label)
     try:
         yield progress
+    except validate.SolverLimit as exc:  # valid input beyond the method: status 3
+        raise SolverLimitError(exc) from exc
     except ValueError as exc:  # the library's own input validation
         raise _usage(exc) from exc
     finally:
@@ -1031,6 +1083,92 @@ def _fail(message: str) -> None:
     print(f"{PROG}: error: {' '.join(str(message).split())}", file=sys.stderr)
 
 
+_FLAGS = ("--no-energy", "--subsurface", "--debug")
+# options of solve that history does not take, or takes with another meaning (its n
+# counts elements over 1.2 a_max, not across the contact)
+_SOLVE_ONLY = ("--method", "--tolerance", "--no-energy", "--profile", "--exponent",
+               "--subsurface", "--n")
+
+
+def _options(tokens: Sequence[str]) -> list[tuple[str, str | None]]:
+    """A command's arguments as ``(option, value)`` pairs (value None for a flag)."""
+    out: list[tuple[str, str | None]] = []
+    i = 0
+    while i < len(tokens):
+        tok = tokens[i]
+        if tok.startswith("--") and "=" in tok:
+            out.append(tuple(tok.split("=", 1)))  # type: ignore[arg-type]
+        elif tok in _FLAGS or not tok.startswith("--") or i + 1 == len(tokens):
+            out.append((tok, None))
+        else:
+            out.append((tok, tokens[i + 1]))
+            i += 1
+        i += 1
+    return out
+
+
+def _text(value: Any) -> str:
+    """An argument's value as a command line writes it (0.5, 1, 0,1)."""
+    if isinstance(value, (list, tuple)):
+        return ",".join(_text(v) for v in value)
+    text = repr(float(value)) if isinstance(value, float) else str(value)
+    return text[:-2] if text.endswith(".0") else text
+
+
+def _remedy_command(argv: Sequence[str], args: argparse.Namespace, command: str,
+                    changes: dict[str, Any]) -> str | None:
+    """The command line of a remedy of :class:`~contactlib.validate.SolverLimit`: the
+    user's arguments with ``changes`` (library names), or None if our own input
+    rules would refuse it."""
+    import shlex
+
+    start = list(argv).index(args.command) + 1
+    drop = {"--friction", "--stick-ratio", "--output", "--debug"}
+    if command == "history":
+        drop.update(_SOLVE_ONLY)
+    opts = [(o, v) for o, v in _options(argv[start:]) if o not in drop]
+    physical = is_physical(args)
+    for name, value in changes.items():
+        option = _option(name)
+        opts = [(o, v) for o, v in opts if o != option]
+        text = _text(value)
+        if name == "load_path" and physical:  # a path in newtons up to the given load
+            load = dict(opts).get("--load") or ""
+            opts = [(o, v) for o, v in opts if o != "--load"]
+            unit = "" if load and not load[-1].isdigit() and load[-1] != "." else "N"
+            text = ",".join(("0N" if v == 0 else f"{load}{unit}") for v in value)
+        opts.append((option, text))
+    if command == "history":
+        if not physical:
+            opts.append(("--steps", "200"))
+        opts.append(("--output", "history.nc"))
+    elif args.output is not None:
+        opts.append(("--output", args.output))
+    tokens = [command] + [t for o, v in opts for t in ((o,) if v is None else (o, v))]
+    try:  # only a command that our own input rules accept
+        new = build_parser().parse_args(tokens)
+        if is_physical(new):
+            _validate_physical(new)
+        elif command == "history":
+            _validate_history(new)
+        else:
+            _validate(new)
+    except UsageError:
+        return None
+    return " ".join([PROG] + [shlex.quote(t) for t in tokens])
+
+
+def _run_limit(exc: SolverLimitError, argv: Sequence[str], args: Any) -> int:
+    """Report a solver limit: the reason, then the commands that answer the case."""
+    _fail(str(exc))
+    if args is not None:
+        for command, changes in getattr(exc.limit, "remedies", ()):
+            line = _remedy_command(argv, args, command, changes)
+            if line is not None:
+                print(f"{PROG}: answer it with: {line}", file=sys.stderr)
+    return EXIT_SOLVER_LIMIT
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line.
 
@@ -1042,11 +1180,16 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        0 on success, 2 on bad input (one line on stderr), 1 on an
-        unexpected error, 130 when interrupted.
+        0 on success; 2 (:data:`EXIT_BAD_INPUT`) on bad input (one line on
+        stderr); 3 (:data:`EXIT_SOLVER_LIMIT`) on valid input the solver
+        cannot answer (:class:`contactlib.validate.SolverLimit`: its reason,
+        then a line ``contactlib: answer it with: contactlib ...`` for each
+        command that answers it); 1 on an unexpected error; 130 when
+        interrupted; 141 when stdout's reader went away.
     """
     argv = list(sys.argv[1:] if argv is None else argv)
     debug = "--debug" in argv
+    args = None
     try:
         try:
             args = build_parser().parse_args(argv)
@@ -1074,7 +1217,9 @@ def main(argv: list[str] | None = None) -> int:
         return _run_sweep(kwargs, args.output, api)
     except UsageError as exc:
         _fail(str(exc))
-        return 2
+        return EXIT_BAD_INPUT
+    except SolverLimitError as exc:
+        return _run_limit(exc, argv, args)
     except KeyboardInterrupt:
         _fail("interrupted")
         return 130

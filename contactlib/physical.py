@@ -481,6 +481,8 @@ class PhysicalSolution(_Setup):
 
         def row(label: str, value: str, name: str | None = None) -> str:
             err = e.get(name, math.nan) if name else math.nan
+            if name and getattr(self, name, math.nan) == 0.0:  # zero: no relative error
+                err = math.nan
             tail = f"   (estimated relative error {err:.1e})" if math.isfinite(err) and err > 0 \
                 else ("   (exact)" if name and err == 0.0 else "")
             return f"  {label:<22}{value}{tail}"

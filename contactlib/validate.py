@@ -32,7 +32,7 @@ from typing import Any, Callable, Iterable
 
 __all__ = [
     "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
-    "EXTRAPOLATED_N_MULTIPLE",
+    "EXTRAPOLATED_N_MULTIPLE", "SolverLimit",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
@@ -139,6 +139,32 @@ class InputError(ValueError):
         self.requirement = requirement
         self.value = value
         super().__init__(message or f"{name} must be {requirement}, got {value!r}")
+
+
+class SolverLimit(ValueError):
+    """Valid input that the solver cannot answer (not a bad value).
+
+    Raised where every argument passes its rule but the method has no answer,
+    e.g. a friction coefficient so large that the contact is most likely fully
+    stuck (no self-similar slip annulus reaches it), one so small that the
+    stick zone lies below the smallest one resolved, or a stick ratio beyond
+    the coupled limit c*. The command line exits with status 3 for it (2 is
+    bad input) and prints the commands that answer the case.
+
+    Parameters
+    ----------
+    message : str
+        Why, in physical terms, and what answers the case instead.
+    remedies : sequence of (str, dict)
+        The calls that answer it: a command (``"solve"``, ``"history"``) and
+        the arguments that differ from the failed call, by library name
+        (``{"stick_ratio": 1.0}``, ``{"friction": 0.5, "load_path": [0, 1]}``).
+        Empty when none is known.
+    """
+
+    def __init__(self, message: str, remedies: Iterable[tuple[str, dict]] = ()):
+        self.remedies = [(command, dict(args)) for command, args in remedies]
+        super().__init__(message)
 
 
 def shown(x: float) -> str:

@@ -93,7 +93,8 @@ from typing import Any
 import numpy as np
 
 __all__ = ["slip_points", "frictional_work", "record_work", "step_work", "monotone_work", "dot",
-           "step_external_work", "mean_traction", "stored_energy", "decay_integrals",
+           "step_external_work", "mean_traction", "one_minus_b_over_x", "stored_energy",
+           "decay_integrals",
            "viscous_step_work"]
 
 
@@ -218,11 +219,28 @@ def mean_traction(relaxed: float, g: np.ndarray, tau: np.ndarray, dt: float,
     """
     x = dt / tau
     b = -np.expm1(-x) / x
+    c = one_minus_b_over_x(x)  # (1 - b_i) tau_i / dt, without cancelling for small dt
     de = e_new - e_old
     out = 0.5 * relaxed * (e_old + e_new)
-    for gi, bi, ti, hi in zip(g, b, tau, h_old):
-        out = out + gi * (bi * hi + (1.0 - bi) * (ti / dt) * de)
+    for gi, bi, ci, hi in zip(g, b, c, h_old):
+        out = out + gi * (bi * hi + ci * de)
     return out
+
+
+def one_minus_b_over_x(x: np.ndarray) -> np.ndarray:
+    """``(1 - b) / x`` with ``b = (1 - exp(-x)) / x``, accurate for every x > 0 (dimensionless).
+
+    Equal to ``(x - 1 + exp(-x)) / x^2``: below x = 1e-3 its Taylor series
+    ``1/2 - x/6 + x^2/24 - x^3/120`` (truncation below 2e-15 relative), where
+    ``1 - b`` cancels (to nothing at x = 1e-300, which lost the half of a
+    step's traction change that the dashpots take up in an instantaneous
+    step); above, the expression itself.
+    """
+    x = np.asarray(x, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        direct = (1.0 + np.expm1(-x) / x) / x
+    series = 0.5 - x / 6.0 + x * x / 24.0 - x**3 / 120.0
+    return np.where(x < 1e-3, series, direct)
 
 
 def stored_energy(weights: np.ndarray, relaxed: float, g: np.ndarray, e: np.ndarray,
@@ -248,23 +266,31 @@ def stored_energy(weights: np.ndarray, relaxed: float, g: np.ndarray, e: np.ndar
     return out
 
 
-def decay_integrals(x: np.ndarray) -> np.ndarray:
+def decay_integrals(x: np.ndarray, scaled: bool = False) -> np.ndarray:
     """int_0^x of exp(-2s), exp(-s)(1 - exp(-s)), (1 - exp(-s))^2 ds; shape (3,) + x.shape.
 
     Closed forms for x >= 1; 12-point Gauss-Legendre below (the closed
     forms cancel there; the integrands are smooth, so the rule is exact to
-    round-off).
+    round-off). With ``scaled`` the second is divided by x and the third by
+    x^2 (the factors tau/dt with which :func:`viscous_step_work` weighs
+    them), computed from ``(1 - exp(-s))/x`` inside the integral so that
+    nothing under- or overflows however small x is (dimensionless).
     """
     x = np.atleast_1d(np.asarray(x, dtype=float))
     t, w = np.polynomial.legendre.leggauss(12)
     s = 0.5 * x[..., None] * (t + 1.0)
     a = np.exp(-s)
     b = -np.expm1(-s)
+    if scaled:
+        b = b / x[..., None]
     half = 0.5 * x[..., None] * w
     quad = np.stack([np.sum(half * a * a, -1), np.sum(half * a * b, -1),
                      np.sum(half * b * b, -1)])
     e1, e2 = -np.expm1(-x), -np.expm1(-2.0 * x)
     closed = np.stack([0.5 * e2, e1 - 0.5 * e2, x - 2.0 * e1 + 0.5 * e2])
+    if scaled:
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            closed = closed / np.stack([np.ones_like(x), x, x * x])  # used for x >= 1 only
     return np.where(x >= 1.0, closed, quad)
 
 
@@ -286,8 +312,8 @@ def viscous_step_work(weights: np.ndarray, g: np.ndarray, tau: np.ndarray, dt: f
         Increment of the elastic-equivalent traction and of the displacement
         (dd = K de).
     integrals : ndarray, shape (3, N), optional
-        ``decay_integrals(dt / tau)`` (computed when not given; a caller with
-        many steps of one duration passes it once computed).
+        ``decay_integrals(dt / tau, scaled=True)`` (computed when not given;
+        a caller with many steps of one duration passes it once computed).
 
     Returns
     -------
@@ -298,11 +324,12 @@ def viscous_step_work(weights: np.ndarray, g: np.ndarray, tau: np.ndarray, dt: f
     if g.size == 0:
         return 0.0
     if integrals is None:
-        integrals = decay_integrals(dt / tau)
-    ints = integrals * tau  # (3, N): int a^2, a(1-a), (1-a)^2 dt
-    y = tau / dt  # Y_i = y_i de, K Y_i = y_i dd
+        integrals = decay_integrals(dt / tau, scaled=True)
+    # (3, N): int a^2 dt, y int a(1-a) dt, y^2 int (1-a)^2 dt with y = tau/dt (Y_i = y de,
+    # K Y_i = y dd): the factors y taken into the integrals, which stay finite as dt -> 0
+    ints = integrals * tau
     xx = np.sum(weights * h_old * kh_old, axis=(1, 2))
-    xy = 0.5 * y * (np.sum(weights * h_old * dd, axis=(1, 2))
-                    + np.sum(weights * de * kh_old, axis=(1, 2)))
-    yy = y * y * dot(weights, de, dd)
+    xy = 0.5 * (np.sum(weights * h_old * dd, axis=(1, 2))
+                + np.sum(weights * de * kh_old, axis=(1, 2)))
+    yy = dot(weights, de, dd)
     return float(np.sum(g / tau * (ints[0] * xx + 2.0 * ints[1] * xy + ints[2] * yy)))

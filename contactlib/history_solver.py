@@ -671,7 +671,7 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
                 a, b, beta = prony_step(g, tau, dt)
                 scaled = replace(ops, pw=ops.pw / beta, pu=ops.pu / beta, qw=ops.qw / beta,
                                  qu=ops.qu / beta)
-                per_dt[dt] = (a, b, beta, scaled, {}, decay_integrals(dt / tau))
+                per_dt[dt] = (a, b, beta, scaled, {}, decay_integrals(dt / tau, scaled=True))
             a, b, beta, step_ops, step_cache, integrals = per_dt[dt]
             sigma_hist = np.tensordot(g * a, h, axes=1) - np.sum(g * b) * e_old
             shift = -(np.tensordot(g * a, kh, axes=1) - np.sum(g * b) * d_old) / beta

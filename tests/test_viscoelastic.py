@@ -19,6 +19,7 @@ import math
 import subprocess
 import sys
 
+import mpmath as mp
 import numpy as np
 import pytest
 from scipy import integrate, optimize
@@ -26,7 +27,7 @@ from scipy import integrate, optimize
 from conftest import job_counts, make_workdir, needs_snakemake, trapezoid_work
 from contactlib import history, io, solve, validate
 from contactlib.body import ViscoelasticBody
-from contactlib.energy import decay_integrals
+from contactlib.energy import decay_integrals, one_minus_b_over_x
 from contactlib.history_api import step_times
 
 SLS = ((0.5, 1.0),)  # standard linear solid: g = 0.5, tau = 1
@@ -269,6 +270,45 @@ def test_decay_integrals():
            for f in (lambda s: np.exp(-2 * s), lambda s: np.exp(-s) * -np.expm1(-s),
                      lambda s: np.expm1(-s) ** 2)]
     np.testing.assert_allclose(decay_integrals(x), ref, rtol=1e-12)
+
+
+def test_scaled_decay_integrals_and_one_minus_b_over_x():
+    """Against the closed forms in mpmath at 1000 digits (their cancellation needs ~900 at
+    x = 1e-300), from x = 1e-300 (where the unscaled forms under- and overflow) to 7."""
+    mp.mp.dps = 1000
+    xs = [1e-300, 1e-12, 1e-4, 0.999e-3, 1.001e-3, 0.3, 0.999, 1.0, 7.0]
+    for x in xs:
+        X = mp.mpf(x)
+        e1, e2 = -mp.expm1(-X), -mp.expm1(-2 * X)
+        ref = [e2 / 2, (e1 - e2 / 2) / X, (X - 2 * e1 + e2 / 2) / X**2]
+        got = decay_integrals(np.array([x]), scaled=True)[:, 0]
+        np.testing.assert_allclose(got, [float(r) for r in ref], rtol=1e-12)
+        assert one_minus_b_over_x(np.array(x)) == pytest.approx(
+            float((X + mp.expm1(-X)) / X**2), rel=1e-13)
+    mp.mp.dps = 15
+
+
+def test_an_instantaneous_path_is_the_elastic_one():
+    """A path of duration 1e-300 tau: the body answers with E(0) and its dashpots do not
+    move, so every energy is that of the elastic body at E(0) on the same mesh, and the
+    viscous work is finite (it was NaN: tau/dt overflowed) and vanishes with the duration."""
+    from contactlib import history_solver as hs
+    from contactlib.history_api import creep_extent, load_levels
+    from contactlib.model import contact
+
+    visco = contact("sphere", 0.3, 0.0, math.inf, 0.3, "smooth", relaxation=tuple(SLS))
+    elastic = contact("sphere", 0.3, 0.0, math.inf, 0.3, "smooth")
+    extent = creep_extent(visco)
+    levels, _ = load_levels((0, 1, 0), 20)
+    ref = hs.run_history(hs.build_operators(elastic, 60, extent), 0.2, levels)
+    for duration, tol in ((1e-300, 1e-12), (1e-9, 1e-6)):
+        run = hs.run_history(hs.build_operators(visco, 60, extent), 0.2, levels,
+                             times=step_times([duration / 2] * 2, 20))
+        for name in ("work", "external_work", "stored_energy"):
+            np.testing.assert_allclose(getattr(run, name), getattr(ref, name), rtol=0,
+                                       atol=tol * np.max(ref.external_work))
+        assert np.all(np.isfinite(run.viscous_work)) and np.all(run.viscous_work >= 0)
+        assert run.viscous_work[-1] <= 10 * duration * np.max(ref.external_work)
 
 
 # ----------------------------------------------------------------------------- interface

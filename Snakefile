@@ -19,10 +19,13 @@ min_version("9.2")
 from contactlib.io import check_yaml
 from snakemake.exceptions import WorkflowError
 
-try:
-    check_yaml("config/config.yaml")
-except ValueError as _exc:
-    raise WorkflowError(f"invalid configuration:\n  {_exc}") from None
+# (a key given twice, which YAML would keep the last of silently, included); the
+# --configfile files too, as `contactlib check-config` reads them
+for _path in ["config/config.yaml", *map(str, workflow.overwrite_configfiles or ())]:
+    try:
+        check_yaml(_path)
+    except ValueError as _exc:
+        raise WorkflowError(f"invalid configuration:\n  {_exc}") from None
 
 
 configfile: "config/config.yaml"

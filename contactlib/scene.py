@@ -10,8 +10,9 @@ A scene (``config/config.yaml``, under ``scenes:``) is of one of two kinds:
 * ``history``: an incremental load path (:func:`contactlib.history`)
   for one or several friction coefficients -> a :class:`HistoryScene`.
  This module turns one scene's mapping into a :class:`Scene`,
-validated with the library's own rules (the JSON schema of the workflow
-checks types and ranges first), and derives what the workflow needs from it:
+validated with the library's own rules (the workflow's JSON schema then
+checks what they let through; its enums and bounds are :mod:`contactlib.validate`'s),
+and derives what the workflow needs from it:
 which influence parts to build and under which shared key, which stages to
 run, and a hash of the scene's configuration for provenance.
 
@@ -43,7 +44,8 @@ from .validate import DEFAULT_OUTPUTS, OUTPUTS
 # No solver module (stages, and scipy with it) is imported here: the workflow imports
 # this module in Snakemake's own process, which builds the DAG before any job starts.
 
-__all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_scenes",
+__all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_named_scene",
+           "parse_scenes",
            "config_hash", "material_pair_scenes", "scene_mapping"]
 
 KINDS = ("self-similar", "history")
@@ -289,8 +291,10 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     base = bad.check("base", validate.base, raw.get("base", "smooth"))
     outputs = raw.get("outputs", list(DEFAULT_OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
-            not all(isinstance(o, str) and o in OUTPUTS for o in outputs):
-        bad.add("outputs", f"must be a non-empty list of {', '.join(OUTPUTS)}, got {outputs!r}")
+            not all(isinstance(o, str) and o in OUTPUTS for o in outputs) or \
+            len(set(outputs)) != len(outputs):
+        bad.add("outputs", f"must be a non-empty list of distinct {', '.join(OUTPUTS)}, got "
+                           f"{outputs!r}")
         outputs = []
     grid = bad.check("subsurface_grid", validate.subsurface_grid, raw.get("subsurface_grid", {}))
     if "subsurface" in outputs:
@@ -435,6 +439,24 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                         base=base)
 
 
+def parse_named_scene(name: Any, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
+    """:func:`parse_scene` after checking the name (:func:`contactlib.validate.scene_name`):
+    the rules of ``contactlib check-config`` and of the workflow, one scene.
+
+    Raises
+    ------
+    ConfigError
+        ``scenes.<name>: scene name must be ...`` for a bad name, else as
+        :func:`parse_scene`.
+    """
+    name = str(name)  # a YAML key 123 names scene "123"
+    try:
+        validate.scene_name(name)
+    except ValueError as exc:
+        raise ConfigError([f"scenes.{name}: {exc}"]) from None
+    return parse_scene(name, raw)
+
+
 def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | HistoryScene"]:
     """Validate every scene of a configuration (see :func:`parse_scene`).
 
@@ -449,7 +471,7 @@ def parse_scenes(scenes: Mapping[str, Mapping[str, Any]]) -> dict[str, "Scene | 
     problems: list[str] = []
     for name, raw in scenes.items():
         try:
-            out[str(name)] = parse_scene(str(name), raw)
+            out[str(name)] = parse_named_scene(name, raw)
         except ConfigError as exc:
             problems += exc.problems
     if problems:

@@ -32,7 +32,7 @@ from typing import Any, Callable, Iterable
 
 __all__ = [
     "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
-    "EXTRAPOLATED_N_MULTIPLE", "SolverLimit",
+    "EXTRAPOLATED_N_MULTIPLE", "SolverLimit", "SCENE_NAME_PATTERN", "scene_name",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
@@ -103,6 +103,10 @@ MAX_STEPS = 100_000
 
 DEFAULT_MAX_ERROR = 1e-3
 """Default accuracy asked of a result: a larger error estimate is not resolved."""
+
+SCENE_NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9_-]*$"
+"""A workflow scene's name (a file name and a Snakemake wildcard value): a letter or
+digit, then letters, digits, ``-`` and ``_``."""
 MIN_TOLERANCE = 1e-9
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""
@@ -273,6 +277,16 @@ def geometry(value: Any) -> str:
 def method(value: Any) -> str:
     """``"default"``, ``"paper"``, ``"paper-literal"`` or ``"extrapolated"``."""
     return choice("method", value, METHODS)
+
+
+def scene_name(value: Any) -> str:
+    """A workflow scene's name (:data:`SCENE_NAME_PATTERN`)."""
+    import re
+
+    if not isinstance(value, str) or not re.match(SCENE_NAME_PATTERN, value):
+        raise InputError("scene name", "a letter or digit followed by letters, digits, '-' "
+                         "and '_' (it names files and jobs)", value)
+    return value
 
 
 def nu(value: Any) -> float:

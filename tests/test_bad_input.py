@@ -434,7 +434,7 @@ def test_workflow_reports_every_schema_problem_by_key(tmp_path):
     assert code != 0
     for where in ("scenes.nu-text.nu", "scenes.n-float.n", "scenes.n-huge.n",
                   "scenes.ratios-word.stick_ratios", "scenes.ratios-empty.stick_ratios",
-                  "scenes.outputs-twice.outputs", "scenes.no-nu", "'nu' is a required",
+                  "scenes.outputs-twice.outputs", "scenes.no-nu.nu: is required",
                   "scenes.extra-key", "colour", "bad name!", "figures", "fig9", "scene"):
         assert where in text, (where, text)
     assert not (tmp_path / "results").exists()

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import contactlib
-from contactlib import io, pipeline, stages
+from contactlib import io, pipeline, stages, validate
 from contactlib.geometry import Geometry
 from contactlib.discrete import SelfSimilarSolution
 from contactlib.result import CaseRecord
@@ -185,7 +185,7 @@ def test_scene_defaults_and_keys():
     s = parse_scene("s", {"geometry": "sphere", "nu": 0.3, "stick_ratios": "all",
                           "method": "paper"})
     assert s.n == 16 and s.stick_ratios == tuple(m / 16 for m in range(1, 16))
-    assert s.outputs == stages.OUTPUTS
+    assert s.outputs == validate.DEFAULT_OUTPUTS  # every output but the opt-in subsurface
     assert s.influence_key == "sphere-nu0.3-paper-n16"
     d = parse_scene("d", {"geometry": "cylinder", "nu": 0.3, "stick_ratios": [0.5, 0.2],
                           "slab_ratio": 0.05})

@@ -10,7 +10,8 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
 import contactlib
-from contactlib.scene import material_pair_scenes, parse_scene, viscoelastic_scenes
+from contactlib.scene import (material_pair_scenes, parse_named_scene, parse_scene,
+                              viscoelastic_scenes)
 
 SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 VERSION = contactlib.__version__
@@ -28,24 +29,25 @@ FIGURE_NEEDS = {
 
 
 def _schema_problems(cfg):
-    """One line a schema violation (types and ranges), sorted by where it is, and the
-    keys reported for each scene (None: the whole scene)."""
+    """One ``(line, scene, keys)`` a schema violation (types and ranges), sorted by where
+    it is: the scene it concerns (None: not a scene) and its keys (None: the whole scene)."""
     with open(SCHEMA) as fh:
         schema = yaml.safe_load(fh)
     errors = sorted(
         jsonschema.Draft202012Validator(schema).iter_errors(cfg), key=lambda e: list(e.absolute_path)
     )
-    lines, reported = [], {}
+    out = []
     for e in errors:
         path = list(e.absolute_path)
+        scene, keys = None, None
         if len(path) >= 2 and path[0] == "scenes":
-            keys = reported.setdefault(str(path[1]), set())
+            scene = str(path[1])
             if len(path) >= 3:
-                keys.add(str(path[2]))
+                keys = {str(path[2])}
             elif e.validator in ("required", "additionalProperties"):
-                keys.update(re.findall(r"'([^']*)'", e.message))
-            else:
-                reported[str(path[1])] = None
+                keys = set(re.findall(r"'([^']*)'", e.message))
+        elif path == ["scenes"] and "propertyNames" in e.schema_path:
+            scene = str(e.instance)  # a bad scene name
         where = ".".join(str(p) for p in e.absolute_path) or "(top level)"
         if e.validator == "oneOf" and where.endswith("stick_ratios"):
             message = f"must be 'all' or a list of distinct numbers in [0, 1], got {e.instance!r}"
@@ -53,8 +55,8 @@ def _schema_problems(cfg):
             message = f"must be a number >= 0 or a list of distinct ones, got {e.instance!r}"
         else:
             message = e.message
-        lines.append(f"{where}: {message}")
-    return lines, reported
+        out.append((f"{where}: {message}", scene, keys))
+    return out
 
 
 def _figure_problems(cfg, scenes, raw_scenes):
@@ -104,28 +106,29 @@ def _convergence_problems(cfg):
 def _validate_config(cfg):
     """Every problem of the configuration at once, one line each, or the parsed scenes.
 
-    Schema first (types and ranges), then the library's rules for each scene
-    the schema accepts, the figures' scene lists and the convergence studies;
-    all of it is gathered before one error is raised.
+    Each scene by the library's rules first (contactlib.scene.parse_named_scene,
+    the words of ``contactlib check-config``), then the schema (types and
+    ranges) for what the library let through, the figures' scene lists and
+    the convergence studies; all of it is gathered before one error is raised.
     """
-    lines, reported = _schema_problems(cfg)
     raw_scenes = cfg.get("scenes") if isinstance(cfg.get("scenes"), dict) else {}
-    scenes = {}
+    scenes, lines, said = {}, [], {}  # said: the keys the library named, by scene
     for name, raw in raw_scenes.items():
         name = str(name)
-        keys = reported.get(name, set())
-        if keys is None:
-            continue  # the whole scene is wrong (e.g. not a mapping): the schema says so
         try:
-            scene = parse_scene(name, raw)
+            scenes[name] = parse_named_scene(name, raw)
         except ValueError as exc:  # ConfigError: one line a bad key
             for line in getattr(exc, "problems", [str(exc)]):
-                key = line.split(":", 1)[0].split(".", 2)[-1]
-                if key not in keys:  # one report a problem: the schema's comes first
-                    lines.append(line)
-            continue
-        if not keys:
-            scenes[name] = scene
+                head, prefix = line.split(":", 1)[0], f"scenes.{name}."
+                key = head[len(prefix):].split(".")[0] if head.startswith(prefix) else None
+                said.setdefault(name, set()).add(key)
+                lines.append(line)
+    for line, scene, keys in _schema_problems(cfg):  # one report a problem: the library's
+        if scene is not None:
+            if scene in said and (keys is None or None in said[scene] or keys & said[scene]):
+                continue
+            scenes.pop(scene, None)
+        lines.append(line)
     lines.sort(key=lambda line: line.split(":", 1)[0].split(".")[:2])  # grouped by scene
     lines += _figure_problems(cfg, scenes, raw_scenes)
     lines += _convergence_problems(cfg)

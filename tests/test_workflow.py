@@ -100,6 +100,23 @@ def test_dag_builds_only_what_scenes_ask_for(tmp_path):
     assert scenes["paper-a"].influence_key == scenes["paper-b"].influence_key
 
 
+def test_results_dir_moves_every_output(tmp_path):
+    """A study of one's own (results_dir: studies/mine) writes nothing under results/."""
+    wd = make_workdir(tmp_path, TINY)
+    (wd / "mine.yaml").write_text(yaml.safe_dump({"results_dir": "studies/mine/"}))
+    out = snakemake(wd, "--dry-run", "--configfile", "mine.yaml", cores=1)
+    text = out.stdout + out.stderr
+    paths = re.findall(r"[\w./-]+\.(?:nc|npz|png|pdf|csv|html|log|tsv)\b", text)
+    assert "studies/mine/datasets/tiny-default.nc" in paths
+    assert "studies/mine/figures/fig2.png" in paths
+    assert "studies/mine/tables/key-numbers.csv" in paths
+    assert "results/" not in text and all(p.startswith("studies/mine/") for p in paths), \
+        [p for p in paths if not p.startswith("studies/mine/")]
+    (wd / "bad.yaml").write_text(yaml.safe_dump({"results_dir": "../elsewhere"}))
+    proc = snakemake(wd, "--dry-run", "--configfile", "bad.yaml", cores=1, check=False)
+    assert proc.returncode != 0 and "results_dir" in proc.stdout + proc.stderr
+
+
 # ----------------------------------------------------------------------------- schema
 @pytest.mark.parametrize("key, value", [("nu", 0.7)] + [pytest.param(*p, marks=pytest.mark.slow) for p in (
     ("geometry", "cone"), ("n", 1), ("stick_ratios", [1.7]),

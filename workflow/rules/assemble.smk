@@ -9,14 +9,14 @@ rule assemble:
     input:
         unpack(stage_files),
     output:
-        "results/datasets/{scene}.nc",
+        f"{RESULTS}datasets/{{scene}}.nc",
     params:
         scene=scene_params,
         version=VERSION,
     log:
-        "results/logs/assemble/{scene}.log",
+        f"{RESULTS}logs/assemble/{{scene}}.log",
     benchmark:
-        "results/benchmarks/assemble/{scene}.tsv"
+        f"{RESULTS}benchmarks/assemble/{{scene}}.tsv"
     conda:
         "../envs/contactlib.yaml"
     threads: 1

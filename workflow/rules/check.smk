@@ -5,14 +5,14 @@
 
 rule check:
     input:
-        solutions="results/solutions/{scene}.npz",
+        solutions=f"{RESULTS}solutions/{{scene}}.npz",
     output:
-        "results/checks/{scene}.npz",
+        f"{RESULTS}checks/{{scene}}.npz",
     params:
         scene=scene_params,
         version=VERSION,
     log:
-        "results/logs/check/{scene}.log",
+        f"{RESULTS}logs/check/{{scene}}.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

@@ -189,6 +189,9 @@ def visco_scenes(cfg, taken):
 
 
 ALL_SCENES = _validate_config(config)
+# where every output goes: the config's results_dir (default results), so that a study
+# of your own (--configfile) does not overwrite the paper's figures and datasets
+RESULTS = "{}/".format(Path(str(config.get("results_dir", "results"))).as_posix())
 # the `materials` target's scenes: built by the same rules, not part of `all`
 MATERIAL_SCENES, MATERIAL_PAIRS = material_scenes(config, ALL_SCENES)
 # the `viscoelastic` target's scenes (history scenes), not part of `all` either
@@ -295,16 +298,16 @@ def history_threads(wildcards):
 
 def influence_files(wildcards):
     """The folder of the scene's influence set (its <part>.npz files)."""
-    return {"influence": f"results/influence/{SCENES[wildcards.scene].influence_key}"}
+    return {"influence": f"{RESULTS}influence/{SCENES[wildcards.scene].influence_key}"}
 
 
 def stage_files(wildcards):
     """The post-processing results a scene's dataset is assembled from."""
     s = SCENES[wildcards.scene]
-    files = {"solutions": f"results/solutions/{s.name}.npz"}
+    files = {"solutions": f"{RESULTS}solutions/{s.name}.npz"}
     folders = {"check": "checks", "energy": "energy"}
     for stage in s.stages:
-        files[stage] = f"results/{folders[stage]}/{s.name}.npz"
+        files[stage] = f"{RESULTS}{folders[stage]}/{s.name}.npz"
     return files
 
 
@@ -335,7 +338,7 @@ FIGURE_FAMILIES = {family: figs for family, figs in FIGURE_FAMILIES.items() if f
 
 def figure_inputs(figs):
     """The datasets of every scene the figures draw, each once."""
-    return sorted({f"results/datasets/{s}.nc" for fig in figs for s in figure_scenes(fig)})
+    return sorted({f"{RESULTS}datasets/{s}.nc" for fig in figs for s in figure_scenes(fig)})
 
 
 def figure_outputs(figs):
@@ -343,28 +346,28 @@ def figure_outputs(figs):
     out = {}
     for fig in figs:
         out[f"{fig}_png"] = report(
-            f"results/figures/{fig}.png",
+            f"{RESULTS}figures/{fig}.png",
             caption=f"../report/{fig}.rst",
             category="Figures",
             labels={"figure": FIGURE_TITLES.get(fig, fig), "file": f"{fig}.png"},
         )
-        out[f"{fig}_pdf"] = f"results/figures/{fig}.pdf"
+        out[f"{fig}_pdf"] = f"{RESULTS}figures/{fig}.pdf"
     return out
 
 
 def all_targets():
-    out = [f"results/datasets/{name}.nc" for name in ALL_SCENES]
+    out = [f"{RESULTS}datasets/{name}.nc" for name in ALL_SCENES]
     for fig in FIGURES:
         if figure_scenes(fig):
-            out += [f"results/figures/{fig}.png", f"results/figures/{fig}.pdf"]
+            out += [f"{RESULTS}figures/{fig}.png", f"{RESULTS}figures/{fig}.pdf"]
     if ALL_SCENES:  # the key-numbers table sums up every scene
-        out += ["results/tables/key-numbers.csv", "results/tables/key-numbers.html"]
+        out += [f"{RESULTS}tables/key-numbers.csv", f"{RESULTS}tables/key-numbers.html"]
     return out
 
 
 def study_reference(wildcards):
     ref = CONVERGENCE["studies"][wildcards.study].get("reference")
-    return {"reference": f"results/convergence/{ref}.nc"} if ref else {}
+    return {"reference": f"{RESULTS}convergence/{ref}.nc"} if ref else {}
 
 
 def operator_mb(n, count=1):

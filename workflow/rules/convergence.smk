@@ -8,15 +8,15 @@ rule convergence_study:
     input:
         unpack(study_reference),
     output:
-        "results/convergence/{study}.nc",
+        f"{RESULTS}convergence/{{study}}.nc",
     params:
         study=lambda wildcards: CONVERGENCE["studies"][wildcards.study],
         stick_ratios=CONVERGENCE["stick_ratios"],
         version=VERSION,
     log:
-        "results/logs/convergence/{study}.log",
+        f"{RESULTS}logs/convergence/{{study}}.log",
     benchmark:
-        "results/benchmarks/convergence/{study}.tsv"
+        f"{RESULTS}benchmarks/convergence/{{study}}.tsv"
     conda:
         "../envs/contactlib.yaml"
     threads: 1
@@ -32,18 +32,18 @@ rule convergence_study:
 
 rule convergence_figure:
     input:
-        expand("results/convergence/{study}.nc", study=sorted(CONVERGENCE["studies"])),
+        expand(f"{RESULTS}convergence/{{study}}.nc", study=sorted(CONVERGENCE["studies"])),
     output:
         png=report(
-            "results/figures/convergence.png",
+            f"{RESULTS}figures/convergence.png",
             caption="../report/convergence.rst",
             category="Convergence",
         ),
-        pdf="results/figures/convergence.pdf",
+        pdf=f"{RESULTS}figures/convergence.pdf",
     params:
         version=VERSION,
     log:
-        "results/logs/figures/convergence.log",
+        f"{RESULTS}logs/figures/convergence.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1
@@ -56,18 +56,18 @@ rule convergence_figure:
 
 rule convergence_table:
     input:
-        expand("results/convergence/{study}.nc", study=sorted(CONVERGENCE["studies"])),
+        expand(f"{RESULTS}convergence/{{study}}.nc", study=sorted(CONVERGENCE["studies"])),
     output:
-        csv="results/tables/convergence.csv",
+        csv=f"{RESULTS}tables/convergence.csv",
         html=report(
-            "results/tables/convergence.html",
+            f"{RESULTS}tables/convergence.html",
             caption="../report/convergence_table.rst",
             category="Convergence",
         ),
     params:
         version=VERSION,
     log:
-        "results/logs/tables/convergence.log",
+        f"{RESULTS}logs/tables/convergence.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

@@ -4,14 +4,14 @@
 
 rule energy:
     input:
-        solutions="results/solutions/{scene}.npz",
+        solutions=f"{RESULTS}solutions/{{scene}}.npz",
     output:
-        "results/energy/{scene}.npz",
+        f"{RESULTS}energy/{{scene}}.npz",
     params:
         scene=scene_params,
         version=VERSION,
     log:
-        "results/logs/energy/{scene}.log",
+        f"{RESULTS}logs/energy/{{scene}}.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

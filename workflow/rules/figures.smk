@@ -23,9 +23,9 @@ for _family, _figs in FIGURE_FAMILIES.items():
             figures={fig: figure_scenes(fig) for fig in _figs},
             version=VERSION,
         log:
-            f"results/logs/figures/{_family}.log",
+            f"{RESULTS}logs/figures/{_family}.log",
         benchmark:
-            f"results/benchmarks/figures/{_family}.tsv"
+            f"{RESULTS}benchmarks/figures/{_family}.tsv"
         conda:
             "../envs/contactlib.yaml"
         threads: figure_threads(_family, min(2, len(_figs)))
@@ -39,18 +39,18 @@ for _family, _figs in FIGURE_FAMILIES.items():
 
 rule key_numbers:
     input:
-        expand("results/datasets/{scene}.nc", scene=sorted(ALL_SCENES)),
+        expand(f"{RESULTS}datasets/{{scene}}.nc", scene=sorted(ALL_SCENES)),
     output:
-        csv="results/tables/key-numbers.csv",
+        csv=f"{RESULTS}tables/key-numbers.csv",
         html=report(
-            "results/tables/key-numbers.html",
+            f"{RESULTS}tables/key-numbers.html",
             caption="../report/key_numbers.rst",
             category="Key numbers",
         ),
     params:
         version=VERSION,
     log:
-        "results/logs/tables/key-numbers.log",
+        f"{RESULTS}logs/tables/key-numbers.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

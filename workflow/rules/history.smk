@@ -6,14 +6,14 @@
 
 rule history_run:
     output:
-        "results/datasets/{hscene}.nc",
+        f"{RESULTS}datasets/{{hscene}}.nc",
     params:
         run=history_params,
         version=VERSION,
     log:
-        "results/logs/history/{hscene}.log",
+        f"{RESULTS}logs/history/{{hscene}}.log",
     benchmark:
-        "results/benchmarks/history/{hscene}.tsv"
+        f"{RESULTS}benchmarks/history/{{hscene}}.tsv"
     conda:
         "../envs/contactlib.yaml"
     threads: history_threads

@@ -10,14 +10,14 @@
 
 rule influence:
     output:
-        temp(directory("results/influence/{key}")),
+        temp(directory(f"{RESULTS}influence/{{key}}")),
     params:
         spec=influence_spec,
         version=VERSION,
     log:
-        "results/logs/influence/{key}.log",
+        f"{RESULTS}logs/influence/{{key}}.log",
     benchmark:
-        "results/benchmarks/influence/{key}.tsv"
+        f"{RESULTS}benchmarks/influence/{{key}}.tsv"
     conda:
         "../envs/contactlib.yaml"
     threads: 1

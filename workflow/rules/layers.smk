@@ -6,11 +6,11 @@
 
 rule layers_study:
     output:
-        "results/layers/layers.nc",
+        f"{RESULTS}layers/layers.nc",
     params:
         version=VERSION,
     log:
-        "results/logs/layers/study.log",
+        f"{RESULTS}logs/layers/study.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1
@@ -26,18 +26,18 @@ rule layers_figure:
         rules.layers_study.output,
     output:
         png=report(
-            "results/figures/layers.png",
+            f"{RESULTS}figures/layers.png",
             caption="../report/layers.rst",
             category="Figures",
             labels={"figure": "Layers: frictionless load and k against a/h",
                     "file": "layers.png"},
         ),
-        pdf="results/figures/layers.pdf",
-        csv="results/tables/layers.csv",
+        pdf=f"{RESULTS}figures/layers.pdf",
+        csv=f"{RESULTS}tables/layers.csv",
     params:
         version=VERSION,
     log:
-        "results/logs/layers/figure.log",
+        f"{RESULTS}logs/layers/figure.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

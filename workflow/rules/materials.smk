@@ -8,24 +8,24 @@
 
 rule materials_figure:
     input:
-        self_similar=expand("results/datasets/{scene}.nc", scene=list(MATERIAL_PAIRS)),
+        self_similar=expand(f"{RESULTS}datasets/{{scene}}.nc", scene=list(MATERIAL_PAIRS)),
         cycles=expand(
-            "results/datasets/{scene}.nc", scene=[h for h, _ in MATERIAL_PAIRS.values()]
+            f"{RESULTS}datasets/{{scene}}.nc", scene=[h for h, _ in MATERIAL_PAIRS.values()]
         ),
     output:
         png=report(
-            "results/figures/materials.png",
+            f"{RESULTS}figures/materials.png",
             caption="../report/materials.rst",
             category="Figures",
             labels={"figure": "Material pairs: k against c/a and work per cycle",
                     "file": "materials.png"},
         ),
-        pdf="results/figures/materials.pdf",
+        pdf=f"{RESULTS}figures/materials.pdf",
     params:
         labels=[label for _, label in MATERIAL_PAIRS.values()],
         version=VERSION,
     log:
-        "results/logs/figures/materials.log",
+        f"{RESULTS}logs/figures/materials.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1
@@ -38,11 +38,11 @@ rule materials_figure:
 
 rule materials_key_numbers:
     input:
-        expand("results/datasets/{scene}.nc", scene=list(MATERIAL_SCENES)),
+        expand(f"{RESULTS}datasets/{{scene}}.nc", scene=list(MATERIAL_SCENES)),
     output:
-        csv="results/tables/materials-key-numbers.csv",
+        csv=f"{RESULTS}tables/materials-key-numbers.csv",
         html=report(
-            "results/tables/materials-key-numbers.html",
+            f"{RESULTS}tables/materials-key-numbers.html",
             caption="../report/key_numbers.rst",
             category="Key numbers",
         ),
@@ -50,7 +50,7 @@ rule materials_key_numbers:
         version=VERSION,
         title="contactlib: key numbers of the material pairs",
     log:
-        "results/logs/tables/materials-key-numbers.log",
+        f"{RESULTS}logs/tables/materials-key-numbers.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

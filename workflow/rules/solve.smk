@@ -7,14 +7,14 @@ rule solve:
     input:
         unpack(influence_files),
     output:
-        "results/solutions/{scene}.npz",
+        f"{RESULTS}solutions/{{scene}}.npz",
     params:
         scene=scene_params,
         version=VERSION,
     log:
-        "results/logs/solve/{scene}.log",
+        f"{RESULTS}logs/solve/{{scene}}.log",
     benchmark:
-        "results/benchmarks/solve/{scene}.tsv"
+        f"{RESULTS}benchmarks/solve/{{scene}}.tsv"
     conda:
         "../envs/contactlib.yaml"
     threads: 1

@@ -8,20 +8,20 @@
 
 rule viscoelastic_figure:
     input:
-        expand("results/datasets/{scene}.nc", scene=list(VISCO_SCENES)),
+        expand(f"{RESULTS}datasets/{{scene}}.nc", scene=list(VISCO_SCENES)),
     output:
         png=report(
-            "results/figures/viscoelastic.png",
+            f"{RESULTS}figures/viscoelastic.png",
             caption="../report/viscoelastic.rst",
             category="Figures",
             labels={"figure": "Viscoelastic body: dissipation per cycle against the rate",
                     "file": "viscoelastic.png"},
         ),
-        pdf="results/figures/viscoelastic.pdf",
+        pdf=f"{RESULTS}figures/viscoelastic.pdf",
     params:
         version=VERSION,
     log:
-        "results/logs/figures/viscoelastic.log",
+        f"{RESULTS}logs/figures/viscoelastic.log",
     conda:
         "../envs/contactlib.yaml"
     threads: 1

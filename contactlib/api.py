@@ -44,13 +44,20 @@ def output_grid() -> np.ndarray:
 # ----------------------------------------------------------------------------- validation
 def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.inf,
                      indenter_nu=None, base="smooth", profile="paraboloid",
-                     exponent=None) -> tuple[Geometry, int, str]:
+                     exponent=None, substrate_modulus=None, substrate_nu=None,
+                     planned=None) -> tuple[Geometry, int, str]:
     """The problem's arguments, checked one by one with :mod:`contactlib.validate`."""
     geometry = validate.geometry(geometry)
     method = validate.method(method)
     nu = validate.nu(nu)
-    base = validate.base(base)
+    base = validate.base(base, coated=True)
     slab = validate.slab_ratio(slab_ratio, geometry, base)
+    sub_modulus, sub_nu = validate.substrate(base, substrate_modulus, substrate_nu, geometry,
+                                             method)
+    if planned is not None and base == validate.COATED_BASE:
+        raise validate.InputError("tolerance", "unset on a coated body (base 'elastic')",
+                                  planned, "tolerance is not planned on a coated body (base "
+                                  "'elastic'): give n (method 'default') instead")
     n = validate.n(n, method)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
     shape = profiles.profile(profile, exponent)
@@ -59,7 +66,8 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
                                   f"method {method!r} is measured for the paraboloid only (the "
                                   "paper's scheme and the extrapolated method's error model); "
                                   f"use method 'default' for the {shape.name} profile")
-    return Geometry(geometry, nu, slab, ratio, nu1, base, profile=shape), n, method
+    return Geometry(geometry, nu, slab, ratio, nu1, base, sub_modulus, sub_nu,
+                    profile=shape), n, method
 
 
 # ----------------------------------------------------------------------------- post-processing
@@ -321,7 +329,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           indenter_nu: float | None = None,
           max_error: float = validate.DEFAULT_MAX_ERROR, base: str = "smooth",
           tolerance: float | None = None, profile: str = "paraboloid",
-          exponent: float | None = None) -> Solution:
+          exponent: float | None = None, substrate_modulus: float | None = None,
+          substrate_nu: float | None = None) -> Solution:
     """Solve one partial-slip case, for a given stick ratio or friction coefficient.
 
     Parameters
@@ -364,9 +373,12 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         n/4 and n/2) exceeds it is reported with ``resolved = False`` and a
         message that names the n that would resolve it, or says why none
         will. Default 1e-3.
-    base : {"smooth", "bonded"}
+    base : {"smooth", "bonded", "elastic"}
         The layer's rigid base: frictionless (default, the paper's slab) or
-        bonded; irrelevant at ``slab_ratio = 0``.
+        bonded; irrelevant at ``slab_ratio = 0``. ``"elastic"``: a coated
+        body, the layer (E, ``nu``; E* is the layer's) bonded to an elastic
+        half-space (``substrate_modulus``, ``substrate_nu``); sphere, method
+        "default", a/h <= 20 (docs/models.md).
     tolerance : float, optional
         A relative error of k to reach instead of a resolution, in
         [1e-9, 0.1] (:func:`contactlib.validate.planned_tolerance`): the
@@ -386,6 +398,13 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         units of E* (A d)^2 a^(2d+1) (per unit length a^(2d)) for h = A r^d.
     exponent : float, optional
         d for ``profile="power"``, in [0.5, 8] (omitted otherwise).
+    substrate_modulus : float, optional
+        E2/E1, the substrate's Young's modulus over the layer's, in
+        ``validate.SUBSTRATE_MODULUS_RANGE`` ([1e-2, 1e6]); required with
+        ``base="elastic"``, refused otherwise.
+    substrate_nu : float, optional
+        The substrate's Poisson's ratio in (-1, 0.5] (default: the layer's
+        ``nu``); only with ``base="elastic"``.
 
     Returns
     -------
@@ -421,7 +440,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     """
     planned = _check_planned(tolerance, n, method)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
-                                       indenter_nu, base, profile, exponent)
+                                       indenter_nu, base, profile, exponent, substrate_modulus,
+                                       substrate_nu, planned)
     _check_planned_profile(planned, geom)
     energy = validate.flag("energy", energy)
     max_error = validate.max_error(max_error)
@@ -444,7 +464,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     if k == math.inf:
         return solve(geometry, nu, stick_ratio=1.0, n=n, method=method, slab_ratio=slab_ratio,
                      energy=energy, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
-                     max_error=max_error, base=base, profile=profile, exponent=exponent)
+                     max_error=max_error, base=base, profile=profile, exponent=exponent,
+                     substrate_modulus=substrate_modulus, substrate_nu=substrate_nu)
     if k == 0.0:
         return _finish(geom, _discrete(geom, 0.0, n, method), method, n, energy,
                        max_error=max_error)
@@ -481,7 +502,9 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
           indenter_nu: float | None = None,
           max_error: float = validate.DEFAULT_MAX_ERROR,
           base: str = "smooth", tolerance: float | None = None,
-          profile: str = "paraboloid", exponent: float | None = None) -> list[Solution]:
+          profile: str = "paraboloid", exponent: float | None = None,
+          substrate_modulus: float | None = None,
+          substrate_nu: float | None = None) -> list[Solution]:
     """Solve a list of stick ratios (``"all"``: m/n for m = 1 ... n-1).
 
     Newton's method on k starts each point from the points already solved
@@ -496,8 +519,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ----------
     geometry, nu, n, method, slab_ratio, energy, indenter_modulus, indenter_nu, max_error, base
         As for :func:`solve`.
-    profile, exponent
-        As for :func:`solve` (default the paraboloid).
+    profile, exponent, substrate_modulus, substrate_nu
+        As for :func:`solve` (default the paraboloid; no substrate).
     tolerance : float, optional
         As for :func:`solve`: planned over all the stick ratios (a list, not
         ``"all"``) at one method and n; where no single n meets it at all of
@@ -533,7 +556,8 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
         raise validate.InputError("stick_ratios", "a list of stick ratios with a tolerance "
                                   "('all' means m/n and needs a given n)", stick_ratios)
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
-                                       indenter_nu, base, profile, exponent)
+                                       indenter_nu, base, profile, exponent, substrate_modulus,
+                                       substrate_nu, planned)
     _check_planned_profile(planned, geom)
     energy = validate.flag("energy", energy)
     progress = validate.callback("progress", progress)

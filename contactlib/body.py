@@ -3,7 +3,9 @@ r"""The body the indenter is pressed into: its material and its kernels.
 An :class:`ElasticBody` is a homogeneous, isotropic, linear elastic body: a
 half-space (under rings) or half-plane (under strips, plane strain), or a
 layer of thickness h on a rigid base, smooth (frictionless, the paper's
-slab) or bonded. It answers the basic loads the indenter puts on it (see
+slab) or bonded, or on an elastic half-space / half-plane (``base="elastic"``, a
+coated body: the layer bonded to a substrate of its own modulus and Poisson's
+ratio; rings only). It answers the basic loads the indenter puts on it (see
 :mod:`contactlib.indenter`): a uniform pressure, or a shear element, on a disc
 or a symmetric strip of radius ``s``, with the closed-form kernels of
 :mod:`contactlib.kernels`.
@@ -15,7 +17,10 @@ of the problem (the contact radius ``a``, or ``a_max`` in the incremental
 solver). The layer is given by ``slab_ratio`` = (length scale)/h, 0 for the
 half-space or half-plane, so the thickness in these units is
 ``1/slab_ratio``; ``base`` is "smooth" (u_z = 0, no shear on the base) or
-"bonded" (u_z = u_r = 0), and is ignored on the half-space. Displacements are w (into the body) and u (away from the
+"bonded" (u_z = u_r = 0), or "elastic" (a bonded substrate with
+``substrate_modulus`` = E2/E1 of the substrate over the layer and
+``substrate_nu``; E* is the layer's), and is ignored on the half-space.
+Displacements are w (into the body) and u (away from the
 axis) in (length scale)^2/R per unit traction in E* (length scale)/R.
 
 beta = (1 - 2 nu)/(2 (1 - nu)) is Dundurs' coupling parameter of a rigid
@@ -59,14 +64,32 @@ class ElasticBody:
     slab_ratio : float
         (length scale)/h of a layer of thickness h on a rigid base; 0
         (default) is the half-space or half-plane.
-    base : {"smooth", "bonded"}
-        The layer's rigid base: frictionless (default, the paper's slab) or
-        bonded. Irrelevant on the half-space.
+    base : {"smooth", "bonded", "elastic"}
+        The layer's base: rigid and frictionless (default, the paper's slab),
+        rigid and bonded, or an elastic half-space bonded to the layer (a
+        coated body; rings only). Irrelevant on the half-space.
+    substrate_modulus : float
+        E2/E1, the elastic substrate's Young's modulus over the layer's, in
+        (0, inf); only with ``base="elastic"``.
+    substrate_nu : float, optional
+        The substrate's Poisson's ratio (None: the layer's); only with
+        ``base="elastic"``.
     """
 
     nu: float
     slab_ratio: float = 0.0
     base: str = "smooth"
+    substrate_modulus: float = np.inf
+    substrate_nu: float | None = None
+
+    @property
+    def kernel_base(self) -> str | layer.Substrate:
+        """The ``base`` argument of the layer kernels: the base's name, or the
+        :class:`contactlib.kernels.layer.Substrate` of a coated body."""
+        if self.base != "elastic":
+            return self.base
+        nu2 = self.nu if self.substrate_nu is None else self.substrate_nu
+        return layer.Substrate(self.substrate_modulus, nu2)
 
     @property
     def thickness(self) -> float:
@@ -93,7 +116,7 @@ class ElasticBody:
         """
         if self.is_half_space:
             return disc.pressure_disc(x, s, self.nu, with_w=with_w)
-        return layer.pressure_disc(x, s, self.nu, self.thickness, self.base, with_w=with_w)
+        return layer.pressure_disc(x, s, self.nu, self.thickness, self.kernel_base, with_w=with_w)
 
     def ring_shear(self, x: np.ndarray, s: np.ndarray, with_du: bool = True) -> Displacements:
         """(w, u, du/dr) under the shear q = r on the disc r < s.
@@ -103,7 +126,7 @@ class ElasticBody:
         """
         if self.is_half_space:
             return disc.shear_disc(x, s, self.nu, with_du=with_du)
-        return layer.shear_disc(x, s, self.nu, self.thickness, self.base, with_du=with_du)
+        return layer.shear_disc(x, s, self.nu, self.thickness, self.kernel_base, with_du=with_du)
 
     def ring_remainder(self, kind: str, x: np.ndarray, s: np.ndarray,
                        weights: np.ndarray | None = None,
@@ -117,7 +140,7 @@ class ElasticBody:
         """
         if self.is_half_space:
             return None
-        return layer.remainder_grid(kind, x, s, self.nu, self.thickness, self.base,
+        return layer.remainder_grid(kind, x, s, self.nu, self.thickness, self.kernel_base,
                                     weights, owner)
 
     @property
@@ -145,7 +168,7 @@ class ElasticBody:
                 f"axis (slab_ratio = {self.slab_ratio!r}, ref = {ref!r})")
         dw, zero, zero2 = disc.w_difference_disc(x, 0.0, s, self.nu, part)
         kind = "pressure" if part == "normal" else "shear"
-        return dw + layer.remainder_axis_w(kind, x, s, self.nu, h, self.base), zero, zero2
+        return dw + layer.remainder_axis_w(kind, x, s, self.nu, h, self.kernel_base), zero, zero2
 
     @property
     def ring_kernel_degrees(self) -> np.ndarray | None:
@@ -163,7 +186,7 @@ class ElasticBody:
         :func:`contactlib.kernels.strip.pressure_strip` with the thickness
         :attr:`thickness` and the :attr:`base`.
         """
-        return strip.pressure_strip(x, s, self.nu, self.thickness, self.base)
+        return strip.pressure_strip(x, s, self.nu, self.thickness, self.kernel_base)
 
     def strip_axis_w(self, x: np.ndarray, s: np.ndarray, part: str,
                      ref: float = 0.0) -> Displacements:
@@ -172,7 +195,7 @@ class ElasticBody:
         :func:`contactlib.kernels.strip.w_difference_strip` with the thickness
         :attr:`thickness` and the :attr:`base`.
         """
-        return strip.w_difference_strip(x, ref, s, self.nu, part, self.thickness, self.base)
+        return strip.w_difference_strip(x, ref, s, self.nu, part, self.thickness, self.kernel_base)
 
     def strip_shear(self, x: np.ndarray, s: np.ndarray) -> Displacements:
         """(w, u, du/dx) under the odd shear sgn(x) on |x| < s (half-plane or slab).
@@ -180,7 +203,7 @@ class ElasticBody:
         :func:`contactlib.kernels.strip.shear_strip` with the thickness
         :attr:`thickness` and the :attr:`base`.
         """
-        return strip.shear_strip(x, s, self.nu, self.thickness, self.base)
+        return strip.shear_strip(x, s, self.nu, self.thickness, self.kernel_base)
 
 
 # ----------------------------------------------------------------------------- viscoelastic body

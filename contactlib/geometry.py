@@ -34,8 +34,11 @@ class Geometry(Contact):
         E1/E2 of the indenter over the body (``inf``: rigid, the default).
     indenter_nu : float, optional
         Poisson's ratio of the indenter (None: the body's).
-    base : {"smooth", "bonded"}
-        The layer's rigid base (default smooth; irrelevant at slab_ratio 0).
+    base : {"smooth", "bonded", "elastic"}
+        The layer's base (default smooth; irrelevant at slab_ratio 0).
+    substrate_modulus, substrate_nu : float
+        E2/E1 and Poisson's ratio of the elastic substrate (``base="elastic"``;
+        see :class:`~contactlib.body.ElasticBody`).
     """
 
     indenter: Indenter = field(init=False, repr=False, compare=False)
@@ -46,11 +49,14 @@ class Geometry(Contact):
     indenter_modulus: float = math.inf
     indenter_nu: float | None = None
     base: str = "smooth"
+    substrate_modulus: float = math.inf
+    substrate_nu: float | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "indenter",
                            indenter(self.name, self.indenter_modulus, self.indenter_nu))
-        object.__setattr__(self, "body", ElasticBody(self.nu, self.slab_ratio, self.base))
+        object.__setattr__(self, "body", ElasticBody(self.nu, self.slab_ratio, self.base,
+                                                   self.substrate_modulus, self.substrate_nu))
 
     @property
     def thickness(self) -> float:

@@ -306,7 +306,8 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
             indenter_modulus: float = math.inf, indenter_nu: float | None = None,
             base: str = "smooth",
             relaxation: tuple[tuple[float, float], ...] = (),
-            profile: Profile = PARABOLOID) -> Contact:
+            profile: Profile = PARABOLOID, substrate_modulus: float = math.inf,
+            substrate_nu: float | None = None) -> Contact:
     """The model of the public interface's names: an indenter on an elastic body.
 
     Parameters
@@ -320,14 +321,17 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
         E1/E2 of the indenter over the body (``inf``: rigid, the default).
     indenter_nu : float, optional
         Poisson's ratio of the indenter (None: the body's).
-    base : {"smooth", "bonded"}
-        The layer's rigid base (default smooth).
+    base : {"smooth", "bonded", "elastic"}
+        The layer's base (default smooth; "elastic": a coated body).
     relaxation : tuple of (g, tau), optional
         Prony terms of a viscoelastic body (:class:`~contactlib.body.ViscoelasticBody`;
         its kernels are the elastic ones at E(0)); empty: elastic.
     profile : Profile
         The indenter's shape (default the paraboloid; :func:`contactlib.profiles.profile`).
+    substrate_modulus, substrate_nu : float
+        E2/E1 and Poisson's ratio (None: the layer's) of the elastic substrate
+        of a coated body (``base="elastic"``).
     """
     body = ViscoelasticBody(nu, slab_ratio, base, relaxation=tuple(relaxation)) \
-        if relaxation else ElasticBody(nu, slab_ratio, base)
+        if relaxation else ElasticBody(nu, slab_ratio, base, substrate_modulus, substrate_nu)
     return Contact(indenter(geometry, indenter_modulus, indenter_nu), body, profile=profile)

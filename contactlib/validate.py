@@ -39,7 +39,8 @@ __all__ = [
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
     "MIN_TOLERANCE", "MAX_TOLERANCE", "MIN_PLANNED_TOLERANCE", "planned_tolerance",
     "indenter_modulus", "indenter_nu", "indenter_material",
-    "indenter_mapping", "BASES", "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
+    "indenter_mapping", "BASES", "COATED_BASE", "SUBSTRATE_MODULUS_RANGE", "substrate",
+    "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
     "DEFAULT_OUTPUTS", "SUBSURFACE_GRID", "subsurface_grid",
 ]
 
@@ -65,8 +66,11 @@ SUBSURFACE_GRID: tuple[tuple[float, float, int], tuple[float, float, int]] = (
 BASES: tuple[str, ...] = ("smooth", "bonded")
 """Rigid bases under a layer: frictionless (the paper's slab) or bonded."""
 
+COATED_BASE = "elastic"
+"""The base of a coated body: the layer bonded to an elastic half-space (the sphere)."""
+
 LAYER_RATIO_MAX: dict[tuple[str, str], float] = {
-    ("sphere", "smooth"): 20.0, ("sphere", "bonded"): 20.0,
+    ("sphere", "smooth"): 20.0, ("sphere", "bonded"): 20.0, ("sphere", "elastic"): 20.0,
     ("cylinder", "smooth"): 80.0, ("cylinder", "bonded"): 1000.0,
 }
 """Largest a/h (a_max/h in the history solver) per (geometry, base).
@@ -294,9 +298,60 @@ def nu(value: Any) -> float:
     return number("nu", value, -1.0, 0.5, lo_open=True)
 
 
-def base(value: Any) -> str:
-    """The rigid base under a layer: ``"smooth"`` or ``"bonded"``."""
-    return choice("base", value, BASES)
+def base(value: Any, coated: bool = False) -> str:
+    """The rigid base under a layer: ``"smooth"`` or ``"bonded"``; with ``coated``
+    also ``"elastic"`` (:data:`COATED_BASE`, checked by :func:`substrate`)."""
+    if value == COATED_BASE and not coated:
+        raise InputError("base", f"one of {', '.join(BASES)} here", value,
+                         f"base {value!r} (a coated body) is available in solve and sweep only "
+                         "(the self-similar default method), not in history or scenes")
+    return choice("base", value, BASES + ((COATED_BASE,) if coated else ()))
+
+
+SUBSTRATE_MODULUS_RANGE: tuple[float, float] = (1e-2, 1e6)
+"""Verified range of ``substrate_modulus`` E2/E1 of a coated body (the layer's
+remainder tables against their quadrature, and the limits of
+``tests/test_coatings.py``; docs/models.md)."""
+
+
+def substrate(base_name: str, modulus: Any, nu2: Any, geometry_name: str,
+              method_name: str = "default") -> tuple[float, float | None]:
+    """The elastic substrate of a coated body: ``(E2/E1, nu2)`` (nu2 None: the layer's).
+
+    ``base_name`` (already checked) is :data:`COATED_BASE` for a coated body;
+    any other base refuses a substrate (``modulus`` must be None or inf and
+    ``nu2`` None), and then ``(inf, None)`` is returned. A coated body is a
+    sphere under the default method, with E2/E1 in
+    :data:`SUBSTRATE_MODULUS_RANGE`.
+    """
+    modulus = _scalar(modulus)
+    given = modulus is not None and not (isinstance(modulus, Real) and not _is_bool(modulus)
+                                         and modulus == math.inf)
+    if base_name != COATED_BASE:
+        if given:
+            raise InputError("substrate_modulus", "unset without base='elastic'", modulus,
+                             f"substrate_modulus needs base='elastic' (a coated body), not "
+                             f"base={base_name!r}, got {modulus!r}")
+        if nu2 is not None:
+            raise InputError("substrate_nu", "unset without base='elastic'", nu2,
+                             f"substrate_nu needs base='elastic' (a coated body), not "
+                             f"base={base_name!r}, got {nu2!r}")
+        return math.inf, None
+    if geometry_name != "sphere":
+        raise InputError("base", "'smooth' or 'bonded' for a cylinder", base_name,
+                         "base 'elastic' (a coated body) is implemented for the sphere only, "
+                         f"not the {geometry_name}")
+    if method_name != "default":
+        raise InputError("method", "'default' on a coated body", method_name,
+                         f"method {method_name!r} is not available on a coated body "
+                         "(base 'elastic'): use method 'default'")
+    if modulus is None:
+        raise InputError("substrate_modulus", "given with base='elastic'", modulus,
+                         "substrate_modulus (E2/E1 of the substrate over the layer) is required "
+                         "with base='elastic'")
+    lo, hi = SUBSTRATE_MODULUS_RANGE
+    m = number("substrate_modulus", modulus, lo, hi)
+    return m, (None if nu2 is None else number("substrate_nu", nu2, -1.0, 0.5, lo_open=True))
 
 
 def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "smooth",
@@ -311,6 +366,10 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
     v = number("slab_ratio", value, 0.0, None)
     if geometry_name is None:
         return v
+    if (geometry_name, base_name) not in LAYER_RATIO_MAX:
+        raise InputError("base", f"one of {', '.join(BASES)} for a {geometry_name}", base_name,
+                         f"base {base_name!r} (a coated body) is implemented for the sphere "
+                         f"only, not the {geometry_name}")
     hi = LAYER_RATIO_MAX[(geometry_name, base_name)]
     if geometry_name == "sphere":
         hi /= extent

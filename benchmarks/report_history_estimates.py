@@ -1,7 +1,7 @@
 """Coverage of the history's error estimates against runs refined fourfold, in one run.
 
 Run: python benchmarks/report_history_estimates.py [n steps]   (default n = 120, 50 steps
-a segment; the truth is 4n elements and 4 x steps; about 2 min on one core)
+a segment; the truth is 4n elements and 4 x steps; about 1 min on one core)
 
 For each path it prints estimate / true error of
 
@@ -88,7 +88,8 @@ def check(label, geometry, nu, k, path, kwargs, n, steps, orders) -> str:
             for g in range(1, len(path)) if np.any(c_true[regular & (res.segment == g)] > 0)]
     e_true = abs(res.external_work[top] - ref.external_work[4 * top]) / res.energy_scale
     e_est = res.energy_error_estimate[top]
-    return (f"| {label} | {orders[-1]:.2f} | {w_est / w_true:.2f} ({w_true / ref.frictional_work[-1]:.1e}) | "
+    w_rel = w_true / ref.frictional_work[-1]
+    return (f"| {label} | {orders[-1]:.2f} | {w_est / w_true:.2f} ({w_rel:.1e}) | "
             f"{c_est[top] / c_true[top]:.2f} ({c_true[top]:.1e}) | {cover:.2f} | "
             f"{max(infl) if infl else np.nan:.2f} | {e_est / e_true:.2f} ({e_true:.1e}) | "
             f"{cpu:.0f} |")

@@ -17,9 +17,9 @@ import pytest
 from conftest import trapezoid_work
 from contactlib import cli, io, solve
 from contactlib import history_solver as hs
+from contactlib.energy import monotone_work
 from contactlib.geometry import Geometry
 from contactlib.history_api import DEFAULT_N, HistoryResult, history, load_levels
-from contactlib.energy import monotone_work
 from contactlib.io import history_to_dataset
 
 P_MAX = {"sphere": 4.0 / 3.0, "cylinder": math.pi / 4.0}  # E* = R = a_max = 1

@@ -11,9 +11,10 @@ Errors raised by the library as :class:`ValueError` are reported the same way
 contact is most likely fully stuck): status 3, its reason on one line and then
 one line ``contactlib: answer it with: contactlib ...`` for each command that
 answers the case, with the arguments filled in. Any other exception gives one
-line and status 1 (``--debug`` adds the traceback). ``--output`` is checked before any computing (missing
-parent folders are created; an unwritable place, a path through a file or a
-name too long is bad input), and the file is written only after success.
+line and status 1 (``--debug`` adds the traceback). ``--output`` is checked
+before any computing (missing parent folders are created; an unwritable place,
+a path through a file or a name too long is bad input), and the file is written
+only after success.
 Negative numbers, also in exponent form (``--nu -1e-3``), are option values,
 never taken for options.
 

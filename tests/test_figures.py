@@ -401,3 +401,53 @@ def test_a_case_not_resolved_is_drawn_as_a_failure(data):
     after = crosses(figures.fig2_friction(unresolved)) + crosses(figures.fig5_work(unresolved))
     assert after == base + 2  # one more cross in each figure
     assert "not converged or not resolved" in legend_texts(figures.fig2_friction(unresolved))
+
+
+# ----------------------------------------------------------------------------- own studies
+def _legend_colors(fig) -> dict[str, object]:
+    """Label -> colour of every legend entry (the curves' keys are legend handles)."""
+    legends = list(fig.legends) + [ax.get_legend() for ax in fig.axes if ax.get_legend()]
+    return {text.get_text(): handle.get_color() for leg in legends
+            for text, handle in zip(leg.get_texts(), leg.legend_handles)
+            if hasattr(handle, "get_color")}
+
+
+def test_fig2_reference_lines_take_the_colour_of_their_curve(data):
+    """One closed form per nu, in the colour of the curve of that nu (the default
+    method's where the paper's scheme has the same nu)."""
+    other = to_dataset(contactlib.sweep("sphere", 0.2, [0.0, 0.3, 0.7, 1.0], n=32,
+                                        max_error=0.05))
+    other.attrs["scene"] = "sphere-nu0.2"
+    paper = data["sphere-paper"].copy()
+    paper.attrs["scene"] = "sphere-paper"
+    fig = figures.fig2_friction([paper, data["sphere"], other])
+    ax = next(ax for ax in fig.axes if ax.get_title())
+    refs = {ln.get_label(): ln.get_color() for ln in ax.lines
+            if ln.get_label().startswith("uncoupled closed form")}
+    keys = _legend_colors(fig)
+    assert refs == {"uncoupled closed form, ν = 0.2": keys["sphere-nu0.2"],
+                    "uncoupled closed form, ν = 0.3": keys["sphere-default"]}
+    assert len(set(refs.values())) == 2 and keys["sphere-paper"] not in refs.values()
+
+
+@pytest.mark.parametrize("count, rows, columns", [(2, 1, 2), (4, 1, 4), (5, 2, 3),
+                                                  (8, 2, 4)])
+def test_profile_panels_wrap_into_rows(data, count, rows, columns):
+    """fig4 with 8 scenes was one row of 3945 x 627 px; at most MAX_COLUMNS panels a row,
+    the rows of equal length, the figure no wider than four columns."""
+    from contactlib.plot.base import MAX_COLUMNS
+
+    datasets = []
+    for i in range(count):
+        ds = data["sphere" if i % 2 else "cylinder"].copy()
+        ds.attrs["scene"] = f"scene-{i}"
+        datasets.append(ds)
+    fig = figures.fig4_displacement(datasets)
+    panels = [ax for ax in fig.axes if ax.get_title()]
+    assert [ax.get_title().splitlines()[0] for ax in panels] == [f"scene-{i}"
+                                                                 for i in range(count)]
+    xs = sorted({round(ax.get_position().x0, 3) for ax in panels})
+    ys = sorted({round(ax.get_position().y0, 3) for ax in panels})
+    assert (len(ys), len(xs)) == (rows, columns) and columns <= MAX_COLUMNS
+    width, height = fig.get_size_inches()
+    assert width <= 0.7 + 3.2 * MAX_COLUMNS and height < 5.0 * rows

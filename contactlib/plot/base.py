@@ -52,6 +52,7 @@ __all__ = [
     "k_text",
     "legend_height",
     "panel_grid",
+    "MAX_COLUMNS",
     "finish",
 ]
 
@@ -192,8 +193,13 @@ def legend_height(entries: int) -> float:
     return _LEGEND_PAD_IN + _LEGEND_LINE_IN * max(entries, 1)
 
 
+MAX_COLUMNS = 4
+"""Most panels side by side in :func:`panel_grid`; more wrap into rows (bands)."""
+
+
 def panel_grid(ncol: int, rows_in: Sequence[float], legend_entries: int,
-               width: float | None = None) -> tuple[Figure, np.ndarray, list[Axes]]:
+               width: float | None = None,
+               max_columns: int = MAX_COLUMNS) -> tuple[Figure, np.ndarray, list[Axes]]:
     """Figure with ``len(rows_in)`` rows of plot panels and a legend row below.
 
     ``rows_in`` are the plot row heights in inches; the legend row is sized
@@ -201,21 +207,34 @@ def panel_grid(ncol: int, rows_in: Sequence[float], legend_entries: int,
     a column. Returns the figure, the plot axes (rows x columns) and one
     axis-free legend holder per column. ``width`` is in inches (default:
     3.2 in a column plus 0.7 in).
+
+    More than ``max_columns`` (default :data:`MAX_COLUMNS`) columns wrap into
+    bands of equal width, ceil(ncol / bands) columns each, every band with its
+    own legend row below its panels; column j is still ``axes[:, j]`` and
+    ``holders[j]``. A given ``width`` is that of one row of ``ncol`` columns
+    and shrinks with the band's share of them.
     """
     legend_in = legend_height(legend_entries)
-    height = sum(rows_in) + legend_in + 0.35 * len(rows_in) + 0.35
+    bands = -(-ncol // max(1, max_columns))
+    per_band = -(-ncol // bands)
+    height = bands * (sum(rows_in) + legend_in + 0.35 * len(rows_in) + 0.35)
     if width is None:
-        width = max(4.2, 0.7 + 3.2 * ncol)
+        width = max(4.2, 0.7 + 3.2 * per_band)
+    elif bands > 1:
+        width = max(4.2, width * per_band / ncol)
     fig = Figure(figsize=(width, height), layout="constrained")
-    grid = fig.add_gridspec(len(rows_in) + 1, ncol, height_ratios=[*rows_in, legend_in])
+    span = len(rows_in) + 1  # grid rows of a band: its plot rows and its legend row
+    grid = fig.add_gridspec(span * bands, per_band, height_ratios=[*rows_in, legend_in] * bands)
     axes = np.empty((len(rows_in), ncol), dtype=object)
     holders: list[Axes] = []
     for j in range(ncol):
+        band, col = divmod(j, per_band)
         for i in range(len(rows_in)):
-            axes[i, j] = fig.add_subplot(grid[i, j], sharex=axes[0, j] if i else None)
+            axes[i, j] = fig.add_subplot(grid[band * span + i, col],
+                                         sharex=axes[0, j] if i else None)
             if i < len(rows_in) - 1:
                 axes[i, j].tick_params(labelbottom=False)
-        holder = fig.add_subplot(grid[-1, j])
+        holder = fig.add_subplot(grid[band * span + len(rows_in), col])
         holder.set_axis_off()
         holders.append(holder)
     return fig, axes, holders

@@ -102,7 +102,6 @@ _WORK_LABEL = {
     "cylinder": r"frictional work $V R^2/(E^* a^4)$ per unit length",
 }
 _DASHES = ((5.0, 2.5), (1.5, 1.5), (6.0, 2.0, 1.5, 2.0), (3.0, 1.0))
-_REF_COLOR = "0.3"
 
 
 # ----------------------------------------------------------------------------- datasets
@@ -317,9 +316,10 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     ranges over which consecutive sampled cases are all consistent and
     converged (a bar; a lone such case is a tick). The uncoupled closed form
     :func:`contactlib.theory.uncoupled_friction` is drawn dashed for every
-    Poisson's ratio present: for the sphere, and for the cylinder only when a
-    half-plane dataset (``slab_ratio`` 0) is present (the closed form is for
-    the half-plane).
+    Poisson's ratio present, in the colour of the curve of that ratio (of the
+    default method's where the paper's scheme shares it): for the sphere, and
+    for the cylinder only when a half-plane dataset (``slab_ratio`` 0) is
+    present (the closed form is for the half-plane).
 
     Parameters
     ----------
@@ -415,7 +415,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
                     strip.text(0.5, y, "no consistent converged case", color=color,
                                ha="center", va="center", fontsize=6,
                                transform=strip.get_yaxis_transform())
-            handles += _uncoupled_references(ax, geometry, members)
+            handles += _uncoupled_references(ax, geometry, members, colors)
             ax.set_xlim(-0.02, 1.02)
             ax.set_ylim(bottom, k_max)
             ax.set_title(_TITLES[geometry], pad=9)  # clear of the markers on the top edge
@@ -495,8 +495,19 @@ def _reference_count(geometry: str, cases: Sequence[_Case]) -> int:
     return max(len({c.nu for c in _uncoupled_eligible(geometry, cases)}), 1)
 
 
-def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list[Line2D]:
-    """Dashed uncoupled closed form for each Poisson's ratio present."""
+def _reference_color(cases: Sequence[_Case], nu: float, colors: Sequence[str]) -> str:
+    """The colour of the curve a closed form for ``nu`` belongs to: the first dataset of
+    that nu, one of the default method where there is one (the paper's scheme at n = 16
+    is a reproduction, not the converged curve)."""
+    same = [c for c in cases if c.nu == nu]
+    pick = next((c for c in same if not c.paper), same[0])
+    return colors[pick.index % len(colors)]
+
+
+def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case],
+                          colors: Sequence[str]) -> list[Line2D]:
+    """Dashed uncoupled closed form for each Poisson's ratio present, in the colour of
+    its curve (:func:`_reference_color`)."""
     eligible = _uncoupled_eligible(geometry, members)
     nus = sorted({c.nu for c in eligible})
     handles: list[Line2D] = []
@@ -507,7 +518,8 @@ def _uncoupled_references(ax: Axes, geometry: str, members: list[_Case]) -> list
     for i, nu in enumerate(nus):
         k = uncoupled_friction(geometry, nu, gamma)
         where = f", {ind.half_space_name}" if layered else ""
-        (line,) = ax.plot(gamma, k, color=_REF_COLOR, lw=1.0, dashes=_DASHES[i % len(_DASHES)],
+        (line,) = ax.plot(gamma, k, color=_reference_color(eligible, nu, colors), lw=1.0,
+                          dashes=_DASHES[i % len(_DASHES)],
                           zorder=1, label=f"uncoupled closed form, ν = {fmt(nu)}{where}")
         handles.append(line)
     if indenter(geometry).accepts_layer and not eligible:
@@ -521,9 +533,10 @@ def fig3_tractions(datasets: xr.Dataset | Sequence[xr.Dataset],
                    stick_ratios: Sequence[float] = FIG3_STICK_RATIOS) -> Figure:
     """Pressure and shear profiles for several stick ratios (the paper's Fig. 3).
 
-    One column per dataset: pressure p/p0 (top) and shear q/p0 (bottom)
-    against xi = r/a (sphere) or x/a (cylinder), p0 the Hertz peak pressure
-    at the same contact radius; shear is the traction on the elastic body,
+    One column per dataset (more than four wrap into rows of columns,
+    :func:`~contactlib.plot.base.panel_grid`): pressure p/p0 (top) and shear
+    q/p0 (bottom) against xi = r/a (sphere) or x/a (cylinder), p0 the Hertz
+    peak pressure at the same contact radius; shear is the traction on the elastic body,
     positive away from the axis. Drawn for the dataset's stick ratios
     nearest to the requested ones (each at most once; the legend gives the
     actual c/a and k and flags inconsistent or failed cases), coloured by
@@ -665,7 +678,8 @@ def fig4_displacement(datasets: xr.Dataset | Sequence[xr.Dataset],
                       stick_ratios: Sequence[float] = DEFAULT_STICK_RATIOS) -> Figure:
     """Tangential surface displacement for several stick ratios (the paper's Fig. 4).
 
-    One panel per dataset: u R/a^2 against xi = r/a (sphere) or x/a
+    One panel per dataset (more than four wrap into rows,
+    :func:`~contactlib.plot.base.panel_grid`): u R/a^2 against xi = r/a (sphere) or x/a
     (cylinder), u positive away from the axis, for the partial-slip stick
     ratios (0 < c/a < 1) of the dataset nearest to the requested ones,
     coloured by c/a, with a dot at the stick edge xi = c/a. The limits are

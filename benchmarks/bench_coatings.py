@@ -35,16 +35,16 @@ def main(quick: bool = False) -> None:
     nu = 0.3
     for modulus in ((0.1,) if quick else (0.01, 0.1, 10.0, 1e6)):
         sub = layer.Substrate(modulus, 0.3)
-        t_build, tab = timed(lambda: layer.layer_table(nu, sub))
+        t_build, tab = timed(lambda sub=sub: layer.layer_table(nu, sub))
         print(f"table E2/E1 = {modulus:g}: built in {t_build:.2f} s, "
               f"{tab.nbytes / 2**20:.1f} MiB")
     layer.layer_table(nu, "bonded")
     for slab in (1.0, 20.0):
-        t_b, sb = timed(lambda: contactlib.solve("sphere", nu, stick_ratio=0.5, n=n,
-                                                 slab_ratio=slab, base="bonded", energy=False))
-        t_c, sc = timed(lambda: contactlib.solve("sphere", nu, stick_ratio=0.5, n=n,
-                                                 slab_ratio=slab, base="elastic",
-                                                 substrate_modulus=0.1, energy=False))
+        t_b, sb = timed(lambda s=slab: contactlib.solve(
+            "sphere", nu, stick_ratio=0.5, n=n, slab_ratio=s, base="bonded", energy=False))
+        t_c, sc = timed(lambda s=slab: contactlib.solve(
+            "sphere", nu, stick_ratio=0.5, n=n, slab_ratio=s, base="elastic",
+            substrate_modulus=0.1, energy=False))
         print(f"solve n = {n}, a/h = {slab:g}: bonded {t_b:.2f} s, coated (E2/E1 = 0.1) "
               f"{t_c:.2f} s, ratio {t_c / t_b:.2f} (k {sb.friction_coefficient:.6g}, "
               f"{sc.friction_coefficient:.6g})")

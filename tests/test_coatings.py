@@ -24,6 +24,8 @@ Units: the layer's E* = 1 (E1* = E1/(1 - nu^2)); m = E1*/E2*.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 from scipy import integrate, special
@@ -228,7 +230,7 @@ def test_betti_reciprocity(nu, modulus, nu2, h):
     def integral(f, hi, brk):
         edges = [0.0, brk, hi] if 0 < brk < hi else [0.0, hi]
         return sum(0.5 * (up - lo) * np.sum(wg * f(0.5 * (up - lo) * g + 0.5 * (up + lo)))
-                   for lo, up in zip(edges[:-1], edges[1:]))
+                   for lo, up in itertools.pairwise(edges))
 
     for s1, s2 in ((1.0, 0.6), (0.5, 1.3), (1.0, 1.0)):
         lhs = integral(lambda r: r * layer.pressure_disc(r, s1, nu, h, sub)[1] * 2 * np.pi * r,
@@ -352,8 +354,8 @@ def test_frictionless_load_against_the_fredholm_solution(slab, modulus, nu2, nod
 
 # --- convergence ---------------------------------------------------------------------------
 @pytest.mark.parametrize("kw", [
-    dict(slab_ratio=5.0, substrate_modulus=0.1, substrate_nu=0.2),
-    pytest.param(dict(slab_ratio=20.0, substrate_modulus=10.0), marks=pytest.mark.slow)])
+    {"slab_ratio": 5.0, "substrate_modulus": 0.1, "substrate_nu": 0.2},
+    pytest.param({"slab_ratio": 20.0, "substrate_modulus": 10.0}, marks=pytest.mark.slow)])
 def test_error_estimate_covers_the_fourfold_refinement(kw):
     """k(c/a = 0.5): the estimate at n covers |k(n)/k(4n) - 1| (measured 1.3-170x) and the
     differences shrink with n."""
@@ -368,18 +370,18 @@ def test_error_estimate_covers_the_fourfold_refinement(kw):
 
 # --- input -----------------------------------------------------------------------------
 @pytest.mark.parametrize("kwargs, name", [
-    (dict(base="elastic"), "substrate_modulus"),
-    (dict(base="elastic", substrate_modulus=0.0), "substrate_modulus"),
-    (dict(base="elastic", substrate_modulus=1e-3), "substrate_modulus"),
-    (dict(base="elastic", substrate_modulus=float("inf")), "substrate_modulus"),
-    (dict(base="elastic", substrate_modulus=2.0, substrate_nu=0.6), "substrate_nu"),
-    (dict(base="bonded", substrate_modulus=2.0), "substrate_modulus"),
-    (dict(base="smooth", substrate_nu=0.2), "substrate_nu"),
-    (dict(base="elastic", substrate_modulus=2.0, slab_ratio=21.0), "slab_ratio"),
-    (dict(base="elastic", substrate_modulus=2.0, method="extrapolated"), "method"),
+    ({"base": "elastic"}, "substrate_modulus"),
+    ({"base": "elastic", "substrate_modulus": 0.0}, "substrate_modulus"),
+    ({"base": "elastic", "substrate_modulus": 1e-3}, "substrate_modulus"),
+    ({"base": "elastic", "substrate_modulus": float("inf")}, "substrate_modulus"),
+    ({"base": "elastic", "substrate_modulus": 2.0, "substrate_nu": 0.6}, "substrate_nu"),
+    ({"base": "bonded", "substrate_modulus": 2.0}, "substrate_modulus"),
+    ({"base": "smooth", "substrate_nu": 0.2}, "substrate_nu"),
+    ({"base": "elastic", "substrate_modulus": 2.0, "slab_ratio": 21.0}, "slab_ratio"),
+    ({"base": "elastic", "substrate_modulus": 2.0, "method": "extrapolated"}, "method"),
 ])
 def test_bad_substrate_input_names_the_argument(kwargs, name):
-    kw = dict(slab_ratio=1.0, n=128) | kwargs
+    kw = {"slab_ratio": 1.0, "n": 128} | kwargs
     with pytest.raises(contactlib.validate.InputError) as err:
         contactlib.solve("sphere", NU, stick_ratio=0.5, **kw)
     assert err.value.name == name and str(err.value).startswith(name)

@@ -161,21 +161,54 @@ def parse_slab_ratio(text: str, geometry: str | None = None, base: str = "smooth
     return _check(validate.slab_ratio, text, _float(text), geometry, base, extent)
 
 
-def parse_base(text: str) -> str:
-    """The layer's rigid base: smooth or bonded."""
-    return _check(validate.base, text, text)
+def parse_base(text: str, coated: bool = False) -> str:
+    """The layer's rigid base: smooth or bonded (``coated``: also elastic, a coated body)."""
+    return _check(validate.base, text, text, coated)
 
 
-def _layer_options(sub: argparse.ArgumentParser, length: str) -> None:
-    """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max")."""
+def parse_substrate(args: argparse.Namespace, base: str, geometry: str,
+                    method: str) -> dict[str, float]:
+    """``substrate_modulus`` and ``substrate_nu`` of a coated body (``--base elastic``), checked
+    by :func:`validate.substrate`; refused without it; {} on a rigid base."""
+    modulus = None if args.substrate_modulus is None else _float(args.substrate_modulus)
+    nu2 = None if args.substrate_nu is None else _float(args.substrate_nu)
+    shown = {"substrate_modulus": args.substrate_modulus, "substrate_nu": args.substrate_nu,
+             "method": method}
+    try:
+        modulus, nu2 = validate.substrate(base, modulus, nu2, geometry, method)
+    except validate.InputError as exc:
+        raise _usage(exc, shown.get(exc.name, base)) from None
+    if base != validate.COATED_BASE:
+        return {}
+    if args.output is not None:
+        raise UsageError("--output is not available with --base elastic: datasets do not "
+                         "record the substrate yet")
+    return {"substrate_modulus": modulus} | ({} if nu2 is None else {"substrate_nu": nu2})
+
+
+def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = False) -> None:
+    """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max"); with ``coated`` also
+    ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep)."""
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help=f"{length}/h of an elastic layer of thickness h on a rigid base, "
                           f">= 0 (0 = half-space / half-plane); at most 20 for the sphere "
                           f"(20/1.2 in history), 80 for the cylinder on a smooth base, "
                           f"1000 on a bonded one; default: 0")
-    sub.add_argument("--base", metavar="{smooth,bonded}", default="smooth",
-                     help="the layer's rigid base: smooth (frictionless) or bonded; "
-                          "default: smooth")
+    if not coated:
+        sub.add_argument("--base", metavar="{smooth,bonded}", default="smooth",
+                         help="the layer's rigid base: smooth (frictionless) or bonded; "
+                              "default: smooth")
+        return
+    sub.add_argument("--base", metavar="{smooth,bonded,elastic}", default="smooth",
+                     help="the layer's base: rigid and smooth (frictionless) or bonded, or "
+                          "elastic (a coated body: the layer bonded to an elastic half-space; "
+                          "sphere, default method, a/h <= 20, no --output); default: smooth")
+    sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
+                     help="with --base elastic: the substrate's Young's modulus over the "
+                          "layer's, in [1e-2, 1e6] (required there)")
+    sub.add_argument("--substrate-nu", metavar="NU2", default=None,
+                     help="with --base elastic: the substrate's Poisson's ratio, in (-1, 0.5]; "
+                          "default: the layer's --nu")
 
 
 def parse_n(text: str, method: str = "default") -> int:
@@ -317,7 +350,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                           "paraboloid")
     sub.add_argument("--exponent", metavar="D", default=None,
                      help="d of --profile power, in [0.5, 8]")
-    _layer_options(sub, "a")
+    _layer_options(sub, "a", coated=True)
     _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
                      default=None, help=_OUTPUT_HELP)
@@ -451,7 +484,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
     geometry = _check(validate.geometry, args.geometry, args.geometry)
     method = _check(validate.method, args.method, args.method)
     n = None if args.n is None else parse_n(args.n, method)
-    base = parse_base(args.base)
+    base = parse_base(args.base, coated=True)
     kwargs: dict[str, Any] = {
         "geometry": geometry,
         "nu": parse_nu(_required(args.nu, "--nu")),
@@ -471,6 +504,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
     if base != "smooth":  # likewise: the keyword only when not the default
         kwargs["base"] = base
+    kwargs.update(parse_substrate(args, base, geometry, method))
     if args.profile != "paraboloid" or args.exponent is not None:  # likewise
         from contactlib import profiles
 
@@ -569,6 +603,9 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
                           ("--indenter-modulus", args.indenter_modulus != "inf"),
                           ("--indenter-nu", args.indenter_nu is not None),
                           ("--slab-ratio", args.slab_ratio != "0"),
+                          ("--substrate-modulus",
+                           getattr(args, "substrate_modulus", None) is not None),
+                          ("--substrate-nu", getattr(args, "substrate_nu", None) is not None),
                           ("--profile", getattr(args, "profile", "paraboloid") != "paraboloid"
                            or getattr(args, "exponent", None) is not None)):
         if given:

@@ -395,3 +395,23 @@ def test_cylinder_and_history_refuse_a_coated_body():
     with pytest.raises(contactlib.validate.InputError, match="solve and sweep") as err:
         contactlib.history("sphere", NU, 0.2, [0, 1], 2, slab_ratio=1.0, base="elastic")
     assert err.value.name == "base"
+
+
+# --- command line ------------------------------------------------------------------------
+def test_cli_solve_on_a_coated_body(capsys):
+    from contactlib import cli
+
+    argv = ["solve", "--geometry", "sphere", "--nu", "0.3", "--stick-ratio", "0.5", "--n", "64",
+            "--slab-ratio", "5", "--base", "elastic"]
+    assert cli.main(argv + ["--substrate-modulus", "0.1", "--substrate-nu", "0.2"]) == 0
+    text = capsys.readouterr().out
+    k = _k(0.5, 64, slab_ratio=5.0, base="elastic", substrate_modulus=0.1, substrate_nu=0.2)
+    assert "(elastic base)" in text and f"{k.friction_coefficient:.6g}" in text
+    for extra, option in ((["--substrate-modulus", "1e-3"], "--substrate-modulus"),
+                          ([], "--substrate-modulus"),
+                          (["--substrate-modulus", "2", "--substrate-nu", "0.7"], "--substrate-nu"),
+                          (["--substrate-modulus", "2", "--output", "x.nc"], "--output")):
+        assert cli.main(argv + extra) == 2
+        assert option in capsys.readouterr().err
+    bonded = argv[:-1] + ["bonded", "--substrate-modulus", "2"]
+    assert cli.main(bonded) == 2 and "--substrate-modulus" in capsys.readouterr().err

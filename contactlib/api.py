@@ -87,8 +87,10 @@ def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_ener
     profile: dict[str, Any] = stages.profiles(geom, rec, xi, displacements=False)
     # u needs the kernels at every xi: computed when the caller first reads it
     profile["tangential_displacement"] = functools.partial(_displacement, geom, rec, xi)
-    return stages.to_solution(geom, method, n, rec, xi, flags=stages.check_case(rec),
-                              work=work, profile=profile, message=message)
+    sol = stages.to_solution(geom, method, n, rec, xi, flags=stages.check_case(rec),
+                             work=work, profile=profile, message=message)
+    sol.extra.update(stages.nodal_tractions(geom, rec))  # for the subsurface stresses
+    return sol
 
 
 def _displacement(geom: Geometry, rec: CaseRecord, xi: np.ndarray) -> np.ndarray:

@@ -161,6 +161,7 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
                           error_estimate=estimate, tolerance=tolerance)
     if "subsurface" in want:
         from .stresses import scene_subsurface
-        ds = scene_subsurface(ds, scene, [stages.profiles(geom, rec, xi, displacements=False)
+        ds = scene_subsurface(ds, scene, [{**stages.profiles(geom, rec, xi, displacements=False),
+                                           **stages.nodal_tractions(geom, rec)}
                                           for rec in records], xi)
     return ds

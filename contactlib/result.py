@@ -337,6 +337,12 @@ class Solution:
         that is not resolved is not to be used as a good number.
     max_error : float
         The accuracy asked for (relative error of k).
+    extra : dict
+        ``stick_violation``, ``slip_violation`` (:mod:`contactlib.checks`) and
+        ``indentation`` (delta in units of a^2/R); for the default and extrapolated
+        methods also the solve's own piecewise-linear tractions, ``nodes`` (r/a or x/a)
+        with ``nodal_pressure`` and ``nodal_shear`` (p/p0, q/p0), which
+        :func:`contactlib.stresses.subsurface_stresses` integrates.
 
     Examples
     --------

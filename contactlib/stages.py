@@ -797,6 +797,22 @@ def profiles(geometry: Contact, rec: CaseRecord, xi: np.ndarray, *, stresses: bo
     return out
 
 
+def nodal_tractions(geometry: Contact, rec: CaseRecord) -> dict[str, np.ndarray]:
+    """The solve's own piecewise-linear tractions at its nodes (default-method records).
+
+    ``nodes`` (r/a or x/a), ``nodal_pressure`` and ``nodal_shear`` (p/p0, q/p0): what the
+    subsurface stresses integrate, so that their field converges with n instead of
+    stopping at the interpolation of the 201 output points. Empty for the paper's
+    step tractions.
+    """
+    if rec.kind != "default" or rec.nodes is None:
+        return {}
+    nodes = np.asarray(rec.nodes, dtype=float)
+    return {"nodes": nodes, "nodal_pressure": np.asarray(rec.p, dtype=float) / geometry.p0,
+            "nodal_shear": geometry.shear_shape(nodes) * np.asarray(rec.traction, dtype=float)
+            / geometry.p0}
+
+
 def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.ndarray, *,
                 flags: dict[str, Any] | None = None, work: float = float("nan"),
                 profile: dict[str, np.ndarray] | None = None,

@@ -551,6 +551,22 @@ def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarr
     return float(solution.indenter_poisson_ratio), p, -q
 
 
+def traction_samples(solution: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(xi, p/p0, q/p0) whose piecewise-linear interpolation the field integrates.
+
+    The solve's own nodes and nodal tractions where the solution carries them
+    (``solution.extra["nodes"]``, default and extrapolated methods: the field then
+    converges with n), else its output points ``xi``, ``pressure``, ``shear``.
+    """
+    nodal = getattr(solution, "extra", None) or {}
+    if "nodes" in nodal:
+        return (np.asarray(nodal["nodes"], dtype=float),
+                np.asarray(nodal["nodal_pressure"], dtype=float),
+                np.asarray(nodal["nodal_shear"], dtype=float))
+    return (np.asarray(solution.xi, dtype=float), np.asarray(solution.pressure, dtype=float),
+            np.asarray(solution.shear, dtype=float))
+
+
 def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
                         measures: bool = True) -> Any:
     """The stress field under a solved case, as an xarray Dataset in units of p0.
@@ -598,10 +614,12 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     """
     import xarray as xr
 
-    nu, p, q = _tractions_of(solution, body)
+    nu, _, _ = _tractions_of(solution, body)
+    xi, p, q = traction_samples(solution)
+    q = q if body == "body" else -q
     xs, zs = _grid(x, z)
     geometry = solution.geometry
-    fields = stress_field(geometry, nu, solution.xi, p, q, xs, zs)
+    fields = stress_field(geometry, nu, xi, p, q, xs, zs)
     if measures:
         fields.update(derived_measures(geometry, fields))
     coords = {"z": ("z", zs, {"units": "1", "long_name": "depth / a, positive into the "
@@ -891,7 +909,9 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         The scene (its ``geometry``, ``nu`` and ``subsurface_grid``).
     profiles : sequence of dict
         One a stick ratio, in the dataset's order: ``pressure`` and ``shear`` (p/p0,
-        q/p0) on ``xi``.
+        q/p0) on ``xi``, and the solve's nodal tractions where it has them (``nodes``,
+        ``nodal_pressure``, ``nodal_shear``: :func:`contactlib.stages.nodal_tractions`),
+        which the field then integrates.
     xi : ndarray
         The profiles' abscissae.
 
@@ -920,8 +940,11 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         p, q = np.asarray(prof["pressure"]), np.asarray(prof["shear"])
         if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
             continue
+        at = xi
+        if "nodes" in prof:  # the solve's own tractions, as the API's field (traction_samples)
+            at, p, q = prof["nodes"], prof["nodal_pressure"], prof["nodal_shear"]
         for prefix, (nu, sign) in bodies.items():
-            fields = stress_field(geometry, nu, xi, p, sign * q, xs, zs)
+            fields = stress_field(geometry, nu, at, p, sign * q, xs, zs)
             fields.update(derived_measures(geometry, fields))
             for name in names:
                 stack[prefix + name][i] = fields[name]
@@ -946,11 +969,12 @@ def field_error_estimate(solution: Any, x: Any, z: Any, *, body: str = "body") -
     The same case (c/a, materials, indenter) is solved again on n/2 elements and the
     estimate is the absolute difference of the two fields, variable by variable (no
     Richardson division: at n = 128 the field's convergence in n is not yet regular).
-    Measured (tests/test_stresses.py, sphere and cylinder, c/a = 0.5 and 0.9, n = 128):
-    at the maxima of von Mises and Tresca it covers the difference to the field at 4n,
-    which it exceeds by 1.5 ... 2.9 times; away from the maxima it may fall short (by up
-    to 2.6 times at the cylinder's c/a = 0.9). It does not include the interpolation
-    of the tractions' 201 output points, which every n shares (docs/stresses.md).
+    The field integrates the solve's own nodal tractions (:func:`traction_samples`), so
+    it converges with n. Measured (tests/test_stresses.py, sphere and cylinder, c/a =
+    0.5 and 0.9, n = 128): at the maxima of von Mises and Tresca it covers the difference
+    to the field at 4n, which it exceeds by 1.3 ... 2.8 times; on the whole 31 x 31 grid
+    it covers it everywhere but at one surface point of the cylinder at c/a = 0.9, where
+    the n/2 difference crosses zero (0.5x there, of an error 1e-2 of the grid's largest).
 
     Parameters
     ----------

@@ -33,7 +33,8 @@ from contactlib.stresses import (derived_measures, field_error_estimate, field_m
                                  first_yield,
                                  halfplane_stresses, history_stresses,
                                  halfplane_stresses_line, halfspace_stresses,
-                                 subsurface_stresses, surface_radial_stress)
+                                 subsurface_stresses, surface_radial_stress,
+                                 traction_samples)
 from contactlib.validate import InputError
 
 NU = 0.3
@@ -234,13 +235,14 @@ def test_first_yield_of_the_frictionless_contacts(hertz_solution):
 
 # ----------------------------------------------------------------------------- radial shear
 def _shear_only(sol):
-    return np.asarray(sol.xi), np.zeros_like(sol.xi), np.asarray(sol.shear)
+    xi, _, q = traction_samples(sol)  # the tractions the field integrates
+    return xi, np.zeros_like(xi), q
 
 
 def test_equilibrium_of_planes(partial):
     """int sigma_zz 2 pi r dr = -load at every depth; the shear's part carries none."""
     sol = partial[256]
-    xi, p, q = np.asarray(sol.xi), np.asarray(sol.pressure), np.asarray(sol.shear)
+    xi, p, q = traction_samples(sol)
     # Gauss-Legendre, 24 points on each of [0, 0.5], [0.5, 1], [1, 2], [2, 4] ... [32, 64]
     edges = np.array([0.0, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0])
     t, w = np.polynomial.legendre.leggauss(24)
@@ -324,12 +326,12 @@ def test_radial_shear_surface_value_on_the_axis(partial):
     the piecewise-linear q; the surface integral is cut at XI_SURFACE = 4000, whose
     truncation error was measured at 2e-5 (16000: 1e-6)."""
     sol = partial[256]
-    t, q = np.asarray(sol.xi), np.asarray(sol.shear)
+    t, p, q = traction_samples(sol)
     m = np.diff(q) / np.diff(t)
     a = q[:-1] - m * t[:-1]
     integral = m[0] * (t[1] - t[0]) + np.sum(a[1:] * np.log(t[2:] / t[1:-1])
                                              + m[1:] * (t[2:] - t[1:-1]))
-    expected = (1 + NU) * integral - (1 + 2 * NU) * sol.pressure[0] / 2
+    expected = (1 + NU) * integral - (1 + 2 * NU) * p[0] / 2
     got = surface_radial_stress(sol, [0.0])[0]
     assert abs(got - expected) < 5e-5
 
@@ -339,7 +341,7 @@ def test_radial_shear_decays_as_a_dipole(partial):
     xi, p, q = _shear_only(partial[256])
     rho = np.array([10.0, 20.0])
     f = halfspace_stresses(xi, p, q, [0.0], rho, NU)
-    g = halfspace_stresses(xi, np.asarray(partial[256].pressure), 0 * q, [0.0], rho, NU)
+    g = halfspace_stresses(xi, traction_samples(partial[256])[1], 0 * q, [0.0], rho, NU)
     slope_q = np.log2(abs(f["sigma_zz"][0, 0] / f["sigma_zz"][1, 0]))
     slope_p = np.log2(abs(g["sigma_zz"][0, 0] / g["sigma_zz"][1, 0]))
     assert abs(slope_q - 3) < 0.03 and abs(slope_p - 2) < 0.03  # corrections O(a^2/rho^2)
@@ -368,7 +370,13 @@ def test_field_error_estimate_covers_the_fourfold_refined_field_at_the_maxima(ge
         iz, ix = int(np.argmin(np.abs(z - top["z"]))), int(np.argmin(np.abs(x - top["x"])))
         err = abs(field[name].values[iz, ix] - fine[name].values[iz, ix])
         assert err <= est[name].values[iz, ix], (name, err, est[name].values[iz, ix])
-        assert est[name].values[iz, ix] < 3e-3  # and it is small: n = 128 resolves the field
+        assert est[name].values[iz, ix] <= 3.0 * err  # not inflated (measured 1.3 ... 2.8)
+        # the field integrates the solve's nodal tractions, so it converges with n and the
+        # estimate covers the error everywhere on the grid, not only at the maxima, except
+        # where the n/2 difference crosses zero by accident (one surface point of the
+        # cylinder at c/a = 0.9: 0.5x of an error 1e-2 of the largest)
+        diff = np.abs(field[name].values - fine[name].values)
+        assert np.all(est[name].values + 0.02 * diff.max() >= diff)
 
 
 def test_measures_from_components():
@@ -420,7 +428,8 @@ def test_elastic_indenter_gets_the_opposite_shear_and_its_own_nu():
                 energy=False)
     x, z = [0.0, 0.6], [0.0, 0.4]
     ds = subsurface_stresses(sol, x, z, body="indenter")
-    own = halfspace_stresses(sol.xi, sol.pressure, -np.asarray(sol.shear), x, z, 0.2)
+    xi, p, q = traction_samples(sol)
+    own = halfspace_stresses(xi, p, -q, x, z, 0.2)
     assert ds.attrs["poisson_ratio"] == 0.2
     for k, v in own.items():
         assert np.array_equal(ds[k].values, v)

@@ -1,8 +1,9 @@
-"""Key numbers of a set of scene datasets: one row a scene, for the report.
+"""Key numbers of a set of scene datasets, for the report.
 
-Self-similar scenes (a ``stick_ratio`` sweep) and loading histories (a
-``step`` dimension, :func:`contactlib.history`) both get a row;
-:func:`key_numbers` gives the full, tidy rows (the CSV) and
+Self-similar scenes (a ``stick_ratio`` sweep) get a row, loading histories
+(a ``step`` dimension, :func:`contactlib.history`) a row a run (one a
+friction coefficient: long format); :func:`key_numbers` gives the full,
+tidy rows (the CSV: one value a cell, the scalings in the column names) and
 :func:`report_rows` a compact view of them (the HTML table of the report:
 fewer, merged columns, four significant digits).
 
@@ -27,28 +28,35 @@ import xarray as xr
 from .indenter import indenter
 
 __all__ = ["layer_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
-           "REPORT_COLUMNS"]
+           "REPORT_COLUMNS", "WORK_AT_HALF", "LARGEST_WORK", "CYCLE_WORK"]
+
+_WORK_SCALE = "V R^2/(E* a^5); cylinder: V R^2/(E* a^4) per unit length"
+WORK_AT_HALF = f"work at c/a = 0.5 [{_WORK_SCALE}]"
+LARGEST_WORK = f"largest work [{_WORK_SCALE}]"
+CYCLE_WORK = ("history work per cycle [V R^2/(E* a_max^5); cylinder: V R^2/(E* a_max^4) per "
+              "unit length]")
 
 COLUMNS = (
     "scene", "geometry", "method", "elements", "nu", "slab ratio a/h", "cases",
     "converged", "consistent", "consistent up to c/a", "frictionless P/P_Hertz",
     "frictionless source",
     "k at c/a = 0.25", "k at c/a = 0.5", "k at c/a = 0.75", "largest finite k",
-    "work at c/a = 0.5", "largest work",
-    "history k", "history c/a at peak load", "history work per cycle",
+    WORK_AT_HALF, LARGEST_WORK,
+    "history k", "history c/a at peak load", CYCLE_WORK,
 )
 """Columns of :func:`key_numbers` (the CSV).
 
-``cases``/``converged`` count stick ratios (self-similar) or runs, one a
-friction coefficient (history: a run counts as converged when every step
-did). A case of the default method counts as converged only when it is
+Each cell holds one value; the work columns name their scaling. ``cases`` /
+``converged`` count the stick ratios of a self-similar scene; a history row
+is one run (one friction coefficient, ``history k``): ``cases`` 1,
+``converged`` 1 when every step converged, else 0. A case of the default method counts as converged only when it is
 also resolved (its error estimate within the scene's ``max_error``): a
 case that is not resolved is treated as a failure. (The paper's scheme is
 a reproduction whose k is not the physical one; its consistency columns
 judge it.) ``frictionless source`` is ``dataset`` when the scene holds the case
 c/a = 0, ``solve`` when it was computed by a frictionless solve with the
-scene's geometry, ν, method, n and a/h. The ``history`` columns hold
-space-separated lists, one entry a friction coefficient.
+scene's geometry, ν, method, n and a/h. The ``history`` columns are empty
+(NaN) on self-similar rows, the per-case columns NaN on history rows.
 """
 
 INDENTER_COLUMNS = ("indenter E1/E2", "indenter nu", "dundurs beta")
@@ -181,10 +189,11 @@ def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
         row[f"k at c/a = {r:g}"] = _at(ds, "friction_coefficient", r)
     row.update({
         "largest finite k": float(finite.max()) if finite.size else float("nan"),
-        "work at c/a = 0.5": _at(ds, "frictional_work", 0.5),
-        "largest work": float(np.nanmax(work)) if work is not None and
+        WORK_AT_HALF: _at(ds, "frictional_work", 0.5),
+        LARGEST_WORK: float(np.nanmax(work)) if work is not None and
         np.isfinite(work).any() else float("nan"),
-        "history k": "", "history c/a at peak load": "", "history work per cycle": "",
+        "history k": float("nan"), "history c/a at peak load": float("nan"),
+        CYCLE_WORK: float("nan"),
     })
     return row
 
@@ -200,11 +209,7 @@ def _cycle_work(ds: xr.Dataset, work: np.ndarray) -> np.ndarray:
     return work[:, -1] - work[:, start]
 
 
-def _numbers(values: np.ndarray) -> str:
-    return " ".join("" if math.isnan(v) else f"{v:.6g}" for v in values)
-
-
-def _history(ds: xr.Dataset) -> dict[str, Any]:
+def _history(ds: xr.Dataset) -> list[dict[str, Any]]:
     name = "friction_coefficient"
 
     def by_k(var: str) -> np.ndarray:
@@ -227,24 +232,29 @@ def _history(ds: xr.Dataset) -> dict[str, Any]:
         if "frictional_work" in ds else np.full((ks.size, load.size), np.nan)
     work = np.where(done[:, None], work, np.nan)
     nan = float("nan")
-    row = _common(ds)
-    row.update({
-        "method": "history",
-        "cases": int(ks.size),
-        "converged": int(done.sum()),
-        "consistent": nan, "consistent up to c/a": nan,
-        "frictionless P/P_Hertz": nan, "frictionless source": "",
-        **{f"k at c/a = {r:g}": nan for r in _RATIOS},
-        "largest finite k": nan, "work at c/a = 0.5": nan, "largest work": nan,
-        "history k": _numbers(ks),
-        "history c/a at peak load": _numbers(c_peak),
-        "history work per cycle": _numbers(_cycle_work(ds, work)),
-    })
-    return row
+    cycle = _cycle_work(ds, work)
+    rows = []
+    for i, k in enumerate(ks):  # long format: one row a run
+        row = _common(ds)
+        row.update({
+            "method": "history",
+            "cases": 1,
+            "converged": int(done[i]),
+            "consistent": nan, "consistent up to c/a": nan,
+            "frictionless P/P_Hertz": nan, "frictionless source": "",
+            **{f"k at c/a = {r:g}": nan for r in _RATIOS},
+            "largest finite k": nan, WORK_AT_HALF: nan, LARGEST_WORK: nan,
+            "history k": float(k),
+            "history c/a at peak load": float(c_peak[i]),
+            CYCLE_WORK: float(cycle[i]),
+        })
+        rows.append(row)
+    return rows
 
 
 def key_numbers(datasets: Sequence[xr.Dataset]) -> list[dict[str, Any]]:
-    """One row of key numbers a dataset (columns :data:`COLUMNS`).
+    """Key numbers (columns :data:`COLUMNS`): one row a self-similar dataset, one a run
+    of a history.
 
     Parameters
     ----------
@@ -265,14 +275,15 @@ def key_numbers(datasets: Sequence[xr.Dataset]) -> list[dict[str, Any]]:
         dataset, or, when the scene lacks that case, from a frictionless
         solve with the scene's settings (``frictionless source``). Work is
         V R²/(E* a⁵) (sphere) or V R²/(E* a⁴) per unit length (cylinder).
-        History rows: one entry a friction coefficient k in the ``history``
-        columns: the stick ratio c/a at the first step of the largest load,
-        and the frictional work over the last two path segments when they
-        form one load cycle (scaled with a_max), else empty; the other
-        per-case columns are NaN. When a scene has an elastic indenter, every
+        History rows, one a friction coefficient ``history k`` (long
+        format, in the dataset's order): the stick ratio c/a at the first
+        step of the largest load, and the frictional work over the last two
+        path segments when they form one load cycle (scaled with a_max),
+        else NaN; the other per-case columns are NaN. When a scene has an elastic indenter, every
         row also has :data:`INDENTER_COLUMNS`.
     """
-    rows = [_history(ds) if "step" in ds.dims else _self_similar(ds) for ds in datasets]
+    rows = [row for ds in datasets
+            for row in (_history(ds) if "step" in ds.dims else [_self_similar(ds)])]
     elastic = any(not math.isinf(row["indenter E1/E2"]) for row in rows)
     columns = COLUMNS + INDENTER_COLUMNS if elastic else COLUMNS
     return [{name: row[name] for name in columns} for row in rows]
@@ -290,10 +301,6 @@ def _joined(values: Sequence[float]) -> str:
     if all(math.isnan(float(v)) for v in values):
         return "–"
     return " | ".join(_g(v) for v in values)
-
-
-def _list(text: str, digits: int = 4) -> list[str]:
-    return [_g(float(v), digits) if v else "–" for v in text.split(" ")] if text else []
 
 
 def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
@@ -315,10 +322,11 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
     Returns
     -------
     list of dict
-        Strings only, one row a scene.
+        Strings only, one row a scene (a history's runs, consecutive rows
+        of one scene, in one).
     """
-    out = []
-    for row in rows:
+    out: list[dict[str, str]] = []
+    for row, runs in _by_scene(rows):
         body = f"{row['geometry']}, ν = {_g(row['nu'])}"
         slab = float(row["slab ratio a/h"])
         if indenter(row["geometry"]).reports_layer(slab):
@@ -330,26 +338,40 @@ def report_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, str]]:
         p0 = _g(row["frictionless P/P_Hertz"], 5)
         if row["frictionless source"] == "solve":
             p0 += " (solve)"
-        runs = [f"{k}: {c}, {w}" for k, c, w in zip(
-            _list(row["history k"], 3), _list(row["history c/a at peak load"], 3),
-            _list(row["history work per cycle"], 3))]
+        each = [f"{_g(r['history k'], 3)}: {_g(r['history c/a at peak load'], 3)}, "
+                f"{_g(r[CYCLE_WORK], 3)}" for r in runs]
+        cases = sum(r["cases"] for r in runs) if history else row["cases"]
+        converged = sum(r["converged"] for r in runs) if history else row["converged"]
         out.append({
             "scene": row["scene"],
             "body": body,
             "method": f"{row['method']}, n = {row['elements']}",
             "cases / converged / consistent": " / ".join(
-                (str(row["cases"]), str(row["converged"]),
+                (str(cases), str(converged),
                  "–" if history else _g(row["consistent"]))),
             "consistent up to c/a": _g(row["consistent up to c/a"]),
             "P/P_Hertz frictionless": p0,
             "k at c/a = 0.25 | 0.5 | 0.75": _joined([row[f"k at c/a = {r:g}"] for r in _RATIOS]),
             "largest finite k": _g(row["largest finite k"]),
-            "work at c/a = 0.5 | largest": _joined([row["work at c/a = 0.5"],
-                                                    row["largest work"]]),
+            "work at c/a = 0.5 | largest": _joined([row[WORK_AT_HALF], row[LARGEST_WORK]]),
             "history, each k: c/a at peak load, work per cycle":
-                "; ".join(runs) if runs else "–",
+                "; ".join(each) if history else "–",
         })
     return out
+
+
+def _by_scene(rows: Sequence[dict[str, Any]]) -> list[tuple[dict[str, Any], list]]:
+    """Each self-similar row alone, a history's consecutive rows of one scene together:
+    ``(first row, its rows)``."""
+    groups: list[tuple[dict[str, Any], list]] = []
+    for row in rows:
+        last = groups[-1][0] if groups else None
+        if row["method"] == "history" and last is not None and last["method"] == "history" \
+                and last["scene"] == row["scene"]:
+            groups[-1][1].append(row)
+        else:
+            groups.append((row, [row]))
+    return groups
 
 
 def layer_rows(ds: xr.Dataset) -> list[dict[str, object]]:

@@ -9,7 +9,8 @@ import contactlib
 from contactlib import history
 from contactlib.io import history_to_dataset, stack_histories
 from contactlib.io import to_dataset
-from contactlib.summary import COLUMNS, REPORT_COLUMNS, key_numbers, report_rows
+from contactlib.summary import (COLUMNS, CYCLE_WORK, LARGEST_WORK, REPORT_COLUMNS, WORK_AT_HALF,
+                                key_numbers, report_rows)
 
 
 @pytest.fixture(scope="module")
@@ -25,10 +26,19 @@ def rows():
     return key_numbers([sweep, paper, stack]), runs
 
 
-def test_columns_and_one_row_a_scene(rows):
+def test_columns_one_value_a_cell_and_a_row_a_run(rows):
+    """Tidy: a self-similar scene a row, a history a row a run (long format), one value a
+    cell (a number or a word, never a list), the work columns naming their scaling."""
     table, _ = rows
-    assert [r["scene"] for r in table] == ["s-default", "s-paper", "s-cycle"]
+    assert [r["scene"] for r in table] == ["s-default", "s-paper", "s-cycle", "s-cycle"]
     assert all(list(r) == list(COLUMNS) for r in table)
+    for row in table:
+        for name, value in row.items():
+            assert isinstance(value, (int, float)) or (isinstance(value, str) and " " not in
+                                                        value.strip()), (name, value)
+    for name in (WORK_AT_HALF, LARGEST_WORK):
+        assert "V R^2/(E* a^5)" in name and "a^4) per unit length" in name
+    assert "V R^2/(E* a_max^5)" in CYCLE_WORK
 
 
 def test_frictionless_load(rows):
@@ -42,28 +52,30 @@ def test_frictionless_load(rows):
     assert 1.041 < table[1]["frictionless P/P_Hertz"] < 1.043
 
 
-def test_history_row(rows):
+def test_history_rows(rows):
     table, runs = rows
-    row = table[2]
-    assert row["method"] == "history" and row["cases"] == 2 and row["converged"] == 2
-    assert row["history k"] == "0 0.2"
+    first, second = table[2:]
+    for row in (first, second):
+        assert row["method"] == "history" and row["cases"] == 1 and row["converged"] == 1
+        assert np.isnan(row["k at c/a = 0.5"])
+    assert (first["history k"], second["history k"]) == (0.0, 0.2)
     # the peak of a 0 -> 1 -> 0 path is its middle step; c/a there is the run's own
-    c = [float(v) for v in row["history c/a at peak load"].split()]
     peak = int(np.argmax(runs[1]["load_ratio"].values))
     assert peak == 8
-    assert c[1] == pytest.approx(float(runs[1]["stick_ratio"].values[peak]), rel=5e-6)  # the table keeps 6 digits
+    assert second["history c/a at peak load"] == float(runs[1]["stick_ratio"].values[peak])
     # the whole path is the cycle: its work is the final cumulative work; none without
     # friction
-    w = [float(v) for v in row["history work per cycle"].split()]
-    assert w[0] == 0.0
-    assert w[1] == pytest.approx(float(runs[1]["frictional_work"].values[-1]), rel=5e-6)  # the table keeps 6 digits
-    assert np.isnan(row["k at c/a = 0.5"])
+    assert first[CYCLE_WORK] == 0.0
+    assert second[CYCLE_WORK] == float(runs[1]["frictional_work"].values[-1])
+    assert np.isnan(table[0]["history k"]) and np.isnan(table[0][CYCLE_WORK])
 
 
 def test_report_rows_are_compact(rows):
     table, _ = rows
     view = report_rows(table)
     assert all(list(r) == list(REPORT_COLUMNS) for r in view)
+    assert [r["scene"] for r in view] == ["s-default", "s-paper", "s-cycle"]  # a row a scene
+    assert view[2]["cases / converged / consistent"] == "2 / 2 / –"
     assert len(REPORT_COLUMNS) <= 10
     assert view[1]["P/P_Hertz frictionless"] == "1.042 (solve)"
     assert view[2]["history, each k: c/a at peak load, work per cycle"].startswith("0: ")

@@ -1078,8 +1078,9 @@ def check_config(paths: Sequence[str]) -> list[str]:
     -------
     list of str
         ``<file>, line L, column C: YAML syntax error: ...``, a missing file, a
-        top level that is not a mapping, or ``scenes.<name>.<key>: ...`` for
-        each problem of a scene (:func:`contactlib.scene.parse_scenes`).
+        top level that is not a mapping, a bad ``results_dir``, or
+        ``scenes.<name>.<key>: ...`` for each problem of a scene
+        (:func:`contactlib.scene.parse_scenes`).
     """
     from pathlib import Path
 
@@ -1100,6 +1101,11 @@ def check_config(paths: Sequence[str]) -> list[str]:
             problems.append(f"{path}: the top level must be a mapping (scenes:, figures:, ...)")
         else:
             merged = _merge(merged, doc)
+    if not problems and "results_dir" in merged:  # the folder of every output
+        try:
+            validate.results_dir(merged["results_dir"])
+        except ValueError as exc:
+            problems.append(f"results_dir: {exc}")
     if not problems and merged.get("scenes") is not None:
         try:
             parse_scenes(merged["scenes"])

@@ -33,6 +33,7 @@ from typing import Any, Callable, Iterable
 __all__ = [
     "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
     "EXTRAPOLATED_N_MULTIPLE", "SolverLimit", "SCENE_NAME_PATTERN", "scene_name",
+    "RESULTS_DIR_PATTERN", "results_dir",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
@@ -111,6 +112,10 @@ DEFAULT_MAX_ERROR = 1e-3
 SCENE_NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9_-]*$"
 """A workflow scene's name (a file name and a Snakemake wildcard value): a letter or
 digit, then letters, digits, ``-`` and ``_``."""
+
+RESULTS_DIR_PATTERN = r"^[A-Za-z0-9_][A-Za-z0-9_./-]*$"
+"""The workflow's ``results_dir`` (the folder of every output): a relative path that
+starts with a letter, digit or ``_`` (so neither ``/`` nor ``..``)."""
 MIN_TOLERANCE = 1e-9
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""
@@ -290,6 +295,16 @@ def scene_name(value: Any) -> str:
     if not isinstance(value, str) or not re.match(SCENE_NAME_PATTERN, value):
         raise InputError("scene name", "a letter or digit followed by letters, digits, '-' "
                          "and '_' (it names files and jobs)", value)
+    return value
+
+
+def results_dir(value: Any) -> str:
+    """The workflow's output folder (:data:`RESULTS_DIR_PATTERN`)."""
+    import re
+
+    if not isinstance(value, str) or not re.match(RESULTS_DIR_PATTERN, value):
+        raise InputError("results_dir", "a relative path starting with a letter, digit or "
+                         "'_', of letters, digits, '_', '.', '/' and '-'", value)
     return value
 
 

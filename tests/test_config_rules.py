@@ -29,6 +29,7 @@ def test_schema_follows_validate() -> None:
     """Every enum, bound and pattern of a scene's keys is validate's (the schema must be
     edited with the constant; this test names the one that drifted)."""
     assert SCENE["propertyNames"]["pattern"] == validate.SCENE_NAME_PATTERN
+    assert SCHEMA["properties"]["results_dir"]["pattern"] == validate.RESULTS_DIR_PATTERN
     assert KEYS["kind"]["enum"] == list(KINDS)
     assert KEYS["geometry"]["enum"] == list(validate.GEOMETRIES)
     assert KEYS["method"]["enum"] == list(validate.METHODS)
@@ -141,6 +142,21 @@ def test_check_config_and_the_workflow_refuse_the_same_scenes_in_the_same_words(
     got = _by_scene(_workflow_lines(text))  # no line about a GOOD scene (or it fails here)
     for name in BAD:
         assert sorted(got.get(name, [])) == sorted(expected[name]), name
+
+
+@needs_snakemake
+@pytest.mark.workflow
+def test_a_bad_results_dir_is_refused_by_both_in_the_same_words(tmp_path):
+    wd = make_workdir(tmp_path / "wd" if (tmp_path / "wd").mkdir() is None else tmp_path)
+    (wd / "bad.yaml").write_text(yaml.safe_dump({"results_dir": "../elsewhere"}))
+    problems = check_config([str(wd / "config" / "config.yaml"), str(wd / "bad.yaml")])
+    assert problems == ["results_dir: results_dir must be a relative path starting with a "
+                        "letter, digit or '_', of letters, digits, '_', '.', '/' and '-', "
+                        "got '../elsewhere'"]
+    proc = snakemake(wd, "--dry-run", "--configfile", "bad.yaml", cores=1, check=False,
+                     timeout=300)
+    assert proc.returncode != 0 and not (wd / "results").exists()
+    assert _workflow_lines(proc.stdout + proc.stderr) == problems
 
 
 @needs_snakemake

@@ -186,6 +186,33 @@ def parse_substrate(args: argparse.Namespace, base: str, geometry: str,
     return {"substrate_modulus": modulus} | ({} if nu2 is None else {"substrate_nu": nu2})
 
 
+def _profile_options(sub: argparse.ArgumentParser) -> None:
+    """``--profile`` and ``--exponent`` (the indenter's shape)."""
+    sub.add_argument("--profile", metavar="{paraboloid,cone,power}", default="paraboloid",
+                     help="the indenter's shape h ~ r^d: paraboloid (Hertz, d = 2), cone "
+                          "(d = 1; a wedge for the cylinder) or power (d = --exponent); "
+                          "for solve and sweep other than paraboloid with the default "
+                          "method only; default: paraboloid")
+    sub.add_argument("--exponent", metavar="D", default=None,
+                     help="d of --profile power, in [0.5, 8]")
+
+
+def _profile_kwargs(args: argparse.Namespace) -> dict[str, Any]:
+    """``profile`` (and ``exponent``) keywords, only when not the paraboloid (the default)."""
+    if args.profile == "paraboloid" and args.exponent is None:
+        return {}
+    from contactlib import profiles
+
+    exponent = None if args.exponent is None else _float(args.exponent)
+    try:
+        shape = profiles.profile(args.profile, exponent)
+    except ValueError as exc:  # shown with the option it names
+        text = args.exponent if getattr(exc, "name", "") == "exponent" else args.profile
+        raise _usage(exc, text) from None
+    return {"profile": shape.name, **({"exponent": shape.exponent}
+                                      if shape.name == "power" else {})}
+
+
 def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = False) -> None:
     """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max"); with ``coated`` also
     ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep)."""
@@ -343,13 +370,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
                      help="number of elements across the half-contact "
                           "(integer >= 2; library default if omitted)")
     sub.add_argument("--method", metavar="NAME", default="default", help=_METHOD_HELP)
-    sub.add_argument("--profile", metavar="{paraboloid,cone,power}", default="paraboloid",
-                     help="the indenter's shape h ~ r^d: paraboloid (Hertz, d = 2), cone "
-                          "(d = 1; a wedge for the cylinder) or power (d = --exponent); "
-                          "other than paraboloid with the default method only; default: "
-                          "paraboloid")
-    sub.add_argument("--exponent", metavar="D", default=None,
-                     help="d of --profile power, in [0.5, 8]")
+    _profile_options(sub)
     _layer_options(sub, "a", coated=True)
     _indenter_options(sub)
     sub.add_argument("--output", metavar="FILE.nc", required=output_required,
@@ -440,6 +461,7 @@ def build_parser() -> argparse.ArgumentParser:
                            "for a dimensionless path, default 200 for a path in newtons)")
     hist.add_argument("--n", metavar="N", default=None,
                       help="elements over 1.2 a_max (integer; library default if omitted)")
+    _profile_options(hist)
     _layer_options(hist, "a_max")
     _indenter_options(hist)
     _physical_options(hist, load=False)
@@ -505,18 +527,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
     if base != "smooth":  # likewise: the keyword only when not the default
         kwargs["base"] = base
     kwargs.update(parse_substrate(args, base, geometry, method))
-    if args.profile != "paraboloid" or args.exponent is not None:  # likewise
-        from contactlib import profiles
-
-        exponent = None if args.exponent is None else _float(args.exponent)
-        try:
-            shape = profiles.profile(args.profile, exponent)
-        except ValueError as exc:  # shown with the option it names
-            text = args.exponent if getattr(exc, "name", "") == "exponent" else args.profile
-            raise _usage(exc, text) from None
-        kwargs["profile"] = shape.name
-        if shape.name == "power":
-            kwargs["exponent"] = shape.exponent
+    kwargs.update(_profile_kwargs(args))  # likewise
     if args.command == "solve":
         if args.stick_ratio is not None:
             kwargs["stick_ratio"] = parse_fraction("--stick-ratio", args.stick_ratio)
@@ -553,6 +564,7 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
             raise UsageError("--relaxation needs a rigid indenter (no --indenter-modulus)")
     if base != "smooth":
         kwargs["base"] = base
+    kwargs.update(_profile_kwargs(args))
     return kwargs
 
 
@@ -874,6 +886,10 @@ def format_history(res: Any) -> str:
     work_scale = f"V R^2/(E* a_max^{ind.work_exponent})"
     head = (f"{res.geometry}, nu = {res.nu:.10g}, k = {_g(res.friction)}, n = {res.n}, "
             f"{res.steps} steps per segment")
+    if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d
+        power = 2.0 * res.exponent + (1.0 if res.geometry == "sphere" else 0.0)
+        work_scale = f"V/(E* (A d)^2 a_max^{power:g}), h = A r^d"
+        head += f", profile = {res.profile} (d = {res.exponent:g})"
     if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
     if res.slab_ratio > 0:

@@ -80,7 +80,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from . import history_solver as hs
-from . import validate
+from . import profiles, validate
 from .model import Contact, contact
 from .result import history_repr
 from .threads import blas_single_threaded
@@ -176,6 +176,9 @@ class HistoryResult:
         the cumulative dissipation of its dashpots, scaled as
         ``frictional_work``; external = stored + viscous + frictional (see
         :mod:`contactlib.energy`). ``viscous_work`` is 0 for an elastic body.
+    profile, exponent : str, float
+        The indenter's shape h ~ r^d (``"paraboloid"``, 2 by default; see
+        :func:`history`).
 
     Examples
     --------
@@ -229,6 +232,8 @@ class HistoryResult:
     work_scale: float = math.nan
     energy_scale: float = math.nan
     resolved_quantities: dict[str, bool] | None = None
+    profile: str = "paraboloid"  # the indenter's shape h ~ r^d (contactlib.profiles)
+    exponent: float = 2.0
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -281,7 +286,7 @@ def creep_extent(model: Contact) -> float:
     a slab on a rigid base grows less). The mesh keeps 1.2 times that.
     """
     relaxed = getattr(model.body, "relaxed_ratio", 1.0)
-    return hs.MESH_EXTENT * model.indenter.hertz_radius(1.0 / relaxed)
+    return hs.MESH_EXTENT * model.frictionless_radius(1.0 / relaxed)
 
 
 def _relative(error: np.ndarray, scale: float) -> np.ndarray:
@@ -355,7 +360,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             indenter_nu: float | None = None,
             relaxation: Sequence[Sequence[float]] | None = None,
             duration: float | Sequence[float] | None = None,
-            base: str = "smooth") -> HistoryResult:
+            base: str = "smooth", profile: str = "paraboloid",
+            exponent: float | None = None) -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
@@ -407,6 +413,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         unit of tau.
     base : {"smooth", "bonded"}
         The layer's rigid base (default smooth).
+    profile : {"paraboloid", "cone", "power"}
+        The indenter's shape h ~ r^d (default the paraboloid; :mod:`contactlib.profiles`).
+        Then a_max is the profile's frictionless contact radius at P_max, P_max its
+        frictionless load there, the pressure unit the peak pressure of the paraboloid
+        with that load, and the work in units of E* (A d)^2 a_max^(2d+1) (per unit
+        length a_max^(2d)) for h = A r^d.
+    exponent : float, optional
+        d for ``profile="power"``, in [0.5, 8] (omitted otherwise).
 
     Returns
     -------
@@ -497,7 +511,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
                                   "relaxation needs a rigid indenter (an elastic indenter's "
                                   "compliance would not relax with the body's)")
 
-    model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony)
+    shape = profiles.profile(profile, exponent)
+    model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape)
     extent = creep_extent(model)
     ops = hs.build_operators(model, n, extent)
     levels, segment = load_levels(levels_in, steps)
@@ -614,4 +629,5 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
         dundurs_beta=float(model.beta), relaxation=prony, durations=durations,
         mesh_extent=float(extent), time=raw.time, external_work=raw.external_work,
-        stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base)
+        stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base,
+        profile=shape.name, exponent=float(shape.exponent))

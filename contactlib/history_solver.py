@@ -275,7 +275,7 @@ def _rhs(ops: Operators, load: float, u_old: np.ndarray, c: np.ndarray,
     """Right-hand side matching :func:`_assemble`."""
     m, ms = c.size, stick.size
     b = np.empty(m + ms + 1)
-    b[:m] = -0.5 * ops.mid[c] ** 2
+    b[:m] = -ops.model.profile.gap(ops.mid[c])  # -r^2/2 for the paraboloid
     b[m:m + ms] = u_old[c[stick]]
     b[-1] = load
     return b
@@ -292,7 +292,7 @@ def _scales(ops: Operators, state: np.ndarray, p: np.ndarray, du: np.ndarray,
     """
     p_scale = max(float(np.abs(p).max()), 1e-300)
     last = np.flatnonzero(state)[-1:]  # the midpoints increase outward
-    g_scale = max(float(ops.mid[last[0]] ** 2) if last.size else 0.0,
+    g_scale = max(2.0 * float(ops.model.profile.gap(ops.mid[last[0]])) if last.size else 0.0,
                   float(np.abs(gap).max()), 1e-300)
     d_scale = max(float(np.abs(du).max()), 1e-6 * g_scale)
     return p_scale, g_scale, d_scale
@@ -449,7 +449,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
         if w_shift is not None:
             w += w_shift
             u += u_shift
-        gap = w - delta + 0.5 * ops.mid**2
+        gap = w - delta + ops.model.profile.gap(ops.mid)
         du = u - u_old
         scales = _scales(ops, state, p, du, gap)
         last = (k, state, p, q, du, gap, scales)  # the residual's arguments, if kept
@@ -644,7 +644,7 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
         out.time = np.asarray(times, dtype=float).copy()
     weights = np.stack([ops.area, ops.shear_area])
     relaxed = float(1.0 - np.sum(g))
-    half_r2 = 0.5 * ops.mid**2
+    half_r2 = ops.model.profile.gap(ops.mid)  # the gap before contact, r^2/2 for Hertz
     e_old = np.zeros((2, n))  # elastic-equivalent traction (p, q rows)
     d_old = np.zeros((2, n))  # displacement (w, u rows) = K e_old
     h = np.zeros((g.size, 2, n))
@@ -656,7 +656,7 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
     cache: dict = {}
     work = external = viscous = 0.0
     p_old = w_old = np.zeros(n)
-    hertz_radius = ops.model.indenter.hertz_radius
+    hertz_radius = ops.model.frictionless_radius
     for i in range(1, steps):
         level = float(levels[i])
         step_ops, step_cache, shift = ops, cache, (None, None)

@@ -624,6 +624,9 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "steps": int(r.steps),
     }
     attrs.update(_layer_attrs(ind, r))
+    if getattr(r, "profile", "paraboloid") != "paraboloid":  # as the self-similar datasets
+        attrs["profile"] = str(r.profile)
+        attrs["profile_exponent"] = float(r.exponent)
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(r.mesh_extent)  # 1.2, or the creep extent (viscoelastic)

@@ -278,6 +278,14 @@ class Contact:
             return self.indenter.hertz_load
         return self.profile.frictionless_load(self.indenter.name == "sphere")
 
+    def frictionless_radius(self, level: float) -> float:
+        """Frictionless contact radius at load level P/P_max, in units of a_max: P ~ a^(d+1)
+        (rings) or a^d (strips) for h ~ r^d; Hertz's for the paraboloid."""
+        if self.profile.is_paraboloid:
+            return self.indenter.hertz_radius(level)
+        d = self.profile.exponent
+        return float(level ** (1.0 / (d + 1.0 if self.indenter.name == "sphere" else d)))
+
     def shear_shape(self, x: np.ndarray) -> np.ndarray:
         """Shear = shape(x) * phi(x): shape r for the sphere, 1 for the cylinder."""
         return self.indenter.shear_shape(x)

@@ -197,3 +197,52 @@ def test_command_line_refuses_bad_profiles_in_one_line(extra, option):
     assert r.returncode == 2
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and option in lines[0]
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("kw", [{"profile": "cone"}, {"profile": "power", "exponent": 3.0}])
+def test_history_on_a_profile_reaches_the_self_similar_stick_ratio(geometry, kw):
+    """Two independent methods on the same profile: the incremental history solver
+    (constant elements, no self-similarity assumed) loaded monotonically to P_max, and
+    the self-similar inverse k -> c/a; within two of the history's elements (1.2/n)."""
+    from contactlib import history
+
+    c_self = api.solve(geometry, 0.3, friction=0.2, **kw).stick_ratio
+    res = history(geometry, 0.3, 0.2, [0, 1], 100, n=240, error_estimate=False, **kw)
+    assert res.converged.all() and res.profile == kw["profile"]
+    assert abs(res.stick_ratio[-1] - c_self) < 2 * 1.2 / 240
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_frictionless_history_on_a_cone_reaches_a_max(geometry):
+    """k = 0: the contact radius at P_max is the profile's own frictionless a_max (1)."""
+    from contactlib import history
+
+    res = history(geometry, 0.3, 0.0, [0, 0.5, 1], 4, n=240, error_estimate=False,
+                  profile="cone")
+    assert abs(res.contact_radius[-1] - 1.0) < 1.2 / 240
+    # P ~ a^(d+1) (rings) or a^d (strips): at half the load a = 0.5^(1/2) or 0.5
+    mid = 0.5 ** (0.5 if geometry == "sphere" else 1.0)
+    assert abs(res.contact_radius[4] - mid) < 1.2 / 240
+
+
+@pytest.mark.slow  # two history runs at n = 480 (about 10 s)
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_cone_work_of_history_converges_to_the_self_similar_work(geometry):
+    """The frictional work of a monotonic loading, two independent ways: the history's
+    time integral of the element dissipation, and the self-similar V at a = 1 scaled by
+    (a_top/a_max)^(2d+1) (rings) or ^(2d) (strips), a_top the history's contact radius at
+    P_max (below a_max with friction). Their ratio tends to 1 as the history refines:
+    this checks the profile's work factor 2 pi/(2d + 1), 1/d and its units."""
+    from contactlib import history
+
+    ref = api.solve(geometry, 0.3, friction=0.2, profile="cone")
+    power = 3.0 if geometry == "sphere" else 2.0
+    gaps = []
+    for n, steps in ((240, 100), (480, 200)):
+        res = history(geometry, 0.3, 0.2, [0, 1], steps, n=n, error_estimate=False,
+                      profile="cone")
+        scaled = ref.frictional_work * res.contact_radius[-1] ** power
+        gaps.append(abs(res.frictional_work[-1] / scaled - 1.0))
+    assert gaps[1] < 0.6 * gaps[0]  # converges (measured 0.35 and 0.35 of the gap)
+    assert gaps[1] < 0.015  # 1.1e-2 (sphere), 1.7e-3 (cylinder) at n = 480

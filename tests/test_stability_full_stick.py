@@ -25,6 +25,7 @@ from contactlib import history, solve
 from contactlib.cli import main
 from contactlib.default_method import solve_default
 from contactlib.model import contact
+from contactlib.validate import SolverLimit
 
 
 def _tensile_and_sign_change(geometry: str, nu: float, n: int) -> tuple[float, float]:
@@ -75,14 +76,17 @@ def test_k_grows_without_bound_below_full_stick():
 
 def test_tiny_friction_is_refused_with_the_stick_ratio_it_would_give(tmp_path, capsys):
     """k = 1e-3 at nu = -0.99 gives c/a ~ 1e-470 (k ~ A/ln(4a/c)): below any resolved stick
-    zone; the library says so, and the command line exits 2 with one line, no file."""
-    with pytest.raises(ValueError, match="smallest resolved"):
+    zone; the library says so (a solver limit, not bad input), and the command line exits
+    3 with the reason and the command that answers it (friction 0: Hertz), no file."""
+    with pytest.raises(SolverLimit, match="smallest resolved"):
         solve("sphere", -0.99, friction=1e-3, n=64, energy=False)
     out = tmp_path / "x.nc"
     code = main(["solve", "--geometry", "cylinder", "--nu", "0", "--friction", "1e-6",
                  "--n", "64", "--output", str(out)])
     err = capsys.readouterr().err.strip().splitlines()
-    assert code == 2 and len(err) == 1 and "friction" in err[0] and not out.exists()
+    assert code == 3 and len(err) == 2 and "friction" in err[0] and not out.exists()
+    assert err[1] == ("contactlib: answer it with: contactlib solve --geometry cylinder --nu 0 "
+                      f"--n 64 --friction 0 --output {out}")
 
 
 @pytest.mark.slow  # two inverse searches (about 30 s)

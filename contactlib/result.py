@@ -28,8 +28,9 @@ __all__ = ["Solution", "CaseRecord", "format_fields", "short_repr", "history_rep
 
 # ----------------------------------------------------------------------------- short repr
 def _with_error(value: float, relative_error: float) -> str:
-    """``value`` followed by its estimated relative error, when there is one."""
-    if isinstance(relative_error, float) and math.isfinite(relative_error):
+    """``value`` followed by its estimated relative error, when there is one (a zero has
+    none: it is zero at any scale)."""
+    if isinstance(relative_error, float) and math.isfinite(relative_error) and value != 0:
         return f"{_scalar(value)} (estimated relative error {relative_error:.1e})"
     return _scalar(value)
 

@@ -158,3 +158,11 @@ def test_physical_summary_prints_no_relative_error_of_a_zero() -> None:
     assert "relative error" not in lines["stick radius c"]
     assert "relative error" not in lines["frictional energy"]
     assert "relative error" in lines["contact radius a"]
+
+
+def test_repr_prints_no_relative_error_of_a_zero() -> None:
+    stuck = contactlib.solve("sphere", 0.3, stick_ratio=1.0, n=32)
+    lines = {line.split(":")[0].strip(): line for line in repr(stuck).splitlines()}
+    assert stuck.frictional_work == 0.0
+    assert lines["frictional_work"].endswith("frictional_work: 0")
+    assert "relative error" in lines["load_ratio"]

@@ -1144,10 +1144,16 @@ def _fail(message: str) -> None:
 
 
 _FLAGS = ("--no-energy", "--subsurface", "--debug")
-# options of solve that history does not take, or takes with another meaning (its n
-# counts elements over 1.2 a_max, not across the contact)
-_SOLVE_ONLY = ("--method", "--tolerance", "--no-energy", "--profile", "--exponent",
-               "--subsurface", "--n")
+# options both commands take with another meaning: history's n counts elements over
+# 1.2 a_max, not across the contact
+_OTHER_MEANING = ("--n",)
+
+
+def _taken(command: str) -> set[str]:
+    """The options ``contactlib <command>`` takes (read from the parser)."""
+    parser = build_parser()
+    subparsers = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return {o for a in subparsers.choices[command]._actions for o in a.option_strings}
 
 
 def _options(tokens: Sequence[str]) -> list[tuple[str, str | None]]:
@@ -1184,16 +1190,18 @@ def _remedy_command(argv: Sequence[str], args: argparse.Namespace, command: str,
 
     start = list(argv).index(args.command) + 1
     drop = {"--friction", "--stick-ratio", "--output", "--debug"}
-    if command == "history":
-        drop.update(_SOLVE_ONLY)
-    opts = [(o, v) for o, v in _options(argv[start:]) if o not in drop]
+    if command != args.command:
+        drop.update(_OTHER_MEANING)
+    taken = _taken(command)
+    given = _options(argv[start:])
+    opts = [(o, v) for o, v in given if o not in drop and o in taken]
     physical = is_physical(args)
     for name, value in changes.items():
         option = _option(name)
         opts = [(o, v) for o, v in opts if o != option]
         text = _text(value)
         if name == "load_path" and physical:  # a path in newtons up to the given load
-            load = dict(opts).get("--load") or ""
+            load = dict(given).get("--load") or ""
             opts = [(o, v) for o, v in opts if o != "--load"]
             unit = "" if load and not load[-1].isdigit() and load[-1] != "." else "N"
             text = ",".join(("0N" if v == 0 else f"{load}{unit}") for v in value)

@@ -166,3 +166,22 @@ def test_repr_prints_no_relative_error_of_a_zero() -> None:
     assert stuck.frictional_work == 0.0
     assert lines["frictional_work"].endswith("frictional_work: 0")
     assert "relative error" in lines["load_ratio"]
+
+
+def test_remedies_keep_the_options_their_command_takes(capsys, monkeypatch) -> None:
+    """The indenter's profile goes along to each command that takes it (history takes
+    --profile since issue 36); solve-only options (--method) do not go to history, nor
+    --n (another meaning there)."""
+    monkeypatch.setattr(cli, "_api", lambda: _Limited([
+        ("solve", {"stick_ratio": 1.0}),
+        ("history", {"friction": 0.5, "load_path": [0.0, 1.0]})]))
+    argv = ["solve", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.5",
+            "--profile", "cone", "--method", "default", "--n", "64"]
+    assert cli.main(argv) == 3
+    lines = capsys.readouterr().err.splitlines()
+    assert lines[1] == ("contactlib: answer it with: contactlib solve --geometry sphere --nu "
+                        "0.3 --profile cone --method default --n 64 --stick-ratio 1")
+    cone = " --profile cone" if "--profile" in cli._taken("history") else ""
+    assert lines[2] == ("contactlib: answer it with: contactlib history --geometry sphere "
+                        f"--nu 0.3{cone} --friction 0.5 --load-path 0,1 --steps 200 "
+                        "--output history.nc")

@@ -379,8 +379,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         The layer's rigid base: frictionless (default, the paper's slab) or
         bonded; irrelevant at ``slab_ratio = 0``. ``"elastic"``: a coated
         body, the layer (E, ``nu``; E* is the layer's) bonded to an elastic
-        half-space (``substrate_modulus``, ``substrate_nu``); sphere, method
-        "default", a/h <= 20 (docs/models.md).
+        half-space or half-plane (``substrate_modulus``, ``substrate_nu``);
+        method "default", a/h <= 20 (docs/models.md).
     tolerance : float, optional
         A relative error of k to reach instead of a resolution, in
         [1e-9, 0.1] (:func:`contactlib.validate.planned_tolerance`): the

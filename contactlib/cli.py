@@ -229,7 +229,7 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
     sub.add_argument("--base", metavar="{smooth,bonded,elastic}", default="smooth",
                      help="the layer's base: rigid and smooth (frictionless) or bonded, or "
                           "elastic (a coated body: the layer bonded to an elastic half-space; "
-                          "sphere, default method, a/h <= 20, no --output); default: smooth")
+                          "default method, a/h <= 20, no --output); default: smooth")
     sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
                      help="with --base elastic: the substrate's Young's modulus over the "
                           "layer's, in [1e-2, 1e6] (required there)")

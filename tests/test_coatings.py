@@ -387,11 +387,7 @@ def test_bad_substrate_input_names_the_argument(kwargs, name):
     assert err.value.name == name and str(err.value).startswith(name)
 
 
-def test_cylinder_and_history_refuse_a_coated_body():
-    with pytest.raises(contactlib.validate.InputError, match="sphere only") as err:
-        contactlib.solve("cylinder", NU, stick_ratio=0.5, n=64, slab_ratio=1.0, base="elastic",
-                         substrate_modulus=2.0)
-    assert err.value.name == "base"
+def test_history_refuses_a_coated_body():
     with pytest.raises(contactlib.validate.InputError, match="solve and sweep") as err:
         contactlib.history("sphere", NU, 0.2, [0, 1], 2, slab_ratio=1.0, base="elastic")
     assert err.value.name == "base"
@@ -415,3 +411,83 @@ def test_cli_solve_on_a_coated_body(capsys):
         assert option in capsys.readouterr().err
     bonded = argv[:-1] + ["bonded", "--substrate-modulus", "2"]
     assert cli.main(bonded) == 2 and "--substrate-modulus" in capsys.readouterr().err
+
+
+# --- the cylinder (plane strain, strip loads) ----------------------------------------------
+def _quad_t(f, h):
+    """int_0^inf f(k) dk with k = t/h, t < 30 (the remainders are < 1e-20 beyond)."""
+    val, _ = integrate.quad(lambda t: f(t / h) / h, 0.0, 30.0, points=np.arange(0.5, 30.0, 0.5),
+                            limit=800, epsabs=1e-13, epsrel=1e-12)
+    return val
+
+
+@pytest.mark.parametrize("nu, modulus, nu2", [(0.3, 0.1, 0.2), (0.45, 10.0, 0.3)])
+def test_strip_kernels_against_fourier_quadrature(nu, modulus, nu2):
+    """Coated minus half-plane strip kernels against quad of their Fourier integrals, the
+    transfer functions by the Love solve (the plane-strain ones are the same functions of
+    |k| h): pressure du/dx = -(4/pi) int Rwu sin ks cos kx dk/k, w(x1) - w(x2) = (4/pi) int
+    Rww sin ks (cos kx1 - cos kx2) dk/k^2; shear du/dx = (4/pi) int Ruu (1 - cos ks)
+    cos kx dk/k (the odd shear sgn x on |x| < s). Within 1e-9 times max(1, m)."""
+    from contactlib.kernels import strip
+
+    sub = layer.Substrate(modulus, nu2)
+    m = max(1.0, stiffness_ratio(nu, modulus, nu2))
+
+    def rem(i, h):
+        return lambda k: _love_remainders(k * h, nu, modulus, nu2)[i]
+
+    for x, x2, s, h in [(0.3, 0.0, 1.0, 1.0), (1.7, 0.5, 0.6, 0.4), (0.2, 0.9, 1.0, 0.1),
+                        (0.5, 0.0, 1.0, 5.0)]:
+        hp = np.array(strip.pressure_strip([x, x2], s, nu))
+        co = np.array(strip.pressure_strip([x, x2], s, nu, h, sub))
+        rww, rwu = rem(0, h), rem(1, h)
+        du = -(4 / np.pi) * _quad_t(lambda k: rwu(k) * np.sin(k * s) * np.cos(k * x) / k, h)
+        dw = (4 / np.pi) * _quad_t(lambda k: rww(k) * np.sin(k * s)
+                                   * (np.cos(k * x) - np.cos(k * x2)) / k**2, h)
+        assert abs((co[2, 0] - hp[2, 0]) - du) < 1e-9 * m, (x, s, h)
+        got_dw = (co[0, 0] - co[0, 1]) - (hp[0, 0] - hp[0, 1])
+        assert abs(got_dw - dw) < 1e-9 * m * s, (x, x2, s, h, got_dw, dw)
+        hs = np.array(strip.shear_strip(x, s, nu))
+        cs = np.array(strip.shear_strip(x, s, nu, h, sub))
+        ruu = rem(2, h)
+        dus = (4 / np.pi) * _quad_t(lambda k: ruu(k) * (1 - np.cos(k * s)) * np.cos(k * x) / k,
+                                     h)
+        assert abs((cs[2] - hs[2]) - dus) < 1e-9 * m, (x, s, h, cs[2] - hs[2], dus)
+
+
+def _kc(c, n, **kw):
+    return contactlib.solve("cylinder", NU, stick_ratio=c, n=n, energy=False, **kw)
+
+
+def test_cylinder_limits():
+    """Equal materials: the half-plane (k to 1e-9; measured 3e-11, 1e-11); E2/E1 -> inf:
+    the bonded base at first order in E1/E2 (k 6.8e-5, 6.8e-6 at 1e5, 1e6); a/h -> 0: the
+    coating's half-plane at first order in a/h (plane strain: u's remainder ~ x s/h;
+    measured 3.67 a/h at E2/E1 = 0.1)."""
+    half = _kc(0.5, 128)
+    for slab in (1.0, 5.0):
+        eq = _kc(0.5, 128, slab_ratio=slab, base="elastic", substrate_modulus=1.0)
+        assert abs(eq.friction_coefficient / half.friction_coefficient - 1.0) < 1e-9
+        assert abs(eq.load_ratio / half.load_ratio - 1.0) < 1e-9
+    bonded = _kc(0.5, 128, slab_ratio=1.0, base="bonded")
+    d = {e: _kc(0.5, 128, slab_ratio=1.0, base="elastic", substrate_modulus=e)
+         .friction_coefficient / bonded.friction_coefficient - 1.0 for e in (1e5, 1e6)}
+    assert abs(d[1e6]) < 2e-5 and 9.8 < d[1e5] / d[1e6] < 10.2
+    dep = [_kc(0.5, 128, slab_ratio=r, base="elastic", substrate_modulus=0.1, substrate_nu=0.2
+               ).friction_coefficient / half.friction_coefficient - 1.0 for r in (0.01, 0.02)]
+    assert 1.96 < dep[1] / dep[0] < 2.04
+
+
+@pytest.mark.parametrize("kw, share", [
+    ({"slab_ratio": 5.0, "substrate_modulus": 0.1, "substrate_nu": 0.2}, 1.0),
+    pytest.param({"slab_ratio": 20.0, "substrate_modulus": 0.01}, 0.5,
+                 marks=pytest.mark.slow)])
+def test_cylinder_error_estimate_against_the_fourfold_refinement(kw, share):
+    """k(c/a = 0.5) on the coated half-plane: the estimate at n against |k(n)/k(4n) - 1|.
+    At a/h = 5, E2/E1 = 0.1 it covers it (measured 1.49x, 1.50x at n = 64, 128); on a very
+    soft substrate at a/h = 20 it falls short, measured 0.71x and 0.94x (docs/models.md):
+    asserted here as at least half."""
+    sols = {n: _kc(0.5, n, base="elastic", **kw) for n in (64, 128, 256, 512)}
+    for n in (64, 128):
+        true = abs(sols[n].friction_coefficient / sols[4 * n].friction_coefficient - 1.0)
+        assert share * true <= sols[n].error_estimate, (n, true, sols[n].error_estimate)

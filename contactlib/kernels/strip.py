@@ -166,6 +166,22 @@ quadrature's precision: a test). Beyond, the far-field forms are used, and
 where every argument is beyond, the local closed forms of ``_bonded_far``.
 At ``nu = 1/2`` (``kappa = 1``, ``beta = 0``) nothing is 0/0.
 
+Coated body
+-----------
+``base = Substrate(modulus, nu2)`` (:class:`contactlib.kernels.layer.Substrate`): the
+layer bonded to an elastic half-plane, the remainders of
+:func:`contactlib.kernels.layer.coated_remainder`. They tend to ``R0 = m - 1``,
+``m beta2 - beta``, ``m - 1`` at ``t -> 0`` (``m = E1*/E2*``), so ``A`` takes the
+integrand ``(Rww cos t eta - R0 e^{-2t})/t`` and the constant ``-R0 ln 2``, and the
+pressure strip's ``(4 s/pi) ln h`` is multiplied by ``1 - m`` (``-R0``; 1 on the rigid
+bases): far away the line load's ``w`` is ``-(2/pi) m ln|xi|``, the substrate's
+half-plane with the unit reference length. The line-load remainders decay only
+algebraically (``1/eta^2``: the transforms are not analytic at ``k = 0``), so there
+are no far-field forms: the tables (``|eta| <= 48``, spacing 0.02, one per (nu,
+substrate), the quadrature with 32 panels on ``0 < t < 2 min(1, m^(-1/3))`` before
+the panels of 0.25) are the supported range, ``|x +- s|/h <= 48`` (a/h <= 20 for
+``x, s <= a``), and beyond it a ``ValueError`` is raised.
+
 Removable points and limits: ``x = +-s`` (``F(0) = 0``), ``x = 0`` and ``s = 0``
 (all outputs 0) are exact. ``du`` of the pressure strip jumps at ``x = +-s``:
 the value there is the mean of the one-sided limits. ``du`` of the shear strip
@@ -181,6 +197,8 @@ from math import factorial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from .layer import Substrate, coated_remainder
 
 __all__ = ["BASES", "pressure_strip", "shear_strip", "axis_w_strip", "w_difference_strip"]
 
@@ -359,7 +377,19 @@ def _remainder_exact_bonded(eta: ArrayLike, nu: float) -> dict[str, NDArray[np.f
     (``Rww(0) = -1``); ``1 - cos`` and ``sin x - x`` are formed without cancellation.
     """
     t, wt = _gauss_panels(_PANEL_BONDED)
-    rww, rwu, ruu = _bonded_transfer(t, float(nu))
+    return _remainder_integrals(eta, t, wt, _bonded_transfer(t, float(nu)), -1.0)
+
+
+def _remainder_integrals(eta: ArrayLike, t: Arr, wt: Arr, rem: tuple[Arr, Arr, Arr],
+                         r0: float) -> dict[str, NDArray[np.float64]]:
+    """``A, dA, A1, B, dB, B1, C, dC, C1`` at ``eta`` from the remainders ``rem`` =
+    (Rww, Rwu, Ruu) on the quadrature (t, wt), ``r0 = Rww(0)`` (-1 on the bonded base).
+
+    ``A``'s integrand ``(Rww cos t eta - r0 exp(-2t))/t`` is regular at ``t = 0``, with
+    the constant ``-r0 ln 2`` (Frullani); with ``r0 = -1`` every operation is the bonded
+    base's as it was written before coated bodies (the same bits).
+    """
+    rww, rwu, ruu = rem
     e = np.atleast_1d(np.asarray(eta, dtype=float))
     te = t * e[:, None]
     cs = np.cos(te)
@@ -368,11 +398,12 @@ def _remainder_exact_bonded(eta: ArrayLike, nu: float) -> dict[str, NDArray[np.f
     ex = np.exp(-2.0 * t)
     ln2 = np.log(2.0)
     out = {}
-    out["A"] = _TWO_PI * (((rww * cs + ex) / t) @ wt + ln2)
+    out["A"] = _TWO_PI * (((rww * cs - r0 * ex) / t) @ wt - r0 * ln2)
     out["dA"] = -_TWO_PI * (sn @ (wt * rww))
-    # A1: (Rww sin(t eta)/t + eta exp(-2t))/t = Rww (sin - t eta)/t^2 + eta (Rww + exp(-2t))/t
+    # A1: (Rww sin(t eta)/t - r0 eta exp(-2t))/t = Rww (sin - t eta)/t^2 + eta (Rww - r0
+    # exp(-2t))/t
     out["A1"] = _TWO_PI * (_sin_tail(te) @ (wt * rww / t**2)
-                           + e * (((rww + ex) / t) @ wt) + e * ln2)
+                           + e * (((rww - r0 * ex) / t) @ wt) - r0 * e * ln2)
     out["B"] = -_TWO_PI * (sn @ (wt * rwu / t))
     out["dB"] = -_TWO_PI * (cs @ (wt * rwu))
     out["B1"] = -_TWO_PI * (hs2 @ (wt * rwu / t**2))
@@ -380,6 +411,31 @@ def _remainder_exact_bonded(eta: ArrayLike, nu: float) -> dict[str, NDArray[np.f
     out["dC"] = -_TWO_PI * (sn @ (wt * ruu))
     out["C1"] = _TWO_PI * (_sin_tail(te) @ (wt * ruu / t**2))
     return out
+
+
+def _remainder_exact_coated(eta: ArrayLike, nu: float,
+                            sub: Substrate) -> dict[str, NDArray[np.float64]]:
+    """Coated-body remainder functions by quadrature (slow path; tables and tests).
+
+    As :func:`_remainder_exact_bonded` with the remainders of
+    :func:`contactlib.kernels.layer.coated_remainder`, which tend to
+    ``R0 = Rww(0) = m - 1`` (not -1): ``A`` takes the integrand
+    ``(Rww cos t eta - R0 exp(-2t))/t`` and the constant ``-R0 ln 2`` (Frullani), so
+    that ``A -> -(2/pi) R0 ln eta`` far away and the line load's ``w`` is
+    ``-(2/pi) m ln|xi|`` there (the substrate's half-plane) with the kernel's
+    ``(2/pi) (1 - m) ln h``. Quadrature: 32 panels on ``0 < t < 2 f``, ``f = min(1,
+    m^(-1/3))`` (the bending scale of a stiff layer on a soft substrate), then panels
+    of ``_PANEL_BONDED`` to ``_T_MAX``.
+    """
+    g, wg = np.polynomial.legendre.leggauss(_GL_ORDER)
+    f = min(1.0, sub.stiffness_ratio_of(nu) ** (-1.0 / 3.0))
+    edges = np.arange(0.0, _T_MAX + 0.5 * _PANEL_BONDED, _PANEL_BONDED)
+    edges = np.concatenate([np.linspace(0.0, 2.0 * f, 33), edges[edges > 2.0 * f]])
+    lo, hi = edges[:-1, None], edges[1:, None]
+    t = (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel()
+    wt = (0.5 * (hi - lo) * wg).ravel()
+    return _remainder_integrals(eta, t, wt, coated_remainder(t, nu, sub.modulus, sub.nu),
+                                sub.stiffness_ratio_of(nu) - 1.0)
 
 
 def _far_constants() -> tuple[float, float]:
@@ -414,6 +470,9 @@ class _SlabTable:
     a1_inf: float = 0.5
     c_quad: float = -0.25
     c1_inf: float = 1.0 / 3.0
+    # -Rww(0): the factor of the (2/pi) ln h that makes the remainder's w scale with h (1 on
+    # the rigid bases; 1 - m on a coated body, m = E1*/E2*)
+    log_factor: float = 1.0
 
 
 def _quintic_hermite(f: NDArray[np.float64], df: NDArray[np.float64],
@@ -493,8 +552,35 @@ def _bonded_table(nu: float) -> _SlabTable:
     )
 
 
+@functools.lru_cache(maxsize=8)
+def _coated_table(nu: float, sub: Substrate) -> _SlabTable:
+    """Tables of a coated body on 0 <= |eta| <= _ETA_MAX_BONDED (no far-field forms: its
+    line-load remainders decay algebraically; beyond the table :func:`_far_pair` refuses)."""
+    n = int(round(_ETA_MAX_BONDED / _DELTA))
+    pos = np.linspace(0.0, _ETA_MAX_BONDED, n + 1)
+    a1, b1, c1 = _full_tables(_remainder_exact_coated(pos, nu, sub))
+    nan = float("nan")
+    return _SlabTable(
+        pres=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(a1, b1)),
+        shear=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(c1, b1)),
+        b1_const=nan, c0_const=nan, base="elastic", n_pieces=n, b_inf=nan, a1_inf=nan,
+        c_quad=nan, c1_inf=nan, log_factor=1.0 - sub.stiffness_ratio_of(nu),
+    )
+
+
+def _table_of(base: str | Substrate, nu: float) -> _SlabTable:
+    """The slab table of a base: smooth, bonded (per nu) or a coated body (per nu, substrate)."""
+    if isinstance(base, Substrate):
+        return _coated_table(float(nu), base)
+    return _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
+
+
 def _far_pair(kind: str, eta: NDArray[np.float64], tab: _SlabTable) -> tuple[Arr, Arr, Arr, Arr]:
     """Far-field forms (|eta| > _ETA_MAX): values and derivatives of the packed pair."""
+    if tab.base == "elastic":
+        raise ValueError(f"|x +- s|/h = {float(np.max(np.abs(eta))):.6g} is beyond the coated "
+                         f"body's strip tables (<= {_ETA_MAX_BONDED:g}: a/h <= 20 for "
+                         "x, s <= a)")
     ae = np.abs(eta)
     sg = np.sign(eta)
     la = np.log(ae)
@@ -669,7 +755,7 @@ def _slab_pressure(x: Arr, s: Arr, h: float, tab: _SlabTable, out_w: Arr, out_u:
     val = pp.view(np.float64)
     val *= h
     out_w += val[0::2]
-    out_w += s * (2.0 * _TWO_PI * np.log(h))
+    out_w += s * (2.0 * _TWO_PI * np.log(h) * tab.log_factor)
     out_u += val[1::2]
     out_du += dpp
     return farp & farm
@@ -746,9 +832,10 @@ def _bonded_far(kind: str, x: Arr, xp: Arr, xm: Arr, h: float,
 
 
 # --- driver --------------------------------------------------------------------
-def _validate(s: NDArray[np.float64], nu: float, h: float, base: str = "smooth") -> float:
-    if base not in BASES:
-        raise ValueError(f"base={base!r} must be one of {BASES}")
+def _validate(s: NDArray[np.float64], nu: float, h: float,
+              base: str | Substrate = "smooth") -> float:
+    if not isinstance(base, Substrate) and base not in BASES:
+        raise ValueError(f"base={base!r} must be one of {BASES} or a Substrate")
     nu = float(nu)
     if not -1.0 < nu <= 0.5:
         raise ValueError(f"Poisson's ratio nu={nu!r} must satisfy -1 < nu <= 0.5")
@@ -770,7 +857,7 @@ def _evaluate(kind: str, x: ArrayLike, s: ArrayLike, nu: float, h: float,
     slab = bool(np.isfinite(h))
     tab = None
     if slab:
-        tab = _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
+        tab = _table_of(base, nu)
     hp = _hp_pressure if kind == "pressure" else _hp_shear
     if FUSED:
         hp = _hp_pressure_fused if kind == "pressure" else _hp_shear_fused
@@ -839,8 +926,9 @@ def pressure_strip(
     h : float, optional
         Thickness of the layer on a rigid base, same unit; ``np.inf``
         (default) is the half-plane.
-    base : {"smooth", "bonded"}, optional
-        The rigid base: frictionless (default) or bonded.
+    base : {"smooth", "bonded"} or Substrate, optional
+        The rigid base: frictionless (default) or bonded; or an elastic
+        substrate bonded to the layer (a coated body, module notes).
 
     Returns
     -------
@@ -885,8 +973,9 @@ def shear_strip(
         Poisson's ratio, -1 < nu <= 0.5.
     h : float, optional
         Layer thickness on a rigid base; ``np.inf`` is the half-plane.
-    base : {"smooth", "bonded"}, optional
-        The rigid base: frictionless (default) or bonded.
+    base : {"smooth", "bonded"} or Substrate, optional
+        The rigid base: frictionless (default) or bonded; or an elastic
+        substrate bonded to the layer (a coated body, module notes).
 
     Returns
     -------
@@ -991,7 +1080,7 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
         h = _validate(sa, nu, h, base)
         near = (xa <= _AXIS_SLOPE_UP_TO * h) & (sa > 0.0)  # (dw is a fresh array)
         if near.any():  # the remainder's difference as the integral of its slope
-            tab = _slab_table() if base == "smooth" else _slab_table("bonded", float(nu))
+            tab = _table_of(base, nu)
             dw[near] += _remainder_axis_w(kind, xa[near], sa[near], h, tab)
         rest = ~near
         if rest.any():  # formed directly: its absolute round-off (~1e-16 s) stays

@@ -665,8 +665,8 @@ def _layer_radius(prob: _Problem, a_hertz: float,
                                       f"contact would reach a/h > {hi:g}, the supported range")
         sol, a = run(s)
         if not math.isfinite(a):
-            raise ValueError(f"thickness {prob.thickness!r}: no converged solution at a/h = "
-                             f"{s:.6g} ({sol.message})")
+            raise validate.SolverLimit(f"thickness {prob.thickness!r}: no converged solution "
+                                       f"at a/h = {s:.6g} ({sol.message})")
         return a / prob.thickness - s, sol, a
 
     s0 = a_hertz / prob.thickness
@@ -679,8 +679,8 @@ def _layer_radius(prob: _Problem, a_hertz: float,
         s0, s1 = s1, (s1 - r1 * (s1 - s0) / (r1 - r0)) if r1 != r0 else a / prob.thickness
         r0 = r1
         s1 = max(s1, 1e-12)
-    raise ValueError(f"thickness {prob.thickness!r}: the contact radius on the layer did not "
-                     "converge")
+    raise validate.SolverLimit(f"thickness {prob.thickness!r}: the contact radius on the layer "
+                               "did not converge")
 
 
 # ----------------------------------------------------------------------------- history

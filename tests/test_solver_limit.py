@@ -185,3 +185,17 @@ def test_remedies_keep_the_options_their_command_takes(capsys, monkeypatch) -> N
     assert lines[2] == ("contactlib: answer it with: contactlib history --geometry sphere "
                         f"--nu 0.3{cone} --friction 0.5 --load-path 0,1 --steps 200 "
                         "--output history.nc")
+
+
+def test_a_layer_radius_without_a_solution_is_a_solver_limit() -> None:
+    """Physical input on a layer: no converged solution at the a/h tried is a solver limit
+    (status 3), not bad input."""
+    from types import SimpleNamespace
+
+    from contactlib.physical import _layer_radius
+
+    prob = SimpleNamespace(geometry="sphere", base="smooth", thickness=1e-3)
+    with pytest.raises(validate.SolverLimit, match="no converged solution at a/h = 0.1 "
+                                                   r"\(Newton failed\)"):
+        _layer_radius(prob, 1e-4, lambda s: (SimpleNamespace(message="Newton failed"),
+                                             float("nan")))

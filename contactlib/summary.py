@@ -79,34 +79,43 @@ _ESTIMATES = {"friction_coefficient": "error_estimate", "load_ratio": "load_erro
               "frictional_work": "work_error_estimate"}
 
 
-def quoted(value: float, relative_error: float) -> float:
-    """``value`` rounded to the significant digits its relative error supports.
+def quoted(value: float, relative_error: float, max_error: float = float("nan")) -> float:
+    """``value`` rounded to the significant digits that its accuracy supports.
 
-    floor(-log10(error)) digits, between 2 and 6 (6 without an estimate): a
-    number whose last digits are round-off or discretization error would
-    change with the machine's BLAS kernel, which a quoted number must not.
+    The accuracy is ``max_error`` for a case within it (the accuracy asked for, which
+    the case meets) and the error estimate for one beyond it:
+    floor(-log10(max(relative_error, max_error))) digits, between 2 and 6 (6 with
+    neither). The digits of a resolved case then follow from the configuration alone,
+    never from its estimate, whose last digits are round-off: a quoted number must not
+    change with the machine's BLAS kernel (an estimate of 0.99e-5 here and 1.01e-5 there
+    would otherwise quote 5 digits here and 4 there).
 
     >>> quoted(0.30809448, 2e-5), quoted(0.30809448, float("nan")), quoted(2.784, 0.3)
     (0.3081, 0.308094, 2.8)
+    >>> quoted(0.30809448, 2e-5, 1e-3), quoted(0.30809448, 9e-6, 1e-3), quoted(2.784, 0.3, 1e-3)
+    (0.308, 0.308, 2.8)
     """
     if not (math.isfinite(value) and value != 0.0):
         return float(value)
     digits = 6
-    if math.isfinite(relative_error) and relative_error > 0.0:
-        digits = int(np.clip(math.floor(-math.log10(relative_error)), 2, 6))
+    accuracy = [x for x in (relative_error, max_error) if math.isfinite(x) and x > 0.0]
+    if accuracy:
+        digits = int(np.clip(math.floor(-math.log10(max(accuracy))), 2, 6))
     return float(f"{value:.{digits}g}")
 
 
 def _values(ds: xr.Dataset, name: str) -> np.ndarray:
     """A per-case variable as quoted: NaN where the solver did not converge (no data
-    there), elsewhere rounded to the digits its error estimate supports (:func:`quoted`)."""
+    there), elsewhere rounded to the digits its accuracy supports (:func:`quoted`: the
+    dataset's ``max_error`` where the case is within it, else its error estimate)."""
     v = np.atleast_1d(np.asarray(ds[name].values, dtype=float))
     if "converged" in ds:
         v = np.where(np.atleast_1d(ds["converged"].values).astype(bool), v, np.nan)
     est = _ESTIMATES.get(name)
     err = (np.atleast_1d(np.asarray(ds[est].values, dtype=float)) if est in ds
            else np.full(v.shape, np.nan))
-    return np.array([quoted(float(x), float(e)) for x, e in zip(v, err)])
+    asked = float(ds.attrs.get("max_error", float("nan")))
+    return np.array([quoted(float(x), float(e), asked) for x, e in zip(v, err)])
 
 
 def _at(ds: xr.Dataset, name: str, c: float) -> float:
@@ -233,6 +242,23 @@ def _history(ds: xr.Dataset) -> list[dict[str, Any]]:
     work = np.where(done[:, None], work, np.nan)
     nan = float("nan")
     cycle = _cycle_work(ds, work)
+    # quoted to the digits their accuracy supports, as the self-similar values: the
+    # estimates at the peak (stick radius, units of a_max) and at the end (work, relative
+    # to the path's total work), taken relative to the value quoted
+    asked = float(ds.attrs.get("max_error", nan))
+
+    def last_estimate(var: str, step: int) -> np.ndarray:
+        if var not in ds:
+            return np.full(ks.size, nan)
+        return by_k(var).astype(float).reshape(ks.size, -1)[:, step]
+
+    radius = by_k("contact_radius").astype(float).reshape(ks.size, -1)[:, peak] \
+        if "contact_radius" in ds else np.full(ks.size, nan)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        c_rel = last_estimate("stick_radius_error_estimate", peak) / (c_peak * radius)
+        scale = (by_k("work_scale").astype(float).reshape(-1) if "work_scale" in ds
+                 else np.full(ks.size, nan))
+        w_rel = last_estimate("work_error_estimate", -1) * scale / np.abs(cycle)
     rows = []
     for i, k in enumerate(ks):  # long format: one row a run
         row = _common(ds)
@@ -245,8 +271,8 @@ def _history(ds: xr.Dataset) -> list[dict[str, Any]]:
             **{f"k at c/a = {r:g}": nan for r in _RATIOS},
             "largest finite k": nan, WORK_AT_HALF: nan, LARGEST_WORK: nan,
             "history k": float(k),
-            "history c/a at peak load": float(c_peak[i]),
-            CYCLE_WORK: float(cycle[i]),
+            "history c/a at peak load": quoted(float(c_peak[i]), float(c_rel[i]), asked),
+            CYCLE_WORK: quoted(float(cycle[i]), float(w_rel[i]), asked),
         })
         rows.append(row)
     return rows

@@ -90,6 +90,9 @@ def _from_record(geom: Geometry, rec: CaseRecord, method: str, n: int, want_ener
     sol = stages.to_solution(geom, method, n, rec, xi, flags=stages.check_case(rec),
                              work=work, profile=profile, message=message)
     sol.extra.update(stages.nodal_tractions(geom, rec))  # for the subsurface stresses
+    if geom.body.base == validate.COATED_BASE:  # a coated body: its substrate
+        sol.substrate_modulus = float(geom.body.substrate_modulus)
+        sol.substrate_poisson_ratio = float(geom.body.kernel_base.nu)
     return sol
 
 

@@ -40,7 +40,7 @@ from typing import Any, NoReturn, TextIO
 
 from contactlib import __version__
 from contactlib import validate
-from contactlib.result import Solution
+from contactlib.result import Solution, substrate_text
 
 __all__ = ["main", "build_parser", "check_output", "UsageError", "SolverLimitError",
            "EXIT_BAD_INPUT", "EXIT_SOLVER_LIMIT"]
@@ -180,9 +180,6 @@ def parse_substrate(args: argparse.Namespace, base: str, geometry: str,
         raise _usage(exc, shown.get(exc.name, base)) from None
     if base != validate.COATED_BASE:
         return {}
-    if args.output is not None:
-        raise UsageError("--output is not available with --base elastic: datasets do not "
-                         "record the substrate yet")
     return {"substrate_modulus": modulus} | ({} if nu2 is None else {"substrate_nu": nu2})
 
 
@@ -229,7 +226,7 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
     sub.add_argument("--base", metavar="{smooth,bonded,elastic}", default="smooth",
                      help="the layer's base: rigid and smooth (frictionless) or bonded, or "
                           "elastic (a coated body: the layer bonded to an elastic half-space; "
-                          "default method, a/h <= 20, no --output); default: smooth")
+                          "default method, a/h <= 20); default: smooth")
     sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
                      help="with --base elastic: the substrate's Young's modulus over the "
                           "layer's, in [1e-2, 1e6] (required there)")
@@ -822,7 +819,7 @@ def _head(sol: Solution, n_text: str | None = None) -> str:
     if _indenter(sol.geometry).reports_layer(sol.slab_ratio):
         head += f", a/h = {sol.slab_ratio:g}"
     if sol.slab_ratio > 0:
-        head += f" ({getattr(sol, 'base', 'smooth')} base)"
+        head += f" ({getattr(sol, 'base', 'smooth')} base{substrate_text(sol)})"
     if getattr(sol, "profile", "paraboloid") != "paraboloid":
         head += f", profile = {sol.profile} (d = {sol.exponent:g})"
     return head + _indenter_text(sol)

@@ -162,7 +162,8 @@ _POINT_BOOL_ATTRS: dict[str, tuple[str, str]] = {
 }
 
 _SHARED_FIELDS = ("geometry", "nu", "method", "slab_ratio", "base",
-                  "indenter_modulus_ratio", "indenter_poisson_ratio", "profile", "exponent")
+                  "indenter_modulus_ratio", "indenter_poisson_ratio", "profile", "exponent",
+                  "substrate_modulus", "substrate_poisson_ratio")
 
 
 def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
@@ -172,7 +173,9 @@ def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
     a layer for the sphere: a sphere on the half-space keeps its attributes);
     ``base`` = "bonded" on a layer bonded to its base. Without ``base`` a
     layer is on a smooth base: the default, and the paper's slab, whose
-    files keep the attributes they had before bases existed.
+    files keep the attributes they had before bases existed. A coated body
+    (``base`` = "elastic") adds ``substrate_modulus`` (E2/E1) and
+    ``substrate_poisson_ratio``.
     """
     slab = float(result.slab_ratio)
     base = str(getattr(result, "base", "smooth"))
@@ -181,6 +184,9 @@ def _layer_attrs(ind: Any, result: Any) -> dict[str, Any]:
         attrs["slab_ratio"] = slab
     if slab > 0 and base != "smooth":
         attrs["base"] = base
+    if slab > 0 and base == "elastic":
+        attrs["substrate_modulus"] = float(result.substrate_modulus)
+        attrs["substrate_poisson_ratio"] = float(result.substrate_poisson_ratio)
     return attrs
 
 

@@ -23,7 +23,8 @@ import numpy as np
 
 from .indenter import indenter
 
-__all__ = ["Solution", "CaseRecord", "format_fields", "short_repr", "history_repr"]
+__all__ = ["Solution", "CaseRecord", "format_fields", "short_repr", "history_repr",
+           "substrate_text"]
 
 
 # ----------------------------------------------------------------------------- short repr
@@ -144,6 +145,14 @@ def history_repr(res: Any) -> str:
                                    f"{_scalar(res.viscous_work[-1])} + frictional (at the end)"))
         names += ["time", "external_work", "stored_energy", "viscous_work"]
     return format_fields(head, items + _arrays_by_shape(res, names))
+
+
+def substrate_text(result: Any) -> str:
+    """``": E2/E1 = 0.1, nu2 = 0.2"``: a coated body's substrate (``base = "elastic"``), or ""."""
+    if getattr(result, "base", "smooth") != "elastic":
+        return ""
+    return (f": E2/E1 = {float(result.substrate_modulus):g}, "
+            f"nu2 = {float(result.substrate_poisson_ratio):g}")
 
 
 @dataclass(frozen=True, repr=False, eq=False)
@@ -320,12 +329,16 @@ class Solution:
     dundurs_beta : float
         Dundurs' beta of the pair (> 0: slip inward, q = k p; < 0: outward, q = -k p).
     base : str
-        The layer's rigid base, "smooth" or "bonded" (irrelevant at a/h = 0).
+        The layer's rigid base, "smooth" or "bonded", or "elastic" (a coated
+        body) (irrelevant at a/h = 0).
     profile : str
         The indenter's profile: "paraboloid" (Hertz, the default), "cone" or "power"
         (:mod:`contactlib.profiles`).
     exponent : float
         Its exponent d, h ~ r^d (2 for the paraboloid, 1 for the cone).
+    substrate_modulus, substrate_poisson_ratio : float
+        E2/E1 and nu2 of a coated body's substrate (``base = "elastic"``; inf and
+        NaN otherwise).
     error_estimate : float
         Estimated relative error of ``friction_coefficient`` (embedded
         solves on the nested meshes n/4 and n/2; 0 where k is exact).
@@ -389,13 +402,15 @@ class Solution:
     base: str = "smooth"
     profile: str = "paraboloid"
     exponent: float = 2.0
+    substrate_modulus: float = float("inf")
+    substrate_poisson_ratio: float = float("nan")
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:.10g}, method = {self.method}, n = {self.n}"
         if indenter(self.geometry).reports_layer(self.slab_ratio):
             head += f", a/h = {self.slab_ratio:g}"
         if self.slab_ratio > 0:
-            head += f" ({self.base} base)"
+            head += f" ({self.base} base{substrate_text(self)})"
         if self.profile != "paraboloid":
             head += f", profile = {self.profile} (d = {self.exponent:g})"
         if self.indenter_modulus_ratio != float("inf"):

@@ -718,7 +718,8 @@ def _run_physical(kwargs: dict[str, Any], output: str | None, command: str) -> i
             res = _warned(lambda: physical.physical_history(progress=progress, **kwargs))
     else:
         try:
-            res = _warned(lambda: physical.physical_solve(**kwargs))
+            with _ticker(sys.stderr, "solve"):
+                res = _warned(lambda: physical.physical_solve(**kwargs))
         except validate.SolverLimit as exc:  # valid input beyond the method: status 3
             raise SolverLimitError(exc) from exc
         except ValueError as exc:
@@ -949,6 +950,46 @@ def _relative_text(error: float, value: float, zero_below: float = 0.0) -> str:
     return f"{error:8.1e}"
 
 
+@contextmanager
+def _ticker(stream: TextIO, label: str, after: float = 2.0, every: float = 1.0):
+    """On a terminal, a line ``label: N s`` updated every ``every`` seconds once the work
+    has taken ``after`` seconds, cleared on the way out; nothing when not a terminal.
+
+    For the one-case commands (``solve``), whose inverse search (``--friction``) runs
+    for up to about 15 s with no count to show.
+    """
+    import threading
+    import time
+
+    try:
+        tty = stream.isatty()
+    except (AttributeError, ValueError):
+        tty = False
+    if not tty:
+        yield
+        return
+    done = threading.Event()
+    start = time.monotonic()
+    shown = threading.Event()
+
+    def tick() -> None:
+        while not done.wait(after if not shown.is_set() else every):
+            stream.write(f"\r{label}: {time.monotonic() - start:.0f} s")
+            stream.flush()
+            shown.set()
+
+    thread = threading.Thread(target=tick, daemon=True)
+    thread.start()
+    try:
+        yield
+    finally:
+        done.set()
+        thread.join()
+        if shown.is_set():
+            stream.write("\r\033[K")
+            stream.flush()
+
+
 def _progress_printer(stream: TextIO, label: str = "sweep") -> Callable[[int, int], None] | None:
     """A ``progress(i, total)`` callback with ``\\r`` updates, TTY only."""
     try:
@@ -998,7 +1039,8 @@ def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType,
         if subsurface:  # before any numerics: refuses a layer and a missing --output
             from contactlib.stresses import check_subsurface_request
             check_subsurface_request(output, kwargs.get("slab_ratio", 0.0))
-        sol = api.solve(**kwargs)
+        with _ticker(sys.stderr, "solve"):
+            sol = api.solve(**kwargs)
     except validate.SolverLimit as exc:  # valid input beyond the method: status 3
         raise SolverLimitError(exc) from exc
     except ValueError as exc:  # the library's own input validation

@@ -245,3 +245,38 @@ def test_python_m_help() -> None:
                            "sphere", "--nu", "abc", "--stick-ratio", "0.5"], **kw)
     assert proc.returncode == 2
     assert proc.stderr == "contactlib: error: --nu must be a number in (-1, 0.5], got 'abc'\n"
+
+
+class _Terminal:
+    """A stream that says it is a terminal and keeps what is written."""
+
+    def __init__(self, tty: bool = True):
+        self.tty, self.text = tty, ""
+
+    def isatty(self) -> bool:
+        return self.tty
+
+    def write(self, s: str) -> None:
+        self.text += s
+
+    def flush(self) -> None:
+        pass
+
+
+def test_ticker_shows_elapsed_time_on_a_terminal_and_clears_it():
+    import time
+
+    from contactlib.cli import _ticker
+
+    term = _Terminal()
+    with _ticker(term, "solve", after=0.05, every=0.05):
+        time.sleep(0.3)
+    assert "\rsolve: 0 s" in term.text and term.text.endswith("\r\033[K")
+    quiet = _Terminal()
+    with _ticker(quiet, "solve", after=5.0):  # a short run shows nothing
+        pass
+    assert quiet.text == ""
+    piped = _Terminal(tty=False)
+    with _ticker(piped, "solve", after=0.0, every=0.01):
+        time.sleep(0.05)
+    assert piped.text == ""  # not a terminal: silent

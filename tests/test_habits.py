@@ -383,7 +383,7 @@ def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> Non
     }
     code, text = dry_run(make_workdir(tmp_path, config, folders=("workflow",)))
     assert code != 0
-    for where in ("scenes.cycle: 'steps' is a required property",
+    for where in ("scenes.cycle.steps: is required",
                   "scenes.curve.n: n must be at least 16",
                   "figures.history_loop: no scene named 'cylce'",
                   "figures.fig2: no scene named 'curves'"):

@@ -139,9 +139,13 @@ def test_key_numbers_of_material_scenes_name_the_indenter(data):
     sims, hists = data
     rows = key_numbers(list(sims) + list(hists))
     assert all(tuple(r) == COLUMNS + INDENTER_COLUMNS for r in rows)
-    for (ind, body), row, hrow in zip(PAIRS, rows, rows[len(sims):]):
+    runs = len(SECTION["friction"])  # a history row a run (long format)
+    assert len(rows) == len(sims) + runs * len(hists)
+    for i, ((ind, body), row) in enumerate(zip(PAIRS, rows)):
         ratio, nu1, nu2 = pair(ind, body)
-        for r in (row, hrow):
+        hrows = rows[len(sims) + runs * i:len(sims) + runs * (i + 1)]
+        assert [r["history k"] for r in hrows] == SECTION["friction"]
+        for r in (row, *hrows):
             assert r["indenter E1/E2"] == pytest.approx(ratio, rel=1e-12)
             assert r["indenter nu"] == nu1 and r["nu"] == nu2
         beta = contactlib.solve("sphere", nu2, stick_ratio=0.0, n=16, indenter_modulus=ratio,

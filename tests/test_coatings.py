@@ -265,11 +265,16 @@ def _k(c, n, nu=NU, **kw):
 def test_equal_materials_give_the_half_space(slab, kw):
     """E2/E1 = 1, nu2 = nu: the remainder is < 1e-15 in transform and the tables interpolate
     it to < 1e-11; k and the load equal the half-space's to 1e-9 (measured 5e-12, 3e-13;
-    an elastic indenter 6e-11; the cone 5e-10), also for an elastic indenter and a cone."""
+    an elastic indenter 6e-11), also for an elastic indenter and a cone. The cone's k
+    itself carries round-off of about 1e-9 (the half-space case alone spreads by 1.2e-9
+    over the OpenBLAS kernels and numpy 2.0/2.4; the paraboloid's by 2e-10), so it is
+    held to 1e-8 (measured 5e-10 here, 2.5e-9 with numpy 2.0), four decades below its
+    error estimate (3.9e-4)."""
+    rtol = 1e-8 if kw.get("profile") == "cone" else 1e-9
     half = _k(0.5, 128, **kw)
     coated = _k(0.5, 128, slab_ratio=slab, base="elastic", substrate_modulus=1.0, **kw)
-    assert abs(coated.friction_coefficient / half.friction_coefficient - 1.0) < 1e-9
-    assert abs(coated.load_ratio / half.load_ratio - 1.0) < 1e-9
+    assert abs(coated.friction_coefficient / half.friction_coefficient - 1.0) < rtol
+    assert abs(coated.load_ratio / half.load_ratio - 1.0) < rtol
 
 
 def test_stiff_substrate_gives_the_bonded_rigid_base():

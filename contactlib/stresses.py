@@ -288,7 +288,7 @@ class _Pieces:
             kc = k[i:i + step, None]
             x = kc * self.nodes[None, :]
             j0, j1 = sp.j0(x), sp.j1(x)
-            ij0 = sp.itj0y0(x)[0]
+            ij0 = _integral_j0(x)
             small = x <= 1.0  # the recurrence J2 = 2 J1/x - J0 cancels at small x
             j2 = 2.0 * j1 / np.where(small, 1.0, x) - j0
             j2[small] = sp.jv(2, x[small])
@@ -298,6 +298,31 @@ class _Pieces:
             P[i:i + step] = (d[0] @ self.cp) / kk**2 + (d[1] @ self.mp) / kk**3
             Q[i:i + step] = (d[2] @ self.cq) / kk**2 + (d[3] @ self.mq) / kk**3
         return P, Q
+
+
+INTEGRAL_J0_SWITCH = 20.0
+"""Above this argument ``int_0^x J0`` comes from Struve functions, not ``itj0y0``: scipy
+1.13's ``itj0y0`` returns values of order 1e10 from x ~ 21 on (1.17's is right); the
+identity int_0^x J0 = x J0 + (pi x/2)(J1 H0 - J0 H1) agrees with 1.17's ``itj0y0`` to
+2.1e-10 on (20, 25] and 1e-11 beyond (to x = 3000), in both versions alike (1.13's H0 is
+NaN next to its zero near 25.7654, where its neighbours' mean stands in)."""
+
+
+def _integral_j0(x: np.ndarray) -> np.ndarray:
+    """int_0^x J0(t) dt, the same in every supported scipy (see INTEGRAL_J0_SWITCH)."""
+    out = np.empty_like(x)
+    low = x <= INTEGRAL_J0_SWITCH
+    out[low] = sp.itj0y0(x[low])[0]
+    t = x[~low]
+    h0 = sp.struve(0, t)
+    bad = ~np.isfinite(h0)
+    if bad.any():  # scipy 1.13's H0 is NaN within 1e-8 relative of its zero near 25.7654:
+        # the mean of its neighbours 1e-6 relative away (a straight line through a simple
+        # zero: off by about (1e-6 x)^2 |H0''| / 2, below 1e-10)
+        tb = t[bad]
+        h0[bad] = 0.5 * (sp.struve(0, tb * (1.0 + 1e-6)) + sp.struve(0, tb * (1.0 - 1e-6)))
+    out[~low] = t * sp.j0(t) + 0.5 * np.pi * t * (sp.j1(t) * h0 - sp.j0(t) * sp.struve(1, t))
+    return out
 
 
 def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,

@@ -16,14 +16,16 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-__all__ = ["__version__", "solve", "sweep", "history", "Solution", "physical_solve",
-           "physical_history"]
+__all__ = ["__version__", "solve", "sweep", "history", "fretting", "Solution",
+           "physical_solve", "physical_history"]
 
-_LAZY = {"solve": "api", "sweep": "api", "history": "history_api", "Solution": "result",
+_LAZY = {"solve": "api", "sweep": "api", "history": "history_api",
+         "fretting": "fretting_api", "Solution": "result",
          "physical_solve": "physical", "physical_history": "physical"}
 
 if TYPE_CHECKING:
     from .api import solve, sweep
+    from .fretting_api import fretting
     from .history_api import history
     from .physical import physical_history, physical_solve
     from .result import Solution

@@ -469,6 +469,15 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--duration", metavar="T[,T2...]", default=None,
                       help="with --relaxation: duration of the load path (segments equally "
                            "long), or one a segment, in the unit of tau")
+    hist.add_argument("--tangential-path", metavar="LIST", default=None,
+                      help="fretting (cylinder only): comma-separated tangential loads "
+                           "Q/(k P_max) at the points of --load-path (same length, starting "
+                           "at 0, |Q| < k P at every point); switches to the fretting solver "
+                           "(n counts elements over 1.2 a_max each side of the axis, a "
+                           "multiple of 4; steps a multiple of 4, default 40)")
+    hist.add_argument("--bulk-stress", metavar="LIST", default=None,
+                      help="with --tangential-path: the body's bulk stress along x over p0 "
+                           "at the points of --load-path (fretting fatigue specimen)")
     hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
     hist.add_argument("--max-error", metavar="E",
                       default=f"{validate.DEFAULT_MAX_ERROR:g}",
@@ -563,6 +572,81 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         kwargs["base"] = base
     kwargs.update(_profile_kwargs(args))
     return kwargs
+
+
+def _validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
+    """Checked keyword arguments of :func:`contactlib.fretting` (``--tangential-path``)."""
+    from contactlib import fretting_api
+
+    for option, given in (("--slab-ratio", args.slab_ratio not in (None, "0")),
+                          ("--base", args.base != "smooth"),
+                          ("--relaxation", args.relaxation is not None),
+                          ("--duration", args.duration is not None),
+                          ("--substrate-modulus", getattr(args, "substrate_modulus", None)
+                           is not None)):
+        if given:
+            raise UsageError(f"{option} must be given without --tangential-path: fretting "
+                             "is solved for a half-plane (no layer, no viscoelasticity)")
+    geometry = _check(validate.geometry, args.geometry, args.geometry)
+    kwargs: dict[str, Any] = {
+        "geometry": geometry,
+        "nu": parse_nu(_required(args.nu, "--nu")),
+        "friction": parse_friction(args.friction),
+        "load_path": parse_load_path(args.load_path),
+        "tangential_path": _list(args.tangential_path),
+        "steps": fretting_api.DEFAULT_STEPS if args.steps is None else parse_steps(args.steps),
+        "n": fretting_api.DEFAULT_N if args.n is None else _int(args.n),
+        "max_error": parse_max_error(args.max_error),
+    }
+    if args.bulk_stress is not None:
+        kwargs["bulk_stress"] = _list(args.bulk_stress)
+    ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
+    if ratio != float("inf"):
+        kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
+    kwargs.update(_profile_kwargs(args))
+    try:
+        fretting_api.check_input(kwargs["geometry"], kwargs["friction"], kwargs["load_path"],
+                                 kwargs["tangential_path"], kwargs["steps"], kwargs["n"],
+                                 kwargs.get("bulk_stress"), kwargs["max_error"])
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+    return kwargs
+
+
+def format_fretting(res: Any) -> str:
+    """Summary of a fretting path: the state at every path point, and the cycles' work."""
+    lines = [f"fretting of the cylinder: nu = {res.nu:g}, k = {res.friction:g}, "
+             f"beta = {res.beta:.4g}, n = {res.n}, {res.steps} steps a segment",
+             "point  P/P_max  Q/(kP_max)  c/a (estimate)       e/a_max   "
+             "frictional work (estimate)  resolved"]
+    for i, j in enumerate(res.point_step):
+        lines.append(
+            f"{i:5d}  {res.load_ratio[j]:7.4g}  {res.force_ratio[j]:10.4g}  "
+            f"{res.stick_ratio[j]:8.5f} ({res.stick_ratio_error[i]:.1e})  "
+            f"{res.stick_offset[j]:9.2e}  {res.dissipation[j]:12.5e} "
+            f"({res.dissipation_error[i]:.1e})  {'yes' if res.resolved[i] else 'NO'}")
+    for i, j, work, err in res.cycles:
+        lines.append(f"cycle from point {i} to {j}: frictional work {work:.5e} "
+                     f"(estimate {err:.1e}; units E* a_max^4/R^2 per unit length)")
+    failed = int(res.converged.size - res.converged.sum())
+    if failed:
+        lines.append(f"{failed} steps did not converge; their values "
+                     "are not data")
+    if not res.all_resolved:
+        lines.append(f"not every point is resolved to max_error = {res.max_error:g}: refine "
+                     f"with --n {2 * res.n} --steps {2 * res.steps}")
+    return "\n".join(lines)
+
+
+def _run_fretting(kwargs: dict[str, Any], output: str) -> int:
+    from contactlib import fretting_api, io
+
+    with _progress("fretting") as progress:
+        res = fretting_api.fretting(progress=progress, **kwargs)
+    io.write_dataset(io.fretting_to_dataset(res), output)
+    print(format_fretting(res))
+    print(f"wrote {output}")
+    return 0
 
 
 def _required(value: str | None, option: str) -> str:
@@ -1305,6 +1389,16 @@ def main(argv: list[str] | None = None) -> int:
         debug = bool(getattr(args, "debug", False))
         if args.command == "check-config":
             return _run_check_config(args.files)
+        if args.command == "history" and (args.tangential_path is not None
+                                          or args.bulk_stress is not None):
+            if args.tangential_path is None:
+                raise UsageError("--bulk-stress needs --tangential-path (give 0s for none)")
+            if is_physical(args):
+                raise UsageError("--tangential-path takes dimensionless input (--nu, load "
+                                 "levels); physical units are not supported for fretting yet")
+            fret_kwargs = _validate_fretting(args)  # before any numerics
+            check_output(args.output)
+            return _run_fretting(fret_kwargs, args.output)
         if args.command in ("solve", "history") and is_physical(args):
             if getattr(args, "subsurface", False):
                 raise UsageError("--subsurface must be given without --body (physical "

@@ -2003,3 +2003,117 @@ def _physical_history_dataset(res: Any) -> xr.Dataset:
                                                  "radius at the largest force"))
     ds.attrs["load_path_N"] = np.asarray(res.load_path, dtype=float)
     return ds
+
+
+# ----------------------------------------------------------------------------- fretting
+def fretting_to_dataset(result: Any) -> xr.Dataset:
+    """CF-annotated :class:`xarray.Dataset` of a fretting path (dimensions ``step``, ``x``, ``point``).
+
+    Every variable is dimensionless (``units`` "1") in the units of
+    :mod:`contactlib.fretting_api`. Per step: the loads, the contact and
+    stick-zone edges, ``stick_ratio``, ``stick_offset``, the rigid
+    displacements, the energies and the tractions; per path point: the error
+    estimates and ``resolved``. Write it with :func:`write_dataset`.
+
+    Parameters
+    ----------
+    result : FrettingResult
+        From :func:`contactlib.fretting`.
+
+    Returns
+    -------
+    xarray.Dataset
+    """
+    import xarray as xr
+
+    from contactlib import fretting_solver as fs
+
+    r = result
+    work = "V R**2 / (E* a_max**4) per unit length"
+    sd, ed, pd = ("step",), ("step", "x"), ("point",)
+    side = ("step", "side")
+    coords = {
+        "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),
+                 cf_attrs("load step", comment="0: unloaded initial state")),
+        "x": ("x", r.x, cf_attrs("element midpoint over a_max (x/a_max)",
+                                 comment="collocation points of the strip -1.2 <= x <= 1.2")),
+        "point": ("point", np.arange(len(r.load_path), dtype=np.int32),
+                  cf_attrs("load path point", comment="0: the unloaded start")),
+        "side": ("side", np.array(["left", "right"]), cf_attrs("edge")),
+    }
+    data = {
+        "segment": (sd, r.segment.astype(np.int32),
+                    cf_attrs("load path segment", comment="1-based; 0 for the initial state")),
+        "load_ratio": (sd, r.load_ratio, cf_attrs("normal load over maximum load (P/P_max)")),
+        "tangential_load_ratio": (sd, r.force_ratio, cf_attrs(
+            "tangential load over friction times maximum load (Q/(k P_max))",
+            comment="Q: the force the indenter exerts on the body along +x, per unit length")),
+        "bulk_stress": (sd, r.bulk_stress, cf_attrs(
+            "bulk stress of the body along x over p0 (sigma/p0)")),
+        "contact_edges": (side, r.contact_edges, cf_attrs(
+            "contact edges over a_max", comment="sub-element fit of the pressure; NaN: "
+                                                "no contact")),
+        "stick_edges": (side, r.stick_edges, cf_attrs(
+            "stick zone edges over a_max", comment="longest run of stuck elements, edges "
+                                                   "from a sub-element fit of k p - |q|")),
+        "stick_ratio": (sd, r.stick_ratio, cf_attrs(
+            "stick zone half-width over contact half-width (c/a)",
+            comment="0 in full slip; NaN without contact")),
+        "stick_offset": (sd, r.stick_offset, cf_attrs(
+            "stick zone centre minus contact centre over a_max (e/a_max)")),
+        "approach": (sd, r.approach, cf_attrs(
+            "normal approach (delta R / a_max**2)",
+            comment="half-plane: relative to the logarithm's datum at distance a_max")),
+        "tangential_shift": (sd, r.shift, cf_attrs(
+            "rigid tangential displacement of the indenter (s R / a_max**2)",
+            comment="relative to the logarithm's datum at distance a_max; its changes "
+                    "enclose the Q-s loop's area independently of the datum")),
+        "frictional_work": (sd, r.dissipation, cf_attrs(
+            "cumulative frictional work", comment=work + "; sum of k p |dv| over the "
+                                                        "slipping elements, never decreasing")),
+        "external_work": (sd, r.external_work, cf_attrs(
+            "cumulative external work", comment=work + "; trapezoid rule in time")),
+        "stored_energy": (sd, r.stored_energy, cf_attrs("stored elastic energy",
+                                                       comment=work)),
+        "converged": (sd, r.converged.astype(bool), cf_attrs("step converged", **_BOOL_FLAGS)),
+        "pressure": (ed, r.pressure, cf_attrs(
+            "contact pressure over p0", comment="p0: Hertz peak pressure at a_max")),
+        "shear": (ed, r.shear, cf_attrs(
+            "shear traction over p0", comment="traction on the body, positive along +x")),
+        "state": (ed, r.state.astype(np.int8), cf_attrs(
+            "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
+            flag_meanings=fs.STATE_MEANINGS)),
+        "point_step": (pd, r.point_step.astype(np.int32), cf_attrs(
+            "step index of the load path point")),
+        "stick_ratio_error_estimate": (pd, r.stick_ratio_error, cf_attrs(
+            "estimated absolute error of stick_ratio at the path point",
+            comment="difference to a run with n/2 elements and steps/2")),
+        "stick_offset_error_estimate": (pd, r.stick_offset_error, cf_attrs(
+            "estimated absolute error of stick_offset at the path point")),
+        "frictional_work_error_estimate": (pd, r.dissipation_error, cf_attrs(
+            "estimated absolute error of frictional_work at the path point",
+            comment="Richardson estimate from runs with n/2 and n/4 elements (and steps)")),
+        "resolved": (pd, r.resolved.astype(bool), cf_attrs(
+            "path point resolved to max_error", **_BOOL_FLAGS)),
+    }
+    cyc = np.asarray([c[:2] for c in r.cycles], dtype=np.int32).reshape(-1, 2)
+    attrs: dict[str, Any] = {
+        "title": "contactlib fretting path (cylinder)",
+        "geometry": r.geometry,
+        "poisson_ratio": float(r.nu),
+        "dundurs_beta": float(r.beta),
+        "friction_coefficient": float(r.friction),
+        "elements": int(r.n),
+        "steps": int(r.steps),
+        "load_path": np.asarray(r.load_path, dtype=float),
+        "tangential_path": np.asarray(r.tangential_path, dtype=float),
+        "bulk_stress_path": np.asarray(r.bulk_stress_path, dtype=float),
+        "max_error": float(r.max_error),
+        "cycle_points": cyc.ravel(),
+        "cycle_work": np.asarray([c[2] for c in r.cycles], dtype=float),
+        "cycle_work_error_estimate": np.asarray([c[3] for c in r.cycles], dtype=float),
+        "length_scale": "a_max: frictionless (Hertz) contact half-width at load level 1",
+        "contactlib_version": version(),
+        "Conventions": CONVENTIONS,
+    }
+    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)

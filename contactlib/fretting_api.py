@@ -1,0 +1,373 @@
+r"""Fretting of the cylinder: :func:`fretting`, a normal and a tangential load path.
+
+The numerics are in :mod:`contactlib.fretting_solver`; this module checks the input,
+plans the runs, estimates the errors from runs refined twofold and fourfold and
+returns a :class:`FrettingResult`. Units are those of
+:mod:`contactlib.history_api`: E* = R = 1, lengths in units of ``a_max`` (the
+frictionless contact half-width at ``P_max``), the pressure unit ``p0``
+(1/2 for Hertz's cylinder), work per unit length in ``E* a_max^4/R^2``.
+
+The path
+--------
+``load_path`` gives P/P_max and ``tangential_path`` Q/(k P_max) at the same
+points; both vary linearly between them, ``steps`` equal steps a segment. The
+first point is the unloaded start (both 0), so every path begins with the
+normal loading the history solver also follows, and the radial (here: inward
+or outward) shear that loading locks in is the initial state of the tangential
+loading. ``bulk_stress`` optionally gives the body's stress along x, in units
+of ``p0``, at the same points (the fretting-fatigue specimen under tension).
+
+Gross sliding (|Q| = k P) has no stick zone and no equilibrium under a force
+control, so every point with P > 0 must have |Q| < k P (|tangential_path| <
+load_path), and Q = 0 where P = 0.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import fretting_solver as fr
+from .history_solver import ORDER_MAX, measured_order
+from .model import contact
+from .profiles import profile as make_profile
+from .validate import DEFAULT_MAX_ERROR
+
+__all__ = ["FrettingResult", "fretting", "check_input", "DEFAULT_N", "DEFAULT_STEPS", "cylinder_cycle_work"]
+
+DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
+DEFAULT_STEPS = 40  # equal steps a path segment
+_GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
+
+
+@dataclass(frozen=True)
+class FrettingResult:
+    """A fretting path of the cylinder (units E* = R = a_max = 1, per unit length).
+
+    Per step (``steps * segments + 1`` values, the unloaded start first):
+    ``load_ratio`` P/P_max, ``force_ratio`` Q/(k P_max), ``bulk_stress``
+    sigma/p0, ``contact_edges`` and ``stick_edges`` (left, right; units
+    a_max, NaN where there is none), ``stick_ratio`` the stick zone's
+    half-width over the contact's, ``stick_offset`` the stick zone's centre
+    minus the contact's (units a_max), ``approach`` delta and ``shift`` s (the
+    indenter's rigid displacements, units a_max^2/R, up to the half-plane's
+    logarithmic datum, see :mod:`contactlib.fretting_solver`), ``dissipation``
+    (cumulative frictional work), ``external_work`` and ``stored_energy``,
+    ``converged``. ``pressure``, ``shear`` (units p0) and ``state`` per step
+    and element at ``x`` (midpoints, units a_max).
+
+    Per path point (``segments + 1`` values): ``point_step`` (the step index),
+    the estimates ``stick_ratio_error`` (absolute), ``stick_offset_error``
+    (units a_max) and ``dissipation_error`` (absolute, the cumulative
+    frictional work), and ``resolved``: the stick ratio within ``max_error``
+    and the dissipation within ``max_error`` of the path's total.
+
+    ``cycles`` lists the closed cycles of the path: for each path point that
+    repeats an earlier one (same P, Q and bulk stress), the pair of point
+    indices, the frictional work of the cycle and its estimate.
+    """
+
+    geometry: str
+    nu: float
+    friction: float
+    n: int
+    steps: int
+    max_error: float
+    beta: float
+    p_max: float
+    p0: float
+    load_path: tuple[float, ...]
+    tangential_path: tuple[float, ...]
+    bulk_stress_path: tuple[float, ...]
+    x: np.ndarray
+    segment: np.ndarray
+    load_ratio: np.ndarray
+    force_ratio: np.ndarray
+    bulk_stress: np.ndarray
+    contact_edges: np.ndarray
+    stick_edges: np.ndarray
+    stick_ratio: np.ndarray
+    stick_offset: np.ndarray
+    approach: np.ndarray
+    shift: np.ndarray
+    dissipation: np.ndarray
+    external_work: np.ndarray
+    stored_energy: np.ndarray
+    converged: np.ndarray
+    pressure: np.ndarray
+    shear: np.ndarray
+    state: np.ndarray
+    point_step: np.ndarray
+    stick_ratio_error: np.ndarray
+    stick_offset_error: np.ndarray
+    dissipation_error: np.ndarray
+    resolved: np.ndarray
+    cycles: tuple[tuple[int, int, float, float], ...]
+    orders: dict[str, float]
+
+    @property
+    def all_resolved(self) -> bool:
+        """Every path point converged and resolved within ``max_error``."""
+        return bool(np.all(self.resolved) and np.all(self.converged))
+
+
+def cylinder_cycle_work(x: np.ndarray | float, friction: float, load: float, p0: float
+                        ) -> np.ndarray:
+    r"""Frictional work of one tangential cycle between +-Q* of the cylinder (beta = 0).
+
+    Cattaneo–Mindlin for plane strain with Masing's rule (Mindlin–Deresiewicz):
+    the shift at the stick zone's centre is ``s = k p0 [L x + g(x)]`` with
+    ``g(x) = (1 - x) ln(1 - x)/2`` and x = Q/(kP) (a = 1, E* = 1; the linear
+    term L is the half-plane's datum and encloses no area), so
+
+    .. math:: W = 4 k^2 p_0 P\,[x g(x) - 2 G(x)],\qquad
+              G(x) = \int_0^x g = \tfrac12\left[\tfrac{(1-x)^2}{4}
+              - \tfrac{(1-x)^2}{2}\ln(1-x) - \tfrac14\right].
+
+    Parameters
+    ----------
+    x : float or ndarray
+        Q*/(k P), in [0, 1].
+    friction, load, p0 : float
+        k, P (per unit length) and the Hertz peak pressure at the contact
+        half-width (units E* = R = a = 1: P = pi/4, p0 = 1/2).
+
+    Returns
+    -------
+    ndarray
+        W per unit length (units E* a^4/R^2); ``~ k^2 p0 P x^3/3`` for small x.
+    """
+    x = np.asarray(x, dtype=float)
+    one = 1.0 - x
+    with np.errstate(divide="ignore", invalid="ignore"):
+        log = np.where(one > 0.0, np.log(np.where(one > 0.0, one, 1.0)), 0.0)
+    g = 0.5 * one * log
+    big_g = 0.5 * (0.25 * one**2 - 0.5 * one**2 * log - 0.25)
+    return 4.0 * friction**2 * p0 * load * (x * g - 2.0 * big_g)
+
+
+def _path(name: str, values: Sequence[float] | None, size: int | None) -> np.ndarray:
+    if values is None:
+        return np.zeros(size or 0)
+    try:
+        arr = np.asarray([float(v) for v in values], dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}: expected a list of numbers, got {values!r}") from None
+    if arr.ndim != 1 or arr.size < 2:
+        raise ValueError(f"{name}: needs at least two points (the start and one more), "
+                         f"got {arr.size}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name}: every value must be finite, got {values!r}")
+    if size is not None and arr.size != size:
+        raise ValueError(f"{name}: has {arr.size} points but load_path has {size}; "
+                         "give one value at every point of load_path")
+    if arr[0] != 0.0:
+        raise ValueError(f"{name}: must start at 0 (the unloaded body), got {arr[0]:g}")
+    return arr
+
+
+def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
+           n: int, steps: int, max_error: float) -> None:
+    if geometry != "cylinder":
+        raise ValueError(
+            f"fretting: geometry {geometry!r} is not covered; the tangential load is solved "
+            "for the cylinder (plane strain) only. For the sphere use the Cattaneo-Mindlin "
+            "closed form (beta = 0) or ask for the cylinder")
+    if not (isinstance(friction, (int, float)) and math.isfinite(friction) and friction > 0):
+        raise ValueError(f"friction: a tangential load needs a finite friction coefficient "
+                         f"k > 0, got {friction!r}")
+    if np.any(load < 0.0) or np.any(load > 1.0):
+        raise ValueError("load_path: P/P_max must lie in [0, 1] (load level 1 is the "
+                         f"reference load), got {load.tolist()}")
+    over = np.abs(tang) > (1.0 - _GROSS_SLIP_MARGIN) * load
+    if over.any():
+        i = int(np.flatnonzero(over)[0])
+        raise ValueError(
+            f"tangential_path: |Q|/(k P_max) = {abs(tang[i]):g} at point {i} reaches the "
+            f"load there (P/P_max = {load[i]:g}): that is gross sliding, which a force-"
+            "controlled path cannot follow. Keep |Q| < k P at every point")
+    if not (isinstance(n, (int, np.integer)) and 16 <= n <= 1024 and n % 4 == 0):
+        raise ValueError(f"n: elements over 1.2 a_max must be a multiple of 4 in [16, 1024] "
+                         f"(the estimate runs n/2 and n/4), got {n!r}")
+    if not (isinstance(steps, (int, np.integer)) and steps >= 4 and steps % 4 == 0):
+        raise ValueError(f"steps: steps a segment must be a multiple of 4 and >= 4 "
+                         f"(the estimate runs steps/2 and steps/4), got {steps!r}")
+    if not (0.0 < max_error < 1.0):
+        raise ValueError(f"max_error: must lie in (0, 1), got {max_error!r}")
+
+
+def _levels(points: np.ndarray, steps: int) -> np.ndarray:
+    """Values at the end of every step: ``steps`` equal steps a segment."""
+    t = np.arange(1, steps + 1) / steps
+    return np.concatenate([a + (b - a) * t for a, b in zip(points[:-1], points[1:])])
+
+
+def _run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
+         sigma: np.ndarray, progress=None) -> tuple[fr.StripOperators, fr.RawFretting]:
+    ops = fr.strip_operators(model, 2 * n)
+    big_p = _levels(load, steps) * ops.p_max
+    big_q = _levels(tang, steps) * k * ops.p_max
+    strain = _levels(sigma, steps) * ops.p0 * ops.strain_share
+    return ops, fr.run_fretting(ops, k, big_p, big_q, strain, progress)
+
+
+def _derived(raw: fr.RawFretting) -> tuple[np.ndarray, np.ndarray]:
+    left, right, sl, sr = raw.edges.T
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(np.isfinite(sl), (sr - sl) / (right - left), 0.0)
+        offset = np.where(np.isfinite(sl), 0.5 * (sl + sr) - 0.5 * (left + right), np.nan)
+    ratio = np.where(np.isfinite(left), ratio, np.nan)
+    return ratio, offset
+
+
+def _estimate(fine: np.ndarray, coarse: np.ndarray, coarser: np.ndarray,
+              max_order: float = ORDER_MAX) -> tuple[np.ndarray, float]:
+    """Richardson estimate of the fine run's error at each point, and the measured order.
+
+    The order is measured over the path points (:func:`~contactlib.history_solver.measured_order`)
+    and capped at ``max_order``: 1 for the zone edges, whose sub-element fit converges
+    unevenly as an edge moves across the elements (the estimate is then the twofold
+    difference itself).
+    """
+    ok = np.isfinite(fine) & np.isfinite(coarse) & np.isfinite(coarser)
+    order = measured_order(fine[ok], coarse[ok], coarser[ok]) if ok.any() else 1.0
+    order = min(order, max_order)
+    err = np.abs(fine - coarse) / (2.0**order - 1.0)
+    return np.where(ok, err, np.where(np.isfinite(fine), np.inf, np.nan)), order
+
+
+def _cycles(load: np.ndarray, tang: np.ndarray, sigma: np.ndarray,
+            work: np.ndarray, error: np.ndarray) -> tuple[tuple[int, int, float, float], ...]:
+    out = []
+    for j in range(1, load.size):
+        for i in range(j - 1, 0, -1):
+            if load[i] == load[j] and tang[i] == tang[j] and sigma[i] == sigma[j]:
+                if j - i >= 2:
+                    out.append((i, j, float(work[j] - work[i]), float(error[j] + error[i])))
+                break
+    return tuple(out)
+
+
+def check_input(geometry: str, friction: float, load_path: Sequence[float],
+                tangential_path: Sequence[float], steps: int, n: int = DEFAULT_N,
+                bulk_stress: Sequence[float] | None = None,
+                max_error: float = DEFAULT_MAX_ERROR) -> None:
+    """Raise ValueError (naming the argument) on input :func:`fretting` refuses; no numerics."""
+    load = _path("load_path", load_path, None)
+    tang = _path("tangential_path", tangential_path, load.size)
+    if bulk_stress is not None:
+        _path("bulk_stress", bulk_stress, load.size)
+    _check(geometry, friction, load, tang, n, steps, max_error)
+
+
+def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[float],
+             tangential_path: Sequence[float], steps: int = DEFAULT_STEPS, *,
+             n: int = DEFAULT_N, bulk_stress: Sequence[float] | None = None,
+             indenter_modulus: float = math.inf, indenter_nu: float | None = None,
+             profile: str = "paraboloid", exponent: float | None = None,
+             max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
+             progress: Callable[[int, int], None] | None = None) -> FrettingResult:
+    """Follow a normal and a tangential load path of a cylinder with Coulomb friction.
+
+    Parameters
+    ----------
+    geometry : {"cylinder"}
+        Only the cylinder (plane strain) on a half-plane is covered.
+    nu : float
+        Poisson's ratio of the body, in (-1, 0.5].
+    friction : float
+        Coulomb coefficient, ``0 < k < inf``.
+    load_path : sequence of float
+        P/P_max at the path's points, in [0, 1], starting at 0.
+    tangential_path : sequence of float
+        Q/(k P_max) at the same points, starting at 0, with
+        ``|Q/(k P_max)| < P/P_max`` wherever P > 0 (no gross sliding).
+    steps : int
+        Equal steps a segment (multiple of 4; default 40).
+    n : int
+        Elements over 1.2 a_max on each side of the axis, as for
+        :func:`contactlib.history` (the strip ``[-1.2, 1.2] a_max`` has 2n;
+        a multiple of 4 in [16, 1024]; default 120: element a_max/100).
+    bulk_stress : sequence of float, optional
+        The body's bulk stress along x over p0 at the same points (starting
+        at 0); default none.
+    indenter_modulus, indenter_nu : float
+        An elastic indenter, E1/E2 and nu1 (default rigid; nu1 the body's).
+    profile, exponent : str, float
+        The indenter's profile, as for :func:`contactlib.history`.
+    max_error : float
+        Accuracy for ``resolved``: of the stick ratio (absolute) and of the
+        cumulative frictional work relative to the path's total (default 1e-3, as
+        for :func:`contactlib.history`).
+    error_estimate : bool
+        Estimate the errors from runs with (n/2, steps/2) and (n/4, steps/4)
+        (default; they cost about 1/10 of the main run). If False the
+        estimates are NaN and nothing is ``resolved``.
+    progress : callable, optional
+        ``progress(i, total)`` after each step of the main run.
+
+    Returns
+    -------
+    FrettingResult
+
+    Raises
+    ------
+    ValueError
+        On input outside the ranges above (the message names the argument).
+
+    Examples
+    --------
+    >>> from contactlib import fretting
+    >>> r = fretting("cylinder", 0.5, 0.3, [0, 1, 1], [0, 0, 0.5], 8, n=32)
+    >>> round(float(r.stick_ratio[-1]), 1)  # Cattaneo-Mindlin: sqrt(1 - 0.5) = 0.71
+    0.7
+    """
+    load = _path("load_path", load_path, None)
+    tang = _path("tangential_path", tangential_path, load.size)
+    sigma = _path("bulk_stress", bulk_stress, load.size) if bulk_stress is not None \
+        else np.zeros(load.size)
+    _check(geometry, friction, load, tang, n, steps, max_error)
+    prof = make_profile(profile, exponent)
+    model = contact(geometry, nu, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
+                    profile=prof)
+    k = float(friction)
+    ops, raw = _run(model, n, steps, k, load, tang, sigma, progress)
+    ratio, offset = _derived(raw)
+    points = np.arange(load.size) * steps
+    if error_estimate:
+        runs = [_run(model, n // f, steps // f, k, load, tang, sigma)[1] for f in (2, 4)]
+        pts = [np.arange(load.size) * (steps // f) for f in (2, 4)]
+        der = [_derived(r) for r in runs]
+        ratio_err, o1 = _estimate(ratio[points], der[0][0][pts[0]], der[1][0][pts[1]], 1.0)
+        off_err, o2 = _estimate(offset[points], der[0][1][pts[0]], der[1][1][pts[1]], 1.0)
+        diss_err, o3 = _estimate(raw.dissipation[points], runs[0].dissipation[pts[0]],
+                                 runs[1].dissipation[pts[1]])
+        orders = {"stick_ratio": o1, "stick_offset": o2, "dissipation": o3}
+        scale = max(float(raw.dissipation[-1]), 1e-300)
+        resolved = ((np.nan_to_num(ratio_err, nan=0.0) <= max_error)
+                    & (diss_err <= max_error * scale) & raw.converged[points])
+        if not all(r.converged.all() for r in runs):
+            resolved &= False
+    else:
+        ratio_err = off_err = diss_err = np.full(load.size, np.nan)
+        orders = {}
+        resolved = np.zeros(load.size, dtype=bool)
+    segment = np.concatenate(([0], np.repeat(np.arange(1, load.size), steps)))
+    edges = raw.edges
+    return FrettingResult(
+        geometry=geometry, nu=float(nu), friction=k, n=int(n), steps=int(steps),
+        max_error=float(max_error), beta=ops.beta, p_max=ops.p_max, p0=ops.p0,
+        load_path=tuple(load.tolist()), tangential_path=tuple(tang.tolist()),
+        bulk_stress_path=tuple(sigma.tolist()), x=ops.mid, segment=segment,
+        load_ratio=raw.load / ops.p_max, force_ratio=raw.force / (k * ops.p_max),
+        bulk_stress=raw.strain / (ops.p0 * ops.strain_share), contact_edges=edges[:, :2],
+        stick_edges=edges[:, 2:], stick_ratio=ratio, stick_offset=offset,
+        approach=raw.delta, shift=raw.shift, dissipation=raw.dissipation,
+        external_work=raw.external_work, stored_energy=raw.stored_energy,
+        converged=raw.converged, pressure=raw.p / ops.p0, shear=raw.q / ops.p0,
+        state=raw.state, point_step=points, stick_ratio_error=ratio_err,
+        stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
+        cycles=_cycles(load, tang, sigma, raw.dissipation[points], diss_err), orders=orders)

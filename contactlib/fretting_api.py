@@ -239,16 +239,22 @@ def _estimate(fine: np.ndarray, coarse: np.ndarray, coarser: np.ndarray,
     return np.where(ok, err, np.where(np.isfinite(fine), np.inf, np.nan)), order
 
 
-def _cycles(load: np.ndarray, tang: np.ndarray, sigma: np.ndarray,
-            work: np.ndarray, error: np.ndarray) -> tuple[tuple[int, int, float, float], ...]:
+def _closed(load: np.ndarray, tang: np.ndarray, sigma: np.ndarray) -> list[tuple[int, int]]:
+    """(i, j): point j repeats point i (same P, Q, sigma), the latest such i, j - i >= 2."""
     out = []
     for j in range(1, load.size):
         for i in range(j - 1, 0, -1):
             if load[i] == load[j] and tang[i] == tang[j] and sigma[i] == sigma[j]:
                 if j - i >= 2:
-                    out.append((i, j, float(work[j] - work[i]), float(error[j] + error[i])))
+                    out.append((i, j))
                 break
-    return tuple(out)
+    return out
+
+
+def _cycles(load: np.ndarray, tang: np.ndarray, sigma: np.ndarray,
+            work: np.ndarray, error: np.ndarray) -> tuple[tuple[int, int, float, float], ...]:
+    return tuple((i, j, float(work[j] - work[i]), float(e))
+                 for (i, j), e in zip(_closed(load, tang, sigma), error))
 
 
 def check_input(geometry: str, friction: float, load_path: Sequence[float],
@@ -346,6 +352,12 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         diss_err, o3 = _estimate(raw.dissipation[points], runs[0].dissipation[pts[0]],
                                  runs[1].dissipation[pts[1]])
         orders = {"stick_ratio": o1, "stick_offset": o2, "dissipation": o3}
+        # a cycle's work from its own three values (the cumulative work's errors cancel
+        # in the difference: its endpoint estimates inflated it 400-fold)
+        works = [np.array([d[j] - d[i] for i, j in _closed(load, tang, sigma)])
+                 for d in (raw.dissipation[points], runs[0].dissipation[pts[0]],
+                           runs[1].dissipation[pts[1]])]
+        cycle_err = _estimate(*works)[0] if works[0].size else works[0]
         scale = max(float(raw.dissipation[-1]), 1e-300)
         resolved = ((np.nan_to_num(ratio_err, nan=0.0) <= max_error)
                     & (diss_err <= max_error * scale) & raw.converged[points])
@@ -353,6 +365,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
             resolved &= False
     else:
         ratio_err = off_err = diss_err = np.full(load.size, np.nan)
+        cycle_err = np.full(len(_closed(load, tang, sigma)), np.nan)
         orders = {}
         resolved = np.zeros(load.size, dtype=bool)
     segment = np.concatenate(([0], np.repeat(np.arange(1, load.size), steps)))
@@ -370,4 +383,4 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         converged=raw.converged, pressure=raw.p / ops.p0, shear=raw.q / ops.p0,
         state=raw.state, point_step=points, stick_ratio_error=ratio_err,
         stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
-        cycles=_cycles(load, tang, sigma, raw.dissipation[points], diss_err), orders=orders)
+        cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)

@@ -208,3 +208,12 @@ def test_command_line_refuses_with_one_line(tmp_path, capsys, extra, word):
     err = capsys.readouterr().err
     assert rc == 2
     assert word in err and len(err.strip().splitlines()) == 1
+
+
+def test_figure_draws_loops_and_the_closed_form():
+    from contactlib.plot.fretting import plot_cycles
+
+    runs = [fretting("cylinder", 0.5, K, CYCLE, _cycle(x), 8, n=32) for x in (0.3, 0.8)]
+    fig = plot_cycles(runs, K)
+    gids = [line.get_gid() for ax in fig.axes for line in ax.get_lines()]
+    assert gids.count("fretting-loop") == 2 and "mindlin-deresiewicz" in gids

@@ -253,9 +253,82 @@ def parse_stick_ratios(text: str, n: int) -> str | list[float]:
     return _check(validate.stick_ratios, text, _list(text), n, labels)
 
 
-def parse_load_path(text: str) -> list[float]:
+def parse_load_path(text: str | None) -> list[float]:
     """Comma-separated load levels P/P_max in [0, 1], starting at 0 (at least two)."""
+    if text is None:
+        raise UsageError("--load-path is required here (comma-separated load levels, e.g. "
+                         "0,1,0)")
     return list(_check(validate.load_path, text, _list(text)))
+
+
+_SHAPE_OPTIONS = ("amplitude", "mean", "frequency", "cycles", "ramp")
+
+
+def _path_source(args: argparse.Namespace) -> str:
+    """Which of ``--load-path``, ``--load-shape``, ``--load-table`` gives the path (one)."""
+    given = [opt for opt, value in (("--load-path", args.load_path),
+                                    ("--load-shape", args.load_shape),
+                                    ("--load-table", args.load_table)) if value is not None]
+    if len(given) != 1:
+        raise UsageError("give one of --load-path, --load-shape and --load-table"
+                         + (f", got {' and '.join(given)}" if given else ""))
+    stray = [f"--{key}" for key in _SHAPE_OPTIONS if getattr(args, key) is not None]
+    if given[0] != "--load-shape" and stray:
+        raise UsageError(f"{stray[0]} goes with --load-shape, got it with {given[0]}")
+    return given[0]
+
+
+def _shape_usage(exc: ValueError, source: str) -> UsageError:
+    """A shape's or table's input error, naming its option (``load_path.mean`` -> --mean;
+    ``load_path`` -> ``source``, --load-shape or --load-table)."""
+    text = str(exc)
+    name = getattr(exc, "name", "") or ""
+    key = name.split(".", 1)[1] if name.startswith("load_path.") else ""
+    option = ("--load-shape" if key == "shape" else f"--{key}" if key in _SHAPE_OPTIONS
+              else "--load-table" if key else "")
+    for prefix in filter(None, (name, "load_path")):
+        if text.startswith(prefix):
+            return UsageError((option or source) + text[len(prefix):])
+    return UsageError(text)
+
+
+def parse_history_path(args: argparse.Namespace, physical: bool) -> dict[str, Any]:
+    """The shape (``--load-shape`` and its options) or table (``--load-table``, read here)
+    of a history, as the mapping of :mod:`contactlib.load_paths` (levels) or of
+    :func:`contactlib.physical.force_shape` (forces, SI)."""
+    from contactlib import load_paths
+
+    if args.load_table is not None:
+        from contactlib import io
+
+        try:
+            spec: dict[str, Any] = io.read_load_table(args.load_table, physical=physical)
+        except ValueError as exc:
+            raise UsageError(f"--load-table: {exc}") from None
+    else:
+        missing = [f"--{key}" for key in ("amplitude", "mean", "cycles")
+                   if getattr(args, key) is None]
+        if missing:
+            raise UsageError(f"--load-shape needs --amplitude, --mean and --cycles, missing "
+                             f"{' and '.join(missing)}")
+        spec = {"shape": args.load_shape}
+        for key in _SHAPE_OPTIONS:
+            value = getattr(args, key)
+            if value is not None:
+                spec[key] = value if physical and key != "cycles" else _float(value)
+        if args.relaxation is not None and args.frequency is None:
+            raise UsageError("--frequency is required with --load-shape and --relaxation")
+    try:
+        if physical:
+            from contactlib.physical import force_shape
+
+            force_shape(spec)
+        else:
+            load_paths.load_path(spec)
+    except ValueError as exc:
+        raise _shape_usage(exc, "--load-shape" if args.load_table is None
+                           else "--load-table") from None
+    return spec
 
 
 def parse_steps(text: str) -> int:
@@ -449,13 +522,41 @@ def build_parser() -> argparse.ArgumentParser:
                            "unless the body is given physically with --body)")
     hist.add_argument("--friction", required=True, metavar="K",
                       help="friction coefficient k >= 0 (inf: no slip)")
-    hist.add_argument("--load-path", required=True, metavar="LIST",
+    hist.add_argument("--load-path", default=None, metavar="LIST",
                       help="comma-separated load levels P/P_max in [0, 1] starting at 0, "
                            "e.g. 0,1,0; or forces with a unit, e.g. 0N,100N,0N (a physical "
-                           "problem: needs --radius and --body)")
+                           "problem: needs --radius and --body). One of --load-path, "
+                           "--load-shape and --load-table is required")
+    hist.add_argument("--load-shape", default=None, metavar="{sinusoidal,haversine}",
+                      help="a periodic load path: sinusoidal, mean + amplitude sin(2 pi f t), "
+                           "or haversine, mean - amplitude cos(2 pi f t); with --amplitude, "
+                           "--mean, --cycles and (with --relaxation) --frequency; a ramp from "
+                           "0 precedes it if it starts above 0")
+    hist.add_argument("--amplitude", default=None, metavar="A",
+                      help="with --load-shape: the amplitude, a level (P/P_max) or a force "
+                           "with a unit (40N)")
+    hist.add_argument("--mean", default=None, metavar="M",
+                      help="with --load-shape: the mean, a level or a force with a unit; "
+                           "mean >= amplitude (no pull), mean + amplitude <= 1 as levels")
+    hist.add_argument("--frequency", default=None, metavar="F",
+                      help="with --load-shape: the frequency, in 1/(unit of tau), or in Hz "
+                           "(1Hz) for a physical problem; needed with --relaxation only (an "
+                           "elastic body's answer does not depend on it)")
+    hist.add_argument("--cycles", default=None, metavar="N",
+                      help="with --load-shape: the number of periods (> 0)")
+    hist.add_argument("--ramp", default=None, metavar="T",
+                      help="with --load-shape: duration of the ramp from 0 to the shape's "
+                           "start (unit of tau, or s); default a quarter period")
+    hist.add_argument("--load-table", default=None, metavar="FILE.csv",
+                      help="a load path sampled in time: a CSV file with a header "
+                           "'time,load' (levels, time in the unit of tau) or, for a "
+                           "physical problem, 'time,force' (s, N; or units in brackets, "
+                           "'time [ms],force [kN]'); linear between its rows, from load 0")
     hist.add_argument("--steps", default=None, metavar="N",
                       help="equal load steps per path segment (positive integer; required "
-                           "for a dimensionless path, default 200 for a path in newtons)")
+                           "for a dimensionless path, default 200 for a path in newtons); "
+                           "with --load-shape or --load-table: steps a load travel of "
+                           "P_max, each monotone piece getting its share (a multiple of 4)")
     hist.add_argument("--n", metavar="N", default=None,
                       help="elements over 1.2 a_max (integer; library default if omitted)")
     _profile_options(hist)
@@ -549,11 +650,13 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     """Checked keyword arguments of :func:`contactlib.history`."""
     geometry = _check(validate.geometry, args.geometry, args.geometry)
     base = parse_base(args.base)
+    shaped = _path_source(args) != "--load-path"
     kwargs = {
         "geometry": geometry,
         "nu": parse_nu(_required(args.nu, "--nu")),
         "friction": parse_friction(args.friction),
-        "load_path": parse_load_path(args.load_path),
+        "load_path": (parse_history_path(args, physical=False) if shaped
+                      else parse_load_path(args.load_path)),
         "steps": parse_steps(_required(args.steps, "--steps")),
         "n": None if args.n is None else parse_history_n(args.n),
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base,
@@ -563,7 +666,12 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # as for solve/sweep: keywords only when elastic
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
-    if args.relaxation is not None or args.duration is not None:  # a viscoelastic body
+    if shaped and args.duration is not None:
+        raise UsageError("--duration is not used with --load-shape or --load-table: the "
+                         f"path gives its times, got --duration {args.duration!r}")
+    if shaped and args.relaxation is not None:  # the shape's or table's own times
+        kwargs["relaxation"] = [list(p) for p in parse_relaxation(args.relaxation)]
+    elif args.relaxation is not None or args.duration is not None:  # a viscoelastic body
         kwargs.update(parse_viscoelastic(args.relaxation, args.duration,
                                          len(kwargs["load_path"]) - 1))
         if ratio != float("inf"):
@@ -674,7 +782,10 @@ def is_physical(args: argparse.Namespace) -> bool:
     """True when any physical option is given, or a history's load path has units."""
     if any(getattr(args, name, None) is not None for name in _PHYSICAL):
         return True
-    return args.command == "history" and _path_has_units(args.load_path)
+    if args.command != "history":
+        return False
+    return any(text is not None and _path_has_units(text)
+               for text in (args.load_path, args.amplitude, args.mean))
 
 
 def _physical_check(rule: Callable[..., Any], *args: Any) -> Any:
@@ -736,14 +847,18 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
         else:
             kwargs["friction"] = parse_friction(args.friction)
         return kwargs
-    if not _path_has_units(args.load_path):
+    shaped = _path_source(args) != "--load-path"
+    if shaped:
+        forces: Any = parse_history_path(args, physical=True)
+    elif not _path_has_units(args.load_path):
         raise UsageError(f"--load-path must be forces with a unit (0N,100N,0N) with physical "
                          f"units, got {args.load_path!r}")
-    if any(not _path_has_units(item) and item.strip() not in ("0",)
-           for item in args.load_path.split(",")):
+    elif any(not _path_has_units(item) and item.strip() not in ("0",)
+             for item in args.load_path.split(",")):
         raise UsageError(f"--load-path must give every force with its unit (0N,100N,0N), "
                          f"got {args.load_path!r}")
-    forces = _physical_check(physical.parse_force_path, args.load_path)
+    else:
+        forces = _physical_check(physical.parse_force_path, args.load_path)
     kwargs.update(load_path=forces, friction=parse_friction(args.friction),
                   steps=parse_steps(args.steps) if args.steps is not None
                   else physical.DEFAULT_HISTORY_STEPS,
@@ -751,7 +866,10 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     if args.duration is not None:
         raise UsageError(f"--duration is not used with physical units: give --times (s), got "
                          f"--duration {args.duration!r}")
-    if (args.relaxation is None) != (args.times is None):
+    if shaped and args.times is not None:
+        raise UsageError("--times is not used with --load-shape or --load-table: the path "
+                         f"gives its times, got --times {args.times!r}")
+    if not shaped and (args.relaxation is None) != (args.times is None):
         missing = "--times" if args.times is None else "--relaxation"
         raise UsageError(f"--relaxation and --times go together with physical units: "
                          f"{missing} is missing")
@@ -766,6 +884,9 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
                                   "relaxation")
             pairs.append([_float(parts[0]), tau])
         kwargs["relaxation"] = _check(validate.relaxation, args.relaxation, pairs)
+        if shaped:
+            return kwargs
+
         def when(text: str) -> float:
             return physical.parse_quantity(text.strip(), "time", "times", positive=False)
 
@@ -967,7 +1088,11 @@ def format_history(res: Any) -> str:
     ind = _indenter(res.geometry)
     work_scale = f"V R^2/(E* a_max^{ind.work_exponent})"
     head = (f"{res.geometry}, nu = {res.nu:.10g}, k = {_g(res.friction)}, n = {res.n}, "
-            f"{res.steps} steps per segment")
+            f"{res.steps} steps per "
+            f"{'load travel of P_max' if getattr(res, 'segment_steps', ()) else 'segment'}")
+    if getattr(res, "load_shape", None):  # a shape or table (contactlib.load_paths)
+        head += ", path " + ", ".join(f"{k} {_g(v) if not isinstance(v, str) else v}"
+                                      for k, v in res.load_shape.items())
     if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d
         power = 2.0 * res.exponent + (1.0 if res.geometry == "sphere" else 0.0)
         work_scale = f"V/(E* (A d)^2 a_max^{power:g}), h = A r^d"

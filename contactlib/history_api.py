@@ -80,7 +80,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from . import history_solver as hs
-from . import profiles, validate
+from . import load_paths, profiles, validate
 from .model import Contact, contact
 from .result import history_repr
 from .threads import blas_single_threaded
@@ -179,6 +179,16 @@ class HistoryResult:
     profile, exponent : str, float
         The indenter's shape h ~ r^d (``"paraboloid"``, 2 by default; see
         :func:`history`).
+    segment_steps : tuple of int
+        For a shape or table (:mod:`contactlib.load_paths`): the steps of each
+        segment, a monotone piece of the path (``steps`` is then the steps a
+        unit of load travel); () for a list path (``steps`` each).
+    load_shape : dict or None
+        The shape's keys (or ``{"shape": "table", "points": m}``); None for a
+        list path. ``load_path`` then holds the levels at the pieces' ends.
+    interpolation_error : float
+        Largest deviation of a shape from the straight lines between its steps
+        (units of P_max; 0 for an elastic body, whose steps are the shape itself).
 
     Examples
     --------
@@ -234,17 +244,22 @@ class HistoryResult:
     resolved_quantities: dict[str, bool] | None = None
     profile: str = "paraboloid"  # the indenter's shape h ~ r^d (contactlib.profiles)
     exponent: float = 2.0
+    segment_steps: tuple[int, ...] = ()  # steps of each segment of a shape or table; ()
+    load_shape: dict | None = None  # the shape or table (contactlib.load_paths); None: list
+    interpolation_error: float = 0.0  # of a shape between the steps (units of P_max)
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
 
     def segment_work(self) -> np.ndarray:
         """Frictional work done during each path segment (scaled as ``frictional_work``)."""
-        ends = np.concatenate([[0], np.arange(1, len(self.load_path)) * self.steps])
+        ends = [self.segment_end(i) for i in range(len(self.load_path))]
         return np.diff(self.frictional_work[ends])
 
     def segment_end(self, segment: int) -> int:
-        """Step index at the end of path segment ``segment`` (1-based)."""
+        """Step index at the end of path segment ``segment`` (1-based; 0: the start)."""
+        if self.segment_steps:  # a shape or table: each segment its own steps
+            return int(sum(self.segment_steps[:segment]))
         return int(segment * self.steps)
 
 
@@ -373,11 +388,21 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         Poisson's ratio, in (-1, 0.5].
     friction : float
         Coulomb coefficient k >= 0; ``inf`` forbids slip.
-    load_path : sequence of float
+    load_path : sequence of float, or mapping
         Load levels P / P_max in [0, 1], starting at 0 (the body starts
-        unloaded), e.g. ``[0, 1, 0]`` for a load-unload cycle.
+        unloaded), e.g. ``[0, 1, 0]`` for a load-unload cycle, linear in
+        between. Or a named periodic shape, ``{"shape": "sinusoidal" |
+        "haversine", "amplitude": A, "mean": M, "frequency": f, "cycles": N}``
+        (levels; f in 1 / unit of tau, needed with a relaxation only), or a
+        sampled table ``{"time": [...], "load": [...]}`` (time in the unit of
+        tau); see :mod:`contactlib.load_paths`. A shape or table is cut into
+        monotone pieces, the path segments, and its durations come from its
+        times (``duration`` is then not given).
     steps : int
-        Equal load steps per path segment (>= 1; 1 gives the one-step load).
+        Equal load steps per path segment of a list (>= 1; 1 gives the
+        one-step load). For a shape or table: steps a unit of load travel,
+        each piece getting the steps its load change needs (a multiple of 4,
+        at least ``min(steps, 40)``; :func:`contactlib.load_paths.plan`).
     n : int, optional
         Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200);
         with a relaxation over ``[0, 1.2 a_inf]``, a_inf the fully crept
@@ -408,9 +433,11 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         tau_i > 0, with a constant Poisson's ratio. E* (so a_max, P_max and
         p0) is the instantaneous one, E*(0). Needs a rigid indenter.
     duration : float or sequence of float
-        With a relaxation (required then, refused otherwise): the duration of
-        the path (its segments equally long) or of each segment, in the
-        unit of tau.
+        With a relaxation and a list path (required then, refused otherwise):
+        the duration of the path (its segments equally long) or of each
+        segment, in the unit of tau. Any unit will do if the relaxation
+        times are in the same one (seconds with tau in seconds): only their
+        ratios enter.
     base : {"smooth", "bonded"}
         The layer's rigid base (default smooth).
     profile : {"paraboloid", "cone", "power"}
@@ -495,7 +522,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     geometry = validate.geometry(geometry)
     nu = validate.nu(nu)
     k = validate.friction(friction)
-    levels_in = validate.load_path(load_path)
+    shaped = load_paths.is_shaped(load_path)
+    path = load_paths.load_path(load_path) if shaped else None
+    levels_in = () if shaped else validate.load_path(load_path)
     steps = validate.steps(steps)
     n = validate.history_n(n)
     base = validate.base(base)
@@ -505,7 +534,12 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     error_estimate = validate.flag("error_estimate", error_estimate)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
     prony = validate.relaxation(relaxation)
-    durations = validate.duration(duration, len(levels_in) - 1, bool(prony))
+    if shaped:
+        step_plan = _shaped_plan(path, steps, prony, duration, max_error)
+        levels_in = step_plan.knots
+        durations = step_plan.durations if prony else ()
+    else:
+        durations = validate.duration(duration, len(levels_in) - 1, bool(prony))
     if prony and ratio != math.inf:
         raise validate.InputError("relaxation", "given with a rigid indenter", relaxation,
                                   "relaxation needs a rigid indenter (an elastic indenter's "
@@ -515,19 +549,36 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape)
     extent = creep_extent(model)
     ops = hs.build_operators(model, n, extent)
-    levels, segment = load_levels(levels_in, steps)
+    if shaped:
+        levels, times, segment = load_paths.sample(path, step_plan, bool(prony))
+    else:
+        levels, segment = load_levels(levels_in, steps)
+        times = step_times(durations, steps) if prony else None
 
     def times_of(n_steps: int) -> np.ndarray | None:
         return step_times(durations, n_steps) if prony else None
 
-    raw = hs.run_history(ops, k, levels, progress=progress, times=times_of(steps))
+    raw = hs.run_history(ops, k, levels, progress=progress, times=times)
     err_c = np.full(levels.size, np.nan)
     err_w = np.full(levels.size, np.nan)
     err_e = np.full(levels.size, np.nan)
     energy_scale = float(np.max(np.abs(raw.external_work)))  # NaN if any step's is
     work_scale = max(float(np.max(raw.work)), WORK_FLOOR * energy_scale)
     energies = ("external_work", "stored_energy") + (("viscous_work",) if prony else ())
-    if error_estimate:
+    if error_estimate and shaped:  # the step points of runs A and C: every 2nd and 4th
+        n_c = max(n // 2, 8)
+        lv_c, t_c, segment_c = load_paths.sample(path, step_plan, bool(prony), 2)
+        raw_c = hs.run_history(hs.build_operators(model, n_c, extent), k, lv_c, times=t_c)
+        coarser = (None, None, None)
+        if min(step_plan.counts) >= _MIN_ORDER_STEPS:
+            lv_b, t_b, segment_b = load_paths.sample(path, step_plan, bool(prony), 4)
+            ops_b = hs.build_operators(model, max(n_c // 2, 8), extent)
+            coarser = (hs.run_history(ops_b, k, lv_b, times=t_b), 1, segment_b)
+        # the path coordinate in units of four steps: the pieces' counts are multiples of
+        # 4, so runs A and C (2 and 1 steps a unit) meet the run's steps as with a list
+        err_c, diffs, orders = hs.error_estimates(raw, ops, 4, segment, raw_c, 2, segment_c,
+                                                  *coarser, energies=energies)
+    elif error_estimate:
         n_c = max(n // 2, 8)
         steps_c = steps // 2 if steps >= 4 else steps
         levels_c, segment_c = load_levels(levels_in, steps_c)
@@ -542,6 +593,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
                        segment_b)
         err_c, diffs, orders = hs.error_estimates(raw, ops, steps, segment, raw_c, steps_c,
                                                   segment_c, *coarser, energies=energies)
+    if error_estimate:
         err_w = _relative(diffs["work"], work_scale)
         err_e = np.max([_relative(diffs[name], energy_scale) for name in energies], axis=0)
     annulus = hs.annulus_resolved(k, raw.state)
@@ -608,8 +660,13 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             if 0 < slipping < _MIN_SLIP_ELEMENTS:  # the slip zone's elements grow like n
                 needs["slip_zone"] = (_MIN_SLIP_ELEMENTS / slipping, 1.0)
             advice = _advice(n, steps, needs, max_error)
+            if shaped:  # a shape's steps count a unit of load travel
+                advice = advice.replace("steps a segment", "steps a unit of load travel")
         notes.append(f"{np.count_nonzero(~resolved[1:])}/{levels.size - 1} steps flagged "
                      f"({', '.join(why)})" + (f"; {advice}" if advice else ""))
+    if shaped and step_plan.interpolation_error > max_error:
+        notes.append(f"the shape deviates from the straight lines between its steps by up "
+                     f"to {step_plan.interpolation_error:.2g} of P_max (more than max_error)")
     if model.decoupled and k > 0:
         cause = "nu = 0.5" if model.indenter.rigid else "beta = 0"
         notes.append(f"{cause}: the normal and tangential problems decouple; no shear arises")
@@ -630,4 +687,19 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         dundurs_beta=float(model.beta), relaxation=prony, durations=durations,
         mesh_extent=float(extent), time=raw.time, external_work=raw.external_work,
         stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base,
-        profile=shape.name, exponent=float(shape.exponent))
+        profile=shape.name, exponent=float(shape.exponent),
+        segment_steps=step_plan.counts if shaped else (),
+        load_shape=path.describe() if shaped else None,
+        interpolation_error=step_plan.interpolation_error if shaped else 0.0)
+
+
+def _shaped_plan(path: load_paths.Path, steps: int, prony: tuple, duration: object,
+                 max_error: float) -> load_paths.StepPlan:
+    """The pieces and steps of a shape or table (:func:`contactlib.load_paths.plan`)."""
+    if duration is not None:
+        raise validate.InputError("duration", "", duration, "duration must not be given with "
+                                  "a shape or table: its times give the durations")
+    if prony and isinstance(path, load_paths.LoadShape) and path.frequency is None:
+        raise validate.InputError("load_path.frequency", "", None, "load_path.frequency is "
+                                  "required with a relaxation (1 / unit of tau)")
+    return load_paths.plan(path, steps, bool(prony), max_error)

@@ -629,6 +629,14 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "load_path": np.asarray(r.load_path, dtype=float),
         "steps": int(r.steps),
     }
+    if getattr(r, "segment_steps", ()):  # a shape or table (contactlib.load_paths)
+        attrs["segment_steps"] = np.asarray(r.segment_steps, dtype=np.int32)
+        attrs["steps_meaning"] = ("steps a unit of load travel (P_max); segment_steps: the "
+                                  "steps of each segment, a monotone piece of the path, "
+                                  "whose ends load_path gives")
+        for key, value in (r.load_shape or {}).items():
+            attrs[f"load_path_{key}"] = value
+        attrs["load_path_interpolation_error"] = float(r.interpolation_error)
     attrs.update(_layer_attrs(ind, r))
     if getattr(r, "profile", "paraboloid") != "paraboloid":  # as the self-similar datasets
         attrs["profile"] = str(r.profile)
@@ -1770,6 +1778,99 @@ def check_yaml(path: str | os.PathLike[str]) -> Any:
     except yaml.YAMLError as exc:
         raise ValueError(f"{name}: YAML syntax error: "
                          f"{' '.join(str(exc).split())}") from None
+
+
+_TABLE_COLUMNS = ("load", "force")
+
+
+def read_load_table(path: str | os.PathLike[str], *, physical: bool = False
+                    ) -> dict[str, list[float]]:
+    """A load path sampled in time, from a CSV file (:mod:`contactlib.load_paths`).
+
+    The file has a header row naming two columns, ``time`` first, then
+    ``load`` (levels P/P_max, time in the unit of tau) or ``force`` (with
+    ``physical``: N, time in s). A physical column may name its unit in
+    brackets, ``time [ms]``, ``force [kN]`` (:data:`contactlib.physical.UNITS`).
+    Lines starting with ``#`` and blank lines are skipped.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The CSV file.
+    physical : bool
+        Whether the path is in SI (a ``force`` column) or levels (``load``).
+
+    Returns
+    -------
+    dict
+        ``{"time": [...], "load" or "force": [...]}`` in the file's order, in
+        the unit of tau and levels, or in s and N. The values are checked
+        further by :func:`contactlib.load_paths.load_path` (or
+        :func:`contactlib.physical.physical_history`).
+
+    Raises
+    ------
+    ValueError
+        One line naming the file (and line): missing, a folder, unreadable,
+        not UTF-8, no header, other columns, a unit unknown for the column,
+        a row without exactly two cells, a cell that is not a finite number,
+        or fewer than two rows.
+    """
+    import csv
+
+    from contactlib.physical import UNITS
+
+    name = os.fspath(path)
+    try:
+        if stat.S_ISDIR(os.stat(path).st_mode):
+            raise ValueError(f"{name}: is a folder, not a CSV file")
+        text = Path(path).read_text(encoding="utf-8-sig")
+    except FileNotFoundError:
+        raise ValueError(f"{name}: no such file") from None
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{name}: not UTF-8 text (byte {exc.start + 1})") from None
+    except OSError as exc:
+        reason = (exc.strerror or type(exc).__name__).lower()
+        raise ValueError(f"{name}: cannot be read: {reason}") from None
+    rows = [(i, row) for i, row in enumerate(csv.reader(text.splitlines()), start=1)
+            if row and any(c.strip() for c in row) and not row[0].lstrip().startswith("#")]
+    want = "force" if physical else "load"
+    header = f"a header 'time,{want}'" + (" (units in brackets allowed: 'time [s],force "
+                                          "[N]')" if physical else "")
+    if not rows:
+        raise ValueError(f"{name}: empty: expected {header} and rows of numbers")
+    line, head = rows[0]
+    factors = []
+    for cell, column, kind in zip(head, ("time", want), ("time", "force")):
+        label, _, unit = cell.strip().partition("[")
+        label, unit = label.strip().lower(), unit.rstrip("] ").strip()
+        if label != column or (unit and not physical):
+            raise ValueError(f"{name}, line {line}: expected {header}, got "
+                             f"{','.join(c.strip() for c in head)!r}")
+        if unit and unit not in UNITS[kind]:
+            raise ValueError(f"{name}, line {line}: unknown unit {unit!r} of {column} "
+                             f"(one of {', '.join(u for u in UNITS[kind] if u.isascii())})")
+        factors.append(UNITS[kind][unit] if unit else 1.0)
+    if len(head) != 2:
+        raise ValueError(f"{name}, line {line}: expected {header}, got {len(head)} columns")
+    cols: tuple[list[float], list[float]] = ([], [])
+    for line, row in rows[1:]:
+        if len(row) != 2:
+            raise ValueError(f"{name}, line {line}: expected two cells (time,{want}), got "
+                             f"{len(row)}: {','.join(row)!r}")
+        for cell, col, factor in zip(row, cols, factors):
+            try:
+                value = float(cell)
+            except ValueError:
+                raise ValueError(f"{name}, line {line}: {cell.strip()!r} is not a number"
+                                 ) from None
+            if not math.isfinite(value):
+                raise ValueError(f"{name}, line {line}: {cell.strip()!r} is not finite")
+            col.append(value * factor)
+    if len(cols[0]) < 2:
+        raise ValueError(f"{name}: needs at least two rows of numbers (a start and an end), "
+                         f"got {len(cols[0])}")
+    return {"time": cols[0], want: cols[1]}
 
 
 _FIGURE_METADATA: dict[str, dict[str, None]] = {

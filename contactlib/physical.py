@@ -92,10 +92,12 @@ UNITS: dict[str, dict[str, float]] = {
     "modulus": {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9},
     "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "μs": 1e-6, "min": 60.0,
              "h": 3600.0},
+    "frequency": {"Hz": 1.0, "kHz": 1e3, "mHz": 1e-3},
 }
-"""Unit suffixes accepted for each kind of quantity, with their factor to SI (m, N, Pa, s)."""
+"""Unit suffixes accepted for each kind of quantity, with their factor to SI (m, N, Pa, s,
+Hz)."""
 
-_SI = {"length": "m", "force": "N", "modulus": "Pa", "time": "s"}
+_SI = {"length": "m", "force": "N", "modulus": "Pa", "time": "s", "frequency": "Hz"}
 _QUANTITY = re.compile(r"^\s*([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)"
                        r"\s*([A-Za-zµμ]*)\s*$")
 
@@ -113,7 +115,7 @@ def parse_quantity(value: Any, kind: str, name: str, *, positive: bool = True) -
     value : float or str
         ``0.005``, ``"5mm"``, ``"5 mm"``, ``"210GPa"``, ``"100N"``, ``"2um"``.
         A string without a unit is taken in SI (m, N, Pa, s).
-    kind : {"length", "force", "modulus", "time"}
+    kind : {"length", "force", "modulus", "time", "frequency"}
         Which units apply (:data:`UNITS`).
     name : str
         The argument's name, for the error.
@@ -778,7 +780,8 @@ class PhysicalHistory(_Setup):
                  f"  E* = {format_si(self.composite_modulus, 'Pa')}, k = {self.friction:g}, "
                  f"a_max = {format_si(self.a_max, 'm')} (Hertz at "
                  f"{format_si(self.max_load, 'N')}), p0(a_max) = {format_si(self.p0, 'Pa')}, "
-                 f"n = {res.n}, {res.steps} steps a segment",
+                 f"n = {res.n}, {res.steps} steps a "
+                 f"{'load travel of P_max' if res.segment_steps else 'segment'}",
                  f"  {'point':>5} {'P':>10} {'a':>11} {'c':>11} {'p_max':>11} "
                  f"{'P/P_H(a)':>9} {'E_friction':>11}"]
         for i in range(len(self.load_path)):
@@ -818,6 +821,68 @@ class PhysicalHistory(_Setup):
         return "PhysicalHistory:\n" + self.summary()
 
 
+def force_shape(spec: Any, name: str = "load_path") -> tuple[Any, float, float]:
+    """A shape or table of forces as levels: ``(level spec, P_max [N], start time [s])``.
+
+    ``spec`` is a shape with ``amplitude`` and ``mean`` in N (or with a unit),
+    ``frequency`` in Hz and ``ramp`` in s (or with units), or a table
+    ``{"time": [s], "force": [N]}``; the levels are forces over P_max (the
+    shape's mean + amplitude, the table's largest force), the times shifted
+    to start at 0 (the start returned). Checked further by
+    :func:`contactlib.load_paths.load_path`.
+
+    Raises
+    ------
+    validate.InputError
+        Naming the bad key.
+    """
+    from . import load_paths
+
+    if not isinstance(spec, dict):
+        spec = dict(spec)
+    if "shape" in spec:
+        out = dict(spec)
+        for key in ("amplitude", "mean"):
+            if key in spec:
+                out[key] = parse_quantity(spec[key], "force", f"{name}.{key}",
+                                          positive=key == "amplitude")
+        if spec.get("frequency") is not None:
+            out["frequency"] = parse_quantity(spec["frequency"], "frequency",
+                                              f"{name}.frequency")
+        if spec.get("ramp") is not None:
+            out["ramp"] = parse_quantity(spec["ramp"], "time", f"{name}.ramp")
+        if "amplitude" in out and "mean" in out:
+            p_max = out["amplitude"] + out["mean"]
+            out["amplitude"] /= p_max
+            out["mean"] /= p_max
+        else:
+            p_max = 1.0
+        load_paths.load_path(out, name)  # every key checked, in the levels
+        return out, p_max, 0.0
+    if set(spec) != {"time", "force"}:
+        raise validate.InputError(name, "", spec, f"{name} must be a shape (with a 'shape' "
+                                  f"key: {', '.join(load_paths.SHAPES)}) or a table with "
+                                  f"exactly the keys time [s] and force [N], got keys "
+                                  f"{', '.join(map(str, spec))}")
+    cols = {}
+    for key, kind in (("time", "time"), ("force", "force")):
+        col = spec[key]
+        if not validate._sequence(col):
+            raise validate.InputError(f"{name}.{key}", "a sequence", col)
+        cols[key] = [parse_quantity(v, kind, f"{name}.{key}", positive=False)
+                     if not (kind == "time" and isinstance(v, (int, float)) and not
+                             isinstance(v, bool) and math.isfinite(v)) else float(v)
+                     for v in col]
+    if not cols["force"] or max(cols["force"]) <= 0.0:
+        raise validate.InputError(f"{name}.force", "", cols["force"], f"{name}.force never "
+                                  "rises above 0 (no contact to follow)")
+    p_max = max(cols["force"])
+    t0 = cols["time"][0] if cols["time"] else 0.0
+    out = {"time": [t - t0 for t in cols["time"]], "load": [f / p_max for f in cols["force"]]}
+    load_paths.load_path(out, name)
+    return out, p_max, float(t0)
+
+
 def path_cycles(forces: Sequence[float]) -> list[tuple[int, int]]:
     """(start, end) path points of each cycle: a cycle ends where the force, having
     decreased, increases next, or at the end of the path."""
@@ -842,9 +907,16 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     ----------
     geometry, radius, indenter, body, length, thickness, base
         As for :func:`physical_solve` (the layer's a_max/h with a_max below).
-    load_path : sequence or str
+    load_path : sequence, str or mapping
         Forces [N] (numbers, or strings with units), or ``"0N,100N,0N"``;
-        starting at 0. The largest is P_max, load level 1.
+        starting at 0. The largest is P_max, load level 1. Or a shape
+        ``{"shape": "sinusoidal" | "haversine", "amplitude": N, "mean": N,
+        "frequency": Hz, "cycles": number}`` (optionally ``"ramp"``, s; P_max =
+        mean + amplitude), or a table ``{"time": [s, ...], "force": [N, ...]}``
+        (P_max its largest force); numbers in SI or strings with units. The
+        steps and pieces are those of :mod:`contactlib.load_paths`: ``steps``
+        then counts steps a load travel of P_max, and a viscoelastic body's
+        times are the shape's (``times`` is not given).
     friction : float
         Coulomb's k (``inf``: no slip).
     times : sequence, optional
@@ -854,7 +926,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         A viscoelastic body: the Prony series of :func:`contactlib.history`,
         tau in s (or with a unit); ``body`` then gives E(0) and nu.
     steps : int
-        Load steps a segment (default 200).
+        Load steps a segment (default 200); a load travel of P_max for a shape or table.
     n, max_error, error_estimate, progress
         Passed to :func:`contactlib.history`.
 
@@ -877,16 +949,26 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     """
     from . import history_api
 
+    from . import load_paths
+
     prob = _problem(geometry, radius, indenter, body, length, thickness, base)
-    forces = parse_force_path(load_path)
-    p_max = max(forces)
-    levels = [f / p_max for f in forces]
+    shaped = load_paths.is_shaped(load_path)
+    if shaped:
+        if times is not None:
+            raise validate.InputError("times", "", times, "times must not be given with a "
+                                      "shape or table: the path gives its own times")
+        levels, p_max, t_start = force_shape(load_path)
+        forces: tuple[float, ...] = ()
+    else:
+        forces = parse_force_path(load_path)
+        p_max = max(forces)
+        levels = [f / p_max for f in forces]
     g = prob.geometry
     kwargs: dict[str, Any] = dict(prob.dimensionless(), n=n, max_error=max_error,
                                   error_estimate=error_estimate, progress=progress)
     t_points = None
     if relaxation is not None:
-        prony = []
+        prony: list[Any] = []
         req = "a list of pairs (g, tau) with tau in s or with a unit"
         for item in relaxation:
             if isinstance(item, (str, bytes)) or not hasattr(item, "__iter__") or \
@@ -895,7 +977,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
             weight, tau = list(item)
             prony.append([weight, parse_quantity(tau, "time", "relaxation")])
         kwargs["relaxation"] = prony
-        if times is None:
+        if times is None and not shaped:
             raise validate.InputError("times", "given with a relaxation (the time of each "
                                       "path point, in s)", times)
     if times is not None:
@@ -913,6 +995,10 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     slab = 0.0 if prob.thickness == math.inf else a_max / prob.thickness
     res = history_api.history(g, prob.body.nu, friction, levels, steps, slab_ratio=slab,
                               **kwargs)
+    if shaped:  # the path's levels at the ends of its pieces, and their times
+        forces = tuple(float(v) * p_max for v in res.load_path)
+        if res.durations:
+            t_points = t_start + np.concatenate([[0.0], np.cumsum(res.durations)])
     p0 = hertz_peak_pressure(g, prob.e_star, prob.radius, a_max)
     w_unit = work_scale(g, prob.e_star, prob.radius, a_max) * prob.per_length
     a = np.asarray(res.contact_radius) * a_max

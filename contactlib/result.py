@@ -125,7 +125,9 @@ def history_repr(res: Any) -> str:
                 f"{_scalar(res.contact_radius[j])}, stick_ratio {_scalar(res.stick_ratio[j])}")
 
     items: list[tuple[str, Any]] = [
-        ("load_path", f"{path} ({res.steps} steps a segment, {steps} in all)"),
+        ("load_path", f"{path} ({res.steps} steps a "
+                      f"{'load travel of P_max' if getattr(res, 'segment_steps', ()) else 'segment'}"
+                      f", {steps} in all)"),
         ("top load", state(int(np.argmax(res.load_ratio)))),
         ("end", state(steps)),
         ("frictional_work", "at the end (cumulative): " + _with_error(

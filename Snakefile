@@ -46,6 +46,7 @@ include: "workflow/rules/convergence.smk"
 include: "workflow/rules/materials.smk"
 include: "workflow/rules/viscoelastic.smk"
 include: "workflow/rules/layers.smk"
+include: "workflow/rules/fretting.smk"
 
 
 rule all:

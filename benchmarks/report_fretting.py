@@ -26,7 +26,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from contactlib import fretting, history  # noqa: E402
-from contactlib.fretting_api import cylinder_cycle_work  # noqa: E402
+from contactlib.theory import cylinder_cycle_work  # noqa: E402
 
 K = 0.3
 PATH = [0, 1, 1, 1, 1, 1]
@@ -44,12 +44,10 @@ def main() -> None:
     print("1. beta = 0: cycle work W against Mindlin-Deresiewicz (cylinder), c/a against "
           "Cattaneo")
     print("  Q*/kP   W/W_MD - 1   estimate/W_MD   c/a - sqrt(1 - x)   its estimate")
-    results = {}
     for x in xs:
         r = fretting("cylinder", 0.5, K, PATH, _cycle(x), 40)
         exact = float(cylinder_cycle_work(x, K, r.p_max, r.p0))
         i, j, w, est = r.cycles[-1]
-        results[x] = r
         print(f"  {x:5.2f}  {w / exact - 1:+.2e}     {est / exact:.2e}       "
               f"{r.stick_ratio[r.point_step[2]] - np.sqrt(1 - x):+.2e}         "
               f"{r.stick_ratio_error[2]:.1e}")
@@ -73,13 +71,12 @@ def main() -> None:
     print(f"  fretting load + 2 cycles (n = 120, 40 steps, estimates): {t_fret:.2f} s, "
           f"ratio {t_fret / t_hist:.2f}")
     if args.figure:
-        from contactlib.plot.fretting import plot_cycles
+        from contactlib import io, plot
+        from contactlib.fretting_api import amplitude_study
 
-        from contactlib import io
-
-        io.write_figure(plot_cycles([results[x] for x in (0.25, 0.5, 0.9)], K), args.figure)
+        ds = io.fretting_study_to_dataset(amplitude_study())
+        io.write_figure(plot.fig_fretting(ds), args.figure, style=plot.style_path())
         print(f"wrote {args.figure}")
-
 
 if __name__ == "__main__":
     main()

@@ -34,9 +34,10 @@ from . import fretting_solver as fr
 from .history_solver import ORDER_MAX, measured_order
 from .model import contact
 from .profiles import profile as make_profile
+from .theory import cylinder_cycle_work
 from .validate import DEFAULT_MAX_ERROR
 
-__all__ = ["FrettingResult", "fretting", "check_input", "DEFAULT_N", "DEFAULT_STEPS", "cylinder_cycle_work"]
+__all__ = ["FrettingResult", "fretting", "check_input", "amplitude_study", "STUDY_AMPLITUDES", "DEFAULT_N", "DEFAULT_STEPS", "cylinder_cycle_work"]
 
 DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
 DEFAULT_STEPS = 40  # equal steps a path segment
@@ -112,41 +113,6 @@ class FrettingResult:
     def all_resolved(self) -> bool:
         """Every path point converged and resolved within ``max_error``."""
         return bool(np.all(self.resolved) and np.all(self.converged))
-
-
-def cylinder_cycle_work(x: np.ndarray | float, friction: float, load: float, p0: float
-                        ) -> np.ndarray:
-    r"""Frictional work of one tangential cycle between +-Q* of the cylinder (beta = 0).
-
-    Cattaneo–Mindlin for plane strain with Masing's rule (Mindlin–Deresiewicz):
-    the shift at the stick zone's centre is ``s = k p0 [L x + g(x)]`` with
-    ``g(x) = (1 - x) ln(1 - x)/2`` and x = Q/(kP) (a = 1, E* = 1; the linear
-    term L is the half-plane's datum and encloses no area), so
-
-    .. math:: W = 4 k^2 p_0 P\,[x g(x) - 2 G(x)],\qquad
-              G(x) = \int_0^x g = \tfrac12\left[\tfrac{(1-x)^2}{4}
-              - \tfrac{(1-x)^2}{2}\ln(1-x) - \tfrac14\right].
-
-    Parameters
-    ----------
-    x : float or ndarray
-        Q*/(k P), in [0, 1].
-    friction, load, p0 : float
-        k, P (per unit length) and the Hertz peak pressure at the contact
-        half-width (units E* = R = a = 1: P = pi/4, p0 = 1/2).
-
-    Returns
-    -------
-    ndarray
-        W per unit length (units E* a^4/R^2); ``~ k^2 p0 P x^3/3`` for small x.
-    """
-    x = np.asarray(x, dtype=float)
-    one = 1.0 - x
-    with np.errstate(divide="ignore", invalid="ignore"):
-        log = np.where(one > 0.0, np.log(np.where(one > 0.0, one, 1.0)), 0.0)
-    g = 0.5 * one * log
-    big_g = 0.5 * (0.25 * one**2 - 0.5 * one**2 * log - 0.25)
-    return 4.0 * friction**2 * p0 * load * (x * g - 2.0 * big_g)
 
 
 def _path(name: str, values: Sequence[float] | None, size: int | None) -> np.ndarray:
@@ -384,3 +350,49 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         state=raw.state, point_step=points, stick_ratio_error=ratio_err,
         stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)
+
+
+STUDY_AMPLITUDES = (0.1, 0.25, 0.5, 0.75, 0.9)
+
+
+def amplitude_study(nus: Sequence[float] = (0.5, 0.3), friction: float = 0.3,
+                    amplitudes: Sequence[float] = STUDY_AMPLITUDES, cycles: int = 3,
+                    steps: int = DEFAULT_STEPS, n: int = DEFAULT_N,
+                    progress: Callable[[int, int], None] | None = None
+                    ) -> list[FrettingResult]:
+    """Tangential cycles between +-Q* at constant P = P_max for several Q*/kP (rigid cylinder).
+
+    Parameters
+    ----------
+    nus : sequence of float
+        Poisson's ratios of the body (0.5: beta = 0, Mindlin–Deresiewicz applies; 0.3:
+        beta = 0.286, coupled).
+    friction : float
+        k.
+    amplitudes : sequence of float
+        Q*/(k P_max), each in (0, 1).
+    cycles : int
+        Full cycles after the first quarter (Q from 0 to Q*), >= 1.
+    steps, n : int
+        As for :func:`fretting`.
+    progress : callable, optional
+        ``progress(i, total)`` after each path.
+
+    Returns
+    -------
+    list of FrettingResult
+        For each nu, each amplitude: the path 0 -> P_max, then Q: 0 -> Q* -> -Q* -> Q* ...
+        (``cycles`` full cycles), nu-major.
+    """
+    if not (isinstance(cycles, (int, np.integer)) and cycles >= 1):
+        raise ValueError(f"cycles: a positive integer, got {cycles!r}")
+    out = []
+    total = len(nus) * len(amplitudes)
+    for nu in nus:
+        for x in amplitudes:
+            load = [0.0] + [1.0] * (2 * cycles + 2)
+            tang = [0.0, 0.0] + [x, -x] * cycles + [x]
+            out.append(fretting("cylinder", nu, friction, load, tang, steps, n=n))
+            if progress is not None:
+                progress(len(out), total)
+    return out

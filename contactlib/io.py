@@ -2218,3 +2218,74 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "Conventions": CONVENTIONS,
     }
     return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def fretting_study_to_dataset(results: Sequence[Any]) -> xr.Dataset:
+    """Dataset of :func:`contactlib.fretting_api.amplitude_study` (dimensions ``case``,
+    ``cycle``, ``loop_step``).
+
+    Per case: Poisson's ratio, beta, the amplitude Q*/(kP); per cycle: its frictional work
+    and estimate, and whether every step of it converged; per case the last cycle's Q-s
+    loop: Q/(kP) and the shift change (s - s0) over k p0 (units a_max^2/R), NaN where a
+    step did not converge. Mindlin–Deresiewicz's closed form of the cylinder
+    (:func:`contactlib.fretting_api.cylinder_cycle_work`) is stored beside the work where
+    beta = 0.
+    """
+    import xarray as xr
+
+    from contactlib.theory import cylinder_cycle_work
+
+    rows = len(results)
+    ncyc = min(len(r.cycles) for r in results)
+    loop_len = 2 * results[0].steps + 1
+    work = np.full((rows, ncyc), np.nan)
+    est = np.full((rows, ncyc), np.nan)
+    ok = np.zeros((rows, ncyc), dtype=bool)
+    closed = np.full(rows, np.nan)
+    loop_q = np.full((rows, loop_len), np.nan)
+    loop_s = np.full((rows, loop_len), np.nan)
+    amp = np.zeros(rows)
+    for c, r in enumerate(results):
+        amp[c] = max(abs(t) for t in r.tangential_path)
+        for m, (i, j, w, e) in enumerate(r.cycles[:ncyc]):
+            a, b = r.point_step[i], r.point_step[j]
+            ok[c, m] = bool(r.converged[a:b + 1].all())
+            work[c, m], est[c, m] = w, e
+        i, j = r.cycles[ncyc - 1][:2]
+        a, b = r.point_step[i], r.point_step[j]
+        good = r.converged[a:b + 1]
+        scale = r.friction * r.p0
+        loop_q[c] = np.where(good, r.force_ratio[a:b + 1] / r.load_ratio[a:b + 1], np.nan)
+        loop_s[c] = np.where(good, (r.shift[a:b + 1] - r.shift[a]) / scale, np.nan)
+        if r.beta == 0.0:
+            closed[c] = float(cylinder_cycle_work(amp[c], r.friction, r.p_max, r.p0))
+    first = results[0]
+    per = ("case",)
+    data = {
+        "poisson_ratio": (per, np.array([r.nu for r in results]), cf_attrs("Poisson's ratio")),
+        "dundurs_beta": (per, np.array([r.beta for r in results]), cf_attrs("Dundurs' beta")),
+        "amplitude": (per, amp, cf_attrs("tangential amplitude over friction times load "
+                                         "(Q*/(k P))")),
+        "cycle_work": (("case", "cycle"), work, cf_attrs(
+            "frictional work of the cycle", comment="V R**2 / (E* a_max**4) per unit length")),
+        "cycle_work_error_estimate": (("case", "cycle"), est, cf_attrs(
+            "estimated absolute error of cycle_work")),
+        "cycle_converged": (("case", "cycle"), ok, cf_attrs(
+            "every step of the cycle converged", **_BOOL_FLAGS)),
+        "mindlin_deresiewicz_work": (per, closed, cf_attrs(
+            "closed-form cycle work of the cylinder (Mindlin-Deresiewicz)",
+            comment="beta = 0 only; NaN otherwise")),
+        "loop_tangential_load": (("case", "loop_step"), loop_q, cf_attrs(
+            "Q/(k P) over the last cycle", comment="NaN where a step did not converge")),
+        "loop_shift": (("case", "loop_step"), loop_s, cf_attrs(
+            "shift change over the last cycle over k p0 ((s - s0) R / (k p0 a_max**2))",
+            comment="NaN where a step did not converge")),
+    }
+    attrs = {"title": "contactlib fretting amplitude study (cylinder)",
+             "friction_coefficient": float(first.friction), "elements": int(first.n),
+             "steps": int(first.steps), "max_error": float(first.max_error),
+             "contactlib_version": version(), "Conventions": CONVENTIONS}
+    coords = {"case": ("case", np.arange(rows, dtype=np.int32), cf_attrs("case")),
+              "cycle": ("cycle", np.arange(1, ncyc + 1, dtype=np.int32),
+                        cf_attrs("cycle", comment="1: the first, from the first peak"))}
+    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)

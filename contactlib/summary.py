@@ -27,7 +27,7 @@ import xarray as xr
 
 from .indenter import indenter
 
-__all__ = ["layer_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
+__all__ = ["layer_rows", "fretting_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
            "REPORT_COLUMNS", "WORK_AT_HALF", "LARGEST_WORK", "CYCLE_WORK"]
 
 _WORK_SCALE = "V R^2/(E* a^5); cylinder: V R^2/(E* a^4) per unit length"
@@ -434,4 +434,30 @@ def layer_rows(ds: xr.Dataset) -> list[dict[str, object]]:
                             f"{float(ds['cycle_work_error_estimate'].values[at]):.2g}")
                         row["work resolved"] = bool(ds["cycle_work_resolved"].values[at])
                     rows.append(row)
+    return rows
+
+
+def fretting_rows(ds: xr.Dataset) -> list[dict[str, object]]:
+    """Rows of the fretting table: one a (case, cycle) of
+    :func:`contactlib.io.fretting_study_to_dataset`.
+
+    Columns: nu, beta, Q*/kP, cycle, the cycle's frictional work and its estimate
+    (units E* a_max^4/R^2 per unit length), Mindlin–Deresiewicz's work where beta = 0 and
+    the relative difference to it; blank where a step of the cycle did not converge.
+    """
+    rows: list[dict[str, object]] = []
+    for c in range(ds.sizes["case"]):
+        closed = float(ds["mindlin_deresiewicz_work"].values[c])
+        for m, cyc in enumerate(ds["cycle"].values):
+            ok = bool(ds["cycle_converged"].values[c, m])
+            w = float(ds["cycle_work"].values[c, m])
+            e = float(ds["cycle_work_error_estimate"].values[c, m])
+            rows.append({
+                "nu": float(ds["poisson_ratio"].values[c]),
+                "beta": f"{float(ds['dundurs_beta'].values[c]):.6g}",
+                "Q*/kP": float(ds["amplitude"].values[c]), "cycle": int(cyc),
+                "work": f"{w:.6g}" if ok else "", "work error estimate": f"{e:.2g}" if ok else "",
+                "Mindlin-Deresiewicz": f"{closed:.6g}" if np.isfinite(closed) else "",
+                "relative difference": (f"{w / closed - 1:.2e}"
+                                        if ok and np.isfinite(closed) else "")})
     return rows

@@ -15,7 +15,7 @@ import numpy as np
 
 from .indenter import indenter
 
-__all__ = ["beta_of_nu", "hertz_p0", "hertz_load", "hertz_pressure",
+__all__ = ["cylinder_cycle_work", "beta_of_nu", "hertz_p0", "hertz_load", "hertz_pressure",
            "uncoupled_friction", "small_k_work_sphere"]
 
 
@@ -70,3 +70,38 @@ def small_k_work_sphere(nu: float, k: float) -> float:
     q = k p everywhere.
     """
     return 16.0 / (5.0 * np.pi) * (np.pi / 4.0 - 2.0 / 3.0) * k * beta_of_nu(nu)
+
+
+def cylinder_cycle_work(x: np.ndarray | float, friction: float, load: float, p0: float
+                        ) -> np.ndarray:
+    r"""Frictional work of one tangential cycle between +-Q* of the cylinder (beta = 0).
+
+    Cattaneo–Mindlin for plane strain with Masing's rule (Mindlin–Deresiewicz):
+    the shift at the stick zone's centre is ``s = k p0 [L x + g(x)]`` with
+    ``g(x) = (1 - x) ln(1 - x)/2`` and x = Q/(kP) (a = 1, E* = 1; the linear
+    term L is the half-plane's datum and encloses no area), so
+
+    .. math:: W = 4 k^2 p_0 P\,[x g(x) - 2 G(x)],\qquad
+              G(x) = \int_0^x g = \tfrac12\left[\tfrac{(1-x)^2}{4}
+              - \tfrac{(1-x)^2}{2}\ln(1-x) - \tfrac14\right].
+
+    Parameters
+    ----------
+    x : float or ndarray
+        Q*/(k P), in [0, 1].
+    friction, load, p0 : float
+        k, P (per unit length) and the Hertz peak pressure at the contact
+        half-width (units E* = R = a = 1: P = pi/4, p0 = 1/2).
+
+    Returns
+    -------
+    ndarray
+        W per unit length (units E* a^4/R^2); ``~ k^2 p0 P x^3/3`` for small x.
+    """
+    x = np.asarray(x, dtype=float)
+    one = 1.0 - x
+    with np.errstate(divide="ignore", invalid="ignore"):
+        log = np.where(one > 0.0, np.log(np.where(one > 0.0, one, 1.0)), 0.0)
+    g = 0.5 * one * log
+    big_g = 0.5 * (0.25 * one**2 - 0.5 * one**2 * log - 0.25)
+    return 4.0 * friction**2 * p0 * load * (x * g - 2.0 * big_g)

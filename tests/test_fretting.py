@@ -11,7 +11,7 @@ from scipy import integrate
 
 from contactlib import cli, fretting, history, solve
 from contactlib import io as cio
-from contactlib.fretting_api import cylinder_cycle_work
+from contactlib.theory import cylinder_cycle_work
 
 K = 0.3
 CYCLE = [0, 1, 1, 1, 1, 1]
@@ -210,10 +210,20 @@ def test_command_line_refuses_with_one_line(tmp_path, capsys, extra, word):
     assert word in err and len(err.strip().splitlines()) == 1
 
 
-def test_figure_draws_loops_and_the_closed_form():
-    from contactlib.plot.fretting import plot_cycles
+def test_study_dataset_table_and_figure():
+    from contactlib import plot, summary
+    from contactlib.fretting_api import amplitude_study
 
-    runs = [fretting("cylinder", 0.5, K, CYCLE, _cycle(x), 8, n=32) for x in (0.3, 0.8)]
-    fig = plot_cycles(runs, K)
+    runs = amplitude_study(nus=(0.5, 0.3), amplitudes=(0.25, 0.9), cycles=1, steps=8, n=32)
+    ds = cio.fretting_study_to_dataset(runs)
+    assert ds.sizes["case"] == 4 and ds.sizes["cycle"] == 1
+    beta0 = ds["dundurs_beta"].values == 0.0
+    assert np.all(np.isfinite(ds["mindlin_deresiewicz_work"].values[beta0]))
+    assert np.all(np.isnan(ds["mindlin_deresiewicz_work"].values[~beta0]))
+    rows = summary.fretting_rows(ds)
+    assert len(rows) == 4 and rows[0]["Mindlin-Deresiewicz"] != ""
+    fig = plot.fig_fretting(ds)
     gids = [line.get_gid() for ax in fig.axes for line in ax.get_lines()]
-    assert gids.count("fretting-loop") == 2 and "mindlin-deresiewicz" in gids
+    assert "fretting-loop" in gids and "mindlin-deresiewicz" in gids
+    with pytest.raises(ValueError, match="amplitude"):
+        plot.fig_fretting(ds.drop_vars("amplitude"))

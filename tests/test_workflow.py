@@ -270,6 +270,20 @@ def test_convergence_target(tiny_run):
 
 
 @pytest.mark.slow
+def test_fretting_target(tiny_run):
+    assert not (tiny_run / "results/fretting").exists()  # not part of the main job
+    snakemake(tiny_run, "fretting")
+    ds = read_dataset(tiny_run / "results/fretting/fretting.nc")
+    beta0 = ds["dundurs_beta"].values == 0.0
+    work = ds["cycle_work"].values[beta0, -1]
+    closed = ds["mindlin_deresiewicz_work"].values[beta0]
+    assert np.all(np.abs(work / closed - 1) < 2e-2)  # measured 6e-5 to 1.5e-2
+    assert (tiny_run / "results/figures/fretting.png").stat().st_size > 1000
+    table = (tiny_run / "results/tables/fretting.csv").read_text().splitlines()
+    assert table[0].startswith("nu,beta,Q*/kP,cycle,work")
+
+
+@pytest.mark.slow
 def test_report_builds(tiny_run):
     snakemake(tiny_run, "--report", "results/report.html")
     html = (tiny_run / "results/report.html").read_text(errors="replace")

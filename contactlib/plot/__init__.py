@@ -39,6 +39,7 @@ from contactlib.plot.history import (
     hist_stick_map,
     hist_stick_radius,
 )
+from contactlib.plot.fretting import fig_fretting
 from contactlib.plot.layers import fig_layers
 from contactlib.plot.materials import fig_material_pairs
 from contactlib.plot.paper import fig2_friction, fig3_tractions, fig4_displacement, fig5_work
@@ -60,6 +61,7 @@ __all__ = [
     "fig_material_pairs",
     "fig_viscoelastic",
     "fig_layers",
+    "fig_fretting",
     "fig_subsurface",
     "fig_stress_maxima",
     "fig_surface_radial_stress",

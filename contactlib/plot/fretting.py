@@ -1,72 +1,79 @@
-"""Figures of fretting paths (:func:`contactlib.fretting`): Q-s loops and the work per cycle.
+"""Figure of the fretting amplitude study: Q-s loops and the work per cycle.
 
-As every figure of :mod:`contactlib.plot`, built with :class:`matplotlib.figure.Figure`
-inside the contactlib style, never touching the disk (save with
-``contactlib.io.write_figure(fig, path, style=style_path())``). Only converged steps are
-drawn; a step that did not converge is left out of the loops and named in the legend.
+Drawn from the dataset of :func:`contactlib.io.fretting_study_to_dataset`. As every figure
+of :mod:`contactlib.plot`, built with :class:`matplotlib.figure.Figure` inside the
+contactlib style, never touching the disk (save with
+``contactlib.io.write_figure(fig, path, style=style_path())``). Steps that did not
+converge are NaN in the dataset's loops and are not drawn; a cycle with such a step is
+not drawn either.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import Any
-
 import numpy as np
+import xarray as xr
 from matplotlib.figure import Figure
 
-from contactlib.fretting_api import cylinder_cycle_work
+from contactlib.theory import cylinder_cycle_work
 from contactlib.plot.base import finish, palette, style_context
 
-__all__ = ["plot_cycles"]
+__all__ = ["fig_fretting"]
+
+_LOOP_AMPLITUDES = (0.25, 0.5, 0.9)
 
 
-def plot_cycles(results: Sequence[Any], friction: float) -> Figure:
-    """Q-s loops of several amplitudes and their cycle work against Mindlin–Deresiewicz.
+def fig_fretting(ds: xr.Dataset) -> Figure:
+    """Q-s loops of the uncoupled cases and the cycle work against Mindlin–Deresiewicz.
 
     Parameters
     ----------
-    results : sequence of FrettingResult
-        Paths cycling Q between +-Q* at constant P (beta = 0 for the closed form
-        to apply), each with at least one closed cycle.
-    friction : float
-        Their friction coefficient k.
+    ds : xarray.Dataset
+        From :func:`contactlib.io.fretting_study_to_dataset`.
 
     Returns
     -------
     matplotlib.figure.Figure
-        Left: the tangential load Q/(k P) against the shift change (s - s0)/(k p0 a_max)
-        over the last cycle; right: the work of the last cycle over k^2 p0 P a_max
-        against Q*/(kP) with the closed form of the cylinder, log axes.
+        Left: Q/(kP) against the shift change (s - s0)/(k p0 a_max^2/R) over the last
+        cycle, beta = 0, Q*/kP = 0.25, 0.5, 0.9 where present. Right: the work of the
+        last cycle over k^2 p0 P_max a_max^2/R against Q*/kP, log axes, one marker per
+        beta, error bars the estimates, with the closed form of the cylinder.
     """
+    for name in ("amplitude", "cycle_work", "loop_shift", "dundurs_beta"):
+        if name not in ds.variables:
+            raise ValueError(f"fig_fretting: the dataset has no variable {name!r} (expected "
+                             "one of contactlib.io.fretting_study_to_dataset)")
+    k = float(ds.attrs["friction_coefficient"])
+    p0, p_max = 0.5, np.pi / 4  # Hertz's cylinder at a_max = 1
+    unit = k**2 * p0 * p_max
+    amp = ds["amplitude"].values
+    beta = ds["dundurs_beta"].values
     with style_context():
         fig = Figure(figsize=(7.2, 3.2))
         left, right = fig.subplots(1, 2)
         colors = palette()
-        xs, ws, es = [], [], []
-        for idx, r in enumerate(results):
-            if not r.cycles:
-                raise ValueError("plot_cycles: a result has no closed cycle (repeat a point "
-                                 "of the path)")
-            i, j, w, est = r.cycles[-1]
-            a, b = r.point_step[i], r.point_step[j]
-            ok = r.converged[a:b + 1]
-            s = r.shift[a:b + 1]
-            q = r.force_ratio[a:b + 1] / r.load_ratio[a:b + 1]
-            scale = friction * r.p0
-            x_amp = float(np.max(np.abs(r.force_ratio[a:b + 1])) / r.load_ratio[b])
-            left.plot(((s - s[0]) / scale)[ok], q[ok], color=colors[idx % len(colors)],
-                      gid="fretting-loop", label=f"$Q^*/kP$ = {x_amp:g}")
-            xs.append(x_amp)
-            ws.append(w / (friction**2 * r.p0 * r.p_max))
-            es.append(est / (friction**2 * r.p0 * r.p_max))
+        shown = 0
+        for c in np.flatnonzero(beta == 0.0):
+            if not any(np.isclose(amp[c], a) for a in _LOOP_AMPLITUDES):
+                continue
+            left.plot(ds["loop_shift"].values[c], ds["loop_tangential_load"].values[c],
+                      color=colors[shown % len(colors)], gid="fretting-loop",
+                      label=f"$Q^*/kP$ = {amp[c]:g}")
+            shown += 1
         left.set_xlabel(r"shift change $(s - s_0)\,/\,(k p_0 a_{max}^2/R)$")
         left.set_ylabel(r"$Q / kP$")
-        left.legend(loc="lower right")
+        if shown:
+            left.legend(loc="lower right")
         grid = np.linspace(0.02, 0.999, 200)
         right.loglog(grid, cylinder_cycle_work(grid, 1.0, 1.0, 1.0), color="0.4",
-                     gid="mindlin-deresiewicz", label="Mindlin–Deresiewicz (closed form)")
-        right.errorbar(xs, ws, yerr=es, fmt="o", color=colors[0], gid="cycle-work",
-                       label="contactlib (estimate as bar)")
+                     gid="mindlin-deresiewicz", label="Mindlin–Deresiewicz, β = 0")
+        for idx, b in enumerate(sorted(set(beta.tolist()))):
+            sel = np.flatnonzero(beta == b)
+            ok = ds["cycle_converged"].values[sel, -1].astype(bool)
+            w = ds["cycle_work"].values[sel, -1] / unit
+            e = ds["cycle_work_error_estimate"].values[sel, -1] / unit
+            right.errorbar(amp[sel][ok], w[ok], yerr=e[ok], fmt="os"[idx % 2], mfc="none"
+                           if idx else None, color=colors[idx % len(colors)],
+                           gid="cycle-work", label=f"contactlib, β = {b:.3g}")
         right.set_xlabel(r"$Q^*/kP$")
         right.set_ylabel(r"work per cycle $/\,(k^2 p_0 P\,a_{max}^2/R)$")
         right.legend(loc="lower right")

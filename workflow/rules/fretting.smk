@@ -1,0 +1,54 @@
+# The `fretting` target: a rigid cylinder pressed to P_max, then cycled tangentially
+# between +-Q* (k = 0.3, Q*/kP = 0.1 ... 0.9, three cycles) on nu = 0.5 (beta = 0,
+# against Mindlin-Deresiewicz) and nu = 0.3 (beta = 0.286, coupled): one dataset, a
+# figure and a table. Not part of `all`: run `snakemake --cores 2 fretting`.
+
+
+rule fretting_study:
+    output:
+        f"{RESULTS}fretting/fretting.nc",
+    params:
+        version=VERSION,
+    log:
+        f"{RESULTS}logs/fretting/study.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    script:
+        "../scripts/fretting_study.py"
+
+
+rule fretting_figure:
+    input:
+        rules.fretting_study.output,
+    output:
+        png=report(
+            f"{RESULTS}figures/fretting.png",
+            caption="../report/fretting.rst",
+            category="Figures",
+            labels={"figure": "Fretting: Q-s loops and work per cycle",
+                    "file": "fretting.png"},
+        ),
+        pdf=f"{RESULTS}figures/fretting.pdf",
+        csv=f"{RESULTS}tables/fretting.csv",
+    params:
+        version=VERSION,
+    log:
+        f"{RESULTS}logs/fretting/figure.log",
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=5,
+    script:
+        "../scripts/fretting_figure.py"
+
+
+rule fretting:
+    input:
+        rules.fretting_figure.output,
+    default_target: False

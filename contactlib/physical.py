@@ -65,7 +65,8 @@ from . import validate
 __all__ = ["physical_solve", "physical_history", "PhysicalSolution", "PhysicalHistory",
            "Material", "material", "composite_modulus", "parse_quantity", "parse_force_path",
            "hertz_peak_pressure", "hertz_load", "hertz_radius", "contact_radius_of_load",
-           "work_scale", "SMALL_STRAIN_LIMIT", "SmallStrainWarning", "UNITS", "format_si"]
+           "work_scale", "check_history", "SMALL_STRAIN_LIMIT", "SmallStrainWarning",
+           "UNITS", "format_si"]
 
 SMALL_STRAIN_LIMIT = 0.1
 """Largest a/R (a_max/R in a history) reported without a warning (see the module notes)."""
@@ -883,6 +884,20 @@ def force_shape(spec: Any, name: str = "load_path") -> tuple[Any, float, float]:
     return out, p_max, float(t0)
 
 
+def check_history(geometry: str, radius: float | str, load_path: Any, indenter: Any = "rigid",
+                  body: Any = None, friction: float = 0.0, **kwargs: Any) -> None:
+    """Check the input of :func:`physical_history` without computing anything.
+
+    Raises
+    ------
+    validate.InputError
+        As :func:`physical_history` would, naming the bad argument (the rules that join
+        several inputs included: a relaxation and its times, a layer's a_max/h).
+    """
+    physical_history(geometry, radius, load_path, indenter, body, friction, _check_only=True,
+                     **kwargs)
+
+
 def path_cycles(forces: Sequence[float]) -> list[tuple[int, int]]:
     """(start, end) path points of each cycle: a cycle ends where the force, having
     decreased, increases next, or at the end of the path."""
@@ -900,7 +915,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
                      thickness: float | str | None = None, base: str = "smooth",
                      n: int | None = None, max_error: float = validate.DEFAULT_MAX_ERROR,
                      error_estimate: bool = True,
-                     progress: Callable[[int, int], None] | None = None) -> PhysicalHistory:
+                     progress: Callable[[int, int], None] | None = None,
+                     _check_only: bool = False) -> PhysicalHistory:
     """Follow a path of normal forces with incremental stick-slip; the answer in SI.
 
     Parameters
@@ -993,6 +1009,16 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         kwargs["duration"] = list(np.diff(t_points))
     a_max = contact_radius_of_load(g, prob.e_star, prob.radius, p_max / prob.per_length)
     slab = 0.0 if prob.thickness == math.inf else a_max / prob.thickness
+    if _check_only:  # the rules of contactlib.history that join several inputs, no numerics
+        validate.slab_ratio(slab, g, prob.base, extent=validate.HISTORY_MESH_EXTENT)
+        if relaxation is not None and not prob.indenter.rigid:
+            raise validate.InputError("relaxation", "", relaxation, "relaxation needs a "
+                                      "rigid indenter")
+        if relaxation is not None and shaped and "shape" in levels and \
+                levels.get("frequency") is None:
+            raise validate.InputError("load_path.frequency", "", None, "load_path.frequency "
+                                      "is required with a relaxation (Hz)")
+        return None
     res = history_api.history(g, prob.body.nu, friction, levels, steps, slab_ratio=slab,
                               **kwargs)
     if shaped:  # the path's levels at the ends of its pieces, and their times

@@ -8,7 +8,10 @@ A scene (``config/config.yaml``, under ``scenes:``) is of one of two kinds:
   :mod:`contactlib.accuracy`), the stick ratios to solve and the outputs it
   needs -> a :class:`Scene`;
 * ``history``: an incremental load path (:func:`contactlib.history`)
-  for one or several friction coefficients -> a :class:`HistoryScene`.
+  for one or several friction coefficients -> a :class:`HistoryScene`;
+* ``physical``: a load path of forces in physical units (radius, materials,
+  forces; :func:`contactlib.physical.physical_history`) -> a
+  :class:`PhysicalScene`.
  This module turns one scene's mapping into a :class:`Scene`,
 validated with the library's own rules (the workflow's JSON schema then
 checks what they let through; its enums and bounds are :mod:`contactlib.validate`'s),
@@ -44,16 +47,19 @@ from .validate import DEFAULT_OUTPUTS, OUTPUTS
 # No solver module (stages, and scipy with it) is imported here: the workflow imports
 # this module in Snakemake's own process, which builds the DAG before any job starts.
 
-__all__ = ["Scene", "HistoryScene", "KINDS", "ConfigError", "parse_scene", "parse_named_scene",
+__all__ = ["Scene", "HistoryScene", "PhysicalScene", "KINDS", "ConfigError", "parse_scene", "parse_named_scene",
            "parse_scenes",
            "config_hash", "material_pair_scenes", "scene_mapping"]
 
-KINDS = ("self-similar", "history")
+KINDS = ("self-similar", "history", "physical")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
          "slab_ratio", "base", "outputs", "indenter", "body", "subsurface_grid")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
                  "duration")
+_PHYSICAL_KEYS = ("kind", "geometry", "radius", "length", "thickness", "base", "indenter",
+                  "body", "friction", "load_path", "steps", "n", "max_error", "relaxation",
+                  "times")
 _INDENTER_KEYS = {"indenter_modulus": "indenter.modulus_ratio", "indenter_nu": "indenter.nu"}
 
 
@@ -226,6 +232,15 @@ class _Problems:
         if self.lines:
             raise ConfigError(self.lines)
 
+    def keys(self, raw: Mapping[str, Any], allowed: tuple[str, ...],
+             required: tuple[str, ...], kind: str) -> None:
+        """Record every key of ``raw`` not ``allowed`` and every ``required`` one missing."""
+        for key in sorted(str(k) for k in set(raw) - set(allowed)):
+            self.add(key, f"unknown key for a {kind} scene (allowed: {', '.join(allowed)})")
+        for key in required:
+            if key not in raw:
+                self.add(key, "is required")
+
 
 def _scene_indenter(raw: Mapping[str, Any], nu: float | None,
                     bad: _Problems) -> tuple[float, float | None]:
@@ -262,6 +277,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                            f"got {kind!r}"])
     if kind == "history":
         return _parse_history(name, raw)
+    if kind == "physical":
+        return _parse_physical(name, raw)
 
     bad = _Problems(name)
     for key in sorted(str(k) for k in set(raw) - set(_KEYS)):
@@ -398,11 +415,8 @@ class HistoryScene:
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     bad = _Problems(name)
-    for key in sorted(str(k) for k in set(raw) - set(_HISTORY_KEYS)):
-        bad.add(key, f"unknown key for a history scene (allowed: {', '.join(_HISTORY_KEYS)})")
-    for key in ("geometry", "nu", "friction", "load_path", "steps"):
-        if key not in raw:
-            bad.add(key, "is required")
+    bad.keys(raw, _HISTORY_KEYS, ("geometry", "nu", "friction", "load_path", "steps"),
+             "history")
     ks = None
     if "friction" in raw:
         friction = raw["friction"]
@@ -437,6 +451,111 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                         hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
                         indenter_nu=ind[1], relaxation=prony, durations=durations,
                         base=base)
+
+
+@dataclass(frozen=True, repr=False)
+class PhysicalScene:
+    """One validated scene of kind ``physical``: a path of forces in SI.
+
+    Attributes
+    ----------
+    name, geometry, hash
+        As for :class:`Scene`.
+    spec : dict
+        Keyword arguments of :func:`contactlib.physical.physical_history`, in SI
+        (radius, length, thickness in m; forces in N, a shape's frequency in Hz,
+        times and relaxation times in s; materials by name or as [E in Pa, nu]).
+    """
+
+    __repr__ = short_repr
+
+    name: str
+    geometry: str
+    spec: dict
+    hash: str
+    kind: str = "physical"
+
+    def run_spec(self) -> dict[str, Any]:
+        """Keyword arguments of :func:`contactlib.physical.physical_history` (a copy)."""
+        return json.loads(json.dumps(self.spec))
+
+
+def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
+    """A ``physical`` scene: the keys of :func:`contactlib.physical.physical_history`, each
+    checked by the physical door's own rules (units, materials, the force path)."""
+    from . import load_paths, physical
+
+    bad = _Problems(name)
+    bad.keys(raw, _PHYSICAL_KEYS, ("geometry", "radius", "body", "friction", "load_path"),
+             "physical")
+    geometry = bad.check("geometry", validate.geometry, raw["geometry"]) \
+        if "geometry" in raw else None
+    spec: dict[str, Any] = {"geometry": geometry}
+    if "radius" in raw:
+        spec["radius"] = bad.check("radius", physical.parse_quantity, raw["radius"], "length",
+                                   "radius")
+    for key in ("length", "thickness"):
+        if key in raw:
+            spec[key] = bad.check(key, physical.parse_quantity, raw[key], "length", key)
+    if geometry == "cylinder" and "length" not in raw:
+        bad.add("length", "is required for a cylinder (the force is over its length)")
+    if geometry == "sphere" and "length" in raw:
+        bad.add("length", "is for a cylinder only")
+    for key, role in (("indenter", "indenter"), ("body", "body")):
+        if key in raw:
+            mat = bad.check(key, physical.material, raw[key], role)
+            if mat is not None:  # JSON-able: the table's name, or [E in Pa, nu]
+                spec[key] = mat.name if mat.name not in ("E,nu",) else [mat.E, mat.nu]
+    spec["base"] = bad.check("base", validate.base, raw.get("base", "smooth"))
+    if "friction" in raw:
+        spec["friction"] = bad.check("friction", validate.friction, raw["friction"])
+    if "load_path" in raw:
+        path = raw["load_path"]
+        if load_paths.is_shaped(path):
+            if bad.check("load_path", physical.force_shape, dict(path)) is not None:
+                spec["load_path"] = dict(path)
+        else:
+            forces = bad.check("load_path", physical.parse_force_path, path)
+            spec["load_path"] = list(forces) if forces is not None else None
+    spec["steps"] = bad.check("steps", validate.steps,
+                              raw.get("steps", physical.DEFAULT_HISTORY_STEPS))
+    if raw.get("n") is not None:
+        spec["n"] = bad.check("n", validate.history_n, raw["n"])
+    spec["max_error"] = bad.check("max_error", validate.max_error,
+                                  raw.get("max_error", validate.DEFAULT_MAX_ERROR))
+    if "relaxation" in raw:
+        items = raw["relaxation"]
+        if not isinstance(items, (list, tuple)) or not all(
+                isinstance(p, (list, tuple)) and len(p) == 2 for p in items):
+            bad.add("relaxation", f"must be a list of pairs [g, tau] (tau in s or with a "
+                                  f"unit), got {items!r}")
+        else:
+            taus = [bad.check("relaxation", physical.parse_quantity, tau, "time",
+                              "relaxation") for _, tau in items]
+            pairs = [[g, t] for (g, _), t in zip(items, taus)]
+            if None not in taus and bad.check("relaxation", validate.relaxation, pairs):
+                spec["relaxation"] = pairs
+    if "times" in raw:
+        times = raw["times"]
+        def when(t: Any) -> float:
+            return physical.parse_quantity(t, "time", "times", positive=False)
+
+        ok = isinstance(times, (list, tuple)) and all(
+            bad.check("times", when, t) is not None for t in times)
+        if not isinstance(times, (list, tuple)):
+            bad.add("times", f"must be a list of times (s or with a unit), got {times!r}")
+        spec["times"] = [when(t) for t in times] if ok else None
+    bad.raise_any()
+    spec = {k: v for k, v in spec.items() if v is not None}
+    if spec["base"] == "smooth":
+        spec.pop("base")
+    try:  # what depends on several keys (a relaxation and its times, a path's times)
+        physical.check_history(**spec)
+    except ValueError as exc:
+        key = getattr(exc, "name", None)
+        raise ConfigError([f"scenes.{name}.{key}: {exc}" if key else
+                           f"scenes.{name}: {exc}"]) from None
+    return PhysicalScene(name=name, geometry=geometry, spec=spec, hash=config_hash(raw))
 
 
 def parse_named_scene(name: Any, raw: Mapping[str, Any]) -> "Scene | HistoryScene":

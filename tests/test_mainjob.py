@@ -38,9 +38,11 @@ import re
 
 import numpy as np
 import pytest
+import yaml
 
 import contactlib
 from conftest import DATA, make_workdir, needs_snakemake, snakemake
+from contactlib.scene import parse_scenes
 
 REFERENCE = json.loads((DATA / "mainjob_reference.json").read_text())
 ROUNDOFF = 1e-8
@@ -329,10 +331,14 @@ def test_report_lists_every_figure_with_its_caption_and_the_table(main_job):
     results = _report_results((main_job / "report.html").read_text())
     figures = sorted(p.name for p in (main_job / "figures").glob("*.png"))
     assert figures
+    physical = {name for name, raw in parse_scenes(
+        yaml.safe_load((main_job.parent / "config" / "config.yaml").read_text())["scenes"]
+    ).items() if raw.kind == "physical"}  # one caption for every physical scene's figure
     for name in figures + ["key-numbers.html"]:
         entry = results.get(f"results/figures/{name}") or results.get(f"results/tables/{name}")
         assert entry is not None, f"{name} is not in the report"
         stem = "key_numbers" if name == "key-numbers.html" else name[:-4]
+        stem = "physical" if stem in physical else stem
         title = re.search(r"\*\*(.+?)\*\*", (REPORT / f"{stem}.rst").read_text()).group(1)
         assert title in entry["caption"], (name, title)
 

@@ -56,6 +56,8 @@ def test_default_config_dag_has_exactly_the_scenes_jobs(tmp_path):
     assert counts == {"influence": n_scenes, "solve": n_scenes, "check": n_scenes,
                       "energy": n_scenes, "assemble": n_scenes,
                       "history_run": len(histories),
+                      # a physical scene: one job (dataset, table and figure in SI)
+                      "physical_run": kinds.count("physical"),
                       # one job a family of figures (paper, history), its figures in parallel
                       "figures_paper": 1, "figures_history": 1,
                       "key_numbers": 1, "all": 1}

@@ -207,6 +207,8 @@ VISCO_SCENES = visco_scenes(config, {**ALL_SCENES, **MATERIAL_SCENES})
 SCENES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES}.items() if s.kind == "self-similar"}
 HISTORIES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES, **VISCO_SCENES}.items()
              if s.kind == "history"}
+# scenes in physical units (radius, materials, forces): a dataset, a table and a figure in SI
+PHYSICAL = {n: s for n, s in ALL_SCENES.items() if s.kind == "physical"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
 
 # influence sets, shared by every scene with the same key; the parts any of them needs
@@ -219,6 +221,7 @@ for _s in SCENES.values():
 wildcard_constraints:
     scene="|".join(sorted(SCENES)) or "NONE",
     hscene="|".join(sorted(HISTORIES)) or "NONE",
+    pscene="|".join(sorted(PHYSICAL)) or "NONE",
     key="[^/]+",
     study="|".join(sorted(CONVERGENCE["studies"])) or "NONE",
 
@@ -243,6 +246,12 @@ def scene_params(wildcards):
         "tolerance": s.tolerance,
         "hash": s.hash,
     }
+
+
+def physical_params(wildcards):
+    """A physical scene's call (contactlib.physical.physical_history, SI) plus provenance."""
+    s = PHYSICAL[wildcards.pscene]
+    return {"run": s.run_spec(), "scene": s.name, "hash": s.hash}
 
 
 def history_params(wildcards):
@@ -292,7 +301,7 @@ def figure_threads(family, n):
 # inputs among equal priorities) left a default scene's solve for last, and the
 # main job ended on one core.
 PRIORITY = {
-    "influence": 3, "history_run": 3,
+    "influence": 3, "history_run": 3, "physical_run": 3,
     "solve": 2, "figures_history": 2,
     "check": 1, "energy": 1, "assemble": 1,
     "figures_paper": 0, "key_numbers": 0,
@@ -365,6 +374,9 @@ def figure_outputs(figs):
 
 def all_targets():
     out = [f"{RESULTS}datasets/{name}.nc" for name in ALL_SCENES]
+    for name in PHYSICAL:  # the physical table and figure of a scene in SI units
+        out += [f"{RESULTS}tables/{name}.csv", f"{RESULTS}figures/{name}.png",
+                f"{RESULTS}figures/{name}.pdf"]
     for fig in FIGURES:
         if figure_scenes(fig):
             out += [f"{RESULTS}figures/{fig}.png", f"{RESULTS}figures/{fig}.pdf"]

@@ -193,7 +193,7 @@ class FrettingStep:
 
 
 def _solve_sets(ops: StripOperators, k: float, state: np.ndarray, load: float, force: float,
-                strain: float, v_old: np.ndarray) -> tuple[np.ndarray, ...]:
+                strain: float, v_old: np.ndarray, shift_old: float) -> tuple[np.ndarray, ...]:
     """p, q, delta, s for given sets (one linear system)."""
     n = ops.n
     contact = np.flatnonzero(state != SEPARATED)
@@ -225,10 +225,10 @@ def _solve_sets(ops: StripOperators, k: float, state: np.ndarray, load: float, f
     a[-1, :nc] = h * fold[contact]
     a[-1, nc:nc + nt] = h
     b[-1] = force
-    if nt == 0:  # no stuck element: the shift is free; fix it by the mean slip (any value)
+    if nt == 0:  # no stuck element: the shift is free (the force is checked by the caller)
         a[-1, :] = 0.0
         a[-1, -1] = 1.0
-        b[-1] = 0.0
+        b[-1] = shift_old
     x = linalg.solve(a, b, check_finite=False)
     p = np.zeros(n)
     q = np.zeros(n)
@@ -291,7 +291,7 @@ def _next_state(ops: StripOperators, k: float, state: np.ndarray, p: np.ndarray,
 
 
 def solve_step(ops: StripOperators, k: float, load: float, force: float, strain: float,
-               v_old: np.ndarray, state0: np.ndarray) -> FrettingStep:
+               v_old: np.ndarray, state0: np.ndarray, shift_old: float = 0.0) -> FrettingStep:
     """One load step: the sets, tractions and displacements at the step's end.
 
     Parameters
@@ -316,7 +316,7 @@ def solve_step(ops: StripOperators, k: float, load: float, force: float, strain:
     seen: set[bytes] = set()
     one_at_a_time = False
     for it in range(1, _MAX_ITER + 1):
-        p, q, delta, shift = _solve_sets(ops, k, state, load, force, strain, v_old)
+        p, q, delta, shift = _solve_sets(ops, k, state, load, force, strain, v_old, shift_old)
         gap, v = _fields(ops, p, q, delta, shift, strain)
         dv = v - v_old
         ps = max(float(np.max(np.abs(p))), 1e-300)
@@ -324,8 +324,18 @@ def solve_step(ops: StripOperators, k: float, load: float, force: float, strain:
         vs = max(float(np.max(np.abs(dv))), ps * ops.width, 1e-300)
         viol = _violations(k, state, p, q, gap, dv, (ps, gs, vs))
         bad = viol > _REL_TOL
-        if not bad.any():
+        balanced = abs(ops.width * float(np.sum(q)) - force) <= 1e-9 * (
+            k * abs(load) + abs(force)) + 1e-300
+        if not bad.any() and balanced:
             return FrettingStep(p, q, v, gap, delta, shift, state, True, it)
+        if not bad.any():
+            # every element slips but the shears miss Q: the stick zone is narrower than an
+            # element; keep the element closest to sticking stuck
+            con = np.flatnonzero(state != SEPARATED)
+            reserve = k * np.maximum(p[con], 0.0) - np.abs(q[con])
+            state = state.copy()
+            state[con[int(np.argmax(reserve))]] = STICK
+            continue
         key = state.tobytes()
         if key in seen:
             one_at_a_time = True
@@ -338,8 +348,8 @@ def solve_step(ops: StripOperators, k: float, load: float, force: float, strain:
     return FrettingStep(p, q, v, gap, delta, shift, state, False, _MAX_ITER)
 
 
-_EDGE_SKIP = 2  # elements next to an edge whose traction carries the edge's local error
-_EDGE_FIT = 7  # elements beyond those fitted by a quadratic in f^2
+EDGE_SKIP = 2  # elements next to an edge whose traction carries the edge's local error
+EDGE_FIT = 7  # elements beyond those fitted by a quadratic in f^2
 
 
 def _run_edge(x: np.ndarray, f: np.ndarray, inside: np.ndarray, width: float
@@ -348,8 +358,8 @@ def _run_edge(x: np.ndarray, f: np.ndarray, inside: np.ndarray, width: float
 
     ``f`` vanishes as a square root at a smooth edge (the pressure at a contact
     edge, the friction reserve ``k p - |q|`` at a stick edge), so ``f**2`` is
-    smooth there. It is fitted by a quadratic in x over ``_EDGE_FIT`` elements,
-    leaving out the ``_EDGE_SKIP`` elements next to the edge (whose tractions
+    smooth there. It is fitted by a quadratic in x over ``EDGE_FIT`` elements,
+    leaving out the ``EDGE_SKIP`` elements next to the edge (whose tractions
     carry the discretization's local error: measured 2-30 % against
     Cattaneo's closed form, against 0.1 % further in), and the fit's root next
     to the run's last element is the edge. Where the run is too short, or the
@@ -364,15 +374,18 @@ def _run_edge(x: np.ndarray, f: np.ndarray, inside: np.ndarray, width: float
     stops = np.concatenate((breaks, [idx.size - 1]))
     longest = int(np.argmax(stops - starts))
     lo, hi = int(idx[starts[longest]]), int(idx[stops[longest]])
-    need = _EDGE_SKIP + _EDGE_FIT
+    need = EDGE_SKIP + EDGE_FIT
 
     def end(last: int, direction: int) -> float:
         base = float(x[last] + 0.5 * direction * width)
         if hi - lo + 1 < need + 2:
             return base
-        sel = last - direction * np.arange(_EDGE_SKIP, need)
+        sel = last - direction * np.arange(EDGE_SKIP, need)
+        f2 = f[sel] ** 2
+        if not (np.all(np.diff(f2) > 0.0) and f2[-1] > 2.0 * f2[0]):
+            return base  # f does not rise from a front here (e.g. a zone at the limit)
         t = (x[sel] - x[last]) / width
-        c2, c1, c0 = np.polyfit(t, f[sel] ** 2, 2)
+        c2, c1, c0 = np.polyfit(t, f2, 2)
         roots = np.roots([c2, c1, c0]) if c2 != 0.0 else np.array([-c0 / c1])
         roots = roots[np.isreal(roots)].real * direction
         roots = roots[(roots > -1.0) & (roots < 2.0)]
@@ -397,7 +410,8 @@ def zone_edges(ops: StripOperators, k: float, step: FrettingStep
     left, right = _run_edge(ops.mid, step.p, step.state != SEPARATED, ops.width)
     reserve = np.maximum(k * step.p - np.abs(step.q), 0.0)
     s_left, s_right = _run_edge(ops.mid, reserve, step.state == STICK, ops.width)
-    return left, right, s_left, s_right
+    # a stick zone ends where the contact does at the latest
+    return left, right, max(s_left, left), min(s_right, right)
 
 
 def _frictionless_width(ops: StripOperators, load: float) -> float:
@@ -470,7 +484,8 @@ def run_fretting(ops: StripOperators, k: float, load: np.ndarray, force: np.ndar
             state = np.where(np.abs(ops.mid) < a_guess, STICK, SEPARATED).astype(np.int8)
             if not (state != SEPARATED).any():
                 state[np.argsort(np.abs(ops.mid))[:2]] = STICK
-        step = solve_step(ops, k, float(load[i]), float(force[i]), float(strain[i]), v, state)
+        step = solve_step(ops, k, float(load[i]), float(force[i]), float(strain[i]), v, state,
+                          prev_shift)
         j = i + 1
         # external work: P d(delta) + Q ds - (interface shear) . x d(strain), trapezoid rule
         d_strain = float(strain[i]) - prev_strain

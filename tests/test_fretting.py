@@ -227,3 +227,28 @@ def test_study_dataset_table_and_figure():
     assert "fretting-loop" in gids and "mindlin-deresiewicz" in gids
     with pytest.raises(ValueError, match="amplitude"):
         plot.fig_fretting(ds.drop_vars("amplitude"))
+
+
+@pytest.mark.parametrize("name,d", [("cone", 1.0), ("power", 4.0)])
+def test_other_profiles_follow_the_ciavarella_jaeger_principle(name, d):
+    """beta = 0: the stick zone is the contact of the load P(1 - Q/kP), c/a = (1 - x)^(1/d)
+    for h = |x|^d/d (P ~ a^d in plane strain)."""
+    r = fretting("cylinder", 0.5, K, [0, 1, 1], [0, 0, 0.5], 8,
+                 profile=name, exponent=None if name == "cone" else d)
+    err = abs(r.stick_ratio[-1] - 0.5 ** (1.0 / d))
+    assert err <= 3 * r.stick_ratio_error[-1] and err < 1e-3  # measured 4.5e-4, 3.9e-4
+
+
+@pytest.mark.parametrize("k,x", [(0.01, 0.99), (0.3, 0.999), (5.0, 0.5), (0.3, 1e-4)])
+def test_extremes_keep_equilibrium_and_honest_stick_estimates(k, x):
+    r = fretting("cylinder", 0.3, k, [0, 1, 1, 1, 1], [0, 0, x, -x, x], 8)
+    assert r.converged.all()
+    q_res = np.sum(r.shear, axis=1) * (r.x[1] - r.x[0]) * r.p0
+    assert np.allclose(q_res, r.force_ratio * k * r.p_max, rtol=0, atol=1e-9 * k)
+    touching = np.isfinite(r.stick_ratio)
+    assert np.all(r.stick_ratio[touching] <= 1.0) and np.all(r.stick_ratio[touching] >= 0.0)
+    # a stick zone narrower than the edge fit needs is not known better than an element
+    pts = r.point_step[1:]
+    width = r.stick_edges[pts, 1] - r.stick_edges[pts, 0]
+    narrow = width < 11 * (r.x[1] - r.x[0])
+    assert np.all(r.stick_ratio_error[1:][narrow] >= (r.x[1] - r.x[0]) / 2.4)

@@ -58,8 +58,12 @@ class FrettingResult:
     indenter's rigid displacements, units a_max^2/R, up to the half-plane's
     logarithmic datum, see :mod:`contactlib.fretting_solver`), ``dissipation``
     (cumulative frictional work), ``external_work`` and ``stored_energy``,
-    ``converged``. ``pressure``, ``shear`` (units p0) and ``state`` per step
-    and element at ``x`` (midpoints, units a_max).
+    ``converged``, ``tangential_compliance`` ds/dQ over the step (units 1/E*; its
+    level carries the half-plane's datum, its changes do not; NaN where Q does not
+    change). ``pressure``,
+    ``shear`` (units p0), ``slip`` (the step's slip increment, body minus
+    indenter, units a_max^2/R; 0 where stuck or separated) and ``state`` per
+    step and element at ``x`` (midpoints, units a_max).
 
     Per path point (``segments + 1`` values): ``point_step`` (the step index),
     the estimates ``stick_ratio_error`` (absolute), ``stick_offset_error``
@@ -69,7 +73,8 @@ class FrettingResult:
 
     ``cycles`` lists the closed cycles of the path: for each path point that
     repeats an earlier one (same P, Q and bulk stress), the pair of point
-    indices, the frictional work of the cycle and its estimate.
+    indices, the frictional work of the cycle and its estimate. ``shaken_down``
+    per cycle: its work is within its estimate of zero (the slip has stopped).
     """
 
     geometry: str
@@ -101,6 +106,8 @@ class FrettingResult:
     converged: np.ndarray
     pressure: np.ndarray
     shear: np.ndarray
+    slip: np.ndarray
+    tangential_compliance: np.ndarray
     state: np.ndarray
     point_step: np.ndarray
     stick_ratio_error: np.ndarray
@@ -109,6 +116,11 @@ class FrettingResult:
     resolved: np.ndarray
     cycles: tuple[tuple[int, int, float, float], ...]
     orders: dict[str, float]
+
+    @property
+    def shaken_down(self) -> np.ndarray:
+        """Per cycle: its frictional work is within its estimate of zero (slip has stopped)."""
+        return np.array([abs(w) <= e for _, _, w, e in self.cycles], dtype=bool)
 
     @property
     def all_resolved(self) -> bool:
@@ -204,6 +216,14 @@ def _estimate(fine: np.ndarray, coarse: np.ndarray, coarser: np.ndarray,
     order = min(order, max_order)
     err = np.abs(fine - coarse) / (2.0**order - 1.0)
     return np.where(ok, err, np.where(np.isfinite(fine), np.inf, np.nan)), order
+
+
+def _compliance(shift: np.ndarray, force: np.ndarray) -> np.ndarray:
+    """ds/dQ over each step (NaN at the start and where Q does not change)."""
+    dq = np.diff(force)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = np.where(dq != 0.0, np.diff(shift) / np.where(dq != 0.0, dq, 1.0), np.nan)
+    return np.concatenate(([np.nan], out))
 
 
 def _closed(load: np.ndarray, tang: np.ndarray, sigma: np.ndarray) -> list[tuple[int, int]]:
@@ -354,6 +374,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         approach=raw.delta, shift=raw.shift, dissipation=raw.dissipation,
         external_work=raw.external_work, stored_energy=raw.stored_energy,
         converged=raw.converged, pressure=raw.p / ops.p0, shear=raw.q / ops.p0,
+        slip=raw.slip, tangential_compliance=_compliance(raw.shift, raw.force),
         state=raw.state, point_step=points, stick_ratio_error=ratio_err,
         stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)

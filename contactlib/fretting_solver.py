@@ -437,6 +437,7 @@ class RawFretting:
     p: np.ndarray  # (steps + 1, n)
     q: np.ndarray
     state: np.ndarray
+    slip: np.ndarray  # (steps + 1, n): the step's slip increment dv (body minus indenter)
     mid: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
 
@@ -472,6 +473,7 @@ def run_fretting(ops: StripOperators, k: float, load: np.ndarray, force: np.ndar
     iters = np.zeros(m + 1, dtype=np.int32)
     p_all = np.zeros((m + 1, n))
     q_all = np.zeros((m + 1, n))
+    dv_all = np.zeros((m + 1, n))
     s_all = np.zeros((m + 1, n), dtype=np.int8)
     prev_load = prev_force = prev_strain = 0.0
     prev_delta = prev_shift = 0.0
@@ -506,6 +508,7 @@ def run_fretting(ops: StripOperators, k: float, load: np.ndarray, force: np.ndar
         conv[j] = step.converged
         iters[j] = step.iterations
         p_all[j], q_all[j], s_all[j] = step.p, step.q, step.state
+        dv_all[j] = np.where(step.state != SEPARATED, step.v - v, 0.0)
         v, state = step.v, step.state
         prev_load, prev_force, prev_strain = float(load[i]), float(force[i]), float(strain[i])
         prev_delta, prev_shift, prev_q = step.delta, step.shift, step.q
@@ -515,5 +518,5 @@ def run_fretting(ops: StripOperators, k: float, load: np.ndarray, force: np.ndar
                        strain=np.concatenate(([0.0], strain)), delta=out["delta"],
                        shift=out["shift"], edges=edges, dissipation=out["dissipation"],
                        external_work=out["external_work"], stored_energy=out["stored_energy"],
-                       converged=conv, iterations=iters, p=p_all, q=q_all, state=s_all,
+                       converged=conv, iterations=iters, p=p_all, q=q_all, state=s_all, slip=dv_all,
                        mid=ops.mid)

@@ -2181,6 +2181,13 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
             "contact pressure over p0", comment="p0: Hertz peak pressure at a_max")),
         "shear": (ed, r.shear, cf_attrs(
             "shear traction over p0", comment="traction on the body, positive along +x")),
+        "slip": (ed, r.slip, cf_attrs(
+            "slip increment of the step (body minus indenter) (dv R / a_max**2)",
+            comment="0 where stuck or separated")),
+        "tangential_compliance": (sd, r.tangential_compliance, cf_attrs(
+            "tangential compliance over the step (ds/dQ, units 1/E*)",
+            comment="secant over the step; its level depends on the half-plane's datum, "
+                    "its changes do not; NaN where Q does not change")),
         "state": (ed, r.state.astype(np.int8), cf_attrs(
             "element contact state", flag_values=np.array([0, 1, 2, 3], dtype=np.int8),
             flag_meanings=fs.STATE_MEANINGS)),
@@ -2213,6 +2220,7 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "cycle_points": cyc.ravel(),
         "cycle_work": np.asarray([c[2] for c in r.cycles], dtype=float),
         "cycle_work_error_estimate": np.asarray([c[3] for c in r.cycles], dtype=float),
+        "cycle_shaken_down": r.shaken_down.astype(np.int8),
         "length_scale": "a_max: frictionless (Hertz) contact half-width at load level 1",
         "contactlib_version": version(),
         "Conventions": CONVENTIONS,

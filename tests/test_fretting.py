@@ -252,3 +252,23 @@ def test_extremes_keep_equilibrium_and_honest_stick_estimates(k, x):
     width = r.stick_edges[pts, 1] - r.stick_edges[pts, 0]
     narrow = width < 11 * (r.x[1] - r.x[0])
     assert np.all(r.stick_ratio_error[1:][narrow] >= (r.x[1] - r.x[0]) / 2.4)
+
+
+def test_tangential_compliance_changes_as_cattaneos_shift():
+    """s(x) = k p0 [L x + (1 - x) ln(1 - x)/2], x = Q/kP (L: the datum): the secant
+    compliance of a step differs between two steps as that of the closed form."""
+    steps = 40
+    r = fretting("cylinder", 0.5, K, [0, 1, 1], [0, 0, 0.8], steps, error_estimate=False)
+
+    def secant(x0, x1):  # (s(x1) - s(x0)) / (Q1 - Q0) without the datum's term
+        g = lambda x: 0.5 * (1 - x) * math.log(1 - x)  # noqa: E731
+        return r.p0 / r.p_max * (g(x1) - g(x0)) / (x1 - x0)
+
+    xs = np.linspace(0, 0.8, steps + 1)
+    c = r.tangential_compliance[steps + 1:]
+    for i, j in ((5, 30), (10, 39)):
+        exact = secant(xs[j], xs[j + 1]) - secant(xs[i], xs[i + 1])
+        assert c[j] - c[i] == pytest.approx(exact, rel=2e-3)
+    assert np.all(np.isnan(r.tangential_compliance[1:steps + 1]))  # Q constant while loading
+    assert r.slip.shape == r.shear.shape
+    assert np.max(np.abs(r.slip[r.state == 1])) < 1e-12  # stuck: no slip but round-off

@@ -588,6 +588,13 @@ def build_parser() -> argparse.ArgumentParser:
                            "default: %(default)s, as for solve and sweep (the default n and "
                            "steps reach about 1 %%, so ask for 1e-2 or refine: 1e-3 needs "
                            "about 4 n and 4 x steps)")
+    hist.add_argument("--tolerance", metavar="T", default=None,
+                      help="accuracy to reach instead of --n/--steps/--max-error, in "
+                           "[1e-5, 1e-2]: the path's frictional work relative to its total "
+                           "and the stick radius at the peak load in a_max; n and steps "
+                           "are planned from measured convergence, refined where the run's "
+                           "estimates fall short, and --max-error becomes T; exit status 3 "
+                           "(the dataset written, flagged) where the run does not get there")
     hist.add_argument("--debug", action="store_true",
                       help="print a traceback on unexpected errors")
 
@@ -679,6 +686,26 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     if base != "smooth":
         kwargs["base"] = base
     kwargs.update(_profile_kwargs(args))
+    return kwargs
+
+
+def _validate_planned_history(args: argparse.Namespace) -> dict[str, Any]:
+    """Checked keyword arguments of :func:`contactlib.history` with ``--tolerance`` (the
+    plan picks n and steps: :mod:`contactlib.history_plan`)."""
+    from contactlib.history_plan import MAX_TOLERANCE, MIN_TOLERANCE
+
+    tol = _check(lambda v: validate.number("tolerance", v, MIN_TOLERANCE, MAX_TOLERANCE),
+                 args.tolerance, _float(args.tolerance))
+    given = [o for o, v in (("--steps", args.steps), ("--n", args.n)) if v is not None]
+    if args.max_error != f"{validate.DEFAULT_MAX_ERROR:g}":
+        given.append("--max-error")
+    if given:
+        raise UsageError(f"--tolerance must be given without {', '.join(given)} (the plan "
+                         f"picks n and steps, and T is the accuracy asked for), got "
+                         f"--tolerance {args.tolerance!r} with them")
+    kwargs = _validate_history(argparse.Namespace(**{**vars(args), "steps": "1"}))
+    kwargs.pop("max_error")
+    kwargs.update(steps=None, n=None, tolerance=tol)
     return kwargs
 
 
@@ -1303,13 +1330,25 @@ def _history_api() -> ModuleType:
 
 
 def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
-    with _progress("history") as progress:
-        res = module.history(progress=progress, **kwargs)
+    try:
+        with _progress("history") as progress:
+            res = module.history(progress=progress, **kwargs)
+    except validate.SolverLimit as exc:  # a tolerance planned beyond the largest n: status 3
+        raise SolverLimitError(exc) from exc
     from contactlib import io
 
     io.write_dataset(io.history_to_dataset(res), output)
     print(format_history(res))
     print(f"wrote {output}")
+    if getattr(res, "tolerance_met", None) is False:  # written, flagged, and status 3
+        from contactlib.history_plan import reached_tolerance
+
+        reach = reached_tolerance(res)
+        raise SolverLimitError(validate.SolverLimit(
+            f"{res.message.split('; ')[0]}; the dataset {output} is written with its "
+            f"steps flagged",
+            remedies=[("history", {"friction": res.friction, "tolerance": reach})]
+            if reach is not None else []))
     return 0
 
 
@@ -1455,7 +1494,7 @@ def _remedy_command(argv: Sequence[str], args: argparse.Namespace, command: str,
             text = ",".join(("0N" if v == 0 else f"{load}{unit}") for v in value)
         opts.append((option, text))
     if command == "history":
-        if not physical:
+        if not physical and "tolerance" not in changes:
             opts.append(("--steps", "200"))
         opts.append(("--output", "history.nc"))
     elif args.output is not None:
@@ -1465,6 +1504,8 @@ def _remedy_command(argv: Sequence[str], args: argparse.Namespace, command: str,
         new = build_parser().parse_args(tokens)
         if is_physical(new):
             _validate_physical(new)
+        elif command == "history" and new.tolerance is not None:
+            _validate_planned_history(new)
         elif command == "history":
             _validate_history(new)
         else:
@@ -1514,6 +1555,11 @@ def main(argv: list[str] | None = None) -> int:
         debug = bool(getattr(args, "debug", False))
         if args.command == "check-config":
             return _run_check_config(args.files)
+        if args.command == "history" and args.tolerance is not None and (
+                args.tangential_path is not None or is_physical(args)):
+            raise UsageError("--tolerance plans a dimensionless history of a normal load path "
+                             "(--nu, load levels): give it without --tangential-path and the "
+                             "physical options")
         if args.command == "history" and (args.tangential_path is not None
                                           or args.bulk_stress is not None):
             if args.tangential_path is None:
@@ -1532,7 +1578,8 @@ def main(argv: list[str] | None = None) -> int:
             check_output(args.output)
             return _run_physical(phys_kwargs, args.output, args.command)
         if args.command == "history":
-            hist_kwargs = _validate_history(args)  # before importing the numerics
+            hist_kwargs = (_validate_planned_history(args) if args.tolerance is not None
+                           else _validate_history(args))  # before importing the numerics
             check_output(args.output)
             return _run_history(hist_kwargs, args.output, _history_api())
         kwargs = _validate(args)  # before importing the numerics

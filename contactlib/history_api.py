@@ -162,6 +162,11 @@ class HistoryResult:
         load that no refinement of equal steps resolves).
     max_error : float
         The accuracy a step must reach to be resolved.
+    tolerance : float
+        The tolerance planned for (:func:`history` with ``tolerance``; NaN otherwise).
+    tolerance_met : bool or None
+        Whether the planned run's estimates of the path's work and of the stick
+        radius at the peak met it (None without a tolerance).
     relaxation, durations : tuple
         The body's Prony terms (g_i, tau_i) and the durations of the path
         segments (unit of tau); both empty for an elastic body.
@@ -227,6 +232,8 @@ class HistoryResult:
     work_error_estimate: np.ndarray | None = None
     resolved: np.ndarray | None = None
     max_error: float = DEFAULT_MAX_ERROR
+    tolerance: float = math.nan  # planned for (history(..., tolerance=)); NaN otherwise
+    tolerance_met: bool | None = None  # None without a tolerance
     indenter_modulus_ratio: float = math.inf  # E1/E2 (inf: rigid)
     indenter_poisson_ratio: float = math.nan  # nu1 (the body's when rigid)
     dundurs_beta: float = math.nan  # beta of the pair (< 0: slip outward while loading)
@@ -368,7 +375,7 @@ def _advice(n: int, steps: int, needs: dict[str, tuple[float, float]],
 # ----------------------------------------------------------------------------- public API
 @blas_single_threaded
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
-            steps: int, *, n: int | None = None, slab_ratio: float = 0.0,
+            steps: int | None, *, n: int | None = None, slab_ratio: float = 0.0,
             progress: Callable[[int, int], None] | None = None,
             max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
             indenter_modulus: float = math.inf,
@@ -376,7 +383,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             relaxation: Sequence[Sequence[float]] | None = None,
             duration: float | Sequence[float] | None = None,
             base: str = "smooth", profile: str = "paraboloid",
-            exponent: float | None = None) -> HistoryResult:
+            exponent: float | None = None,
+            tolerance: float | None = None) -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
@@ -448,6 +456,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         length a_max^(2d)) for h = A r^d.
     exponent : float, optional
         d for ``profile="power"``, in [0.5, 8] (omitted otherwise).
+    tolerance : float, optional
+        Plan n and steps instead (``steps`` and ``n`` then None): the accuracy,
+        in [1e-5, 1e-2], asked of the path's frictional work (relative to its
+        total) and of the stick radius at the peak load (units of a_max); it
+        becomes ``max_error``. The plan, the check of the run's estimates and
+        the refinements: :mod:`contactlib.history_plan`. ``tolerance_met``
+        says whether the run got there; a plan beyond the largest n raises
+        :class:`contactlib.validate.SolverLimit`.
 
     Returns
     -------
@@ -519,6 +535,26 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     ...  for k in (0.0, float("inf"))]
     [0.0, 0.0]
     """
+    if tolerance is not None:  # plan n and steps (contactlib.history_plan)
+        from .history_plan import history_to_tolerance
+
+        for name, value in (("steps", steps), ("n", n)):
+            if value is not None:
+                raise validate.InputError(name, "None with tolerance", value,
+                                          f"{name} must be None with tolerance (the plan "
+                                          f"picks it), got {value!r}")
+        for name, value, default in (("max_error", max_error, DEFAULT_MAX_ERROR),
+                                     ("error_estimate", error_estimate, True)):
+            if value is not default and value != default:
+                raise validate.InputError(name, "not given with tolerance", value,
+                                          f"{name} must not be given with tolerance (the "
+                                          f"tolerance is the accuracy asked for and needs "
+                                          f"the estimates), got {value!r}")
+        return history_to_tolerance(
+            history, geometry, nu, friction, load_path, tolerance, slab_ratio=slab_ratio,
+            progress=progress, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
+            relaxation=relaxation, duration=duration, base=base, profile=profile,
+            exponent=exponent)
     geometry = validate.geometry(geometry)
     nu = validate.nu(nu)
     k = validate.friction(friction)

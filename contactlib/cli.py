@@ -773,6 +773,43 @@ def format_fretting(res: Any) -> str:
     return "\n".join(lines)
 
 
+def _run_physical_fretting(args: argparse.Namespace) -> int:
+    """``history --tangential-path`` with forces in N (:mod:`contactlib.physical_fretting`)."""
+    from contactlib import io, physical_fretting
+
+    for option, given in (("--nu", args.nu is not None),
+                          ("--indenter-modulus", args.indenter_modulus != "inf"),
+                          ("--indenter-nu", args.indenter_nu is not None),
+                          ("--slab-ratio", args.slab_ratio not in (None, "0")),
+                          ("--thickness", args.thickness is not None),
+                          ("--relaxation", args.relaxation is not None)):
+        if given:
+            raise UsageError(f"{option} is not used with a fretting path in newtons (--radius, "
+                             f"--length, --indenter, --body give the problem), got {option}")
+    if args.geometry != "cylinder":
+        raise UsageError(f"--tangential-path is solved for the cylinder only, got --geometry "
+                         f"{args.geometry}")
+    kwargs: dict[str, Any] = {
+        "radius": _required(args.radius, "--radius"),
+        "length": _required(args.length, "--length"),
+        "load_path": args.load_path, "tangential_path": args.tangential_path,
+        "indenter": "rigid" if args.indenter is None else args.indenter,
+        "body": _required(args.body, "--body"),
+        "friction": parse_friction(args.friction),
+        "steps": 40 if args.steps is None else parse_steps(args.steps),
+        "max_error": parse_max_error(args.max_error)}
+    if args.n is not None:
+        kwargs["n"] = _int(args.n)
+    if args.bulk_stress is not None:
+        kwargs["bulk_stress"] = args.bulk_stress
+    with _progress("fretting") as progress:
+        res = physical_fretting.physical_fretting(progress=progress, **kwargs)
+    io.write_dataset(io.physical_fretting_to_dataset(res), args.output)
+    print(res.summary())
+    print(f"wrote {args.output}")
+    return 0
+
+
 def _run_fretting(kwargs: dict[str, Any], output: str) -> int:
     from contactlib import fretting_api, io
 
@@ -1564,9 +1601,9 @@ def main(argv: list[str] | None = None) -> int:
                                           or args.bulk_stress is not None):
             if args.tangential_path is None:
                 raise UsageError("--bulk-stress needs --tangential-path (give 0s for none)")
-            if is_physical(args):
-                raise UsageError("--tangential-path takes dimensionless input (--nu, load "
-                                 "levels); physical units are not supported for fretting yet")
+            if is_physical(args) or _path_has_units(args.tangential_path):
+                check_output(args.output)
+                return _run_physical_fretting(args)
             fret_kwargs = _validate_fretting(args)  # before any numerics
             check_output(args.output)
             return _run_fretting(fret_kwargs, args.output)

@@ -2297,3 +2297,37 @@ def fretting_study_to_dataset(results: Sequence[Any]) -> xr.Dataset:
               "cycle": ("cycle", np.arange(1, ncyc + 1, dtype=np.int32),
                         cf_attrs("cycle", comment="1: the first, from the first peak"))}
     return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def physical_fretting_to_dataset(result: Any) -> xr.Dataset:
+    """:func:`fretting_to_dataset` of a :class:`~contactlib.physical_fretting.PhysicalFretting`,
+    with its SI variables (CF ``units`` "N", "m", "J") and scales as attributes.
+
+    The dimensionless variables stay as they are; ``normal_force``, ``tangential_force``,
+    ``contact_edges_si``, ``stick_edges_si``, ``stick_offset_si`` and
+    ``frictional_work_si`` are the same quantities in SI, and the attributes
+    ``composite_modulus`` [Pa], ``radius``, ``length``, ``a_max`` [m], ``p0`` [Pa] and
+    ``load_max`` [N] convert the rest.
+    """
+    r = result.result
+    ds = fretting_to_dataset(r)
+    k, a, fmax = r.friction, result.a_max, result.load_max
+    ds["normal_force"] = (("step",), r.load_ratio * fmax, cf_attrs("normal force", "N"))
+    ds["tangential_force"] = (("step",), r.force_ratio * k * fmax,
+                              cf_attrs("tangential force on the body along +x", "N"))
+    ds["contact_edges_si"] = (("step", "side"), r.contact_edges * a,
+                              cf_attrs("contact edges", "m"))
+    ds["stick_edges_si"] = (("step", "side"), r.stick_edges * a,
+                            cf_attrs("stick zone edges", "m"))
+    ds["stick_offset_si"] = (("step",), r.stick_offset * a,
+                             cf_attrs("stick zone centre minus contact centre", "m"))
+    ds["frictional_work_si"] = (("step",), r.dissipation * result.work_unit,
+                                cf_attrs("cumulative frictional work", "J",
+                                         comment="over the cylinder's length"))
+    ds.attrs.update({"composite_modulus": float(result.composite_modulus),
+                     "radius": float(result.radius), "length": float(result.length),
+                     "a_max": float(a), "p0": float(result.p0), "load_max": float(fmax),
+                     "work_unit": float(result.work_unit),
+                     "scales": "lengths in m = value * a_max; forces in N; work in J = value "
+                               "* work_unit (E* a_max**4 / R**2 * length)"})
+    return ds

@@ -81,11 +81,15 @@ def test_cycle_work_is_mindlin_deresiewicz(x):
 
 
 def test_bulk_stress_offsets_the_stick_zone_as_hills_and_nowell():
-    """e = c2 sigma / (2 k p0) a: a/(4k) sigma/p0 for equal materials; c/a stays Cattaneo's."""
-    for sigma in (0.1, 0.3):
+    """e = c2 sigma / (2 k p0) a: a/(4k) sigma/p0 for equal materials; c/a stays Cattaneo's.
+
+    At sigma = 0.1 and 0.3 the zone moves by whole elements (exact to round-off); between
+    them the edge fit's error shows (measured 1.6e-4 at 0.1175), within the estimate."""
+    for sigma in (0.1, 0.1175, 0.23, 0.3):
         r = fretting("cylinder", 0.5, 0.5, [0, 1, 1], [0, 0, 0.4], 8,
                      bulk_stress=[0, 0, sigma], indenter_modulus=1.0, indenter_nu=0.5)
-        assert r.stick_offset[-1] == pytest.approx(sigma / (4 * 0.5), abs=1e-6)
+        err = abs(r.stick_offset[-1] - sigma / (4 * 0.5))
+        assert err <= 3 * r.stick_offset_error[-1] + 1e-12 and err < 5e-4
         assert abs(r.stick_ratio[-1] - math.sqrt(0.6)) < 5e-4
 
 

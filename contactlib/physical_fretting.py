@@ -1,0 +1,214 @@
+"""Fretting of a cylinder in SI units: :func:`physical_fretting`.
+
+The physical door of :func:`contactlib.fretting`, with the conversions of
+:mod:`contactlib.physical` (one place for them): the normal and tangential
+forces in N over the cylinder's length, the bulk stress in Pa, the answer in m,
+Pa, N and J with the error estimate of each.
+
+Scales: E* from the two materials; a_max = (4 P_max R/(pi E* L))^(1/2), the
+frictionless half-width at the largest normal force P_max of the path; p0 =
+E* a_max/(2R); lengths in units of a_max, work in E* a_max^4/R^2 per unit length
+times L.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from . import validate
+from .fretting_api import DEFAULT_N, DEFAULT_STEPS, FrettingResult, fretting
+from .physical import (_problem, _validity, contact_radius_of_load, format_si,
+                       hertz_peak_pressure, parse_force_path, parse_quantity, work_scale)
+from .validate import DEFAULT_MAX_ERROR
+
+__all__ = ["PhysicalFretting", "physical_fretting", "parse_signed_path"]
+
+
+def parse_signed_path(value: Any, kind: str, name: str) -> tuple[float, ...]:
+    """A path of signed forces (N) or stresses (Pa): numbers in SI or strings with units.
+
+    ``"0N,0N,200N,-200N"`` or a sequence; the first value 0.
+    """
+    items = value.split(",") if isinstance(value, str) else value
+    req = f"a list of {kind}s (SI, or with a unit), starting at 0"
+    if isinstance(items, (bytes, dict)) or not hasattr(items, "__iter__"):
+        raise validate.InputError(name, req, value)
+    out = []
+    for item in items:
+        sign = 1.0
+        if isinstance(item, str) and item.strip().startswith("-"):
+            sign, item = -1.0, item.strip()[1:]
+        elif isinstance(item, (int, float)) and not isinstance(item, bool) and item < 0:
+            sign, item = -1.0, -item
+        out.append(sign * parse_quantity(item, kind, name, positive=False))
+    if len(out) < 2 or out[0] != 0.0:
+        raise validate.InputError(name, req, value)
+    return tuple(out)
+
+
+@dataclass(repr=False)
+class PhysicalFretting:
+    """A fretting path of a cylinder in SI (m, Pa, N, J), with the dimensionless result.
+
+    Attributes
+    ----------
+    result : FrettingResult
+        The dimensionless answer (units of :mod:`contactlib.fretting_api`).
+    radius, length : float
+        R and L [m].
+    composite_modulus : float
+        E* [Pa].
+    a_max, p0, load_max : float
+        The frictionless half-width [m] and Hertz peak pressure [Pa] at the largest
+        normal force, and that force [N].
+    work_unit : float
+        The work unit E* a_max^4/R^2 L [J].
+    notes : list of str
+        Where the contact leaves the theory's validity (a/R, a/L).
+    """
+
+    result: FrettingResult
+    radius: float
+    length: float
+    composite_modulus: float
+    a_max: float
+    p0: float
+    load_max: float
+    work_unit: float
+    heading: str
+    notes: list[str]
+
+    def points(self) -> list[dict[str, float]]:
+        """The state at every path point in SI, with the estimates (m, N, J)."""
+        r = self.result
+        rows = []
+        for i, j in enumerate(r.point_step):
+            left, right = r.contact_edges[j]
+            rows.append({
+                "normal force [N]": float(r.load_ratio[j] * self.load_max),
+                "tangential force [N]": float(r.force_ratio[j] * r.friction * self.load_max),
+                "contact half-width [m]": float(0.5 * (right - left) * self.a_max),
+                "stick half-width [m]": float(0.5 * r.stick_ratio[j] * (right - left)
+                                              * self.a_max),
+                "stick half-width error [m]": float(0.5 * r.stick_ratio_error[i]
+                                                    * (right - left) * self.a_max),
+                "stick offset [m]": float(r.stick_offset[j] * self.a_max),
+                "stick offset error [m]": float(r.stick_offset_error[i] * self.a_max),
+                "frictional work [J]": float(r.dissipation[j] * self.work_unit),
+                "frictional work error [J]": float(r.dissipation_error[i] * self.work_unit),
+                "resolved": bool(r.resolved[i])})
+        return rows
+
+    def cycles(self) -> list[tuple[int, int, float, float]]:
+        """(first point, last point, frictional work [J], its estimate [J]) per cycle."""
+        return [(i, j, w * self.work_unit, e * self.work_unit)
+                for i, j, w, e in self.result.cycles]
+
+    def summary(self) -> str:
+        """A few lines: the scales, each path point and each cycle in SI."""
+        r = self.result
+        lines = [self.heading,
+                 f"E* = {format_si(self.composite_modulus, 'Pa')}, beta = {r.beta:.4g}, "
+                 f"k = {r.friction:g}; at {format_si(self.load_max, 'N')}: a = "
+                 f"{format_si(self.a_max, 'm')}, p0 = {format_si(self.p0, 'Pa')}",
+                 "point  P         Q          a          c (estimate)           "
+                 "offset      frictional work (estimate)  resolved"]
+        for i, row in enumerate(self.points()):
+            c = row["stick half-width [m]"]
+            if not math.isfinite(row["contact half-width [m]"]):
+                lines.append(f"{i:5d}  {format_si(row['normal force [N]'], 'N'):9s} "
+                             f"{format_si(row['tangential force [N]'], 'N'):10s} no contact")
+                continue
+            lines.append(
+                f"{i:5d}  {format_si(row['normal force [N]'], 'N'):9s} "
+                f"{format_si(row['tangential force [N]'], 'N'):10s} "
+                f"{format_si(row['contact half-width [m]'], 'm'):10s} "
+                f"{format_si(c, 'm') if math.isfinite(c) else 'none':10s} "
+                f"({row['stick half-width error [m]']:.1e} m)  "
+                f"{row['stick offset [m]']:+.2e} m  "
+                f"{format_si(row['frictional work [J]'], 'J'):10s} "
+                f"({row['frictional work error [J]']:.1e} J)  "
+                f"{'yes' if row['resolved'] else 'NO'}")
+        for i, j, w, e in self.cycles():
+            lines.append(f"cycle from point {i} to {j}: {format_si(w, 'J')} "
+                         f"(estimate {e:.1e} J)")
+        lines += self.notes
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        return self.summary()
+
+
+def physical_fretting(radius: float | str, length: float | str, load_path: Any,
+                      tangential_path: Any, indenter: Any, body: Any, friction: float, *,
+                      steps: int = DEFAULT_STEPS, n: int = DEFAULT_N,
+                      bulk_stress: Any = None, max_error: float = DEFAULT_MAX_ERROR,
+                      progress: Callable[[int, int], None] | None = None
+                      ) -> PhysicalFretting:
+    """A cylinder pressed by forces in N, then loaded tangentially; the answer in SI.
+
+    Parameters
+    ----------
+    radius, length : float or str
+        R and L of the cylinder, in m or with a unit ("10mm").
+    load_path : sequence or str
+        Normal forces [N] (or with units: "0N,500N,500N"), starting at 0; P_max is the
+        largest.
+    tangential_path : sequence or str
+        Tangential forces [N] at the same points, signed, starting at 0, with |Q| < k P.
+    indenter, body : str or (E, nu)
+        Named materials of the package's table (``contactlib.materials``), or moduli in
+        Pa (or with units) with Poisson's ratios; the indenter may be ``"rigid"``.
+    friction : float
+        k > 0.
+    steps, n, max_error, progress
+        As for :func:`contactlib.fretting`.
+    bulk_stress : sequence or str, optional
+        The body's bulk stress along x [Pa] (or with units) at the same points.
+
+    Returns
+    -------
+    PhysicalFretting
+
+    Raises
+    ------
+    ValueError
+        Naming the argument, for input the physical door or :func:`contactlib.fretting`
+        refuses.
+    """
+    prob = _problem("cylinder", radius, indenter, body, length, None, "smooth")
+    forces = parse_force_path(load_path, "load_path")
+    tangential = parse_signed_path(tangential_path, "force", "tangential_path")
+    if len(tangential) != len(forces):
+        raise validate.InputError("tangential_path", f"as long as load_path ({len(forces)} "
+                                  "points)", tangential_path)
+    k = float(friction)
+    load_max = max(forces)
+    a_max = contact_radius_of_load("cylinder", prob.e_star, prob.radius,
+                                   load_max / prob.length)
+    p0 = hertz_peak_pressure("cylinder", prob.e_star, prob.radius, a_max)
+    kwargs: dict[str, Any] = {}
+    if bulk_stress is not None:
+        stress = parse_signed_path(bulk_stress, "modulus", "bulk_stress")
+        if len(stress) != len(forces):
+            raise validate.InputError("bulk_stress", f"as long as load_path ({len(forces)} "
+                                      "points)", bulk_stress)
+        kwargs["bulk_stress"] = [s / p0 for s in stress]
+    if not (math.isfinite(k) and k > 0):
+        raise validate.InputError("friction", "a finite coefficient k > 0", friction)
+    kwargs.update(prob.dimensionless())
+    res = fretting("cylinder", prob.body.nu, k, [f / load_max for f in forces],
+                   [q / (k * load_max) for q in tangential], steps, n=n,
+                   max_error=max_error, progress=progress, **kwargs)
+    notes = _validity(prob, a_max)
+    heading = (f"cylinder R = {format_si(prob.radius, 'm')}, length "
+               f"{format_si(prob.length, 'm')}: indenter {prob.indenter}, body {prob.body}")
+    return PhysicalFretting(result=res, radius=prob.radius, length=prob.length,
+                            composite_modulus=prob.e_star, a_max=a_max, p0=p0,
+                            load_max=load_max,
+                            work_unit=work_scale("cylinder", prob.e_star, prob.radius, a_max)
+                            * prob.length, heading=heading, notes=notes)
+

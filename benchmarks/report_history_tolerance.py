@@ -1,7 +1,8 @@
 """A history to a tolerance: reached where it says so? Its cost in dense LU(1024) units.
 
-Run: python benchmarks/report_history_tolerance.py [T ...] [--cap N]
-(default T = 1e-2; the fourfold-refined truth is run where 4n <= N, default 960)
+Run: python benchmarks/report_history_tolerance.py [T ...] [--cap N] [--only G:K,...]
+(default T = 1e-2; the fourfold-refined truth is run where 4n <= N, default 960; --only
+runs the listed cases, e.g. ``--only cylinder:0.2,sphere:0.05``)
 
 For the sphere and the cylinder at nu = 0.3, k = 0.05, 0.2, 0.5, path 0, 1, 0, it runs
 ``contactlib.history(..., tolerance=T)`` (n and steps planned, refined where the
@@ -89,6 +90,11 @@ def main(argv: list[str]) -> None:
         i = argv.index("--cap")
         cap = int(argv[i + 1])
         argv = argv[:i] + argv[i + 2:]
+    cases = CASES
+    if "--only" in argv:
+        i = argv.index("--only")
+        cases = [(g, float(k)) for g, k in (c.split(":") for c in argv[i + 1].split(","))]
+        argv = argv[:i] + argv[i + 2:]
     tols = [float(a) for a in argv] or [1e-2]
     unit = lu_unit()
     print(f"## History to a tolerance (nu = {NU}, path {PATH}); LU(1024) = {unit * 1e3:.1f} ms "
@@ -97,7 +103,7 @@ def main(argv: list[str]) -> None:
           "stick radius at peak: true (a_max) | estimate | CPU in LU(1024) | honest |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for tol in tols:
-        for geometry, k in CASES:
+        for geometry, k in cases:
             print(row(geometry, k, tol, cap, unit), flush=True)
 
 

@@ -1,0 +1,92 @@
+"""Fretting of the sphere (contactlib.fretting_sphere): accuracy against Cattaneo–Mindlin and
+Mindlin–Deresiewicz, the coupled normal loading against the self-similar solution, and the
+cost as a ratio to a normal-load cycle of ``history`` timed in the same run.
+
+    python benchmarks/report_fretting_sphere.py            # about 2 min on 2 cores
+
+Cases: two equal bodies with nu = 0 (beta = 0, gamma = 0: Cattaneo–Mindlin exact), k = 0.3,
+P: 0 -> P_max, then Q: 0 -> Q* -> -Q* -> Q*, 4 steps a segment (at beta = 0 and constant P
+the grid's solution does not depend on the steps of a monotonic branch), n = 32 and 64
+cells a side over [-1.2, 1.2]^2 a_max. The estimate of a fine run is its difference to the
+run at twice the cell size. Then rigid on nu = 0.3 (beta = 0.286), Q = 0, 10 steps.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from contactlib import fretting_sphere as fs
+from contactlib import history, solve
+from contactlib.model import contact
+
+K = 0.3
+STEPS = 4
+
+
+def cycle(model, n: int, x: float):
+    ops = fs.grid_operators(model, n)
+    big_p = ops.p_max
+    t = np.arange(1, STEPS + 1) / STEPS
+    load = np.concatenate([big_p * t, np.full(3 * STEPS, big_p)])
+    force = K * big_p * np.concatenate([0 * t, x * t, x - 2 * x * t, -x + 2 * x * t])
+    t0 = time.perf_counter()
+    raw = fs.run_sphere_fretting(ops, K, load, force)
+    return ops, raw, time.perf_counter() - t0
+
+
+def main() -> None:
+    t0 = time.perf_counter()
+    history("sphere", 0.3, 0.3, [0, 1, 0], 200)
+    t_hist = time.perf_counter() - t0
+    print(f"reference: history('sphere', 0.3, 0.3, [0, 1, 0], 200): {t_hist:.2f} s\n")
+
+    model = contact("sphere", 0.0, indenter_modulus=1.0, indenter_nu=0.0)
+    c_mind = fs.mindlin_compliance(model)
+    print("equal bodies, nu = 0 (beta = gamma = 0), k = 0.3: errors against the closed forms")
+    print("| Q*/kP | n | c/a - (1-x)^(1/3) | est. | delta rel. err | est. | cycle work "
+          "rel. err | est. | time s | x history |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for x in (0.25, 0.5, 0.9):
+        out = {}
+        for n in (32, 64):
+            ops, raw, dt = cycle(model, n, x)
+            i = 2 * STEPS
+            big_p = ops.p_max
+            bracket = 1 - (1 - x) ** (5 / 3) - 5 * x / 6 * (1 + (1 - x) ** (2 / 3))
+            exact = np.array([(1 - x) ** (1 / 3),
+                              3 * K * big_p / 16 * c_mind * (1 - (1 - x) ** (2 / 3)),
+                              9 * K * K * big_p * big_p * c_mind / 10 * bracket])
+            got = np.array([raw.stick_radius[i] / raw.contact_radius[i], raw.shift[i, 0],
+                            raw.dissipation[-1] - raw.dissipation[i]])
+            out[n] = (got, exact, dt, bool(raw.converged.all()))
+        for n in (32, 64):
+            got, exact, dt, ok = out[n]
+            est = np.abs(got - out[n // 2][0]) if n // 2 in out else np.full(3, np.nan)
+            flag = "" if ok else " (NOT CONVERGED)"
+            print(f"| {x} | {n} | {got[0] - exact[0]:.1e} | {est[0]:.1e} | "
+                  f"{got[1] / exact[1] - 1:.1e} | {est[1] / exact[1]:.1e} | "
+                  f"{got[2] / exact[2] - 1:.1e} | {est[2] / exact[2]:.1e} | {dt:.1f} | "
+                  f"{dt / t_hist:.1f}{flag} |")
+
+    print("\nrigid on nu = 0.3 (beta = 0.286), k = 0.3, Q = 0, 10 steps: stick ratio at peak")
+    ref = solve("sphere", 0.3, friction=K).stick_ratio
+    model = contact("sphere", 0.3)
+    prev = None
+    for n in (16, 32):
+        ops = fs.grid_operators(model, n)
+        t = np.arange(1, 11) / 10
+        t0 = time.perf_counter()
+        raw = fs.run_sphere_fretting(ops, K, ops.p_max * t, 0 * t)
+        dt = time.perf_counter() - t0
+        c = raw.stick_radius[-1] / raw.contact_radius[-1]
+        est = abs(c - prev) if prev is not None else float("nan")
+        print(f"n = {n}: c/a = {c:.5f} (self-similar {ref:.5f}, error {c - ref:.1e}, "
+              f"estimate {est:.1e}), converged {bool(raw.converged.all())}, {dt:.1f} s "
+              f"= {dt / t_hist:.1f} x history")
+        prev = c
+
+
+if __name__ == "__main__":
+    main()

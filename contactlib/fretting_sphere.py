@@ -108,6 +108,8 @@ _MAX_SETS = 200
 _MAX_COUPLING = 100
 _FORCE_TOL = 1e-10  # the force Q, relative to k P
 _MAX_SECANT = 60
+_PINNED_TOL = 1e-6  # a pinned cell's slip along its shear, relative to the slip scale
+_MIX = 0.5  # damping of the slip directions' update (plain updates diverged)
 _ANDERSON = 5  # Anderson mixing of the slip directions: steps kept
 
 
@@ -430,6 +432,7 @@ def solve_shifted(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
     kself = ops.self_tangential
     seen: set[bytes] = set()
     cycling = False
+    pinned = np.zeros_like(stick)
     hist_x: list[np.ndarray] = []
     hist_f: list[np.ndarray] = []
     for it in range(1, _MAX_SETS + 1):
@@ -444,16 +447,19 @@ def solve_shifted(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
         rest = dv - kself * q
         rmag = np.hypot(rest[0], rest[1])
         along = rmag - kself * g  # > 0: the imposed slip overcomes k p
-        back = slip & ((dv[0] * e[0] + dv[1] * e[1]) > _SET_TOL * vscale)
+        slip_along = dv[0] * e[0] + dv[1] * e[1]
+        back = slip & (slip_along > np.where(pinned, _PINNED_TOL, _SET_TOL) * vscale)
         new_e = np.where(rmag > 0, -rest / np.where(rmag > 0, rmag, 1.0), e)
         turn = float(np.max(np.hypot(*(new_e - e))[slip & ~back], initial=0.0))
         if not over.any() and not back.any() and turn <= _DIRECTION_TOL and ok:
-            return q, v, stick, True, it
+            # a cell kept slipping to end a cycle must slip (nearly) against its shear
+            ok_pinned = not np.any(pinned & slip & (slip_along > _PINNED_TOL * vscale))
+            return q, v, stick, ok_pinned, it
         key = stick.tobytes()
         if (over.any() or back.any()) and key in seen:
             cycling = True
         seen.add(key)
-        if cycling:  # switch only the worst offender
+        if cycling:  # switch only the worst offender; it then stays slipping
             o_val = np.where(over, qmag / np.maximum(g, 1e-300), 0.0)
             b_val = np.where(back, -along, 0.0)
             over = np.zeros_like(over)
@@ -462,6 +468,8 @@ def solve_shifted(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
                 over.flat[int(np.argmax(o_val))] = True
             elif b_val.max() > 0:
                 back.flat[int(np.argmax(b_val))] = True
+        if cycling:
+            pinned |= over
         if over.any():  # the stuck cells over the limit first: moving both sets at
             back = np.zeros_like(back)  # once alternated between two states at reversals
         frozen = not over.any() and not back.any()
@@ -479,15 +487,18 @@ def solve_shifted(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
                 dF = np.stack([hist_f[i + 1] - hist_f[i] for i in range(len(hist_f) - 1)], 1)
                 dX = np.stack([hist_x[i + 1] - hist_x[i] for i in range(len(hist_x) - 1)], 1)
                 gam, *_ = np.linalg.lstsq(dF, f_k, rcond=None)
-                x_new = x_k + f_k - (dX + dF) @ gam
+                x_new = x_k + _MIX * f_k - (dX + _MIX * dF) @ gam
             else:
-                x_new = x_k + f_k
+                x_new = x_k + _MIX * f_k
+            flip = (new_e[0] * e[0] + new_e[1] * e[1]) < 0.0  # reversed: no mixing
             e = e.copy()
             e[sel] = x_new
+            e = np.where(flip & slip, new_e, e)
         else:
             hist_x.clear()
             hist_f.clear()
-            e = np.where(slip & ~back, new_e, e)
+            flip = (new_e[0] * e[0] + new_e[1] * e[1]) < 0.0  # reversed: no mixing
+            e = np.where(slip & ~back, np.where(flip, new_e, e + _MIX * (new_e - e)), e)
         emag = np.hypot(e[0], e[1])
         e = np.where(emag > 0, e / np.where(emag > 0, emag, 1.0), e)
         e = np.where(over, q / np.where(qmag > 0, qmag, 1.0), e)

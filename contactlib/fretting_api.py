@@ -153,8 +153,9 @@ def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
     if geometry != "cylinder":
         raise ValueError(
             f"fretting: geometry {geometry!r} is not covered; the tangential load is solved "
-            "for the cylinder (plane strain) only. For the sphere use the Cattaneo-Mindlin "
-            "closed form (beta = 0) or ask for the cylinder")
+            "for the cylinder (plane strain) only. The sphere's solver "
+            "(contactlib.fretting_sphere) is verified only for uncoupled pairs with nu = 0 "
+            "and is not behind this call yet (docs/fretting.md, 'The sphere')")
     if not (isinstance(friction, (int, float)) and math.isfinite(friction) and friction > 0):
         raise ValueError(f"friction: a tangential load needs a finite friction coefficient "
                          f"k > 0, got {friction!r}")

@@ -233,7 +233,7 @@ def load_path(spec: Any, name: str = "load_path") -> Path:
         cols = []
         for key in _TABLE_KEYS:
             col = spec[key]
-            if not validate._sequence(col):
+            if not validate.is_sequence(col):
                 raise validate.InputError(f"{name}.{key}", "a sequence of numbers", col)
             cols.append([validate.number(f"{name}.{key}", v) for v in col])
         t, load = cols

@@ -336,7 +336,7 @@ class _Problem:
         return kwargs
 
 
-def _problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
+def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
              thickness: Any, base: Any) -> _Problem:
     geometry = validate.geometry(geometry)
     r = parse_quantity(radius, "length", "radius")
@@ -356,7 +356,7 @@ def _problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
     return _Problem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base)
 
 
-def _validity(problem: _Problem, a: float) -> list[str]:
+def validity_notes(problem: _Problem, a: float) -> list[str]:
     """Warnings (issued, and returned as lines) where the contact leaves the theory."""
     notes = []
     if a / problem.radius > SMALL_STRAIN_LIMIT:
@@ -594,7 +594,7 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     from . import api
     from .model import contact
 
-    prob = _problem(geometry, radius, indenter, body, length, thickness, base)
+    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base)
     force = parse_quantity(load, "force", "load")
     per_length = force / prob.per_length
     kwargs = dict(prob.dimensionless(), n=n, method=method, max_error=max_error,
@@ -651,7 +651,7 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
         approach=approach, load_ratio=float(sol.load_ratio), frictional_energy=work,
         hertz_contact_radius=a_hertz, p0=p0,
         hertz_load=hertz_load(g, prob.e_star, prob.radius, a) * prob.per_length,
-        slab_ratio=slab, errors=errors, notes=_validity(prob, a), solution=sol)
+        slab_ratio=slab, errors=errors, notes=validity_notes(prob, a), solution=sol)
 
 
 def _layer_radius(prob: _Problem, a_hertz: float,
@@ -868,7 +868,7 @@ def force_shape(spec: Any, name: str = "load_path") -> tuple[Any, float, float]:
     cols = {}
     for key, kind in (("time", "time"), ("force", "force")):
         col = spec[key]
-        if not validate._sequence(col):
+        if not validate.is_sequence(col):
             raise validate.InputError(f"{name}.{key}", "a sequence", col)
         cols[key] = [parse_quantity(v, kind, f"{name}.{key}", positive=False)
                      if not (kind == "time" and isinstance(v, (int, float)) and not
@@ -967,7 +967,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
 
     from . import load_paths
 
-    prob = _problem(geometry, radius, indenter, body, length, thickness, base)
+    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base)
     shaped = load_paths.is_shaped(load_path)
     if shaped:
         if times is not None:
@@ -1051,7 +1051,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         cyc_v.append(wv[je] - wv[js])
     time = None if res.time is None else np.asarray(res.time) + (t_points[0] if t_points
                                                                  is not None else 0.0)
-    notes = _validity(prob, float(np.nanmax(a)))
+    notes = validity_notes(prob, float(np.nanmax(a)))
     return PhysicalHistory(
         geometry=g, radius=prob.radius, length=prob.length, thickness=prob.thickness,
         base=prob.base, indenter=prob.indenter, body=prob.body, composite_modulus=prob.e_star,

@@ -20,7 +20,7 @@ from typing import Any
 
 from . import validate
 from .fretting_api import DEFAULT_N, DEFAULT_STEPS, FrettingResult, fretting
-from .physical import (_problem, _validity, contact_radius_of_load, format_si,
+from .physical import (contact_radius_of_load, format_si, physical_problem, validity_notes,
                        hertz_peak_pressure, parse_force_path, parse_quantity, work_scale)
 from .validate import DEFAULT_MAX_ERROR
 
@@ -179,7 +179,7 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
         Naming the argument, for input the physical door or :func:`contactlib.fretting`
         refuses.
     """
-    prob = _problem("cylinder", radius, indenter, body, length, None, "smooth")
+    prob = physical_problem("cylinder", radius, indenter, body, length, None, "smooth")
     forces = parse_force_path(load_path, "load_path")
     tangential = parse_signed_path(tangential_path, "force", "tangential_path")
     if len(tangential) != len(forces):
@@ -203,7 +203,7 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
     res = fretting("cylinder", prob.body.nu, k, [f / load_max for f in forces],
                    [q / (k * load_max) for q in tangential], steps, n=n,
                    max_error=max_error, progress=progress, **kwargs)
-    notes = _validity(prob, a_max)
+    notes = validity_notes(prob, a_max)
     heading = (f"cylinder R = {format_si(prob.radius, 'm')}, length "
                f"{format_si(prob.length, 'm')}: indenter {prob.indenter}, body {prob.body}")
     return PhysicalFretting(result=res, radius=prob.radius, length=prob.length,

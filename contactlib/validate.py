@@ -207,7 +207,7 @@ def _is_bool(value: Any) -> bool:
                                        and type(value).__module__ == "numpy")
 
 
-def _sequence(value: Any) -> bool:
+def is_sequence(value: Any) -> bool:
     """Whether ``value`` is a sequence of items (not a string, not a 0-d array)."""
     return not isinstance(value, (str, bytes)) and hasattr(value, "__iter__") and \
         getattr(value, "ndim", None) != 0
@@ -510,7 +510,7 @@ def steps(value: Any) -> int:
 def load_path(values: Any) -> tuple[float, ...]:
     """Load levels P/P_max in [0, 1], at least two, starting at 0."""
     req = "a sequence of at least two load levels in [0, 1] starting at 0"
-    if not _sequence(values):
+    if not is_sequence(values):
         raise InputError("load_path", req, values)
     items = list(values)
     if not items:
@@ -547,7 +547,7 @@ def planned_tolerance(value: Any) -> float:
 
 
 # ----------------------------------------------------------------------------- viscoelastic body
-__all__ += ["relaxation", "duration"]
+__all__ += ["relaxation", "duration", "is_sequence"]
 
 
 def relaxation(values: Any) -> tuple[tuple[float, float], ...]:
@@ -560,11 +560,11 @@ def relaxation(values: Any) -> tuple[tuple[float, float], ...]:
     req = "a list of pairs [g, tau] with g > 0, tau > 0 and sum of g < 1"
     if values is None:
         return ()
-    if not _sequence(values):
+    if not is_sequence(values):
         raise InputError("relaxation", req, values)
     pairs = []
     for item in values:
-        if not _sequence(item) or len(list(item)) != 2:
+        if not is_sequence(item) or len(list(item)) != 2:
             raise InputError("relaxation", req, values,
                              f"relaxation must be {req}, got the malformed pair {item!r}")
         g, tau = list(item)
@@ -596,7 +596,7 @@ def duration(value: Any, segments: int, relaxed: bool) -> tuple[float, ...]:
         raise InputError("duration", "given (> 0) with a relaxation", value,
                          "duration is required with a relaxation (the path's duration, "
                          "in the unit of tau)")
-    if not _sequence(value):
+    if not is_sequence(value):
         total = number("duration", value, 0.0, None, lo_open=True)
         return tuple(total / segments for _ in range(segments))
     items = list(value)
@@ -630,7 +630,7 @@ def subsurface_grid(value: Any) -> tuple[tuple[float, float, int], tuple[float, 
     out = []
     for axis, default in zip(("x", "z"), SUBSURFACE_GRID):
         spec = value.get(axis, default)
-        if not _sequence(spec) or len(spec) != 3:
+        if not is_sequence(spec) or len(spec) != 3:
             raise InputError(f"subsurface_grid.{axis}", "[start, stop, points]", spec)
         lo = number(f"subsurface_grid.{axis} start", spec[0], 0.0 if axis == "z" else None)
         hi = number(f"subsurface_grid.{axis} stop", spec[1])

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import fretting_solver as fr
+from . import validate
 from .history_solver import ORDER_MAX, measured_order
 from .model import contact
 from .profiles import profile as make_profile
@@ -325,6 +326,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     sigma = _path("bulk_stress", bulk_stress, load.size) if bulk_stress is not None \
         else np.zeros(load.size)
     _check(geometry, friction, load, tang, n, steps, max_error)
+    nu = validate.nu(nu)
+    indenter_modulus, indenter_nu = validate.indenter_material(indenter_modulus, indenter_nu)
     prof = make_profile(profile, exponent)
     model = contact(geometry, nu, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
                     profile=prof)

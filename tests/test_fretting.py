@@ -176,6 +176,9 @@ def test_cycle_work_estimate_covers_the_fourfold_refined_difference():
     (dict(n=30), "multiple of 4"),
     (dict(steps=6), "multiple of 4"),
     (dict(bulk_stress=[0, float("nan"), 0]), "finite"),
+    (dict(nu=0.7), "nu"),
+    (dict(nu=float("nan")), "nu"),
+    (dict(indenter_modulus=-1.0), "indenter_modulus"),
 ])
 def test_bad_input_is_refused_by_name(kwargs, word):
     args = dict(geometry="cylinder", nu=0.3, friction=K, load_path=[0, 1, 1],

@@ -481,7 +481,11 @@ def test_a_handler_that_returns_lets_the_write_finish(tmp_path) -> None:
 
 
 CHILD = textwrap.dedent("""
+    import signal
     import sys
+    # an interactive process's Ctrl-C, whatever launched the suite: a shell without job
+    # control starts background jobs with SIGINT ignored, and the child would inherit that
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     import numpy as np
     import xarray as xr
     from contactlib import io

@@ -32,6 +32,7 @@ import numpy as np
 
 from . import fretting_solver as fr
 from . import validate
+from .history_api import load_levels
 from .history_solver import ORDER_MAX, measured_order
 from .model import contact
 from .profiles import profile as make_profile
@@ -180,18 +181,12 @@ def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
         raise ValueError(f"max_error: must lie in (0, 1), got {max_error!r}")
 
 
-def _levels(points: np.ndarray, steps: int) -> np.ndarray:
-    """Values at the end of every step: ``steps`` equal steps a segment."""
-    t = np.arange(1, steps + 1) / steps
-    return np.concatenate([a + (b - a) * t for a, b in zip(points[:-1], points[1:])])
-
-
 def _run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
          sigma: np.ndarray, progress=None) -> tuple[fr.StripOperators, fr.RawFretting]:
     ops = fr.strip_operators(model, 2 * n)
-    big_p = _levels(load, steps) * ops.p_max
-    big_q = _levels(tang, steps) * k * ops.p_max
-    strain = _levels(sigma, steps) * ops.p0 * ops.strain_share
+    big_p = load_levels(load, steps)[0][1:] * ops.p_max
+    big_q = load_levels(tang, steps)[0][1:] * k * ops.p_max
+    strain = load_levels(sigma, steps)[0][1:] * ops.p0 * ops.strain_share
     return ops, fr.run_fretting(ops, k, big_p, big_q, strain, progress)
 
 
@@ -365,7 +360,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         cycle_err = np.full(len(_closed(load, tang, sigma)), np.nan)
         orders = {}
         resolved = np.zeros(load.size, dtype=bool)
-    segment = np.concatenate(([0], np.repeat(np.arange(1, load.size), steps)))
+    segment = load_levels(load, steps)[1]
     edges = raw.edges
     return FrettingResult(
         geometry=geometry, nu=float(nu), friction=k, n=int(n), steps=int(steps),

@@ -55,7 +55,8 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "derived_measures", "subsurface_stresses", "field_maximum",
            "surface_radial_stress", "default_grid", "check_subsurface_request",
            "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
-           "field_error_estimate", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK"]
+           "field_error_estimate", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK",
+           "DEPTH_CUTOFF", "TractionPieces", "xi_nodes"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
               "cylinder": ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz")}
@@ -68,7 +69,8 @@ CHUNK = 250_000
 XI_SURFACE = 4000.0
 """Upper end of the xi integral of the shear's part of the surface (z = 0) stresses."""
 
-_DEPTH_CUTOFF = 36.0  # xi_max z_min: e^-36 = 2.3e-16
+DEPTH_CUTOFF = 36.0
+"""xi_max z_min of the xi quadrature inside the body: e^-36 = 2.3e-16."""
 _GAUSS = np.polynomial.legendre.leggauss(8)
 
 
@@ -231,7 +233,7 @@ PANEL = 2.0 * math.pi
 oscillation, cos((1 + r) xi), a panel of 8 Gauss-Legendre points."""
 
 
-def _xi_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
+def xi_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
     """Gauss-Legendre nodes and weights on panels of width PANEL/(1 + r_max) on [0, xi_max]."""
     width = PANEL / (1.0 + r_max)
     panels = max(1, int(math.ceil(xi_max / width)))
@@ -242,7 +244,7 @@ def _xi_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
     return nodes.ravel(), (half[:, None] * w[None, :]).ravel()
 
 
-class _Pieces:
+class TractionPieces:
     """Tractions as linear pieces: on [sa, sb], p = cp + mp r and q = cq + mq r.
 
     Adjacent pieces may share an end (continuous tabulated tractions) or not (element
@@ -259,7 +261,7 @@ class _Pieces:
         self.ia, self.ib = np.searchsorted(self.nodes, sa), np.searchsorted(self.nodes, sb)
 
     @classmethod
-    def from_nodes(cls, r: np.ndarray, p: np.ndarray, q: np.ndarray) -> "_Pieces":
+    def from_nodes(cls, r: np.ndarray, p: np.ndarray, q: np.ndarray) -> "TractionPieces":
         return cls(r[:-1], r[1:], p[:-1], p[1:], q[:-1], q[1:])
 
     def at(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -350,10 +352,10 @@ def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
         the truncation at ``XI_SURFACE`` (docs/stresses.md).
     """
     r, p, q = _profile(xi, pressure, shear)
-    return _halfspace_pieces(_Pieces.from_nodes(r, p, q), x, z, nu)
+    return _halfspace_pieces(TractionPieces.from_nodes(r, p, q), x, z, nu)
 
 
-def _halfspace_pieces(pieces: _Pieces, x: Any, z: Any, nu: float) -> dict[str, np.ndarray]:
+def _halfspace_pieces(pieces: TractionPieces, x: Any, z: Any, nu: float) -> dict[str, np.ndarray]:
     """The half-space field of tractions given as linear pieces (:func:`halfspace_stresses`)."""
     xs, zs = _grid(x, z)
     rr = np.abs(xs)
@@ -362,11 +364,11 @@ def _halfspace_pieces(pieces: _Pieces, x: Any, z: Any, nu: float) -> dict[str, n
     r_max = float(max(rr.max(), pieces.sb.max()))
     xi_max = 0.0
     if np.any(inside):
-        xi_max = _DEPTH_CUTOFF / zs[inside].min()
+        xi_max = DEPTH_CUTOFF / zs[inside].min()
     if np.any(surface) and (np.any(pieces.cq != 0) or np.any(pieces.mq != 0)):
         xi_max = max(xi_max, XI_SURFACE)
     if xi_max > 0:
-        k, w = _xi_nodes(xi_max, r_max)
+        k, w = xi_nodes(xi_max, r_max)
         P, Q = pieces.hankel(k)
         _hankel_sums(out, k, w, P, Q, rr, zs, nu, inside, surface)
     if np.any(surface):
@@ -894,7 +896,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     sa, sb = bounds[:, 0], bounds[:, 1]
     geometry = result.geometry
     if geometry == "sphere":  # q = q_j r / r_j on element j
-        fields = _halfspace_pieces(_Pieces(sa, sb, p, p, q * sa / mid, q * sb / mid), xs, zs,
+        fields = _halfspace_pieces(TractionPieces(sa, sb, p, p, q * sa / mid, q * sb / mid), xs, zs,
                                    nu)
     else:  # both sides: p even, q odd, constant on each element
         fields = _halfplane_pieces(np.concatenate([-sb[::-1], sa]),

@@ -48,6 +48,7 @@ include: "workflow/rules/materials.smk"
 include: "workflow/rules/viscoelastic.smk"
 include: "workflow/rules/layers.smk"
 include: "workflow/rules/fretting.smk"
+include: "workflow/rules/stresses.smk"
 
 
 rule all:

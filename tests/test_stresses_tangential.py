@@ -187,3 +187,23 @@ def test_mindlin_tractions_hold_the_stick_zone_and_refuse_bad_input():
             mindlin_tractions(**bad)
     with pytest.raises(ValueError):
         shear_x_stresses(xi, q, [0.0], [0.0], [-0.1], NU)
+
+
+def test_the_tangential_figure_and_the_maxima_table():
+    from contactlib import solve, stress_study
+    from contactlib.plot import fig_tangential_stresses
+    from contactlib.stresses import subsurface_stresses
+
+    x, z = np.linspace(-1.5, 1.5, 31), np.linspace(0.0, 1.0, 11)
+    fields = [mindlin_sphere_stresses(mu, ratio, x, [0.0], z, NU, points=101).isel(y=0)
+              for mu, ratio in ((0.4, 1.0), (0.4, 0.5))]
+    fig = fig_tangential_stresses(fields)
+    assert len(fig.axes) == 5  # two maps, two surface rows, one colour bar
+    with pytest.raises(ValueError, match="surface row"):
+        fig_tangential_stresses(fields[0].isel(z=slice(1, None)))
+    g = np.linspace(0.0, 1.0, 11)
+    partial = [subsurface_stresses(solve("sphere", NU, stick_ratio=0.0, n=32), g, g)]
+    rows = stress_study.maxima_rows(partial, fields)
+    assert [r["Q/(k P)"] for r in rows] == [0.0, 1.0, 0.5]
+    assert rows[0]["p0/Y at first yield"] == pytest.approx(1.613, abs=0.01)  # Hertz
+    assert rows[1]["x/a (vM)"] == -1.0 and rows[1]["z/a (vM)"] == 0.0  # the trailing edge

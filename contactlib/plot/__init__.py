@@ -44,7 +44,7 @@ from contactlib.plot.layers import fig_layers
 from contactlib.plot.materials import fig_material_pairs
 from contactlib.plot.paper import fig2_friction, fig3_tractions, fig4_displacement, fig5_work
 from contactlib.plot.stresses import (fig_stress_maxima, fig_subsurface,
-                                      fig_surface_radial_stress)
+                                      fig_surface_radial_stress, fig_tangential_stresses)
 from contactlib.plot.viscoelastic import fig_viscoelastic
 
 __all__ = [
@@ -65,4 +65,5 @@ __all__ = [
     "fig_subsurface",
     "fig_stress_maxima",
     "fig_surface_radial_stress",
+    "fig_tangential_stresses",
 ]

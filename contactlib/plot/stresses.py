@@ -39,7 +39,8 @@ from matplotlib.figure import Figure
 from contactlib.plot.base import (MARKERS, as_list, finish, fmt, k_text, palette, panel_grid,
                                   style_context)
 
-__all__ = ["fig_subsurface", "fig_stress_maxima", "fig_surface_radial_stress"]
+__all__ = ["fig_subsurface", "fig_stress_maxima", "fig_surface_radial_stress",
+           "fig_tangential_stresses"]
 
 _ROWS = (("von_mises", "von Mises / $p_0$"), ("tresca", "max. shear (Tresca) / $p_0$"))
 
@@ -228,4 +229,81 @@ def fig_surface_radial_stress(datasets: xr.Dataset | Sequence[xr.Dataset],
                 ax.set_ylabel("surface radial stress / $p_0$ (tension > 0)")
             holders[j].legend(handles=ax.get_lines()[:len(group)], loc="upper left",
                               frameon=False)
+        return finish(fig)
+
+
+def fig_tangential_stresses(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
+    """von Mises maps in the plane of the load (top) and the surface sigma_xx (bottom).
+
+    Parameters
+    ----------
+    datasets : xarray.Dataset or sequence of them
+        Fields on (z, x) in the plane y = 0 of
+        :func:`contactlib.stresses_tangential.mindlin_sphere_stresses` (``.isel(y=0)``),
+        x along the tangential load, with a surface row (z = 0); their
+        ``friction_coefficient``, ``load_ratio`` and ``stick_ratio`` attributes title the
+        columns.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One column a dataset: the map on one colour scale with its grid maximum (white
+        cross), the contact (dashed) and the stick zone (solid), and below it sigma_xx / p0
+        on the surface (tension > 0).
+
+    Raises
+    ------
+    ValueError
+        If a dataset lacks ``von_mises``, ``sigma_xx`` or a surface row.
+    """
+    items = as_list(datasets)
+    for i, ds in enumerate(items):
+        if not {"von_mises", "sigma_xx"} <= set(ds.variables) or ds["von_mises"].ndim != 2:
+            raise ValueError(f"fig_tangential_stresses: dataset {i} is not a (z, x) field of "
+                             "mindlin_sphere_stresses(...).isel(y=0)")
+        if not np.any(np.asarray(ds["z"].values) == 0.0):
+            raise ValueError(f"fig_tangential_stresses: dataset {i} has no surface row (z = 0)")
+    ncol = len(items)
+    with style_context():
+        colors = palette()
+        fig = Figure(figsize=(0.6 + 2.6 * ncol, 4.4), layout="constrained")
+        axes = fig.subplots(2, ncol, squeeze=False, sharex=True, height_ratios=(1.6, 1.0))
+        top = max(float(np.nanmax(ds["von_mises"].values)) for ds in items)
+        norm = Normalize(0.0, top)
+        mesh = None
+        for col, ds in enumerate(items):
+            ax = axes[0, col]
+            x = np.asarray(ds["x"].values, dtype=float)
+            z = np.asarray(ds["z"].values, dtype=float)
+            v = np.asarray(ds["von_mises"].values, dtype=float)
+            mesh = ax.pcolormesh(x, z, v, norm=norm, cmap="viridis", shading="gouraud",
+                                 rasterized=True)
+            ax.contour(x, z, v, levels=np.linspace(0.1, 0.9, 9) * top, colors="white",
+                       linewidths=0.4, alpha=0.6)
+            i, j = np.unravel_index(int(np.argmax(v)), v.shape)
+            ax.plot(x[j], z[i], marker="x", color="white", ms=6, mew=1.5)
+            ax.text(0.03, 0.05, f"max {v[i, j]:.3f} at ({x[j]:.2f}, {z[i]:.2f})",
+                    transform=ax.transAxes, color="white", fontsize="small")
+            ax.plot([-1, 1], [0, 0], color="white", lw=2.0, ls=(0, (3, 2)))
+            c = float(ds.attrs.get("stick_ratio", 0.0))
+            if c > 0:
+                ax.plot([-c, c], [0, 0], color="white", lw=2.5)
+            ax.set_ylim(float(z.max()), float(z.min()))
+            mu = float(ds.attrs.get("friction_coefficient", np.nan))
+            ratio = float(ds.attrs.get("load_ratio", np.nan))
+            case = ("frictionless" if mu == 0 else "sliding" if ratio == 1.0
+                    else f"Q/μP = {fmt(ratio)}, c/a = {c:.2f}")
+            ax.set_title(f"μ = {fmt(mu)}, {case}", fontsize="medium")
+            if col == 0:
+                ax.set_ylabel("depth z/a")
+            low = axes[1, col]
+            iz = int(np.flatnonzero(z == 0.0)[0])
+            low.plot(x, np.asarray(ds["sigma_xx"].values)[iz], color=colors[0], lw=1.2)
+            low.axhline(0.0, color="0.6", lw=0.6, zorder=0)
+            for edge in (-1.0, 1.0):
+                low.axvline(edge, color="0.6", lw=0.6, ls=(0, (3, 2)), zorder=0)
+            low.set_xlabel("x/a (load along +x)")
+            if col == 0:
+                low.set_ylabel("surface $\\sigma_{xx}$ / $p_0$")
+        fig.colorbar(mesh, ax=list(axes[0, :]), label="von Mises / $p_0$", shrink=0.9)
         return finish(fig)

@@ -49,7 +49,9 @@ def influence(spec: Mapping[str, Any], part: str) -> dict[str, np.ndarray]:
 
     geom = contact(spec["geometry"], float(spec["nu"]), float(spec["slab_ratio"]),
                    float(spec.get("indenter_modulus", "inf")), spec.get("indenter_nu"),
-                   spec.get("base", "smooth"))
+                   spec.get("base", "smooth"),
+                   substrate_modulus=float(spec.get("substrate_modulus", "inf")),
+                   substrate_nu=spec.get("substrate_nu"))
     return stages.influence(geom, spec["method"], int(spec["n"]), spec["stick_ratios"], part)
 
 
@@ -149,6 +151,9 @@ def assemble(scene: Scene, records: Sequence[CaseRecord], *,
             geom, scene.method, scene.n, rec, xi, flags=flags,
             work=float(work["frictional_work"][i]) if "energy" in want else float("nan"),
             profile=prof))
+        if geom.body.base == "elastic":  # a coated body: its substrate (as contactlib.solve)
+            sols[-1].substrate_modulus = float(geom.body.substrate_modulus)
+            sols[-1].substrate_poisson_ratio = float(geom.body.kernel_base.nu)
     violations = (None if "k_curve" not in want
                   else {name: checks[name] for name in VIOLATION_NAMES})
     tolerance = elements = estimate = None

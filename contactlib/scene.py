@@ -37,7 +37,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from . import accuracy, materials, validate
+from . import accuracy, materials, profiles, validate
 from .geometry import Geometry
 from .indenter import indenter
 from .operators import parts_needed
@@ -53,10 +53,14 @@ __all__ = ["Scene", "HistoryScene", "PhysicalScene", "KINDS", "ConfigError", "pa
 
 KINDS = ("self-similar", "history", "physical")
 _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "stick_ratios",
-         "slab_ratio", "base", "outputs", "indenter", "body", "subsurface_grid")
+         "slab_ratio", "base", "outputs", "indenter", "body", "subsurface_grid", "profile",
+         "exponent", "substrate_modulus", "substrate_nu")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
-                 "duration")
+                 "duration", "profile", "exponent", "tangential_path", "bulk_stress")
+# keys of a history scene that a fretting path (tangential_path) does not take: the
+# fretting solver covers the half-plane, elastic bodies only
+_NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration")
 _PHYSICAL_KEYS = ("kind", "geometry", "radius", "length", "thickness", "base", "indenter",
                   "body", "friction", "load_path", "steps", "n", "max_error", "relaxation",
                   "times")
@@ -72,6 +76,27 @@ def config_hash(raw: Mapping[str, Any]) -> str:
 def _base_spec(base: str) -> dict[str, str]:
     """``{"base": base}`` for a bonded base, {} for the default (keys and jobs stay as before)."""
     return {} if base == "smooth" else {"base": base}
+
+
+def _profile_spec(profile: str, exponent: float | None) -> dict[str, Any]:
+    """``profile`` (and ``exponent``) keywords, {} for the paraboloid (keys and jobs as before)."""
+    if profile == "paraboloid":
+        return {}
+    return {"profile": profile, **({} if exponent is None else {"exponent": exponent})}
+
+
+def _scene_profile(raw: Mapping[str, Any], bad: "_Problems") -> tuple[str, float | None]:
+    """(name, exponent) of a scene's ``profile``/``exponent`` keys, checked by
+    :func:`contactlib.profiles.profile` (the spelling of ``--profile``/``--exponent``);
+    exponent None unless ``power``. A problem is recorded under the key it concerns."""
+    if "profile" not in raw and "exponent" not in raw:
+        return "paraboloid", None
+    try:
+        shape = profiles.profile(raw.get("profile", "paraboloid"), raw.get("exponent"))
+    except validate.InputError as exc:
+        bad.add(exc.name, str(exc))
+        return "paraboloid", None
+    return shape.name, (shape.exponent if shape.name == "power" else None)
 
 
 def _ratio_digest(values: tuple[float, ...]) -> str:
@@ -129,11 +154,27 @@ class Scene:
     indenter_nu: float | None = None
     base: str = "smooth"
     subsurface_grid: tuple = validate.SUBSURFACE_GRID
+    profile: str = "paraboloid"
+    exponent: float | None = None
+    substrate_modulus: float = float("inf")
+    substrate_nu: float | None = None
 
     @property
     def geometry_object(self) -> Geometry:
         return Geometry(self.geometry, self.nu, self.slab_ratio, self.indenter_modulus,
-                        self.indenter_nu, self.base)
+                        self.indenter_nu, self.base, self.substrate_modulus, self.substrate_nu,
+                        profile=profiles.profile(self.profile, self.exponent))
+
+    def _substrate_spec(self) -> dict[str, Any]:
+        """A coated body's substrate keywords ({} on a rigid base: keys stay as before)."""
+        if self.base != validate.COATED_BASE:
+            return {}
+        return {"substrate_modulus": self.substrate_modulus, "substrate_nu": self.substrate_nu}
+
+    def solve_spec(self) -> dict[str, Any]:
+        """The keywords beyond the influence set's that change a scene's numbers: the
+        profile (the gap and the adherence condition); {} for the paraboloid."""
+        return _profile_spec(self.profile, self.exponent)
 
     def _indenter_spec(self) -> dict[str, Any]:
         """The elastic indenter's keywords ({} for the rigid one, whose keys stay as before)."""
@@ -160,6 +201,8 @@ class Scene:
             key += f"-{self.base}"
         if self._indenter_spec():
             key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
+        if self._substrate_spec():  # (the profile is not in the operators: shared)
+            key += f"-E2_{self.substrate_modulus!r}-nu2_{self.substrate_nu!r}"
         if self.method in ("default", "extrapolated"):  # a mesh per stick ratio
             key += "-c" + _ratio_digest(self.solved_ratios)
         return key
@@ -195,7 +238,7 @@ class Scene:
         """What the influence stage needs (equal for every scene with the same key)."""
         return {"geometry": self.geometry, "nu": self.nu, "method": self.method, "n": self.n,
                 "slab_ratio": self.slab_ratio, "stick_ratios": list(self.solved_ratios),
-                **self._indenter_spec(), **_base_spec(self.base)}
+                **self._indenter_spec(), **_base_spec(self.base), **self._substrate_spec()}
 
 
 class ConfigError(ValueError):
@@ -305,7 +348,25 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     method = bad.check("method", validate.method, method)
     nu = bad.check("nu", validate.nu, raw.get("nu")) if "nu" in raw else None
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0))
-    base = bad.check("base", validate.base, raw.get("base", "smooth"))
+    base = bad.check("base", validate.base, raw.get("base", "smooth"), True)
+    substrate = (math.inf, None)
+    if base is not None and geometry is not None and method is not None:
+        try:
+            substrate = validate.substrate(base, raw.get("substrate_modulus"),
+                                           raw.get("substrate_nu"), geometry, method)
+        except validate.InputError as exc:
+            bad.add(exc.name, str(exc))
+    if base == validate.COATED_BASE and "tolerance" in raw:
+        bad.add("tolerance", "tolerance is not planned on a coated body (base 'elastic'): "
+                             "give n (method 'default') instead")
+    profile, exponent = _scene_profile(raw, bad)
+    if profile != "paraboloid":
+        if "tolerance" in raw:
+            bad.add("tolerance", f"tolerance is planned for the paraboloid only; for the "
+                                 f"{profile} profile give n (method 'default') instead")
+        elif method not in (None, "default"):
+            bad.add("method", f"method {method!r} is measured for the paraboloid only; use "
+                              f"method 'default' for the {profile} profile")
     outputs = raw.get("outputs", list(DEFAULT_OUTPUTS))
     if not isinstance(outputs, (list, tuple)) or not outputs or \
             not all(isinstance(o, str) and o in OUTPUTS for o in outputs) or \
@@ -315,7 +376,10 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
         outputs = []
     grid = bad.check("subsurface_grid", validate.subsurface_grid, raw.get("subsurface_grid", {}))
     if "subsurface" in outputs:
-        if isinstance(slab, float) and slab > 0:
+        if base == validate.COATED_BASE:
+            bad.add("outputs", "subsurface covers the half-space and half-plane only, not a "
+                               "coated body (base 'elastic')")
+        elif isinstance(slab, float) and slab > 0:
             bad.add("outputs", "subsurface covers the half-space and half-plane only (slab_ratio "
                                f"0), got slab_ratio {slab!r}")
     elif "subsurface_grid" in raw:
@@ -341,7 +405,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                  stick_ratios=tuple(ratios), slab_ratio=slab,
                  outputs=tuple(o for o in OUTPUTS if o in outputs), hash=config_hash(raw),
                  tolerance=tolerance, max_error=max_error, indenter_modulus=ind[0],
-                 indenter_nu=ind[1], base=base, subsurface_grid=grid)
+                 indenter_nu=ind[1], base=base, subsurface_grid=grid, profile=profile,
+                 exponent=exponent, substrate_modulus=substrate[0], substrate_nu=substrate[1])
 
 
 @dataclass(frozen=True, repr=False)
@@ -374,6 +439,15 @@ class HistoryScene:
     durations : tuple of float
         Durations of the path segments (key ``duration``: the path's, split
         equally, or one a segment); required with a relaxation.
+    profile, exponent : str, float or None
+        The indenter's profile (keys ``profile``, ``exponent``; default the
+        paraboloid), as ``contactlib history --profile --exponent`` takes it.
+    tangential_path : tuple of float
+        Q/(k P_max) at the points of ``load_path`` (key ``tangential_path``): a
+        fretting path, run by :func:`contactlib.fretting` instead of
+        :func:`contactlib.history` (one friction coefficient); empty: none.
+    bulk_stress : tuple of float
+        The body's bulk stress sigma/p0 at the same points (fretting only); empty: none.
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -394,13 +468,35 @@ class HistoryScene:
     relaxation: tuple[tuple[float, float], ...] = ()
     durations: tuple[float, ...] = ()
     base: str = "smooth"
+    profile: str = "paraboloid"
+    exponent: float | None = None
+    tangential_path: tuple[float, ...] = ()
+    bulk_stress: tuple[float, ...] = ()
+
+    @property
+    def fretting(self) -> bool:
+        """Whether the scene is a fretting path (run by :func:`contactlib.fretting`)."""
+        return bool(self.tangential_path)
 
     def run_spec(self, index: int) -> dict[str, Any]:
-        """Keyword arguments of :func:`contactlib.history` for friction ``index``.
+        """Keyword arguments of :func:`contactlib.history` for friction ``index`` (of
+        :func:`contactlib.fretting` for a fretting scene).
 
         The indenter's keywords appear only for an elastic indenter, so that a
-        rigid scene's arguments (and its jobs' parameters) stay as they were.
+        rigid scene's arguments (and its jobs' parameters) stay as they were;
+        likewise the profile's only for another profile than the paraboloid.
         """
+        if self.fretting:
+            spec = {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
+                    "load_path": list(self.load_path),
+                    "tangential_path": list(self.tangential_path), "steps": self.steps,
+                    "n": self.n, "max_error": self.max_error}
+            if self.bulk_stress:
+                spec["bulk_stress"] = list(self.bulk_stress)
+            if self.indenter_modulus != float("inf"):
+                spec.update(indenter_modulus=self.indenter_modulus,
+                            indenter_nu=self.indenter_nu)
+            return spec | _profile_spec(self.profile, self.exponent)
         spec = {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
                 "slab_ratio": self.slab_ratio, "max_error": self.max_error}
@@ -410,7 +506,41 @@ class HistoryScene:
             spec.update(relaxation=[list(p) for p in self.relaxation],
                         duration=list(self.durations))
         spec.update(_base_spec(self.base))
-        return spec
+        return spec | _profile_spec(self.profile, self.exponent)
+
+
+def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any,
+                    bad: _Problems) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """(tangential_path, bulk_stress) of a fretting scene, checked by
+    :func:`contactlib.fretting_api.check_input` (the library's words, one line under the
+    key its message names)."""
+    from . import fretting_api  # (the solvers' imports: only for a fretting scene)
+
+    for key in _NOT_FRETTING:
+        if key in raw and not (key == "slab_ratio" and raw[key] == 0) \
+                and not (key == "base" and raw[key] == "smooth"):
+            bad.add(key, f"not with tangential_path: a fretting path covers the half-plane "
+                         f"(elastic bodies, slab_ratio 0) only")
+    if ks is not None and len(ks) != 1:
+        bad.add("friction", f"a fretting scene (tangential_path) takes one friction "
+                            f"coefficient (tangential_path is Q/(k P_max)), got {list(ks)!r}")
+        ks = None
+    if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
+        return (), ()
+    tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
+    try:
+        fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, raw["steps"],
+                                 n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR))
+    except ValueError as exc:
+        text = str(exc)
+        head, _, rest = text.partition(": ")
+        if head in _HISTORY_KEYS:
+            bad.add(head, rest)
+        else:  # "fretting: geometry 'sphere' is not covered; ..."
+            bad.add("geometry", text)
+        return (), ()
+    return (tuple(float(v) for v in tang),
+            () if sigma is None else tuple(float(v) for v in sigma))
 
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
@@ -430,11 +560,25 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     path = bad.check("load_path", validate.load_path, raw["load_path"]) \
         if "load_path" in raw else None
     steps = bad.check("steps", validate.steps, raw["steps"]) if "steps" in raw else None
-    n = bad.check("n", validate.history_n, raw.get("n"))
+    fretting = "tangential_path" in raw
+    if "bulk_stress" in raw and not fretting:
+        bad.add("bulk_stress", "needs tangential_path (a fretting path)")
+    if fretting:  # the fretting solver's own n (a multiple of 4) and default
+        from .fretting_api import DEFAULT_N as fretting_n
+
+        n = raw.get("n", fretting_n)
+    else:
+        n = bad.check("n", validate.history_n, raw.get("n"))
     geometry = bad.check("geometry", validate.geometry, raw["geometry"]) \
         if "geometry" in raw else None
     nu = bad.check("nu", validate.nu, raw["nu"]) if "nu" in raw else None
-    base = bad.check("base", validate.base, raw.get("base", "smooth"))
+    if raw.get("base") == validate.COATED_BASE:
+        bad.add("base", "base 'elastic' (a coated body) is not available in history scenes "
+                        "yet (contactlib.history has no substrate); self-similar scenes take it "
+                        "with substrate_modulus and substrate_nu")
+        base = "smooth"
+    else:
+        base = bad.check("base", validate.base, raw.get("base", "smooth"))
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry,
                      base or "smooth", validate.HISTORY_MESH_EXTENT)
     max_error = bad.check("max_error", validate.max_error,
@@ -445,12 +589,15 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                           len(path) - 1 if path else 1, bool(prony)) if prony is not None else ()
     if prony and ind[0] != float("inf"):
         bad.add("relaxation", "needs a rigid indenter")
+    profile, exponent = _scene_profile(raw, bad)
+    tang, sigma = _fretting_paths(raw, ks, n, bad) if fretting else ((), ())
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
                         hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
                         indenter_nu=ind[1], relaxation=prony, durations=durations,
-                        base=base)
+                        base=base, profile=profile, exponent=exponent, tangential_path=tang,
+                        bulk_stress=sigma)
 
 
 @dataclass(frozen=True, repr=False)
@@ -486,7 +633,16 @@ def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
     from . import load_paths, physical
 
     bad = _Problems(name)
-    bad.keys(raw, _PHYSICAL_KEYS, ("geometry", "radius", "body", "friction", "load_path"),
+    for key in ("profile", "exponent"):
+        if key in raw:
+            bad.add(key, "physical scenes take the paraboloid only (contactlib.physical_history "
+                         "has no profile yet); a history scene takes a cone or a power law")
+    if raw.get("base") == validate.COATED_BASE:
+        bad.add("base", "base 'elastic' (a coated body) is not available in physical scenes "
+                        "yet; self-similar scenes take it with substrate_modulus and "
+                        "substrate_nu")
+    bad.keys({k: v for k, v in raw.items() if k not in ("profile", "exponent")},
+             _PHYSICAL_KEYS, ("geometry", "radius", "body", "friction", "load_path"),
              "physical")
     geometry = bad.check("geometry", validate.geometry, raw["geometry"]) \
         if "geometry" in raw else None
@@ -506,7 +662,8 @@ def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
             mat = bad.check(key, physical.material, raw[key], role)
             if mat is not None:  # JSON-able: the table's name, or [E in Pa, nu]
                 spec[key] = mat.name if mat.name not in ("E,nu",) else [mat.E, mat.nu]
-    spec["base"] = bad.check("base", validate.base, raw.get("base", "smooth"))
+    spec["base"] = "smooth" if raw.get("base") == validate.COATED_BASE else \
+        bad.check("base", validate.base, raw.get("base", "smooth"))
     if "friction" in raw:
         spec["friction"] = bad.check("friction", validate.friction, raw["friction"])
     if "load_path" in raw:

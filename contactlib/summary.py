@@ -27,7 +27,7 @@ import xarray as xr
 
 from .indenter import indenter
 
-__all__ = ["layer_rows", "fretting_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
+__all__ = ["layer_rows", "fretting_rows", "fretting_path_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
            "REPORT_COLUMNS", "WORK_AT_HALF", "LARGEST_WORK", "CYCLE_WORK"]
 
 _WORK_SCALE = "V R^2/(E* a^5); cylinder: V R^2/(E* a^4) per unit length"
@@ -434,6 +434,46 @@ def layer_rows(ds: xr.Dataset) -> list[dict[str, object]]:
                             f"{float(ds['cycle_work_error_estimate'].values[at]):.2g}")
                         row["work resolved"] = bool(ds["cycle_work_resolved"].values[at])
                     rows.append(row)
+    return rows
+
+
+def fretting_path_rows(ds: xr.Dataset) -> list[dict[str, object]]:
+    """Rows of a fretting scene's table: one a path point of
+    :func:`contactlib.io.fretting_to_dataset`.
+
+    Columns: the point, P/P_max, Q/(k P_max), the bulk stress sigma/p0, the stick ratio
+    c/a and the stick zone's offset e/a_max with their estimates, the cumulative
+    frictional work and its estimate (units E* a_max^4/R^2 per unit length), the work of
+    the cycle a point closes (blank elsewhere) with its estimate, and ``resolved``. A
+    value is blank where a step up to the point did not converge.
+    """
+    steps = ds["point_step"].values
+    conv = np.cumprod(ds["converged"].values.astype(bool)).astype(bool)
+    closing = {int(j): (float(w), float(e)) for (_, j), w, e in zip(
+        np.asarray(ds.attrs["cycle_points"]).reshape(-1, 2),
+        np.atleast_1d(ds.attrs["cycle_work"]), np.atleast_1d(ds.attrs["cycle_work_error_estimate"]))}
+    rows: list[dict[str, object]] = []
+    for i, step in enumerate(steps):
+        ok = bool(conv[step])
+
+        def cell(value: float, fmt: str = ".6g") -> str:
+            return f"{value:{fmt}}" if ok and np.isfinite(value) else ""
+
+        w, e = closing.get(i, (float("nan"), float("nan")))
+        rows.append({
+            "point": i, "P/P_max": float(ds["load_ratio"].values[step]),
+            "Q/(k P_max)": float(ds["tangential_load_ratio"].values[step]),
+            "sigma/p0": float(ds["bulk_stress"].values[step]),
+            "c/a": cell(float(ds["stick_ratio"].values[step])),
+            "c/a error estimate": cell(float(ds["stick_ratio_error_estimate"].values[i]), ".2g"),
+            "e/a_max": cell(float(ds["stick_offset"].values[step])),
+            "e/a_max error estimate": cell(float(ds["stick_offset_error_estimate"].values[i]),
+                                           ".2g"),
+            "frictional work": cell(float(ds["frictional_work"].values[step])),
+            "work error estimate": cell(float(ds["frictional_work_error_estimate"].values[i]),
+                                        ".2g"),
+            "cycle work": cell(w), "cycle work error estimate": cell(e, ".2g"),
+            "resolved": bool(ds["resolved"].values[i])})
     return rows
 
 

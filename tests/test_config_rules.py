@@ -16,7 +16,7 @@ import pytest
 import yaml
 
 from conftest import REPO, make_workdir, needs_snakemake, snakemake
-from contactlib import validate
+from contactlib import profiles, validate
 from contactlib.cli import check_config
 from contactlib.scene import KINDS
 
@@ -33,7 +33,12 @@ def test_schema_follows_validate() -> None:
     assert KEYS["kind"]["enum"] == list(KINDS)
     assert KEYS["geometry"]["enum"] == list(validate.GEOMETRIES)
     assert KEYS["method"]["enum"] == list(validate.METHODS)
-    assert KEYS["base"]["enum"] == list(validate.BASES)
+    assert KEYS["base"]["enum"] == list(validate.BASES) + [validate.COATED_BASE]
+    assert (KEYS["substrate_modulus"]["minimum"], KEYS["substrate_modulus"]["maximum"]) == \
+        validate.SUBSTRATE_MODULUS_RANGE
+    assert KEYS["substrate_nu"]["exclusiveMinimum"] == -1 and KEYS["substrate_nu"]["maximum"] == 0.5
+    assert KEYS["profile"]["enum"] == list(profiles.PROFILES)
+    assert (KEYS["exponent"]["minimum"], KEYS["exponent"]["maximum"]) == profiles.EXPONENT_RANGE
     assert KEYS["outputs"]["items"]["enum"] == list(validate.OUTPUTS)
     assert KEYS["n"]["maximum"] == max(validate.MAX_N, validate.HISTORY_MAX_N)
     assert KEYS["n"]["minimum"] == min(validate.DEFAULT_N["paper"], validate.HISTORY_MIN_N,
@@ -93,6 +98,29 @@ BAD = {
     "history-friction-repeated": dict(HISTORY, friction=[0.1, 0.1]),
     "history-no-path": _without(HISTORY, "load_path"),
     "history-relaxation-pair": dict(HISTORY, relaxation=[[0.5]], duration=1.0),
+    # profiles, coated bodies and fretting paths (issues 36, 37, 39)
+    "profile-cube": dict(OK, profile="cube"),
+    "profile-power-no-exponent": dict(OK, profile="power"),
+    "profile-exponent-huge": dict(OK, profile="power", exponent=20),
+    "profile-cone-exponent": dict(OK, profile="cone", exponent=1),
+    "profile-cone-paper": dict(OK, profile="cone", method="paper", n=16, stick_ratios=[0.25]),
+    "history-profile-word": dict(HISTORY, profile=3),
+    "coated-no-modulus": dict(OK, base="elastic", slab_ratio=0.5),
+    "coated-modulus-small": dict(OK, base="elastic", slab_ratio=0.5, substrate_modulus=1e-3),
+    "coated-nu-high": dict(OK, base="elastic", slab_ratio=0.5, substrate_modulus=2,
+                           substrate_nu=0.7),
+    "substrate-without-coating": dict(OK, substrate_modulus=2),
+    "history-coated": dict(HISTORY, base="elastic"),
+    "fretting-sphere": dict(HISTORY, tangential_path=[0, 0.5]),
+    "fretting-gross-slip": dict(HISTORY, geometry="cylinder", tangential_path=[0, 1.0]),
+    "fretting-path-length": dict(HISTORY, geometry="cylinder", tangential_path=[0, 0, 0.5]),
+    "fretting-path-word": dict(HISTORY, geometry="cylinder", tangential_path="back and forth"),
+    "fretting-two-k": dict(HISTORY, geometry="cylinder", friction=[0.1, 0.2],
+                           tangential_path=[0, 0.5]),
+    "fretting-layer": dict(HISTORY, geometry="cylinder", slab_ratio=0.5,
+                           tangential_path=[0, 0.5]),
+    "fretting-n": dict(HISTORY, geometry="cylinder", n=30, tangential_path=[0, 0.5]),
+    "bulk-stress-alone": dict(HISTORY, bulk_stress=[0, 1]),
 }
 
 
@@ -100,6 +128,11 @@ BAD = {
 GOOD = {
     "tolerance-edge": dict(_without(_without(OK, "n"), "method"), tolerance=5e-9),
     "9-digit-first_and_underscore": OK,
+    "cone-edge": dict(OK, profile="power", exponent=8),
+    "coated-edge": dict(OK, base="elastic", slab_ratio=0.5, substrate_modulus=1e6,
+                        substrate_nu=0.5),
+    "fretting-edge": dict(HISTORY, geometry="cylinder", n=16, tangential_path=[0, 0.999],
+                          bulk_stress=[0, 0.5]),
 }
 
 

@@ -6,6 +6,8 @@ helpers of tests/conftest.py) and runs a tiny history scene end to end.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -196,3 +198,155 @@ def test_tolerance_scene_meets_its_target_against_a_much_finer_solution(
         assert est <= tolerance
         assert achieved <= 3 * est or achieved <= tolerance / 20, (c, achieved, est)
         assert int(ds["elements"][i]) >= scene.n
+
+
+# ----------------------------------------------------------------------------- profiles,
+# coated bodies and fretting paths in scenes (issues 36, 37, 39)
+SELF = {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.0, 0.5],
+        "outputs": ["k_curve", "energy"]}
+FRET = {"kind": "history", "geometry": "cylinder", "nu": 0.5, "friction": 0.3,
+        "load_path": [0, 1, 1], "tangential_path": [0, 0, 0.5], "steps": 8, "n": 64}
+
+
+def test_a_paraboloid_scene_keeps_its_keys_and_specs():
+    """Defaults leave the jobs' keys and parameters as they were (the main job's reference)."""
+    s = parse_scene("s", SELF)
+    assert (s.profile, s.exponent, s.base, s.substrate_modulus) == ("paraboloid", None,
+                                                                    "smooth", float("inf"))
+    assert s.solve_spec() == {}
+    assert s.influence_key.startswith("sphere-nu0.3-default-n32-c")
+    assert set(s.influence_spec()) == {"geometry", "nu", "method", "n", "slab_ratio",
+                                       "stick_ratios"}
+    assert parse_scene("s", dict(SELF, profile="paraboloid")).influence_key == s.influence_key
+    assert "profile" not in parse_scene("h", HIST).run_spec(0)
+
+
+def test_profile_keys_follow_the_command_line_spelling():
+    cone = parse_scene("s", dict(SELF, profile="cone"))
+    assert cone.geometry_object.profile.exponent == 1.0 and cone.solve_spec() == {
+        "profile": "cone"}
+    assert cone.influence_key == parse_scene("s", SELF).influence_key  # operators shared
+    d3 = parse_scene("s", dict(SELF, profile="power", exponent=3))
+    assert d3.solve_spec() == {"profile": "power", "exponent": 3.0}
+    h = parse_scene("h", dict(HIST, profile="power", exponent=1.5))
+    assert h.run_spec(0)["profile"] == "power" and h.run_spec(0)["exponent"] == 1.5
+
+
+@pytest.mark.parametrize("extra, text", [
+    ({"profile": "flat"}, r"^scenes\.s\.profile: profile must be one of paraboloid, cone, "),
+    ({"profile": "power"}, r"^scenes\.s\.exponent: exponent must be given"),
+    ({"profile": "cone", "exponent": 1}, r"^scenes\.s\.exponent: exponent must be omitted"),
+    ({"profile": "power", "exponent": 0.2}, r"^scenes\.s\.exponent: .*\[0\.5, 8\]"),
+    ({"profile": "cone", "method": "paper", "n": 16, "stick_ratios": [0.25]},
+     r"^scenes\.s\.method: method 'paper' is measured for the paraboloid only"),
+    ({"profile": "cone", "tolerance": 1e-3, "n": None},
+     r"^scenes\.s\.tolerance: tolerance is planned for the paraboloid only"),
+    ({"base": "elastic", "slab_ratio": 0.5},
+     r"^scenes\.s\.substrate_modulus: substrate_modulus .* is required"),
+    ({"substrate_modulus": 2.0}, r"^scenes\.s\.substrate_modulus: .*needs base='elastic'"),
+    ({"base": "elastic", "slab_ratio": 0.5, "substrate_modulus": 1e7},
+     r"^scenes\.s\.substrate_modulus: .*\[0\.01, 1e6\]"),
+    ({"base": "elastic", "slab_ratio": 0.5, "substrate_modulus": 2, "substrate_nu": 0.6},
+     r"^scenes\.s\.substrate_nu: "),
+    ({"base": "elastic", "slab_ratio": 0.5, "substrate_modulus": 2, "method": "paper",
+      "n": 16, "stick_ratios": [0.25]}, r"^scenes\.s\.method: .*coated body"),
+    ({"base": "elastic", "slab_ratio": 0.5, "substrate_modulus": 2,
+      "outputs": ["subsurface"]}, r"^scenes\.s\.outputs: .*not a coated body"),
+])
+def test_bad_profile_or_coating_is_one_line_naming_the_key(extra, text):
+    raw = {k: v for k, v in dict(SELF, **extra).items() if v is not None}
+    with pytest.raises(ValueError, match=text) as info:
+        parse_scene("s", raw)
+    assert len(info.value.problems) == 1, info.value.problems
+
+
+@pytest.mark.parametrize("kind, extra, key", [
+    ("history", {"base": "elastic"}, "base"),
+    ("physical", {"profile": "cone"}, "profile"),
+    ("physical", {"base": "elastic"}, "base"),
+])
+def test_coatings_in_histories_and_profiles_in_physical_scenes_are_refused(kind, extra, key):
+    raw = dict(HIST, **extra) if kind == "history" else dict(
+        {"kind": "physical", "geometry": "sphere", "radius": "5mm", "indenter": "steel",
+         "body": "steel", "friction": 0.2, "load_path": ["0N", "10N"]}, **extra)
+    with pytest.raises(ValueError) as info:
+        parse_scene("x", raw)
+    assert len(info.value.problems) == 1, info.value.problems
+    line = info.value.problems[0]
+    assert line.startswith(f"scenes.x.{key}: ")
+    assert ("not available" in line) if key == "base" else ("paraboloid only" in line)
+
+
+def test_a_coated_scene_keys_its_substrate_and_equals_the_homogeneous_body_at_e2_over_e1_1():
+    """Identity: a coating on a substrate of its own material is the homogeneous body."""
+    from contactlib import pipeline
+
+    raw = dict(SELF, geometry="cylinder", slab_ratio=0.5, base="elastic")
+    coated = parse_scene("c", dict(raw, substrate_modulus=1.0))
+    stiffer = parse_scene("c", dict(raw, substrate_modulus=2.0, substrate_nu=0.2))
+    assert coated.influence_key != stiffer.influence_key  # the substrate is in the operators
+    assert stiffer.influence_spec()["substrate_modulus"] == 2.0
+    plain = parse_scene("p", dict(SELF, geometry="cylinder"))
+
+    def run(s):
+        parts = {p: pipeline.influence(s.influence_spec(), p) for p in s.parts}
+        recs = pipeline.solve(s, parts.get("normal"), parts.get("shear"))
+        return pipeline.assemble(s, recs, checks=pipeline.check(recs),
+                                 work=pipeline.energy(s, recs))
+
+    a, b = run(coated), run(plain)
+    assert a.attrs["base"] == "elastic" and a.attrs["substrate_modulus"] == 1.0
+    for name in ("friction_coefficient", "load_ratio", "frictional_work"):
+        np.testing.assert_allclose(a[name].values, b[name].values, rtol=1e-9, atol=1e-13)
+
+
+def test_a_cone_scene_carries_love_s_frictionless_load():
+    """The cone's frictionless load at a = 1 (E* = 1, cot alpha = 1) is Love's pi/2: the
+    dataset's load_ratio (P over the profile's own load) is 1 within its estimate."""
+    from contactlib import pipeline, profiles
+
+    s = parse_scene("cone", dict(SELF, profile="cone"))
+    assert profiles.profile("cone").frictionless_load(True) == pytest.approx(math.pi / 2,
+                                                                              rel=1e-14)
+    parts = {p: pipeline.influence(s.influence_spec(), p) for p in s.parts}
+    recs = pipeline.solve(s, parts.get("normal"), parts.get("shear"))
+    ds = pipeline.assemble(s, recs, checks=pipeline.check(recs), work=pipeline.energy(s, recs))
+    assert ds.attrs["profile"] == "cone"
+    err = abs(float(ds["load_ratio"][0]) * math.pi / 2 - math.pi / 2) / (math.pi / 2)
+    assert err <= float(ds["load_error_estimate"][0]) and err < 5e-4  # 2.1e-4 at n = 32
+
+
+def test_fretting_scene_parses_to_the_fretting_call():
+    s = parse_scene("f", dict(FRET, bulk_stress=[0, 0, 0.1]))
+    assert s.fretting and s.run_spec(0) == {
+        "geometry": "cylinder", "nu": 0.5, "friction": 0.3, "load_path": [0.0, 1.0, 1.0],
+        "tangential_path": [0.0, 0.0, 0.5], "steps": 8, "n": 64, "max_error": 1e-3,
+        "bulk_stress": [0.0, 0.0, 0.1]}
+    assert parse_scene("f", {k: v for k, v in FRET.items() if k != "n"}).n == 120
+    assert not parse_scene("h", HIST).fretting
+
+
+@pytest.mark.parametrize("extra, key, text", [
+    ({"geometry": "sphere"}, "geometry", "fretting: geometry 'sphere' is not covered"),
+    ({"tangential_path": [0, 0.5]}, "tangential_path", "has 2 points but load_path has 3"),
+    ({"tangential_path": [0, 0, 1]}, "tangential_path", "gross sliding"),
+    ({"tangential_path": [0.1, 0, 0.5]}, "tangential_path", "must start at 0"),
+    ({"bulk_stress": [0, 1]}, "bulk_stress", "has 2 points"),
+    ({"friction": [0.1, 0.3]}, "friction", "takes one friction coefficient"),
+    ({"friction": 0}, "friction", "k > 0"),
+    ({"steps": 6}, "steps", "multiple of 4"),
+    ({"n": 62}, "n", "multiple of 4"),
+    ({"slab_ratio": 0.5}, "slab_ratio", "not with tangential_path"),
+    ({"relaxation": [[0.5, 1.0]], "duration": 1.0}, "relaxation", "not with tangential_path"),
+])
+def test_bad_fretting_scene_is_one_line_with_the_library_s_words(extra, key, text):
+    with pytest.raises(ValueError) as info:
+        parse_scene("f", dict(FRET, **extra))
+    lines = [line for line in info.value.problems if line.startswith(f"scenes.f.{key}: ")]
+    assert lines and text in lines[0], info.value.problems
+    assert len(info.value.problems) <= 2, info.value.problems  # (relaxation: and duration)
+
+
+def test_bulk_stress_needs_a_tangential_path():
+    with pytest.raises(ValueError, match=r"^scenes\.h\.bulk_stress: needs tangential_path"):
+        parse_scene("h", dict(HIST, bulk_stress=[0, 1, 0]))

@@ -299,3 +299,53 @@ def test_lint_is_clean(tmp_path):
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text
     assert "Lints for" not in text, text
+
+
+# ----------------------------------------------------------------------------- example scenes:
+# profiles, a coated body, fretting paths (config/examples/scenes.yaml; issues 36, 37, 39)
+EXAMPLES = "config/examples/scenes.yaml"
+EXAMPLE_OUT = "examples-results"
+
+
+def _example_targets(*names: str) -> list[str]:
+    out = []
+    for name in names:
+        out.append(f"{EXAMPLE_OUT}/datasets/{name}.nc")
+        if name in ("cattaneo", "fretting-fatigue"):
+            out += [f"{EXAMPLE_OUT}/tables/{name}.csv", f"{EXAMPLE_OUT}/figures/{name}.png"]
+    return out
+
+
+def test_example_scenes_dry_run_builds_each_scene_s_jobs(tmp_path):
+    wd = make_workdir(tmp_path)
+    names = yaml.safe_load((wd / EXAMPLES).read_text())["scenes"]
+    counts = job_counts(wd, *_example_targets(*names), "--configfile", EXAMPLES)
+    # three self-similar scenes on three influence sets (the cone's sphere set, the power
+    # law's cylinder set and the coated cylinder's own), one history and two fretting runs
+    assert counts == {"influence": 3, "solve": 3, "check": 3, "energy": 1, "assemble": 3,
+                      "history_run": 1, "fretting_run": 2}, counts
+
+
+@pytest.mark.slow  # (about 8 s: two scenes end to end)
+def test_a_cone_and_a_fretting_scene_run_and_match_closed_forms(tmp_path):
+    """The cone's frictionless load is Love's (load_ratio 1 within its estimate); the
+    fretting path's stick ratio is Cattaneo's c/a = sqrt(1 - Q/kP) for the cylinder at
+    beta = 0 (nu = 0.5, rigid indenter) within its estimate; table and figure written."""
+    wd = make_workdir(tmp_path)
+    snakemake(wd, *_example_targets("cone-sphere", "cattaneo"), "--configfile", EXAMPLES)
+    cone = read_dataset(wd / EXAMPLE_OUT / "datasets/cone-sphere.nc")
+    assert cone.attrs["profile"] == "cone" and cone.attrs["scene"] == "cone-sphere"
+    err = abs(float(cone["load_ratio"][0]) - 1.0)
+    assert err <= float(cone["load_error_estimate"][0]) and err < 2e-4  # 5.6e-5 at n = 64
+    # k(c/a) does not depend on the profile (docs/profiles.md): Hertz's at c/a = 0.5
+    hertz = contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=256).friction_coefficient
+    assert abs(float(cone["friction_coefficient"][1]) - hertz) <= float(
+        cone["error_estimate"][1]) * float(cone["friction_coefficient"][1])
+    fr = read_dataset(wd / EXAMPLE_OUT / "datasets/cattaneo.nc")
+    assert fr.attrs["dundurs_beta"] == 0.0 and fr.attrs["scene"] == "cattaneo"
+    c, est = float(fr["stick_ratio"][-1]), float(fr["stick_ratio_error_estimate"][-1])
+    assert abs(c - np.sqrt(1 - 0.5)) <= est < 2e-3, (c, est)  # 0.70654 +- 7.6e-4
+    rows = (wd / EXAMPLE_OUT / "tables/cattaneo.csv").read_text().splitlines()
+    assert rows[0].startswith("point,P/P_max,Q/(k P_max),sigma/p0,c/a") and len(rows) == 4
+    assert (wd / EXAMPLE_OUT / "figures/cattaneo.png").stat().st_size > 1000
+    assert not (wd / "results").exists()

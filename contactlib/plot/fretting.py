@@ -17,7 +17,7 @@ from matplotlib.figure import Figure
 from contactlib.theory import cylinder_cycle_work
 from contactlib.plot.base import finish, palette, style_context
 
-__all__ = ["fig_fretting"]
+__all__ = ["fig_fretting", "fig_fretting_path"]
 
 _LOOP_AMPLITUDES = (0.25, 0.5, 0.9)
 
@@ -77,4 +77,54 @@ def fig_fretting(ds: xr.Dataset) -> Figure:
         right.set_xlabel(r"$Q^*/kP$")
         right.set_ylabel(r"work per cycle $/\,(k^2 p_0 P\,a_{max}^2/R)$")
         right.legend(loc="lower right")
+        return finish(fig)
+
+
+def fig_fretting_path(ds: xr.Dataset, title: str = "") -> Figure:
+    """A fretting path's Q-s curve and its stick ratio, step by step.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        From :func:`contactlib.io.fretting_to_dataset` (one path).
+    title : str
+        Drawn above the panels (e.g. the scene's name).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Left: Q/(k P_max) against the shift change (s - s_0)/(k p0 a_max^2/R) from the
+        path's first step. Right: the stick ratio c/a against the load step, the path
+        points marked with their error estimates. Steps that did not converge are not
+        drawn.
+    """
+    for name in ("tangential_load_ratio", "tangential_shift", "stick_ratio", "point_step"):
+        if name not in ds.variables:
+            raise ValueError(f"fig_fretting_path: the dataset has no variable {name!r} "
+                             "(expected one of contactlib.io.fretting_to_dataset)")
+    k = float(ds.attrs["friction_coefficient"])
+    p0 = 0.5  # Hertz's cylinder at a_max = 1
+    ok = np.cumprod(ds["converged"].values.astype(bool)).astype(bool)
+    q = np.where(ok, ds["tangential_load_ratio"].values, np.nan)
+    s = np.where(ok, ds["tangential_shift"].values - ds["tangential_shift"].values[0], np.nan)
+    c = np.where(ok, ds["stick_ratio"].values, np.nan)
+    pts = ds["point_step"].values
+    with style_context():
+        fig = Figure(figsize=(7.2, 3.2))
+        left, right = fig.subplots(1, 2)
+        colors = palette()
+        left.plot(s / (k * p0), q, color=colors[0], gid="fretting-path-loop")
+        left.set_xlabel(r"shift change $(s - s_0)\,/\,(k p_0 a_{max}^2/R)$")
+        left.set_ylabel(r"$Q / k P_{max}$")
+        steps = np.arange(c.size)
+        right.plot(steps, c, color=colors[0], gid="fretting-path-stick-ratio")
+        right.errorbar(pts, c[pts], yerr=ds["stick_ratio_error_estimate"].values, fmt="o",
+                       mfc="none", color=colors[0], gid="fretting-path-points",
+                       label="path points (error estimate)")
+        right.set_xlabel("load step")
+        right.set_ylabel(r"stick ratio $c/a$")
+        right.set_ylim(-0.02, 1.02)
+        right.legend(loc="lower left")
+        if title:
+            fig.suptitle(title)
         return finish(fig)

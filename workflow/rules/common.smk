@@ -74,6 +74,10 @@ def _figure_problems(cfg, scenes, raw_scenes):
             if name not in scenes:
                 continue  # the scene's own problems are reported
             want = "history" if fig in HISTORY_FIGURES else "self-similar"
+            if want == "history" and getattr(scenes[name], "fretting", False):
+                lines.append(f"figures.{fig}: scene {name!r} is a fretting path "
+                             f"(tangential_path); its own figure is figures/{name}.png")
+                continue
             if scenes[name].kind != want:
                 lines.append(f"figures.{fig}: scene {name!r} is of kind {scenes[name].kind}; "
                              f"this figure draws scenes of kind {want}")
@@ -206,7 +210,9 @@ MATERIAL_SCENES, MATERIAL_PAIRS = material_scenes(config, ALL_SCENES)
 VISCO_SCENES = visco_scenes(config, {**ALL_SCENES, **MATERIAL_SCENES})
 SCENES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES}.items() if s.kind == "self-similar"}
 HISTORIES = {n: s for n, s in {**ALL_SCENES, **MATERIAL_SCENES, **VISCO_SCENES}.items()
-             if s.kind == "history"}
+             if s.kind == "history" and not s.fretting}
+# history scenes with a tangential path: contactlib.fretting, a dataset, table and figure
+FRETTING = {n: s for n, s in ALL_SCENES.items() if s.kind == "history" and s.fretting}
 # scenes in physical units (radius, materials, forces): a dataset, a table and a figure in SI
 PHYSICAL = {n: s for n, s in ALL_SCENES.items() if s.kind == "physical"}
 CONVERGENCE = config.get("convergence") or {"stick_ratios": [], "studies": {}}
@@ -222,6 +228,7 @@ wildcard_constraints:
     scene="|".join(sorted(SCENES)) or "NONE",
     hscene="|".join(sorted(HISTORIES)) or "NONE",
     pscene="|".join(sorted(PHYSICAL)) or "NONE",
+    fscene="|".join(sorted(FRETTING)) or "NONE",
     key="[^/]+",
     study="|".join(sorted(CONVERGENCE["studies"])) or "NONE",
 
@@ -245,6 +252,8 @@ def scene_params(wildcards):
         "outputs": list(s.outputs),
         "tolerance": s.tolerance,
         "hash": s.hash,
+        **s.solve_spec(),  # a profile's keys (none for the paraboloid: params as before)
+        **{k: v for k, v in s.influence_spec().items() if k.startswith("substrate")},
     }
 
 
@@ -252,6 +261,13 @@ def physical_params(wildcards):
     """A physical scene's call (contactlib.physical.physical_history, SI) plus provenance."""
     s = PHYSICAL[wildcards.pscene]
     return {"run": s.run_spec(), "scene": s.name, "hash": s.hash}
+
+
+def fretting_params(wildcards):
+    """A fretting scene's call (contactlib.fretting, its one friction coefficient) plus
+    provenance."""
+    s = FRETTING[wildcards.fscene]
+    return {"run": s.run_spec(0), "scene": s.name, "hash": s.hash}
 
 
 def history_params(wildcards):
@@ -374,7 +390,7 @@ def figure_outputs(figs):
 
 def all_targets():
     out = [f"{RESULTS}datasets/{name}.nc" for name in ALL_SCENES]
-    for name in PHYSICAL:  # the physical table and figure of a scene in SI units
+    for name in [*PHYSICAL, *FRETTING]:  # a physical or fretting scene's table and figure
         out += [f"{RESULTS}tables/{name}.csv", f"{RESULTS}figures/{name}.png",
                 f"{RESULTS}figures/{name}.pdf"]
     for fig in FIGURES:

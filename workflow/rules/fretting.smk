@@ -52,3 +52,37 @@ rule fretting:
     input:
         rules.fretting_figure.output,
     default_target: False
+
+
+# History scenes with a `tangential_path` (fretting scenes): contactlib.fretting
+# instead of contactlib.history, one job a scene writing its dataset
+# (io.fretting_to_dataset), a table of the path points and a figure (the Q-s curve
+# and the stick ratio along the path).
+
+
+rule fretting_run:
+    output:
+        dataset=f"{RESULTS}datasets/{{fscene}}.nc",
+        table=f"{RESULTS}tables/{{fscene}}.csv",
+        png=report(
+            f"{RESULTS}figures/{{fscene}}.png",
+            caption="../report/fretting_scene.rst",
+            category="Fretting scenes",
+        ),
+        pdf=f"{RESULTS}figures/{{fscene}}.pdf",
+    params:
+        run=fretting_params,
+        version=VERSION,
+    log:
+        f"{RESULTS}logs/fretting-scenes/{{fscene}}.log",
+    benchmark:
+        f"{RESULTS}benchmarks/fretting-scenes/{{fscene}}.tsv"
+    conda:
+        "../envs/contactlib.yaml"
+    threads: 1
+    priority: PRIORITY["history_run"]
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    script:
+        "../scripts/fretting_run.py"

@@ -212,7 +212,7 @@ def _profile_kwargs(args: argparse.Namespace) -> dict[str, Any]:
 
 def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = False) -> None:
     """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max"); with ``coated`` also
-    ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep)."""
+    ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep, history)."""
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help=f"{length}/h of an elastic layer of thickness h on a rigid base, "
                           f">= 0 (0 = half-space / half-plane); at most 20 for the sphere "
@@ -226,7 +226,8 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
     sub.add_argument("--base", metavar="{smooth,bonded,elastic}", default="smooth",
                      help="the layer's base: rigid and smooth (frictionless) or bonded, or "
                           "elastic (a coated body: the layer bonded to an elastic half-space; "
-                          "default method, a/h <= 20); default: smooth")
+                          "default method; a/h <= 20, a_max/h <= 20/1.2 in history); "
+                          "default: smooth")
     sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
                      help="with --base elastic: the substrate's Young's modulus over the "
                           "layer's, in [1e-2, 1e6] (required there)")
@@ -560,7 +561,7 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--n", metavar="N", default=None,
                       help="elements over 1.2 a_max (integer; library default if omitted)")
     _profile_options(hist)
-    _layer_options(hist, "a_max")
+    _layer_options(hist, "a_max", coated=True)
     _indenter_options(hist)
     _physical_options(hist, load=False)
     hist.add_argument("--relaxation", metavar="G1:TAU1[,G2:TAU2...]", default=None,
@@ -656,7 +657,7 @@ def _validate(args: argparse.Namespace) -> dict[str, Any]:
 def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
     """Checked keyword arguments of :func:`contactlib.history`."""
     geometry = _check(validate.geometry, args.geometry, args.geometry)
-    base = parse_base(args.base)
+    base = parse_base(args.base, coated=True)
     shaped = _path_source(args) != "--load-path"
     kwargs = {
         "geometry": geometry,
@@ -685,6 +686,7 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
             raise UsageError("--relaxation needs a rigid indenter (no --indenter-modulus)")
     if base != "smooth":
         kwargs["base"] = base
+    kwargs.update(parse_substrate(args, base, geometry, "default"))
     kwargs.update(_profile_kwargs(args))
     return kwargs
 
@@ -718,7 +720,8 @@ def _validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
                           ("--relaxation", args.relaxation is not None),
                           ("--duration", args.duration is not None),
                           ("--substrate-modulus", getattr(args, "substrate_modulus", None)
-                           is not None)):
+                           is not None),
+                          ("--substrate-nu", getattr(args, "substrate_nu", None) is not None)):
         if given:
             raise UsageError(f"{option} must be given without --tangential-path: fretting "
                              "is solved for a half-plane (no layer, no viscoelasticity)")
@@ -1164,7 +1167,7 @@ def format_history(res: Any) -> str:
     if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
     if res.slab_ratio > 0:
-        head += f" ({getattr(res, 'base', 'smooth')} base)"
+        head += f" ({getattr(res, 'base', 'smooth')} base{substrate_text(res)})"
     head += _indenter_text(res)
     errors = getattr(res, "work_error_estimate", None)
     shown = errors is not None and any(math.isfinite(float(e)) for e in errors)

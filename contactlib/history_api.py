@@ -244,7 +244,9 @@ class HistoryResult:
     external_work: np.ndarray | None = None
     stored_energy: np.ndarray | None = None
     viscous_work: np.ndarray | None = None
-    base: str = "smooth"  # the layer's rigid base (irrelevant at slab_ratio 0)
+    base: str = "smooth"  # the layer's base (irrelevant at slab_ratio 0); "elastic": coated
+    substrate_modulus: float = math.inf  # E2/E1 of a coated body's substrate (inf otherwise)
+    substrate_poisson_ratio: float = math.nan  # nu2 of a coated body's substrate (NaN otherwise)
     energy_error_estimate: np.ndarray | None = None
     work_scale: float = math.nan
     energy_scale: float = math.nan
@@ -384,14 +386,16 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             duration: float | Sequence[float] | None = None,
             base: str = "smooth", profile: str = "paraboloid",
             exponent: float | None = None,
-            tolerance: float | None = None) -> HistoryResult:
+            tolerance: float | None = None, substrate_modulus: float | None = None,
+            substrate_nu: float | None = None) -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
     ----------
     geometry : {"sphere", "cylinder"}
         Rigid sphere or cylinder (plane strain) on a half-space/half-plane
-        (``slab_ratio = 0``) or on a layer on a rigid base.
+        (``slab_ratio = 0``), on a layer on a rigid base, or on a coated body
+        (``base="elastic"``).
     nu : float
         Poisson's ratio, in (-1, 0.5].
     friction : float
@@ -446,8 +450,12 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         segment, in the unit of tau. Any unit will do if the relaxation
         times are in the same one (seconds with tau in seconds): only their
         ratios enter.
-    base : {"smooth", "bonded"}
-        The layer's rigid base (default smooth).
+    base : {"smooth", "bonded", "elastic"}
+        The layer's base (default smooth): rigid and frictionless or bonded,
+        or ``"elastic"``, a coated body: the layer (E, ``nu``; E* is the
+        layer's) bonded to an elastic half-space or half-plane of
+        ``substrate_modulus`` and ``substrate_nu``, a_max/h <= 20/1.2 (elastic
+        body only: a relaxation is refused on it).
     profile : {"paraboloid", "cone", "power"}
         The indenter's shape h ~ r^d (default the paraboloid; :mod:`contactlib.profiles`).
         Then a_max is the profile's frictionless contact radius at P_max, P_max its
@@ -464,6 +472,11 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         the refinements: :mod:`contactlib.history_plan`. ``tolerance_met``
         says whether the run got there; a plan beyond the largest n raises
         :class:`contactlib.validate.SolverLimit`.
+    substrate_modulus, substrate_nu : float, optional
+        E2/E1 of the coated body's substrate over the layer, in [1e-2, 1e6]
+        (required with ``base="elastic"``, refused otherwise), and its
+        Poisson's ratio (default the layer's ``nu``), as for
+        :func:`contactlib.solve`.
 
     Returns
     -------
@@ -554,7 +567,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             history, geometry, nu, friction, load_path, tolerance, slab_ratio=slab_ratio,
             progress=progress, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
             relaxation=relaxation, duration=duration, base=base, profile=profile,
-            exponent=exponent)
+            exponent=exponent, substrate_modulus=substrate_modulus, substrate_nu=substrate_nu)
     geometry = validate.geometry(geometry)
     nu = validate.nu(nu)
     k = validate.friction(friction)
@@ -563,8 +576,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     levels_in = () if shaped else validate.load_path(load_path)
     steps = validate.steps(steps)
     n = validate.history_n(n)
-    base = validate.base(base)
+    base = validate.base(base, coated=True)
     slab = validate.slab_ratio(slab_ratio, geometry, base, extent=validate.HISTORY_MESH_EXTENT)
+    sub_modulus, sub_nu = validate.substrate(base, substrate_modulus, substrate_nu, geometry)
     progress = validate.callback("progress", progress)
     max_error = validate.max_error(max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
@@ -580,9 +594,15 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         raise validate.InputError("relaxation", "given with a rigid indenter", relaxation,
                                   "relaxation needs a rigid indenter (an elastic indenter's "
                                   "compliance would not relax with the body's)")
+    if prony and base == validate.COATED_BASE:
+        raise validate.InputError("relaxation", "not given on a coated body (base 'elastic')",
+                                  relaxation, "relaxation is not available on a coated body "
+                                  "(base 'elastic'): the substrate's kernels are elastic only; "
+                                  "use a rigid base or an elastic layer")
 
     shape = profiles.profile(profile, exponent)
-    model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape)
+    model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape,
+                    substrate_modulus=sub_modulus, substrate_nu=sub_nu)
     extent = creep_extent(model)
     ops = hs.build_operators(model, n, extent)
     if shaped:
@@ -723,6 +743,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         dundurs_beta=float(model.beta), relaxation=prony, durations=durations,
         mesh_extent=float(extent), time=raw.time, external_work=raw.external_work,
         stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base,
+        substrate_modulus=float(sub_modulus), substrate_poisson_ratio=(
+            float(model.body.kernel_base.nu) if base == validate.COATED_BASE else math.nan),
         profile=shape.name, exponent=float(shape.exponent),
         segment_steps=step_plan.counts if shaped else (),
         load_shape=path.describe() if shaped else None,

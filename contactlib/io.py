@@ -713,7 +713,7 @@ def stack_histories(datasets: Sequence[xr.Dataset]) -> xr.Dataset:
     if not items:
         raise ValueError("stack_histories needs at least one history dataset")
     same = ("geometry", "poisson_ratio", "elements", "steps", "slab_ratio", "base",
-            "relaxation_weights", "relaxation_times", "segment_durations")
+            "substrate_modulus", "substrate_poisson_ratio", "relaxation_weights", "relaxation_times", "segment_durations")
     first = items[0].attrs
     for ds in items[1:]:
         for key in same:

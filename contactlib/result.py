@@ -115,7 +115,7 @@ def history_repr(res: Any) -> str:
     if indenter(res.geometry).reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
     if res.slab_ratio > 0:
-        head += f" ({getattr(res, 'base', 'smooth')} base)"
+        head += f" ({getattr(res, 'base', 'smooth')} base{substrate_text(res)})"
     steps = int(np.size(res.load_ratio)) - 1
     done = int(np.count_nonzero(np.asarray(res.converged)[1:]))
     iters = np.asarray(res.iterations)

@@ -392,12 +392,6 @@ def test_bad_substrate_input_names_the_argument(kwargs, name):
     assert err.value.name == name and str(err.value).startswith(name)
 
 
-def test_history_refuses_a_coated_body():
-    with pytest.raises(contactlib.validate.InputError, match="solve and sweep") as err:
-        contactlib.history("sphere", NU, 0.2, [0, 1], 2, slab_ratio=1.0, base="elastic")
-    assert err.value.name == "base"
-
-
 # --- command line ------------------------------------------------------------------------
 def test_cli_solve_on_a_coated_body(capsys):
     from contactlib import cli

@@ -349,3 +349,14 @@ def test_a_cone_and_a_fretting_scene_run_and_match_closed_forms(tmp_path):
     assert rows[0].startswith("point,P/P_max,Q/(k P_max),sigma/p0,c/a") and len(rows) == 4
     assert (wd / EXAMPLE_OUT / "figures/cattaneo.png").stat().st_size > 1000
     assert not (wd / "results").exists()
+
+
+def test_a_fretting_scene_may_not_take_the_name_of_the_workflow_s_own_figure(tmp_path):
+    raw = {"kind": "history", "geometry": "cylinder", "nu": 0.5, "friction": 0.3,
+           "load_path": [0, 1, 1], "tangential_path": [0, 0, 0.5], "steps": 8, "n": 64}
+    wd = make_workdir(tmp_path, {"scenes": {"fretting": raw}})
+    proc = snakemake(wd, "--dry-run", cores=1, check=False)
+    assert proc.returncode != 0
+    assert ("scenes.fretting: the name is taken by the workflow's own figure or table "
+            "(figures/fretting.png, tables/fretting.csv); choose another") in proc.stderr + \
+        proc.stdout

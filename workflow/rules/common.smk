@@ -91,6 +91,21 @@ def _figure_problems(cfg, scenes, raw_scenes):
     return lines
 
 
+# tables/<name>.csv and figures/<name>.png of the workflow's own targets: a physical or
+# fretting scene, which writes its own under its name, must not take one of them
+OWN_OUTPUT_NAMES = {"convergence", "fretting", "layers", "materials", "viscoelastic",
+                    "key-numbers", "materials-key-numbers", "stresses", "stresses-edge",
+                    "stresses-maps", "stresses-maxima", "stresses-tangential", *FIGURES}
+
+
+def _name_problems(scenes):
+    """Physical and fretting scenes named like one of the workflow's own tables or figures."""
+    return [f"scenes.{name}: the name is taken by the workflow's own figure or table "
+            f"(figures/{name}.png, tables/{name}.csv); choose another"
+            for name, s in scenes.items() if name in OWN_OUTPUT_NAMES
+            and (s.kind == "physical" or getattr(s, "fretting", False))]
+
+
 def _convergence_problems(cfg):
     lines = []
     studies = (cfg.get("convergence") or {}).get("studies")
@@ -142,6 +157,7 @@ def _validate_config(cfg):
             scenes.pop(scene, None)
         lines.append(line)
     lines.sort(key=lambda line: line.split(":", 1)[0].split(".")[:2])  # grouped by scene
+    lines += _name_problems(scenes)
     lines += _figure_problems(cfg, scenes, raw_scenes)
     lines += _convergence_problems(cfg)
     if lines:

@@ -57,10 +57,12 @@ _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "sti
          "exponent", "substrate_modulus", "substrate_nu")
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
-                 "duration", "profile", "exponent", "tangential_path", "bulk_stress")
+                 "duration", "profile", "exponent", "tangential_path", "bulk_stress",
+                 "substrate_modulus", "substrate_nu")
 # keys of a history scene that a fretting path (tangential_path) does not take: the
 # fretting solver covers the half-plane, elastic bodies only
-_NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration")
+_NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration", "substrate_modulus",
+                 "substrate_nu")
 _PHYSICAL_KEYS = ("kind", "geometry", "radius", "length", "thickness", "base", "indenter",
                   "body", "friction", "load_path", "steps", "n", "max_error", "relaxation",
                   "times")
@@ -448,6 +450,9 @@ class HistoryScene:
         :func:`contactlib.history` (one friction coefficient); empty: none.
     bulk_stress : tuple of float
         The body's bulk stress sigma/p0 at the same points (fretting only); empty: none.
+    base, substrate_modulus, substrate_nu
+        As for :class:`Scene`: ``base`` "elastic" is a coated body, the layer
+        (a_max/h ``slab_ratio``) bonded to a substrate of E2/E1 ``substrate_modulus``.
     """
 
     __repr__ = short_repr  # a few lines: long tuples shortened
@@ -472,6 +477,8 @@ class HistoryScene:
     exponent: float | None = None
     tangential_path: tuple[float, ...] = ()
     bulk_stress: tuple[float, ...] = ()
+    substrate_modulus: float = float("inf")
+    substrate_nu: float | None = None
 
     @property
     def fretting(self) -> bool:
@@ -506,6 +513,8 @@ class HistoryScene:
             spec.update(relaxation=[list(p) for p in self.relaxation],
                         duration=list(self.durations))
         spec.update(_base_spec(self.base))
+        if self.base == validate.COATED_BASE:
+            spec.update(substrate_modulus=self.substrate_modulus, substrate_nu=self.substrate_nu)
         return spec | _profile_spec(self.profile, self.exponent)
 
 
@@ -572,15 +581,16 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     geometry = bad.check("geometry", validate.geometry, raw["geometry"]) \
         if "geometry" in raw else None
     nu = bad.check("nu", validate.nu, raw["nu"]) if "nu" in raw else None
-    if raw.get("base") == validate.COATED_BASE:
-        bad.add("base", "base 'elastic' (a coated body) is not available in history scenes "
-                        "yet (contactlib.history has no substrate); self-similar scenes take it "
-                        "with substrate_modulus and substrate_nu")
-        base = "smooth"
-    else:
-        base = bad.check("base", validate.base, raw.get("base", "smooth"))
+    base = bad.check("base", validate.base, raw.get("base", "smooth"), True)
     slab = bad.check("slab_ratio", validate.slab_ratio, raw.get("slab_ratio", 0.0), geometry,
                      base or "smooth", validate.HISTORY_MESH_EXTENT)
+    substrate = (math.inf, None)
+    if base is not None and geometry is not None and not fretting:
+        try:
+            substrate = validate.substrate(base, raw.get("substrate_modulus"),
+                                           raw.get("substrate_nu"), geometry)
+        except validate.InputError as exc:
+            bad.add(exc.name, str(exc))
     max_error = bad.check("max_error", validate.max_error,
                           raw.get("max_error", validate.DEFAULT_MAX_ERROR))
     ind = _scene_indenter(raw, nu, bad)
@@ -589,6 +599,10 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                           len(path) - 1 if path else 1, bool(prony)) if prony is not None else ()
     if prony and ind[0] != float("inf"):
         bad.add("relaxation", "needs a rigid indenter")
+    if prony and base == validate.COATED_BASE:  # (contactlib.history's words)
+        bad.add("relaxation", "relaxation is not available on a coated body (base 'elastic'): "
+                              "the substrate's kernels are elastic only; use a rigid base or "
+                              "an elastic layer")
     profile, exponent = _scene_profile(raw, bad)
     tang, sigma = _fretting_paths(raw, ks, n, bad) if fretting else ((), ())
     bad.raise_any()
@@ -597,7 +611,8 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                         hash=config_hash(raw), max_error=max_error, indenter_modulus=ind[0],
                         indenter_nu=ind[1], relaxation=prony, durations=durations,
                         base=base, profile=profile, exponent=exponent, tangential_path=tang,
-                        bulk_stress=sigma)
+                        bulk_stress=sigma, substrate_modulus=substrate[0],
+                        substrate_nu=substrate[1])
 
 
 @dataclass(frozen=True, repr=False)
@@ -639,8 +654,8 @@ def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
                          "has no profile yet); a history scene takes a cone or a power law")
     if raw.get("base") == validate.COATED_BASE:
         bad.add("base", "base 'elastic' (a coated body) is not available in physical scenes "
-                        "yet; self-similar scenes take it with substrate_modulus and "
-                        "substrate_nu")
+                        "yet; self-similar and history scenes take it with substrate_modulus "
+                        "and substrate_nu")
     bad.keys({k: v for k, v in raw.items() if k not in ("profile", "exponent")},
              _PHYSICAL_KEYS, ("geometry", "radius", "body", "friction", "load_path"),
              "physical")

@@ -111,6 +111,9 @@ BAD = {
                            substrate_nu=0.7),
     "substrate-without-coating": dict(OK, substrate_modulus=2),
     "history-coated": dict(HISTORY, base="elastic"),
+    "history-coated-relaxation": dict(HISTORY, base="elastic", slab_ratio=0.5,
+                                      substrate_modulus=2, relaxation=[[0.5, 1.0]],
+                                      duration=1.0),
     "fretting-sphere": dict(HISTORY, tangential_path=[0, 0.5]),
     "fretting-gross-slip": dict(HISTORY, geometry="cylinder", tangential_path=[0, 1.0]),
     "fretting-path-length": dict(HISTORY, geometry="cylinder", tangential_path=[0, 0, 0.5]),
@@ -131,6 +134,8 @@ GOOD = {
     "cone-edge": dict(OK, profile="power", exponent=8),
     "coated-edge": dict(OK, base="elastic", slab_ratio=0.5, substrate_modulus=1e6,
                         substrate_nu=0.5),
+    "history-coated-edge": dict(HISTORY, base="elastic", slab_ratio=0.5,
+                                substrate_modulus=0.01),
     "fretting-edge": dict(HISTORY, geometry="cylinder", n=16, tangential_path=[0, 0.999],
                           bulk_stress=[0, 0.5]),
 }

@@ -261,11 +261,14 @@ def test_bad_profile_or_coating_is_one_line_naming_the_key(extra, text):
 
 
 @pytest.mark.parametrize("kind, extra, key", [
-    ("history", {"base": "elastic"}, "base"),
+    ("history", {"base": "elastic"}, "substrate_modulus"),
+    ("history", {"substrate_modulus": 2.0}, "substrate_modulus"),
+    ("history", {"base": "elastic", "substrate_modulus": 2.0, "relaxation": [[0.5, 1.0]],
+                 "duration": 1.0}, "relaxation"),
     ("physical", {"profile": "cone"}, "profile"),
     ("physical", {"base": "elastic"}, "base"),
 ])
-def test_coatings_in_histories_and_profiles_in_physical_scenes_are_refused(kind, extra, key):
+def test_bad_coatings_in_histories_and_physical_ones_are_refused(kind, extra, key):
     raw = dict(HIST, **extra) if kind == "history" else dict(
         {"kind": "physical", "geometry": "sphere", "radius": "5mm", "indenter": "steel",
          "body": "steel", "friction": 0.2, "load_path": ["0N", "10N"]}, **extra)
@@ -274,7 +277,8 @@ def test_coatings_in_histories_and_profiles_in_physical_scenes_are_refused(kind,
     assert len(info.value.problems) == 1, info.value.problems
     line = info.value.problems[0]
     assert line.startswith(f"scenes.x.{key}: ")
-    assert ("not available" in line) if key == "base" else ("paraboloid only" in line)
+    if kind == "physical":
+        assert ("not available" in line) if key == "base" else ("paraboloid only" in line)
 
 
 def test_a_coated_scene_keys_its_substrate_and_equals_the_homogeneous_body_at_e2_over_e1_1():
@@ -298,6 +302,27 @@ def test_a_coated_scene_keys_its_substrate_and_equals_the_homogeneous_body_at_e2
     assert a.attrs["base"] == "elastic" and a.attrs["substrate_modulus"] == 1.0
     for name in ("friction_coefficient", "load_ratio", "frictional_work"):
         np.testing.assert_allclose(a[name].values, b[name].values, rtol=1e-9, atol=1e-13)
+
+
+def test_a_coated_history_scene_runs_the_coated_history():
+    """E2/E1 = 1, nu2 = nu: the coated history is the homogeneous body's (identity); a
+    stiffer substrate reaches the call and the dataset."""
+    raw = dict(HIST, friction=0.2, load_path=[0, 1, 0], steps=4, slab_ratio=0.5,
+               base="elastic")
+    s = parse_scene("h", dict(raw, substrate_modulus=2.0, substrate_nu=0.2))
+    spec = s.run_spec(0)
+    assert (spec["base"], spec["substrate_modulus"], spec["substrate_nu"]) == ("elastic", 2.0,
+                                                                               0.2)
+    assert "substrate_modulus" not in parse_scene("h", HIST).run_spec(0)
+    ds = history_to_dataset(history(**s.run_spec(0)))
+    assert ds.attrs["base"] == "elastic" and ds.attrs["substrate_modulus"] == 2.0
+    same = history(**parse_scene("h", dict(raw, substrate_modulus=1.0)).run_spec(0))
+    plain = history(**parse_scene("h", dict(HIST, friction=0.2, load_path=[0, 1, 0],
+                                             steps=4)).run_spec(0))
+    scale = float(np.max(plain.frictional_work))
+    np.testing.assert_allclose(same.frictional_work, plain.frictional_work, rtol=0,
+                               atol=1e-12 * scale)
+    np.testing.assert_allclose(same.stick_ratio, plain.stick_ratio, rtol=0, atol=1e-12)
 
 
 def test_a_cone_scene_carries_love_s_frictionless_load():

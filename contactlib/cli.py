@@ -422,7 +422,12 @@ def _physical_options(sub: argparse.ArgumentParser, *, load: bool) -> None:
                        help="the cylinder's length in m (required for a cylinder)")
     group.add_argument("--thickness", metavar="H", default=None,
                        help="thickness of an elastic layer on a rigid base, in m (default: "
-                            "half-space / half-plane); --base chooses the base")
+                            "half-space / half-plane); --base chooses the base (elastic: "
+                            "a coating on --substrate)")
+    group.add_argument("--substrate", metavar="NAME|E,NU", default=None,
+                       help="with --base elastic and --thickness: the substrate the coating "
+                            "(--body) is bonded to, a name of the table or E,nu; its E over "
+                            "the coating's in [1e-2, 1e6]")
     if not load:
         group.add_argument("--times", metavar="LIST", default=None,
                            help="with --relaxation: the time of each load-path point, in s "
@@ -835,7 +840,8 @@ def _required(value: str | None, option: str) -> str:
 # physical units (contactlib.physical)
 # --------------------------------------------------------------------------
 
-_PHYSICAL = ("radius", "load", "indenter", "body", "length", "thickness", "times")
+_PHYSICAL = ("radius", "load", "indenter", "body", "length", "thickness", "times",
+             "substrate")
 _UNIT_RE = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[A-Za-zµμ]+\s*$")
 
 
@@ -889,7 +895,7 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     indenter = _physical_check(physical.material,
                                "rigid" if args.indenter is None else args.indenter, "indenter")
     kwargs: dict[str, Any] = {"geometry": geometry, "radius": radius, "indenter": indenter,
-                              "body": body, "base": parse_base(args.base),
+                              "body": body, "base": parse_base(args.base, coated=True),
                               "max_error": parse_max_error(args.max_error)}
     if geometry == "cylinder":
         kwargs["length"] = _physical_check(physical.parse_quantity,
@@ -901,6 +907,8 @@ def _validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     if args.thickness is not None:
         kwargs["thickness"] = _physical_check(physical.parse_quantity, args.thickness,
                                               "length", "thickness")
+    if args.substrate is not None:
+        kwargs["substrate"] = _physical_check(physical.material, args.substrate, "substrate")
     if args.command == "solve":
         kwargs["load"] = _physical_check(physical.parse_quantity,
                                          _required(args.load, "--load"), "force", "load")

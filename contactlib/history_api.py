@@ -86,7 +86,7 @@ from .result import history_repr
 from .threads import blas_single_threaded
 
 __all__ = ["history", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
-           "load_levels", "step_times", "creep_extent"]
+           "load_levels", "step_times", "creep_extent", "coated_extent"]
 
 DEFAULT_N = validate.HISTORY_DEFAULT_N  # elements over [0, 1.2 a_max]: size a_max / 200
 MIN_N = validate.HISTORY_MIN_N
@@ -313,6 +313,48 @@ def creep_extent(model: Contact) -> float:
     return hs.MESH_EXTENT * model.frictionless_radius(1.0 / relaxed)
 
 
+_PROBE_N = 64  # elements of the frictionless probe that sizes a coated body's mesh
+
+
+def coated_extent(model: Contact, geometry: str, slab: float) -> float:
+    """Mesh length over a_max that covers a coated body's contact (``MESH_EXTENT`` on a
+    substrate at least as stiff as the coating).
+
+    a_max is the coating's Hertz radius at P_max. A softer substrate (m = E1*/E2* > 1)
+    lets the contact grow beyond it, up to the substrate's own radius
+    ``frictionless_radius(m)`` a_max (the coated body is stiffer than a half-space of
+    the substrate). A frictionless one-step probe on ``_PROBE_N`` elements over
+    ``MESH_EXTENT`` times that bound (at most the kernels' reach) finds the radius a_p;
+    the mesh keeps ``MESH_EXTENT (a_p + one probe element)``.
+
+    Raises
+    ------
+    validate.InputError
+        Naming ``slab_ratio`` when the contact reaches beyond the kernels' range
+        (a_max/h too large for this substrate).
+    """
+    body = model.body
+    sub = body.kernel_base
+    m = (1.0 - sub.nu ** 2) / ((1.0 - body.nu ** 2) * float(body.substrate_modulus))
+    if m <= 1.0:
+        return hs.MESH_EXTENT
+    # the farthest mesh point over h the kernels reach (the sphere's rings r/h <= 20, the
+    # cylinder's strip tables |x +- s|/h <= 48 with x, s within the mesh)
+    reach = validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)] * (
+        1.0 if geometry == "sphere" else validate.HISTORY_MESH_EXTENT)
+    probe = min(hs.MESH_EXTENT * model.frictionless_radius(m), reach / slab)
+    raw = hs.run_history(hs.build_operators(model, _PROBE_N, probe), 0.0, np.array([0.0, 1.0]))
+    extent = hs.MESH_EXTENT * (float(raw.contact_radius[-1]) + probe / _PROBE_N)
+    if np.any(raw.state[-1, -2:] > 0) or extent * slab > reach:
+        raise validate.InputError(
+            "slab_ratio", "small enough that the contact stays within the kernels' range",
+            slab, f"slab_ratio = {slab:g} is too large for this soft substrate (E1*/E2* = "
+            f"{m:.3g}): the contact grows to {extent / hs.MESH_EXTENT:.3g} a_max and the mesh "
+            f"of {hs.MESH_EXTENT:g} times that would reach {extent * slab:.3g} h, beyond the "
+            f"{reach:g} h the coated kernels cover; use a thicker coating (smaller slab_ratio)")
+    return max(extent, hs.MESH_EXTENT)
+
+
 def _relative(error: np.ndarray, scale: float) -> np.ndarray:
     """``error / scale``; 0 where the error is 0 (whatever the scale), inf where NaN."""
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -422,7 +464,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     slab_ratio : float
         a_max / h of the layer (0: half-space or half-plane); h is fixed
         while a grows. The sphere's mesh reaches 1.2 a_max, so its bound is
-        ``LAYER_RATIO_MAX / 1.2`` (16.7).
+        ``LAYER_RATIO_MAX / 1.2`` (16.7). On a coated body whose substrate is
+        softer than the coating the contact outgrows a_max and the mesh with it
+        (:func:`coated_extent`), which lowers that bound.
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
     max_error : float
@@ -548,6 +592,10 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     ...  for k in (0.0, float("inf"))]
     [0.0, 0.0]
     """
+    if tolerance is not None and base == validate.COATED_BASE:
+        raise validate.InputError("tolerance", "unset on a coated body (base 'elastic')",
+                                  tolerance, "tolerance is not planned on a coated body (base "
+                                  "'elastic'), as in solve: give steps and n instead")
     if tolerance is not None:  # plan n and steps (contactlib.history_plan)
         from .history_plan import history_to_tolerance
 
@@ -603,7 +651,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     shape = profiles.profile(profile, exponent)
     model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape,
                     substrate_modulus=sub_modulus, substrate_nu=sub_nu)
-    extent = creep_extent(model)
+    extent = coated_extent(model, geometry, slab) if base == validate.COATED_BASE and slab > 0 \
+        else creep_extent(model)
     ops = hs.build_operators(model, n, extent)
     if shaped:
         levels, times, segment = load_paths.sample(path, step_plan, bool(prony))

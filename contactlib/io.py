@@ -1973,6 +1973,9 @@ def _scale_attrs(res: Any, a: float, a_label: str) -> dict[str, Any]:
         attrs["cylinder_length_m"] = float(res.length)
     if math.isfinite(res.thickness):
         attrs["layer_thickness_m"] = float(res.thickness)
+    if getattr(res, "substrate", None) is not None:  # a coated body's substrate
+        attrs["substrate_material"] = str(res.substrate.name)
+        attrs["substrate_youngs_modulus_Pa"] = float(res.substrate.E)
     if res.notes:
         attrs["validity_warning"] = "; ".join(res.notes)
     return attrs

@@ -319,6 +319,7 @@ class _Problem:
     length: float  # m; 1.0 for the sphere (a per-length quantity times 1)
     thickness: float  # m; inf on the half-space / half-plane
     base: str
+    substrate: Material | None = None  # a coated body's substrate (base "elastic")
 
     @property
     def per_length(self) -> float:
@@ -333,11 +334,17 @@ class _Problem:
             kwargs["indenter_nu"] = self.indenter.nu
         if self.thickness != math.inf and self.base != "smooth":
             kwargs["base"] = self.base
+        if self.substrate is not None:  # E2/E1 over the coating's E, nu2
+            kwargs["substrate_modulus"] = self.substrate.E / self.body.E
+            kwargs["substrate_nu"] = self.substrate.nu
         return kwargs
 
 
 def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
-             thickness: Any, base: Any) -> _Problem:
+             thickness: Any, base: Any, substrate: Any = None) -> _Problem:
+    """The checked problem; ``substrate`` (a material) only with ``base="elastic"`` (a
+    coated body: ``body`` the coating, of ``thickness`` h), E2/E1 in
+    :data:`contactlib.validate.SUBSTRATE_MODULUS_RANGE`."""
     geometry = validate.geometry(geometry)
     r = parse_quantity(radius, "length", "radius")
     ind = material(indenter, "indenter")
@@ -352,8 +359,43 @@ def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, lengt
             raise validate.InputError("length", "given only for a cylinder", length)
         ell = 1.0
     h = math.inf if thickness is None else parse_quantity(thickness, "length", "thickness")
-    base = validate.base(base)
-    return _Problem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base)
+    base = validate.base(base, coated=True)
+    sub = _substrate(base, substrate, bod, h)
+    return _Problem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base, sub)
+
+
+def _shown(value: Any) -> str:
+    """A material as the user named it (a :class:`Material` by its text), else its repr."""
+    return str(value) if isinstance(value, Material) else repr(value)
+
+
+def _substrate(base: str, substrate: Any, body: Material, thickness: float) -> Material | None:
+    """The substrate material of a coated body (None on any other body), its E2/E1 checked."""
+    if base != validate.COATED_BASE:
+        if substrate is not None:
+            raise validate.InputError("substrate", "given only with base 'elastic'", substrate,
+                                      f"substrate needs base='elastic' (a coated body), not "
+                                      f"base={base!r}: a rigid base carries no substrate "
+                                      f"material, got {_shown(substrate)}")
+        return None
+    if substrate is None:
+        raise validate.InputError("base", "given with a substrate", base,
+                                  "base 'elastic' (a coated body) is not available without a "
+                                  "substrate: give substrate (its material, a name or E,nu) "
+                                  "and the coating's thickness")
+    if thickness == math.inf:
+        raise validate.InputError("thickness", "given with base 'elastic'", None,
+                                  "thickness (the coating's, in m) is required with "
+                                  "base='elastic'")
+    sub = material(substrate, "substrate")
+    lo, hi = validate.SUBSTRATE_MODULUS_RANGE
+    ratio = sub.E / body.E
+    if not lo <= ratio <= hi:
+        raise validate.InputError("substrate", f"E2/E1 in [{lo:g}, {hi:g}]", substrate,
+                                  f"substrate {sub} over body {body}: E2/E1 = {ratio:.3g} is "
+                                  f"outside [{lo:g}, {hi:g}], the verified range of a coated "
+                                  f"body")
+    return sub
 
 
 def validity_notes(problem: _Problem, a: float) -> list[str]:
@@ -384,6 +426,7 @@ class _Setup:
     indenter: Material
     body: Material
     composite_modulus: float
+    substrate: Material | None
 
     def _head(self) -> str:
         """``sphere R = 5 mm: indenter ..., body ...`` (and the layer)."""
@@ -392,6 +435,8 @@ class _Setup:
                  f"{format_si(self.length, 'm')}")
         layer = "" if self.thickness == math.inf else \
             f", layer h = {format_si(self.thickness, 'm')} ({self.base} base)"
+        if self.substrate is not None:
+            layer += f" on substrate {self.substrate}"
         return f"{shape}: indenter {self.indenter}, body {self.body}{layer}"
 
 
@@ -537,6 +582,7 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
                    indenter: Any, body: Any, *, friction: float | None = None,
                    stick_ratio: float | None = None, length: float | str | None = None,
                    thickness: float | str | None = None, base: str = "smooth",
+                   substrate: Any = None,
                    n: int | None = None, method: str = "default",
                    tolerance: float | None = None,
                    max_error: float = validate.DEFAULT_MAX_ERROR,
@@ -560,11 +606,16 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     length : float or str
         The cylinder's length [m] (required for the cylinder, refused for the sphere).
     thickness : float or str, optional
-        h [m] of an elastic layer on a rigid base; None: half-space / half-plane.
-        The self-similar solution holds at one a/h: a is found by iterating
-        a/h = a(L(a/h))/h to 1e-12.
-    base : {"smooth", "bonded"}
-        The layer's base.
+        h [m] of an elastic layer on a rigid base, or of the coating of a coated
+        body; None: half-space / half-plane. The self-similar solution holds at
+        one a/h: a is found by iterating a/h = a(L(a/h))/h to 1e-12.
+    base : {"smooth", "bonded", "elastic"}
+        The layer's base; ``"elastic"``: a coated body, ``body`` (the coating, of
+        ``thickness``) bonded to a half-space (half-plane) of ``substrate``.
+    substrate : str or (E, nu), optional
+        A coated body's substrate material (name or (E [Pa], nu)); only with
+        ``base="elastic"`` (required there), E2/E1 of substrate over coating in
+        [1e-2, 1e6]. The scalings (E*, p0, a_Hertz) are the coating's.
     n, method, tolerance, max_error, energy
         Passed to :func:`contactlib.solve`.
 
@@ -594,7 +645,7 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     from . import api
     from .model import contact
 
-    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base)
+    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate)
     force = parse_quantity(load, "force", "load")
     per_length = force / prob.per_length
     kwargs = dict(prob.dimensionless(), n=n, method=method, max_error=max_error,
@@ -623,7 +674,9 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     eps_l = float(sol.load_error_estimate)
     err_a = eps_l / (3.0 if g == "sphere" else 2.0)
     model = contact(g, nu, slab, kwargs.get("indenter_modulus", math.inf),
-                    kwargs.get("indenter_nu"), prob.base)
+                    kwargs.get("indenter_nu"), prob.base,
+                    substrate_modulus=kwargs.get("substrate_modulus", math.inf),
+                    substrate_nu=kwargs.get("substrate_nu"))
     err_gamma = _stick_ratio_error(sol, model, friction is not None)
     gamma = float(sol.stick_ratio)
     delta = float(sol.extra.get("indentation", math.nan))
@@ -644,7 +697,7 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     }
     return PhysicalSolution(
         geometry=g, radius=prob.radius, length=prob.length, thickness=prob.thickness,
-        base=prob.base, indenter=prob.indenter, body=prob.body,
+        base=prob.base, indenter=prob.indenter, body=prob.body, substrate=prob.substrate,
         composite_modulus=prob.e_star, load=force, friction=float(sol.friction_coefficient),
         contact_radius=a, stick_radius=gamma * a,
         peak_pressure=float(np.max(sol.pressure)) * p0, mean_pressure=mean,
@@ -913,6 +966,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
                      relaxation: Sequence[Sequence[Any]] | None = None,
                      steps: int = DEFAULT_HISTORY_STEPS, length: float | str | None = None,
                      thickness: float | str | None = None, base: str = "smooth",
+                     substrate: Any = None,
                      n: int | None = None, max_error: float = validate.DEFAULT_MAX_ERROR,
                      error_estimate: bool = True,
                      progress: Callable[[int, int], None] | None = None,
@@ -921,8 +975,9 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
 
     Parameters
     ----------
-    geometry, radius, indenter, body, length, thickness, base
-        As for :func:`physical_solve` (the layer's a_max/h with a_max below).
+    geometry, radius, indenter, body, length, thickness, base, substrate
+        As for :func:`physical_solve` (the layer's a_max/h with a_max below; a coated
+        body refuses a ``relaxation``).
     load_path : sequence, str or mapping
         Forces [N] (numbers, or strings with units), or ``"0N,100N,0N"``;
         starting at 0. The largest is P_max, load level 1. Or a shape
@@ -967,7 +1022,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
 
     from . import load_paths
 
-    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base)
+    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate)
     shaped = load_paths.is_shaped(load_path)
     if shaped:
         if times is not None:
@@ -1014,6 +1069,9 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         if relaxation is not None and not prob.indenter.rigid:
             raise validate.InputError("relaxation", "", relaxation, "relaxation needs a "
                                       "rigid indenter")
+        if relaxation is not None and prob.substrate is not None:
+            raise validate.InputError("relaxation", "", relaxation, "relaxation is not "
+                                      "available on a coated body (base 'elastic')")
         if relaxation is not None and shaped and "shape" in levels and \
                 levels.get("frequency") is None:
             raise validate.InputError("load_path.frequency", "", None, "load_path.frequency "
@@ -1054,8 +1112,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     notes = validity_notes(prob, float(np.nanmax(a)))
     return PhysicalHistory(
         geometry=g, radius=prob.radius, length=prob.length, thickness=prob.thickness,
-        base=prob.base, indenter=prob.indenter, body=prob.body, composite_modulus=prob.e_star,
-        friction=float(res.friction), load_path=forces, times=t_points, a_max=a_max, p0=p0,
+        base=prob.base, indenter=prob.indenter, body=prob.body, substrate=prob.substrate,
+        composite_modulus=prob.e_star, friction=float(res.friction), load_path=forces, times=t_points, a_max=a_max, p0=p0,
         max_load=p_max, slab_ratio=slab, force=np.asarray(res.load_ratio) * p_max,
         contact_radius=a, stick_radius=c, stick_radius_error=err_c,
         peak_pressure=np.max(np.asarray(res.pressure), axis=1) * p0, approach=approach,

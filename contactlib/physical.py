@@ -1077,8 +1077,15 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
             raise validate.InputError("load_path.frequency", "", None, "load_path.frequency "
                                       "is required with a relaxation (Hz)")
         return None
-    res = history_api.history(g, prob.body.nu, friction, levels, steps, slab_ratio=slab,
-                              **kwargs)
+    try:
+        res = history_api.history(g, prob.body.nu, friction, levels, steps, slab_ratio=slab,
+                                  **kwargs)
+    except validate.InputError as exc:  # a_max/h comes from the thickness here
+        if exc.name != "slab_ratio":
+            raise
+        raise validate.InputError("thickness", "thick enough for the largest force", thickness,
+                                  f"thickness {prob.thickness!r} m is too thin for this path "
+                                  f"(a_max/h = {slab:.3g}): {exc}") from None
     if shaped:  # the path's levels at the ends of its pieces, and their times
         forces = tuple(float(v) * p_max for v in res.load_path)
         if res.durations:

@@ -319,8 +319,8 @@ def base(value: Any, coated: bool = False) -> str:
     also ``"elastic"`` (:data:`COATED_BASE`, checked by :func:`substrate`)."""
     if value == COATED_BASE and not coated:
         raise InputError("base", f"one of {', '.join(BASES)} here", value,
-                         f"base {value!r} (a coated body) is available in solve, sweep and "
-                         "history (and their physical forms), not in scenes")
+                         f"base {value!r} (a coated body) is not available here (solve, "
+                         "sweep, history and their physical forms take it)")
     return choice("base", value, BASES + ((COATED_BASE,) if coated else ()))
 
 

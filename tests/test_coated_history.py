@@ -278,6 +278,14 @@ def test_a_physical_coated_history_and_its_dataset(tmp_path, capsys):
     assert ds.attrs["base"] == "elastic" and ds.attrs["substrate_material"] == "aluminium"
     assert ds.attrs["substrate_youngs_modulus_Pa"] == 69e9
     assert abs(ds.attrs["substrate_modulus"] - 69.0 / 207.0) < 1e-15
+    # too thin for the soft substrate's contact (a_max/h = 13.1 grows to 22 h): --thickness
+    argv = ["history", "--geometry", "sphere", "--radius", "5mm", "--load-path", "0N,100N,0N",
+            "--body", "steel", "--friction", "0.2", "--n", "60", "--steps", "4",
+            "--thickness", "9um", "--base", "elastic", "--substrate", "aluminium",
+            "--output", str(out)]
+    assert cli.main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("contactlib: error: --thickness") and "\n" not in err
 
 
 @pytest.mark.parametrize("extra, option", [

@@ -63,9 +63,9 @@ _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n"
 # fretting solver covers the half-plane, elastic bodies only
 _NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration", "substrate_modulus",
                  "substrate_nu")
-_PHYSICAL_KEYS = ("kind", "geometry", "radius", "length", "thickness", "base", "indenter",
-                  "body", "friction", "load_path", "steps", "n", "max_error", "relaxation",
-                  "times")
+_PHYSICAL_KEYS = ("kind", "geometry", "radius", "length", "thickness", "base", "substrate",
+                  "indenter", "body", "friction", "load_path", "steps", "n", "max_error",
+                  "relaxation", "times")
 _INDENTER_KEYS = {"indenter_modulus": "indenter.modulus_ratio", "indenter_nu": "indenter.nu"}
 
 
@@ -652,10 +652,6 @@ def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
         if key in raw:
             bad.add(key, "physical scenes take the paraboloid only (contactlib.physical_history "
                          "has no profile yet); a history scene takes a cone or a power law")
-    if raw.get("base") == validate.COATED_BASE:
-        bad.add("base", "base 'elastic' (a coated body) is not available in physical scenes "
-                        "yet; self-similar and history scenes take it with substrate_modulus "
-                        "and substrate_nu")
     bad.keys({k: v for k, v in raw.items() if k not in ("profile", "exponent")},
              _PHYSICAL_KEYS, ("geometry", "radius", "body", "friction", "load_path"),
              "physical")
@@ -677,8 +673,11 @@ def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
             mat = bad.check(key, physical.material, raw[key], role)
             if mat is not None:  # JSON-able: the table's name, or [E in Pa, nu]
                 spec[key] = mat.name if mat.name not in ("E,nu",) else [mat.E, mat.nu]
-    spec["base"] = "smooth" if raw.get("base") == validate.COATED_BASE else \
-        bad.check("base", validate.base, raw.get("base", "smooth"))
+    spec["base"] = bad.check("base", validate.base, raw.get("base", "smooth"), True)
+    if "substrate" in raw:  # a coated body: the layer (body, thickness) on this material
+        mat = bad.check("substrate", physical.material, raw["substrate"], "substrate")
+        if mat is not None:
+            spec["substrate"] = mat.name if mat.name not in ("E,nu",) else [mat.E, mat.nu]
     if "friction" in raw:
         spec["friction"] = bad.check("friction", validate.friction, raw["friction"])
     if "load_path" in raw:

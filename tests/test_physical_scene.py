@@ -62,6 +62,10 @@ BAD = [
     ({"relaxation": [[0.5, "0.2s"]], "times": ["0s", "1s", "2s"]}, "scenes.b.relaxation"),
     ({"times": ["0s", "1s", "2s"]}, "scenes.b.times"),
     ({"thickness": "0.01um"}, "scenes.b.slab_ratio"),
+    ({"substrate": "steel"}, "scenes.b.substrate"),  # a substrate needs base elastic
+    ({"base": "elastic", "thickness": "20um"}, "scenes.b.base"),  # ... and base one
+    ({"base": "elastic", "thickness": "20um", "substrate": "rigid"}, "scenes.b.substrate"),
+    ({"base": "elastic", "substrate": "steel"}, "scenes.b.thickness"),
 ]
 
 
@@ -71,6 +75,20 @@ def test_bad_physical_scene_names_the_key(change, text) -> None:
     with pytest.raises(ConfigError) as info:
         parse_scene("b", raw)
     assert any(line.startswith(text) for line in info.value.problems), info.value.problems
+
+
+def test_a_coated_physical_scene_is_the_physical_door_on_a_coated_body() -> None:
+    coated = dict(BALL, body=["400GPa", 0.25], indenter="steel", thickness="20um",
+                  base="elastic", substrate="steel")
+    spec = parse_scene("tin", coated).run_spec()
+    assert spec["substrate"] == "steel" and spec["base"] == "elastic"
+    assert spec["thickness"] == pytest.approx(2e-5)
+    # a coating of the substrate's own material is the uncoated body (independent run)
+    same = parse_scene("same", dict(coated, body="steel")).run_spec()
+    plain = physical_history(**parse_scene("plain", dict(BALL, body="steel")).run_spec())
+    res = physical_history(**same)
+    assert np.allclose(res.contact_radius, plain.contact_radius, rtol=1e-9, atol=0)
+    assert np.allclose(res.frictional_energy, plain.frictional_energy, rtol=1e-9, atol=1e-30)
 
 
 def test_check_config_refuses_a_bad_physical_scene(tmp_path) -> None:

@@ -361,7 +361,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     slab_ratio : float
         a/h of an elastic layer of thickness h on a rigid base; 0 (default)
         is the half-space or half-plane. At most
-        ``validate.LAYER_RATIO_MAX[(geometry, base)]`` (sphere 20).
+        ``validate.LAYER_RATIO_MAX[(geometry, base)]`` (sphere 1000).
     energy : bool
         Integrate the frictional work of the loading half-cycle (``True`` or
         ``False``; anything else is refused).

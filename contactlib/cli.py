@@ -215,7 +215,7 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
     ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep, history)."""
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help=f"{length}/h of an elastic layer of thickness h on a rigid base, "
-                          f">= 0 (0 = half-space / half-plane); at most 20 for the sphere "
+                          f">= 0 (0 = half-space / half-plane); at most 1000 for the sphere "
                           f"(20/1.2 in history), 80 for the cylinder on a smooth base, "
                           f"1000 on a bonded one; default: 0")
     if not coated:

@@ -41,7 +41,7 @@ __all__ = [
     "MIN_TOLERANCE", "MAX_TOLERANCE", "MIN_PLANNED_TOLERANCE", "planned_tolerance",
     "indenter_modulus", "indenter_nu", "indenter_material",
     "indenter_mapping", "BASES", "COATED_BASE", "SUBSTRATE_MODULUS_RANGE", "substrate",
-    "LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
+    "LAYER_RATIO_MAX", "HISTORY_SPHERE_LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
     "DEFAULT_OUTPUTS", "SUBSURFACE_GRID", "subsurface_grid",
 ]
 
@@ -71,17 +71,23 @@ COATED_BASE = "elastic"
 """The base of a coated body: the layer bonded to an elastic half-space (half-plane)."""
 
 LAYER_RATIO_MAX: dict[tuple[str, str], float] = {
-    ("sphere", "smooth"): 20.0, ("sphere", "bonded"): 20.0, ("sphere", "elastic"): 20.0,
+    ("sphere", "smooth"): 1000.0, ("sphere", "bonded"): 1000.0, ("sphere", "elastic"): 20.0,
     ("cylinder", "smooth"): 80.0, ("cylinder", "bonded"): 1000.0,
     ("cylinder", "elastic"): 20.0,
 }
 """Largest a/h (a_max/h in the history solver) per (geometry, base).
 
 Sphere: the ring tables of :mod:`contactlib.kernels.layer` cover
-max(r, s)/h <= 20 (r, s <= a; the history solver's mesh reaches 1.2 a_max,
-so there a_max/h <= 20/1.2). Cylinder: where k at n = 256 is resolved to
-1e-3 by its error estimate, measured (docs/validation.md, "Layers").
+max(r, s)/h <= 20 (a coated body; the history solver, whose mesh reaches
+1.2 a_max: a_max/h <= :data:`HISTORY_SPHERE_LAYER_RATIO_MAX`/1.2); on a rigid
+base :func:`contactlib.solve` goes on to 1000 with the transform-domain sums of
+:mod:`contactlib.kernels.thin_layer` (measured: tests/test_thin_layers.py).
+Cylinder: where k at n = 256 is resolved to 1e-3 by its error estimate,
+measured (docs/validation.md, "Layers").
 """
+
+HISTORY_SPHERE_LAYER_RATIO_MAX = 20.0
+"""max(r, s)/h of the sphere's layer kernels in the history solver (its tables)."""
 
 HISTORY_MESH_EXTENT = 1.2
 """The history solver's mesh length over a_max (``history_solver.MESH_EXTENT``)."""
@@ -371,7 +377,8 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
     """a/h of the layer, finite and >= 0 (0: half-space or half-plane).
 
     ``geometry_name`` and ``base_name`` (already checked) bound it by
-    :data:`LAYER_RATIO_MAX` (a coated body: 20 for both, the tables of its kernels);
+    :data:`LAYER_RATIO_MAX` (a coated body: 20 for both, the tables of its kernels;
+    the sphere in history: :data:`HISTORY_SPHERE_LAYER_RATIO_MAX`);
     ``extent`` is the farthest point of the mesh in
     units of the length scale (the history solver's 1.2 a_max), which
     divides the sphere's bound (its kernels are bounded in r/h, not a/h).
@@ -380,8 +387,8 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
     if geometry_name is None:
         return v
     hi = LAYER_RATIO_MAX[(geometry_name, base_name)]
-    if geometry_name == "sphere":
-        hi /= extent
+    if geometry_name == "sphere" and extent != 1.0:
+        hi = min(hi, HISTORY_SPHERE_LAYER_RATIO_MAX) / extent
     if v > hi:
         raise InputError("slab_ratio", f"<= {hi:g} for a {geometry_name} on a {base_name} "
                          "base (the supported range)", value)

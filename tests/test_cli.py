@@ -104,8 +104,8 @@ BAD = [
      "cylinder"),
     (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "inf"], "--slab-ratio",
      "cylinder"),
-    (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "20.5"], "--slab-ratio",
-     "sphere"),  # beyond the sphere's supported range (20)
+    (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "1000.5"], "--slab-ratio",
+     "sphere"),  # beyond the sphere's supported range (1000)
     (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "81"], "--slab-ratio",
      "cylinder"),  # beyond the smooth-base cylinder's (80)
     (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "1", "--base", "glued"],

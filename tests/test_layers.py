@@ -18,7 +18,8 @@ PACKAGE = Path(contactlib.__file__).resolve().parent
 NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "influence",
             "default_method", "paper_method", "history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
-            "discrete", "kernels/layer", "layer_study", "fretting_solver", "fretting_api")
+            "discrete", "kernels/layer", "kernels/thin_layer", "layer_study", "fretting_solver",
+            "fretting_api")
 # what the numerics never import: files and conventions (io), figures, workflow
 FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
                          "contactlib.pipeline", "contactlib.scene", "contactlib.cli")

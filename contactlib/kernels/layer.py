@@ -108,8 +108,11 @@ smoothly: the share ``b(rho) b(sigma)`` of the series, ``b`` = 1 below 0.2 and
 thick-layer limit, e.g. for the pressure ``w - w_halfspace -> (s^2/h)
 M_0(Rww)`` (uniform, O(s/h) relative).
 
-Supported range: ``max(r, s) / h <= RATIO_MAX = 20`` (beyond it the table is
-not defined and a ``ValueError`` is raised); ``h = inf`` is the half-space.
+Supported range: ``max(r, s) / h <= RATIO_MAX = 20`` for the tables; on a
+rigid base (smooth, bonded) beyond it, up to ``THIN_RATIO_MAX = 1200``, the
+remainders are summed in the transform domain instead
+(:mod:`contactlib.kernels.thin_layer`); beyond that, or a coated body beyond
+20, a ``ValueError`` is raised. ``h = inf`` is the half-space.
 
 Coated body
 -----------
@@ -143,7 +146,8 @@ from numpy.typing import ArrayLike, NDArray
 from . import disc
 from ..theory import beta_of_nu
 
-__all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "LayerTable", "Substrate", "coated_remainder",
+__all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "THIN_RATIO_MAX", "LayerTable", "Substrate",
+           "coated_remainder",
            "layer_table", "pressure_disc",
            "remainder_axis_w", "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
 
@@ -151,6 +155,7 @@ Arr = NDArray[np.float64]
 
 BASES = ("smooth", "bonded")
 RATIO_MAX = 20.0  # max(r, s)/h covered by the tables
+THIN_RATIO_MAX = 1200.0  # max(r, s)/h of the transform-domain sums on a rigid base (thin_layer)
 
 _CELL = 0.5  # table cell width in rho and sigma
 _DEG = 10  # Chebyshev degree in each variable
@@ -980,17 +985,26 @@ def _check_layer(nu: float, h: float, base: str) -> tuple[float, float, str]:
     return nu, h, base
 
 
-def _scaled_rho_sigma(rb: Arr, sb: Arr, h: float) -> tuple[Arr, Arr, NDArray[np.bool_]]:
-    """r/h, s/h (0 where s <= 0) and the mask s > 0; refuses beyond RATIO_MAX."""
+def _scaled_rho_sigma(rb: Arr, sb: Arr, h: float,
+                      limit: float = RATIO_MAX) -> tuple[Arr, Arr, NDArray[np.bool_]]:
+    """r/h, s/h (0 where s <= 0) and the mask s > 0; refuses beyond ``limit``."""
     pos = sb > 0.0
     rho = np.abs(rb) * (1.0 / h)
     sigma = np.where(pos, sb, 0.0) * (1.0 / h)
     big = max(float(rho.max(initial=0.0)), float(sigma.max(initial=0.0)))
-    if not big <= RATIO_MAX:
+    if not big <= limit:
         raise ValueError(
             f"max(r, s)/h = {big:.6g} is beyond the supported range of the layer "
-            f"kernels (<= {RATIO_MAX:g}: a/h <= {RATIO_MAX:g} for r, s <= a)")
+            f"kernels (<= {limit:g}: a/h <= {limit:g} for r, s <= a)")
     return rho, sigma, pos
+
+
+def _thin(base: str | Substrate, rb: Arr, sb: Arr, h: float) -> bool:
+    """True where the transform-domain sums replace the tables (rigid base, beyond 20)."""
+    if isinstance(base, Substrate):
+        return False
+    big = max(float(np.max(np.abs(rb), initial=0.0)), float(np.max(sb, initial=0.0)))
+    return big > RATIO_MAX * h
 
 
 def _scales(kind: str, h: float) -> Arr:
@@ -1036,8 +1050,17 @@ def remainder_grid(kind: str, r: ArrayLike, s: ArrayLike, nu: float, h: float,
     nu, h, base = _check_layer(nu, h, base)
     if not np.isfinite(h):
         raise ValueError("remainder_grid needs a finite layer thickness h")
-    rho, sigma, pos = _scaled_rho_sigma(np.asarray(r, dtype=float).reshape(-1),
-                                        np.asarray(s, dtype=float).reshape(-1), h)
+    rb, sb = np.asarray(r, dtype=float).reshape(-1), np.asarray(s, dtype=float).reshape(-1)
+    if _thin(base, rb, sb, h):
+        from . import thin_layer  # here: it imports this module
+
+        rho, sigma, pos = _scaled_rho_sigma(rb, sb, h, THIN_RATIO_MAX)
+        wts = None if weights is None else np.where(
+            pos, np.asarray(weights, dtype=float).reshape(-1), 0.0)
+        rem = thin_layer.remainders(kind, rho, sigma, nu, base, wts, owner)
+        rem *= _scales(kind, h)[:, None, None]
+        return rem
+    rho, sigma, pos = _scaled_rho_sigma(rb, sb, h)
     tab = layer_table(nu, base)
     if weights is None:
         rem = _remainders_grid(kind, rho, sigma, tab)
@@ -1067,6 +1090,10 @@ def _layer(kind: str, r: ArrayLike, s: ArrayLike, nu: float, h: float, base: str
     shape = w.shape
     if _grid_axes(r, s):  # the step operators' grid of points x edges
         rem = remainder_grid(kind, r[:, 0], s[0], nu, h, base).reshape(3, -1)
+    elif _thin(base, r, s, h):  # on the grid of the distinct r and s, then picked
+        ru, ri = np.unique(np.abs(np.broadcast_to(r, shape)).ravel(), return_inverse=True)
+        su, si = np.unique(np.broadcast_to(s, shape).ravel(), return_inverse=True)
+        rem = remainder_grid(kind, ru, su, nu, h, base)[:, ri.ravel(), si.ravel()]
     else:
         rho, sigma, pos = _scaled_rho_sigma(np.broadcast_to(r, shape).ravel(),
                                             np.broadcast_to(s, shape).ravel(), h)
@@ -1113,7 +1140,8 @@ def pressure_disc(r: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf,
     Raises
     ------
     ValueError
-        If ``max(r, s)/h > RATIO_MAX`` (20), an unknown base, ``h <= 0`` or
+        If ``max(r, s)/h > THIN_RATIO_MAX`` (1200; 20 on a coated body), an
+        unknown base, ``h <= 0`` or
         ``nu`` out of range.
 
     Examples

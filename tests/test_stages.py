@@ -168,7 +168,7 @@ def test_assemble_requires_what_the_scene_asked_for():
     ({"geometry": "sphere", "nu": 0.3, "stick_ratios": []}, "stick_ratios"),
     ({"geometry": "sphere", "nu": 0.3, "method": "paper", "stick_ratios": [0.3]},
      "stick_ratios"),
-    ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "slab_ratio": 21},
+    ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "slab_ratio": 1001},
      "slab_ratio"),
     ({"geometry": "sphere", "nu": 0.3, "stick_ratios": [0.3], "slab_ratio": 1, "base": "x"},
      "base"),

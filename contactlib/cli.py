@@ -577,11 +577,13 @@ def build_parser() -> argparse.ArgumentParser:
                       help="with --relaxation: duration of the load path (segments equally "
                            "long), or one a segment, in the unit of tau")
     hist.add_argument("--tangential-path", metavar="LIST", default=None,
-                      help="fretting (cylinder only): comma-separated tangential loads "
+                      help="fretting (cylinder; sphere for Dundurs beta = 0 pairs): comma-separated "
+                           "tangential loads "
                            "Q/(k P_max) at the points of --load-path (same length, starting "
                            "at 0, |Q| < k P at every point); switches to the fretting solver "
                            "(n counts elements over 1.2 a_max each side of the axis, a "
-                           "multiple of 4; steps a multiple of 4, default 40)")
+                           "multiple of 4; steps a multiple of 4, default 40; the sphere: "
+                           "n cells a side, default 64, steps default 8)")
     hist.add_argument("--bulk-stress", metavar="LIST", default=None,
                       help="with --tangential-path: the body's bulk stress along x over p0 "
                            "at the points of --load-path (fretting fatigue specimen)")
@@ -737,8 +739,9 @@ def _validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
         "friction": parse_friction(args.friction),
         "load_path": parse_load_path(args.load_path),
         "tangential_path": _list(args.tangential_path),
-        "steps": fretting_api.DEFAULT_STEPS if args.steps is None else parse_steps(args.steps),
-        "n": fretting_api.DEFAULT_N if args.n is None else _int(args.n),
+        "steps": fretting_api.defaults(geometry)[1] if args.steps is None
+        else parse_steps(args.steps),
+        "n": fretting_api.defaults(geometry)[0] if args.n is None else _int(args.n),
         "max_error": parse_max_error(args.max_error),
     }
     if args.bulk_stress is not None:
@@ -750,7 +753,10 @@ def _validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
     try:
         fretting_api.check_input(kwargs["geometry"], kwargs["friction"], kwargs["load_path"],
                                  kwargs["tangential_path"], kwargs["steps"], kwargs["n"],
-                                 kwargs.get("bulk_stress"), kwargs["max_error"])
+                                 kwargs.get("bulk_stress"), kwargs["max_error"],
+                                 nu=kwargs["nu"], indenter_modulus=ratio, indenter_nu=nu1)
+    except validate.SolverLimit as exc:  # the sphere's coupled tangential load: status 3
+        raise SolverLimitError(exc) from exc
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     return kwargs
@@ -758,7 +764,7 @@ def _validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
 
 def format_fretting(res: Any) -> str:
     """Summary of a fretting path: the state at every path point, and the cycles' work."""
-    lines = [f"fretting of the cylinder: nu = {res.nu:g}, k = {res.friction:g}, "
+    lines = [f"fretting of the {res.geometry}: nu = {res.nu:g}, k = {res.friction:g}, "
              f"beta = {res.beta:.4g}, n = {res.n}, {res.steps} steps a segment",
              "point  P/P_max  Q/(kP_max)  c/a (estimate)       e/a_max   "
              "frictional work (estimate)  resolved"]
@@ -770,7 +776,9 @@ def format_fretting(res: Any) -> str:
             f"({res.dissipation_error[i]:.1e})  {'yes' if res.resolved[i] else 'NO'}")
     for i, j, work, err in res.cycles:
         lines.append(f"cycle from point {i} to {j}: frictional work {work:.5e} "
-                     f"(estimate {err:.1e}; units E* a_max^4/R^2 per unit length)")
+                     f"(estimate {err:.1e}; units "
+                     + ("E* a_max^5/R^2)" if res.geometry == "sphere"
+                        else "E* a_max^4/R^2 per unit length)"))
     failed = int(res.converged.size - res.converged.sum())
     if failed:
         lines.append(f"{failed} steps did not converge; their values "

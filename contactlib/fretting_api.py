@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import fretting_solver as fr
+from . import fretting_sphere as fsph
 from . import validate
 from .history_api import load_levels
 from .history_solver import ORDER_MAX, measured_order
@@ -40,10 +41,15 @@ from .theory import cylinder_cycle_work
 from .threads import blas_single_threaded
 from .validate import DEFAULT_MAX_ERROR
 
-__all__ = ["FrettingResult", "fretting", "check_input", "amplitude_study", "STUDY_AMPLITUDES", "DEFAULT_N", "DEFAULT_STEPS", "cylinder_cycle_work"]
+__all__ = ["FrettingResult", "fretting", "check_input", "amplitude_study", "STUDY_AMPLITUDES",
+           "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
+           "sphere_fretting", "cylinder_cycle_work"]
 
 DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
 DEFAULT_STEPS = 40  # equal steps a path segment
+SPHERE_DEFAULT_N = 64  # the sphere: cells a side of [-1.2, 1.2]^2 a_max (cell a_max/27)
+SPHERE_DEFAULT_STEPS = 8
+SPHERE_N_MAX = 256
 _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
 
 
@@ -152,12 +158,9 @@ def _path(name: str, values: Sequence[float] | None, size: int | None) -> np.nda
 
 def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
            n: int, steps: int, max_error: float) -> None:
-    if geometry != "cylinder":
-        raise ValueError(
-            f"fretting: geometry {geometry!r} is not covered; the tangential load is solved "
-            "for the cylinder (plane strain) only. The sphere's solver "
-            "(contactlib.fretting_sphere) is verified only for uncoupled pairs with nu = 0 "
-            "and is not behind this call yet (docs/fretting.md, 'The sphere')")
+    if geometry not in ("cylinder", "sphere"):
+        raise ValueError(f"fretting: geometry {geometry!r} is not covered; the tangential load "
+                         "is solved for the cylinder (plane strain) and the sphere")
     if not (isinstance(friction, (int, float)) and math.isfinite(friction) and friction > 0):
         raise ValueError(f"friction: a tangential load needs a finite friction coefficient "
                          f"k > 0, got {friction!r}")
@@ -171,7 +174,12 @@ def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
             f"tangential_path: |Q|/(k P_max) = {abs(tang[i]):g} at point {i} reaches the "
             f"load there (P/P_max = {load[i]:g}): that is gross sliding, which a force-"
             "controlled path cannot follow. Keep |Q| < k P at every point")
-    if not (isinstance(n, (int, np.integer)) and 16 <= n <= 1024 and n % 4 == 0):
+    if geometry == "sphere":
+        if not (isinstance(n, (int, np.integer)) and 16 <= n <= SPHERE_N_MAX and n % 4 == 0):
+            raise ValueError(f"n: the sphere's cells a side of [-1.2, 1.2]^2 a_max must be a "
+                             f"multiple of 4 in [16, {SPHERE_N_MAX}] (the estimate runs n/2), "
+                             f"got {n!r}")
+    elif not (isinstance(n, (int, np.integer)) and 16 <= n <= 1024 and n % 4 == 0):
         raise ValueError(f"n: elements over 1.2 a_max must be a multiple of 4 in [16, 1024] "
                          f"(the estimate runs n/2 and n/4), got {n!r}")
     if not (isinstance(steps, (int, np.integer)) and steps >= 4 and steps % 4 == 0):
@@ -241,32 +249,59 @@ def _cycles(load: np.ndarray, tang: np.ndarray, sigma: np.ndarray,
                  for (i, j), e in zip(_closed(load, tang, sigma), error))
 
 
+def defaults(geometry: str) -> tuple[int, int]:
+    """The default ``(n, steps)`` of :func:`fretting` for ``geometry``."""
+    if geometry == "sphere":
+        return SPHERE_DEFAULT_N, SPHERE_DEFAULT_STEPS
+    return DEFAULT_N, DEFAULT_STEPS
+
+
 def check_input(geometry: str, friction: float, load_path: Sequence[float],
-                tangential_path: Sequence[float], steps: int, n: int = DEFAULT_N,
-                bulk_stress: Sequence[float] | None = None,
-                max_error: float = DEFAULT_MAX_ERROR) -> None:
-    """Raise ValueError (naming the argument) on input :func:`fretting` refuses; no numerics."""
+                tangential_path: Sequence[float], steps: int | None = None,
+                n: int | None = None, bulk_stress: Sequence[float] | None = None,
+                max_error: float = DEFAULT_MAX_ERROR, *, nu: float | None = None,
+                indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> None:
+    """Raise ValueError (naming the argument) on input :func:`fretting` refuses; no numerics.
+
+    The sphere needs ``nu`` (and the indenter's material): a tangential load is
+    solved for pairs with Dundurs beta = 0 only (``validate.SolverLimit`` otherwise).
+    Without ``nu`` the sphere is refused.
+    """
     load = _path("load_path", load_path, None)
     tang = _path("tangential_path", tangential_path, load.size)
     if bulk_stress is not None:
         _path("bulk_stress", bulk_stress, load.size)
-    _check(geometry, friction, load, tang, n, steps, max_error)
+    if geometry == "sphere" and nu is None:
+        raise ValueError("fretting: geometry 'sphere' is not covered without nu: a tangential "
+                         "load on the sphere is solved for pairs with Dundurs beta = 0 only, "
+                         "which needs the materials (pass nu to check_input)")
+    n0, steps0 = defaults(geometry)
+    _check(geometry, friction, load, tang, n0 if n is None else n,
+           steps0 if steps is None else steps, max_error)
+    if geometry == "sphere":
+        if bulk_stress is not None and any(float(v) for v in bulk_stress):
+            raise ValueError("bulk_stress: the sphere takes no bulk stress (it is solved for "
+                             "the cylinder only); give none")
+        e1, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
+        model = contact("sphere", validate.nu(nu), indenter_modulus=e1, indenter_nu=nu1)
+        _refuse_coupled(model, tang)
 
 
 @blas_single_threaded
 def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[float],
-             tangential_path: Sequence[float], steps: int = DEFAULT_STEPS, *,
-             n: int = DEFAULT_N, bulk_stress: Sequence[float] | None = None,
+             tangential_path: Sequence[float], steps: int | None = None, *,
+             n: int | None = None, bulk_stress: Sequence[float] | None = None,
              indenter_modulus: float = math.inf, indenter_nu: float | None = None,
              profile: str = "paraboloid", exponent: float | None = None,
              max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
              progress: Callable[[int, int], None] | None = None) -> FrettingResult:
-    """Follow a normal and a tangential load path of a cylinder with Coulomb friction.
+    """Follow a normal and a tangential load path of a cylinder or sphere with Coulomb friction.
 
     Parameters
     ----------
-    geometry : {"cylinder"}
-        Only the cylinder (plane strain) on a half-plane is covered.
+    geometry : {"cylinder", "sphere"}
+        The cylinder (plane strain) on a half-plane, or the sphere on a half-space
+        (:func:`sphere_fretting`: pairs with Dundurs beta = 0 under a tangential load).
     nu : float
         Poisson's ratio of the body, in (-1, 0.5].
     friction : float
@@ -276,12 +311,14 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     tangential_path : sequence of float
         Q/(k P_max) at the same points, starting at 0, with
         ``|Q/(k P_max)| < P/P_max`` wherever P > 0 (no gross sliding).
-    steps : int
-        Equal steps a segment (multiple of 4; default 40).
-    n : int
+    steps : int, optional
+        Equal steps a segment (multiple of 4; default 40, the sphere 8).
+    n : int, optional
         Elements over 1.2 a_max on each side of the axis, as for
         :func:`contactlib.history` (the strip ``[-1.2, 1.2] a_max`` has 2n;
-        a multiple of 4 in [16, 1024]; default 120: element a_max/100).
+        a multiple of 4 in [16, 1024]; default 120: element a_max/100). The
+        sphere: cells a side of ``[-1.2, 1.2]^2 a_max`` (multiple of 4 in
+        [16, 256], default 64).
     bulk_stress : sequence of float, optional
         The body's bulk stress along x over p0 at the same points (starting
         at 0); default none.
@@ -320,13 +357,20 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     tang = _path("tangential_path", tangential_path, load.size)
     sigma = _path("bulk_stress", bulk_stress, load.size) if bulk_stress is not None \
         else np.zeros(load.size)
-    _check(geometry, friction, load, tang, n, steps, max_error)
+    n0, steps0 = defaults(geometry)
+    n = n0 if n is None else n
+    steps = steps0 if steps is None else steps
+    check_input(geometry, friction, load, tang, steps, n, bulk_stress, max_error, nu=nu,
+                indenter_modulus=indenter_modulus, indenter_nu=indenter_nu)
     nu = validate.nu(nu)
     indenter_modulus, indenter_nu = validate.indenter_material(indenter_modulus, indenter_nu)
     prof = make_profile(profile, exponent)
     model = contact(geometry, nu, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
                     profile=prof)
     k = float(friction)
+    if geometry == "sphere":
+        return sphere_fretting(model, k, load, tang, steps, n, max_error, error_estimate,
+                               progress)
     ops, raw = _run(model, n, steps, k, load, tang, sigma, progress)
     ratio, offset = _derived(raw)
     points = np.arange(load.size) * steps
@@ -376,6 +420,135 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         slip=raw.slip, tangential_compliance=_compliance(raw.shift, raw.force),
         state=raw.state, point_step=points, stick_ratio_error=ratio_err,
         stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
+        cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)
+
+
+SPHERE_COUPLED_REFUSAL = (
+    "fretting: a tangential load on the sphere is solved for pairs with Dundurs beta = 0 "
+    "only (equal materials, or a rigid indenter on nu = 0.5), got beta = {beta:.4g}: the "
+    "coupled tangential loading does not yet converge reliably. Use the cylinder, or a "
+    "beta = 0 pair")
+
+
+def _refuse_coupled(model, tang: np.ndarray) -> float:
+    """The pair's Dundurs beta; SolverLimit if it is not 0 under a tangential load."""
+    beta = float(model.beta) if not model.decoupled else 0.0
+    if beta != 0.0 and np.any(tang != 0.0):
+        raise validate.SolverLimit(SPHERE_COUPLED_REFUSAL.format(beta=beta))
+    return beta
+
+
+def _sphere_run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
+                keep: bool, progress=None) -> tuple[fsph.GridOperators, fsph.RawSphereFretting]:
+    ops = fsph.grid_operators(model, n)
+    big_p = load_levels(load, steps)[0][1:] * ops.p_max
+    big_q = load_levels(tang, steps)[0][1:] * k * ops.p_max
+    return ops, fsph.run_sphere_fretting(ops, k, big_p, big_q, keep_fields=keep,
+                                         progress=progress)
+
+
+def _sphere_measures(raw: fsph.RawSphereFretting) -> tuple[np.ndarray, np.ndarray]:
+    """Stick ratio (area-equivalent radii, c/a; 0 in full slip) and stick offset per step."""
+    a = raw.contact_radius
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(np.isfinite(a), raw.stick_radius / a, np.nan)
+    return ratio, raw.stick_offset
+
+
+def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: int, n: int,
+                    max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
+                    progress: Callable[[int, int], None] | None = None) -> FrettingResult:
+    """The sphere's path for :func:`fretting` (checked input; units E* = R = a_max = 1).
+
+    The numerics are :mod:`contactlib.fretting_sphere` (``n x n`` cells over
+    ``[-1.2, 1.2]^2 a_max``). In the :class:`FrettingResult`, ``stick_ratio`` is
+    the stick zone's area-equivalent radius over the contact's, ``contact_edges``
+    and ``stick_edges`` are ``centre -+ radius`` along x (units a_max), the
+    approach and the shift are absolute (a half-space has no datum), forces are
+    in ``E* a_max^3/R`` (``p_max``), work in ``E* a_max^5/R^2``, and
+    ``pressure``, ``shear`` (x component), ``slip`` (x component) and ``state``
+    are those of the row of cells next to the x axis (``y = h/2``). The
+    estimates are the differences to the run with ``n/2`` cells and ``steps/2``
+    (``orders`` records the order 1 this assumes: the radii's lattice error is
+    not smooth in the cell size).
+
+    Parameters
+    ----------
+    model : Contact
+        A sphere on a half-space; a tangential load needs Dundurs beta = 0.
+    k : float
+        Coulomb coefficient.
+    load, tang : ndarray
+        P/P_max and Q/(k P_max) at the path's points (checked by :func:`check_input`).
+    steps, n : int
+        Steps a segment and cells a side.
+    max_error, error_estimate, progress
+        As for :func:`fretting`.
+
+    Returns
+    -------
+    FrettingResult
+
+    Raises
+    ------
+    contactlib.validate.SolverLimit
+        (a ValueError) A tangential load on a pair with beta != 0.
+    """
+    beta = _refuse_coupled(model, tang)
+    ops, raw = _sphere_run(model, n, steps, k, load, tang, True, progress)
+    ratio, offset = _sphere_measures(raw)
+    points = np.arange(load.size) * steps
+    sigma = np.zeros(load.size)
+    closed = _closed(load, tang, sigma)
+    if error_estimate:
+        _, coarse = _sphere_run(model, n // 2, steps // 2, k, load, tang, False)
+        cpts = np.arange(load.size) * (steps // 2)
+        c_ratio, c_offset = _sphere_measures(coarse)
+        ratio_err = np.abs(ratio[points] - c_ratio[cpts])
+        off_err = np.abs(offset[points] - c_offset[cpts])
+        diss_err = np.abs(raw.dissipation[points] - coarse.dissipation[cpts])
+        cycle_err = np.array([abs((raw.dissipation[points[j]] - raw.dissipation[points[i]])
+                                  - (coarse.dissipation[cpts[j]] - coarse.dissipation[cpts[i]]))
+                              for i, j in closed])
+        orders = {"stick_ratio": 1.0, "stick_offset": 1.0, "dissipation": 1.0}
+        scale = max(float(raw.dissipation[-1]), 1e-300)
+        resolved = ((np.nan_to_num(ratio_err, nan=0.0) <= max_error)
+                    & (diss_err <= max_error * scale) & raw.converged[points]
+                    & bool(coarse.converged.all()))
+    else:
+        ratio_err = off_err = diss_err = np.full(load.size, np.nan)
+        cycle_err = np.full(len(closed), np.nan)
+        orders = {}
+        resolved = np.zeros(load.size, dtype=bool)
+    a, c = raw.contact_radius, raw.stick_radius
+    centre = np.where(c > 0, raw.stick_offset, np.nan)
+    contact_edges = np.stack([-a, a], axis=1)
+    stick_edges = np.stack([centre - c, centre + c], axis=1)
+    row = n // 2  # cells at y = h/2, next to the x axis
+    zero = np.zeros(n)
+    p_row = np.array([zero] + [f[:, row] for f in raw.p]) / ops.p0
+    q_row = np.array([zero] + [f[0][:, row] for f in raw.q]) / ops.p0
+    v_row = np.array([zero] + [f[0][:, row] for f in raw.v])
+    stick_row = np.array([zero.astype(bool)] + [f[:, row] for f in raw.stick])
+    touching = p_row > 0
+    slip = np.where(touching & ~stick_row, np.diff(v_row, axis=0, prepend=0.0), 0.0)
+    state = np.where(~touching, fr.SEPARATED, np.where(
+        stick_row, fr.STICK, np.where(q_row >= 0, fr.SLIP_POSITIVE, fr.SLIP_NEGATIVE)))
+    force = raw.force
+    return FrettingResult(
+        geometry="sphere", nu=float(model.body.nu), friction=k, n=int(n), steps=int(steps),
+        max_error=float(max_error), beta=beta, p_max=ops.p_max, p0=ops.p0,
+        load_path=tuple(load.tolist()), tangential_path=tuple(tang.tolist()),
+        bulk_stress_path=tuple(sigma.tolist()), x=ops.x, segment=load_levels(load, steps)[1],
+        load_ratio=raw.load / ops.p_max, force_ratio=force / (k * ops.p_max),
+        bulk_stress=np.zeros(force.size), contact_edges=contact_edges,
+        stick_edges=stick_edges, stick_ratio=ratio, stick_offset=offset,
+        approach=raw.delta, shift=raw.shift[:, 0], dissipation=raw.dissipation,
+        external_work=raw.external_work, stored_energy=raw.stored_energy,
+        converged=raw.converged, pressure=p_row, shear=q_row, slip=slip,
+        tangential_compliance=_compliance(raw.shift[:, 0], force), state=state.astype(np.int8),
+        point_step=points, stick_ratio_error=ratio_err, stick_offset_error=off_err,
+        dissipation_error=diss_err, resolved=resolved,
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)
 
 

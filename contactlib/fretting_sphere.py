@@ -628,6 +628,7 @@ class RawSphereFretting:
     p: list
     q: list
     stick: list
+    v: list
 
 
 def zone_radius(ops: GridOperators, inside: np.ndarray) -> tuple[float, float]:
@@ -722,7 +723,7 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
         P and Q_x (units E* a_max^3/R) at the end of each step; the start
         (both 0) is not included. ``|Q| < k P`` wherever P > 0.
     keep_fields : bool
-        Keep p, q and the stick set of every step.
+        Keep p, q, the stick set and the slip v of every step.
     progress : callable, optional
         ``progress(i, m)`` after each step.
 
@@ -746,7 +747,7 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
     v = np.zeros((2, n, n))
     stick = np.zeros((n, n), dtype=bool)
     prev_load, prev_force = 0.0, 0.0
-    fields_p, fields_q, fields_s = [], [], []
+    fields_p, fields_q, fields_s, fields_v = [], [], [], []
     for i in range(m):
         st = _step(ops, k, float(load[i]), float(force[i]), v, p, q, stick, prev_load,
                    float(shifts[i, 0]))
@@ -777,6 +778,7 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
             fields_p.append(st.p)
             fields_q.append(st.q)
             fields_s.append(st.stick)
+            fields_v.append(st.v)
         p, q, v, stick = st.p, st.q, st.v, st.stick
         prev_load, prev_force = float(load[i]), float(force[i])
         if progress is not None:
@@ -787,4 +789,5 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
         stick_radius=radii[:, 1], stick_offset=radii[:, 2], stick_area=out["stick_area"],
         contact_area=out["contact_area"], dissipation=out["dissipation"],
         external_work=out["external_work"], stored_energy=out["stored_energy"],
-        converged=conv, iterations=iters, p=fields_p, q=fields_q, stick=fields_s)
+        converged=conv, iterations=iters, p=fields_p, q=fields_q, stick=fields_s,
+        v=fields_v)

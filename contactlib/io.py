@@ -2133,7 +2133,8 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
     from contactlib import fretting_solver as fs
 
     r = result
-    work = "V R**2 / (E* a_max**4) per unit length"
+    sphere = r.geometry == "sphere"
+    work = "V R**2 / (E* a_max**5)" if sphere else "V R**2 / (E* a_max**4) per unit length"
     sd, ed, pd = ("step",), ("step", "x"), ("point",)
     side = ("step", "side")
     coords = {
@@ -2161,7 +2162,8 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
             "stick zone edges over a_max", comment="longest run of stuck elements, edges "
                                                    "from a sub-element fit of k p - |q|")),
         "stick_ratio": (sd, r.stick_ratio, cf_attrs(
-            "stick zone half-width over contact half-width (c/a)",
+            "stick zone radius over contact radius (c/a), area-equivalent radii" if sphere
+            else "stick zone half-width over contact half-width (c/a)",
             comment="0 in full slip; NaN without contact")),
         "stick_offset": (sd, r.stick_offset, cf_attrs(
             "stick zone centre minus contact centre over a_max (e/a_max)")),
@@ -2209,7 +2211,7 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
     }
     cyc = np.asarray([c[:2] for c in r.cycles], dtype=np.int32).reshape(-1, 2)
     attrs: dict[str, Any] = {
-        "title": "contactlib fretting path (cylinder)",
+        "title": f"contactlib fretting path ({r.geometry})",
         "geometry": r.geometry,
         "poisson_ratio": float(r.nu),
         "dundurs_beta": float(r.beta),
@@ -2224,7 +2226,10 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "cycle_work": np.asarray([c[2] for c in r.cycles], dtype=float),
         "cycle_work_error_estimate": np.asarray([c[3] for c in r.cycles], dtype=float),
         "cycle_shaken_down": r.shaken_down.astype(np.int8),
-        "length_scale": "a_max: frictionless (Hertz) contact half-width at load level 1",
+        "length_scale": "a_max: frictionless (Hertz) contact "
+                        + ("radius" if sphere else "half-width") + " at load level 1",
+        **({"field_row": "pressure, shear (x), slip (x), state: the cells at y = h/2 "
+                         "next to the x axis"} if sphere else {}),
         "contactlib_version": version(),
         "Conventions": CONVENTIONS,
     }

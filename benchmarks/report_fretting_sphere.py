@@ -10,7 +10,11 @@ the grid's solution does not depend on the steps of a monotonic branch), n = 32 
 cells a side over [-1.2, 1.2]^2 a_max. The estimate of a fine run is its difference to the
 run at twice the cell size. Then a rigid sphere on nu = 0.5 (beta = 0, gamma = 1: Mindlin
 approximate) in the same cycles; and the coupled normal loading (rigid on nu = 0.3,
-beta = 0.286, Q = 0, 10 steps) against the self-similar stick ratio.
+beta = 0.286, Q = 0, 10 steps) against the self-similar stick ratio. Last, the public door
+``contactlib.fretting("sphere", ...)`` at its defaults (n = 64, 8 steps, with its estimate
+run at n = 32): the cycle above and CONTACT's shipped "cattaneo" example (equal bodies,
+G = 200 N/mm^2, nu = 0.42, a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn) in mm,
+against Mindlin's closed forms (c/a = 0.500, shift 8.172e-3 mm).
 """
 
 from __future__ import annotations
@@ -20,7 +24,7 @@ import time
 import numpy as np
 
 from contactlib import fretting_sphere as fs
-from contactlib import history, solve
+from contactlib import fretting, history, solve
 from contactlib.model import contact
 
 K = 0.3
@@ -97,6 +101,38 @@ def main() -> None:
               f"estimate {est:.1e}), converged {bool(raw.converged.all())}, {dt:.1f} s "
               f"= {dt / t_hist:.1f} x history")
         prev = c
+
+    print("\ncontactlib.fretting('sphere', ...) at its defaults (n = 64, steps = 8)")
+    t0 = time.perf_counter()
+    r = fretting("sphere", 0.5, K, [0, 1, 1, 1, 1], [0, 0, 0.5, -0.5, 0.5])
+    dt = time.perf_counter() - t0
+    i, j, work, est = r.cycles[0]
+    exact = against_mindlin_exact(r.p_max, 0.5, 6.0)
+    print(f"rigid on nu = 0.5, Q* = 0.5 k P: cycle work {work:.5e} (estimate {est:.1e}; "
+          f"Mindlin-Deresiewicz {exact:.5e}), converged {bool(r.converged.all())}, "
+          f"{dt:.1f} s = {dt / t_hist:.1f} x history")
+    nu, g_mod, a, fn, k, x = 0.42, 200.0, 1.0, 9.1954, 0.4, 0.875
+    radius = 4 * (g_mod * (1 + nu) / (1 - nu**2)) * a**3 / (3 * fn)  # mm
+    t0 = time.perf_counter()
+    r = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], indenter_modulus=1.0,
+                 indenter_nu=nu)
+    dt = time.perf_counter() - t0
+    coarse = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], n=32, indenter_modulus=1.0,
+                      indenter_nu=nu, error_estimate=False)
+    j = r.point_step[2]
+    shift, shift_c = (-res.shift[-1] * a * a / radius for res in (r, coarse))
+    mindlin = 3 * k * fn / (16 * a) * 2 * (2 - nu) / g_mod * (1 - (1 - x) ** (2 / 3))
+    print(f"CONTACT cattaneo (R = {radius:.4f} mm): c/a = {r.stick_ratio[j]:.4f} "
+          f"(estimate {r.stick_ratio_error[2]:.1e}; Mindlin {(1 - x) ** (1 / 3):.4f}), shift "
+          f"{shift:.5e} mm (estimate {abs(shift - shift_c):.1e}; Mindlin {mindlin:.5e}, "
+          f"ours minus Mindlin {shift / mindlin - 1:.1e}), converged "
+          f"{bool(r.converged.all())}, {dt:.1f} s = {dt / t_hist:.1f} x history")
+
+
+def against_mindlin_exact(big_p: float, x: float, c_mind: float) -> float:
+    """Mindlin–Deresiewicz's cycle work (a = R = 1, compliance ``c_mind`` in 1/E*)."""
+    bracket = 1 - (1 - x) ** (5 / 3) - 5 * x / 6 * (1 + (1 - x) ** (2 / 3))
+    return 9 * K * K * big_p * big_p * c_mind / 10 * bracket
 
 
 if __name__ == "__main__":

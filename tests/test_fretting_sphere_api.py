@@ -155,3 +155,34 @@ def test_command_line_and_dataset(tmp_path, capsys):
                "--steps", "4", "--output", str(tmp_path / "t.nc")])
     err = capsys.readouterr().err
     assert rc == 3 and "beta" in err
+
+
+def test_contact_cattaneo_example_against_mindlin():
+    """CONTACT's "cattaneo" example: equal bodies, G = 200 N/mm^2, nu = 0.42 (beta = 0,
+    gamma = 0.724), a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn. Mindlin's closed
+    forms (c/a = 0.5, shift 8.172e-3 mm) assume the slip parallel to the load, which holds
+    at gamma = 0 only: our stick ratio agrees within its estimate, and our shift is
+    converged (its estimate, the difference n = 32 -> 64, is 2e-4 of it) and lies below Mindlin's by more than
+    its estimate and by less than 5e-3 of it, as for the rigid sphere on nu = 0.5
+    (tests/test_fretting_sphere.py: 3.1e-3 below at gamma = 1)."""
+    nu, g_mod, a, fn, k, x = 0.42, 200.0, 1.0, 9.1954, 0.4, 0.875
+    e_star = 2 * g_mod * (1 + nu) / (2 * (1 - nu**2))  # two equal bodies [N/mm^2]
+    radius = 4 * e_star * a**3 / (3 * fn)  # Hertz [mm]: 50.0
+    assert radius == pytest.approx(50.0, rel=1e-6)
+    mindlin = 3 * k * fn / (16 * a) * 2 * (2 - nu) / g_mod * (1 - (1 - x) ** (2 / 3))
+    assert mindlin == pytest.approx(8.172e-3, rel=1e-4)
+
+    def run(n, estimate=True):
+        r = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], 4, n=n, indenter_modulus=1.0,
+                     indenter_nu=nu, error_estimate=estimate)
+        assert r.converged.all()
+        j = r.point_step[2]
+        return r, r.stick_ratio[j], -r.shift[j] * a * a / radius  # shift [mm], along -x
+
+    r, ratio, coarse = run(32)
+    assert abs(ratio - 0.5) <= r.stick_ratio_error[2]  # measured 0.514 (est 0.049)
+    shift = run(64, False)[2]  # measured 8.1570e-3 mm (n = 32: 8.1588e-3)
+    estimate = abs(shift - coarse)
+    miss = shift - mindlin  # measured -1.5e-5 mm (-1.9e-3), estimate 1.8e-6 mm
+    assert abs(miss) > 3 * estimate
+    assert -5e-3 < miss / mindlin < 0

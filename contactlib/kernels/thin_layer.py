@@ -14,8 +14,8 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
   ``t^2 exp(-2t)``: the integrals stop at ``t = 18`` (``R < 1e-13``);
 * the Bessel product oscillates with frequency up to ``rho + sigma``: composite
   20-point Gauss-Legendre panels of width ``min(0.25, PANEL_SPAN/(rho + sigma))``
-  (``PANEL_SPAN = 20``: ~3 periods a panel), so the number of nodes grows like
-  ``max(rho + sigma)`` (43,000 at a/h = 1000 with a mesh to 1.2 a);
+  (``PANEL_SPAN = 30``: ~5 periods a panel; 40 loses 7e-10 of the scale), so
+  the number of nodes grows like ``max(rho + sigma)`` (24,000 at a/h = 1000);
 * memory: each chunk of nodes holds up to ``10 (n_s + n_r)`` values a node,
   kept under :data:`MEMORY_BYTES` (48 MB) whatever the size.
 
@@ -38,8 +38,8 @@ Arr = NDArray[np.float64]
 T_MAX = 18.0
 """Upper end of the t = k h integrals (the remainders are below 1e-13 beyond)."""
 
-PANEL_SPAN = 20.0
-"""Panel width times (rho + sigma): ~3 periods of the Bessel product a panel."""
+PANEL_SPAN = 30.0
+"""Panel width times (rho + sigma): ~5 periods of the Bessel product a panel."""
 
 MEMORY_BYTES = 48e6
 """Bound on the Bessel values held at once (bytes)."""

@@ -13,7 +13,7 @@ approximate) in the same cycles; and the coupled normal loading (rigid on nu = 0
 beta = 0.286, Q = 0, 10 steps) against the self-similar stick ratio. Last, the public door
 ``contactlib.fretting("sphere", ...)`` at its defaults (n = 64, 8 steps, with its estimate
 run at n = 32): the cycle above and CONTACT's shipped "cattaneo" example (equal bodies,
-G = 200 N/mm^2, nu = 0.42, a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn) in mm,
+G = 200 N/mm^2, nu = 0.42, a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn; 4 steps) in mm,
 against Mindlin's closed forms (c/a = 0.500, shift 8.172e-3 mm).
 """
 
@@ -106,7 +106,7 @@ def main() -> None:
     t0 = time.perf_counter()
     r = fretting("sphere", 0.5, K, [0, 1, 1, 1, 1], [0, 0, 0.5, -0.5, 0.5])
     dt = time.perf_counter() - t0
-    i, j, work, est = r.cycles[0]
+    _, _, work, est = r.cycles[0]
     exact = against_mindlin_exact(r.p_max, 0.5, 6.0)
     print(f"rigid on nu = 0.5, Q* = 0.5 k P: cycle work {work:.5e} (estimate {est:.1e}; "
           f"Mindlin-Deresiewicz {exact:.5e}), converged {bool(r.converged.all())}, "
@@ -114,10 +114,12 @@ def main() -> None:
     nu, g_mod, a, fn, k, x = 0.42, 200.0, 1.0, 9.1954, 0.4, 0.875
     radius = 4 * (g_mod * (1 + nu) / (1 - nu**2)) * a**3 / (3 * fn)  # mm
     t0 = time.perf_counter()
-    r = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], indenter_modulus=1.0,
+    # 4 steps a segment: at 8 and 16 (n = 64) the last steps near Q = 0.875 kP are flagged
+    # not converged (gamma != 0)
+    r = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], 4, indenter_modulus=1.0,
                  indenter_nu=nu)
     dt = time.perf_counter() - t0
-    coarse = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], n=32, indenter_modulus=1.0,
+    coarse = fretting("sphere", nu, k, [0, 1, 1], [0, 0, -x], 4, n=32, indenter_modulus=1.0,
                       indenter_nu=nu, error_estimate=False)
     j = r.point_step[2]
     shift, shift_c = (-res.shift[-1] * a * a / radius for res in (r, coarse))

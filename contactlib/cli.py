@@ -577,8 +577,8 @@ def build_parser() -> argparse.ArgumentParser:
                       help="with --relaxation: duration of the load path (segments equally "
                            "long), or one a segment, in the unit of tau")
     hist.add_argument("--tangential-path", metavar="LIST", default=None,
-                      help="fretting (cylinder; sphere for Dundurs beta = 0 pairs): comma-separated "
-                           "tangential loads "
+                      help="fretting (cylinder; sphere for Dundurs beta = 0 pairs): "
+                           "comma-separated tangential loads "
                            "Q/(k P_max) at the points of --load-path (same length, starting "
                            "at 0, |Q| < k P at every point); switches to the fretting solver "
                            "(n counts elements over 1.2 a_max each side of the axis, a "

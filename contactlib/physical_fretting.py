@@ -1,4 +1,4 @@
-"""Fretting of a cylinder in SI units: :func:`physical_fretting`.
+"""Fretting of a cylinder or sphere in SI units: :func:`physical_fretting`.
 
 The physical door of :func:`contactlib.fretting`, with the conversions of
 :mod:`contactlib.physical` (one place for them): the normal and tangential
@@ -8,7 +8,8 @@ Pa, N and J with the error estimate of each.
 Scales: E* from the two materials; a_max = (4 P_max R/(pi E* L))^(1/2), the
 frictionless half-width at the largest normal force P_max of the path; p0 =
 E* a_max/(2R); lengths in units of a_max, work in E* a_max^4/R^2 per unit length
-times L.
+times L. The sphere (``geometry="sphere"``, Dundurs beta = 0 pairs under a tangential
+load): a_max = (3 P_max R/(4 E*))^(1/3), p0 = 2 E* a_max/(pi R), work in E* a_max^5/R^2.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from . import validate
-from .fretting_api import DEFAULT_N, DEFAULT_STEPS, FrettingResult, fretting
+from .fretting_api import FrettingResult, fretting
 from .physical import (contact_radius_of_load, format_si, physical_problem, validity_notes,
                        hertz_peak_pressure, parse_force_path, parse_quantity, work_scale)
 from .validate import DEFAULT_MAX_ERROR
@@ -51,14 +52,14 @@ def parse_signed_path(value: Any, kind: str, name: str) -> tuple[float, ...]:
 
 @dataclass(repr=False)
 class PhysicalFretting:
-    """A fretting path of a cylinder in SI (m, Pa, N, J), with the dimensionless result.
+    """A fretting path of a cylinder or sphere in SI (m, Pa, N, J), with the dimensionless result.
 
     Attributes
     ----------
     result : FrettingResult
         The dimensionless answer (units of :mod:`contactlib.fretting_api`).
     radius, length : float
-        R and L [m].
+        R and L [m] (L = 1 for the sphere).
     composite_modulus : float
         E* [Pa].
     a_max, p0, load_max : float
@@ -81,20 +82,30 @@ class PhysicalFretting:
     heading: str
     notes: list[str]
 
+    @property
+    def size_name(self) -> str:
+        """``"radius"`` (sphere) or ``"half-width"`` (cylinder): the zones' size in the keys."""
+        return "radius" if self.result.geometry == "sphere" else "half-width"
+
     def points(self) -> list[dict[str, float]]:
-        """The state at every path point in SI, with the estimates (m, N, J)."""
+        """The state at every path point in SI, with the estimates (m, N, J).
+
+        The zones' sizes are ``"contact half-width [m]"`` and ``"stick half-width [m]"``
+        (cylinder) or ``"contact radius [m]"`` and ``"stick radius [m]"`` (sphere).
+        """
         r = self.result
+        size = self.size_name
         rows = []
         for i, j in enumerate(r.point_step):
             left, right = r.contact_edges[j]
             rows.append({
                 "normal force [N]": float(r.load_ratio[j] * self.load_max),
                 "tangential force [N]": float(r.force_ratio[j] * r.friction * self.load_max),
-                "contact half-width [m]": float(0.5 * (right - left) * self.a_max),
-                "stick half-width [m]": float(0.5 * r.stick_ratio[j] * (right - left)
-                                              * self.a_max),
-                "stick half-width error [m]": float(0.5 * r.stick_ratio_error[i]
-                                                    * (right - left) * self.a_max),
+                f"contact {size} [m]": float(0.5 * (right - left) * self.a_max),
+                f"stick {size} [m]": float(0.5 * r.stick_ratio[j] * (right - left)
+                                           * self.a_max),
+                f"stick {size} error [m]": float(0.5 * r.stick_ratio_error[i]
+                                                 * (right - left) * self.a_max),
                 "stick offset [m]": float(r.stick_offset[j] * self.a_max),
                 "stick offset error [m]": float(r.stick_offset_error[i] * self.a_max),
                 "frictional work [J]": float(r.dissipation[j] * self.work_unit),
@@ -117,17 +128,18 @@ class PhysicalFretting:
                  "point  P         Q          a          c (estimate)           "
                  "offset      frictional work (estimate)  resolved"]
         for i, row in enumerate(self.points()):
-            c = row["stick half-width [m]"]
-            if not math.isfinite(row["contact half-width [m]"]):
+            size = self.size_name
+            c = row[f"stick {size} [m]"]
+            if not math.isfinite(row[f"contact {size} [m]"]):
                 lines.append(f"{i:5d}  {format_si(row['normal force [N]'], 'N'):9s} "
                              f"{format_si(row['tangential force [N]'], 'N'):10s} no contact")
                 continue
             lines.append(
                 f"{i:5d}  {format_si(row['normal force [N]'], 'N'):9s} "
                 f"{format_si(row['tangential force [N]'], 'N'):10s} "
-                f"{format_si(row['contact half-width [m]'], 'm'):10s} "
+                f"{format_si(row[f'contact {size} [m]'], 'm'):10s} "
                 f"{format_si(c, 'm') if math.isfinite(c) else 'none':10s} "
-                f"({row['stick half-width error [m]']:.1e} m)  "
+                f"({row[f'stick {size} error [m]']:.1e} m)  "
                 f"{row['stick offset [m]']:+.2e} m  "
                 f"{format_si(row['frictional work [J]'], 'J'):10s} "
                 f"({row['frictional work error [J]']:.1e} J)  "
@@ -144,16 +156,18 @@ class PhysicalFretting:
 
 def physical_fretting(radius: float | str, length: float | str, load_path: Any,
                       tangential_path: Any, indenter: Any, body: Any, friction: float, *,
-                      steps: int = DEFAULT_STEPS, n: int = DEFAULT_N,
+                      geometry: str = "cylinder", steps: int | None = None,
+                      n: int | None = None,
                       bulk_stress: Any = None, max_error: float = DEFAULT_MAX_ERROR,
                       progress: Callable[[int, int], None] | None = None
                       ) -> PhysicalFretting:
-    """A cylinder pressed by forces in N, then loaded tangentially; the answer in SI.
+    """A cylinder or sphere pressed by forces in N, then loaded tangentially; answer in SI.
 
     Parameters
     ----------
     radius, length : float or str
-        R and L of the cylinder, in m or with a unit ("10mm").
+        R and L of the cylinder, in m or with a unit ("10mm"); the sphere: R, and
+        ``length=None``.
     load_path : sequence or str
         Normal forces [N] (or with units: "0N,500N,500N"), starting at 0; P_max is the
         largest.
@@ -164,8 +178,11 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
         Pa (or with units) with Poisson's ratios; the indenter may be ``"rigid"``.
     friction : float
         k > 0.
+    geometry : {"cylinder", "sphere"}
+        The sphere: pairs with Dundurs beta = 0 under a tangential load, as for
+        :func:`contactlib.fretting`.
     steps, n, max_error, progress
-        As for :func:`contactlib.fretting`.
+        As for :func:`contactlib.fretting` (defaults per geometry).
     bulk_stress : sequence or str, optional
         The body's bulk stress along x [Pa] (or with units) at the same points.
 
@@ -179,7 +196,7 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
         Naming the argument, for input the physical door or :func:`contactlib.fretting`
         refuses.
     """
-    prob = physical_problem("cylinder", radius, indenter, body, length, None, "smooth")
+    prob = physical_problem(geometry, radius, indenter, body, length, None, "smooth")
     forces = parse_force_path(load_path, "load_path")
     tangential = parse_signed_path(tangential_path, "force", "tangential_path")
     if len(tangential) != len(forces):
@@ -187,9 +204,9 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
                                   "points)", tangential_path)
     k = float(friction)
     load_max = max(forces)
-    a_max = contact_radius_of_load("cylinder", prob.e_star, prob.radius,
+    a_max = contact_radius_of_load(prob.geometry, prob.e_star, prob.radius,
                                    load_max / prob.length)
-    p0 = hertz_peak_pressure("cylinder", prob.e_star, prob.radius, a_max)
+    p0 = hertz_peak_pressure(prob.geometry, prob.e_star, prob.radius, a_max)
     kwargs: dict[str, Any] = {}
     if bulk_stress is not None:
         stress = parse_signed_path(bulk_stress, "modulus", "bulk_stress")
@@ -200,15 +217,18 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
     if not (math.isfinite(k) and k > 0):
         raise validate.InputError("friction", "a finite coefficient k > 0", friction)
     kwargs.update(prob.dimensionless())
-    res = fretting("cylinder", prob.body.nu, k, [f / load_max for f in forces],
+    res = fretting(prob.geometry, prob.body.nu, k, [f / load_max for f in forces],
                    [q / (k * load_max) for q in tangential], steps, n=n,
                    max_error=max_error, progress=progress, **kwargs)
     notes = validity_notes(prob, a_max)
     heading = (f"cylinder R = {format_si(prob.radius, 'm')}, length "
-               f"{format_si(prob.length, 'm')}: indenter {prob.indenter}, body {prob.body}")
+               f"{format_si(prob.length, 'm')}: indenter {prob.indenter}, body {prob.body}"
+               if prob.geometry == "cylinder" else
+               f"sphere R = {format_si(prob.radius, 'm')}: indenter {prob.indenter}, body "
+               f"{prob.body}")
     return PhysicalFretting(result=res, radius=prob.radius, length=prob.length,
                             composite_modulus=prob.e_star, a_max=a_max, p0=p0,
                             load_max=load_max,
-                            work_unit=work_scale("cylinder", prob.e_star, prob.radius, a_max)
+                            work_unit=work_scale(prob.geometry, prob.e_star, prob.radius, a_max)
                             * prob.length, heading=heading, notes=notes)
 

@@ -162,9 +162,10 @@ def test_contact_cattaneo_example_against_mindlin():
     gamma = 0.724), a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn. Mindlin's closed
     forms (c/a = 0.5, shift 8.172e-3 mm) assume the slip parallel to the load, which holds
     at gamma = 0 only: our stick ratio agrees within its estimate, and our shift is
-    converged (its estimate, the difference n = 32 -> 64, is 2e-4 of it) and lies below Mindlin's by more than
-    its estimate and by less than 5e-3 of it, as for the rigid sphere on nu = 0.5
-    (tests/test_fretting_sphere.py: 3.1e-3 below at gamma = 1)."""
+    converged (its estimate, the difference n = 32 -> 64, is 2e-4 of it) and lies below
+    Mindlin's by more than 3 times its estimate and by less than 5e-3 of it, as for the
+    rigid sphere on nu = 0.5 (tests/test_fretting_sphere.py: 3.1e-3 below at gamma = 1).
+    4 steps: with 8 or 16 at n = 64 the last steps are flagged not converged."""
     nu, g_mod, a, fn, k, x = 0.42, 200.0, 1.0, 9.1954, 0.4, 0.875
     e_star = 2 * g_mod * (1 + nu) / (2 * (1 - nu**2))  # two equal bodies [N/mm^2]
     radius = 4 * e_star * a**3 / (3 * fn)  # Hertz [mm]: 50.0

@@ -96,3 +96,26 @@ def test_bad_physical_input_is_refused_with_one_line(tmp_path, capsys, extra, wo
     rc = cli.main(args + extra)
     err = capsys.readouterr().err
     assert rc == 2 and word in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_sphere_in_si_is_hertz_and_mindlin():
+    """The sphere in SI: two equal steel-like bodies with nu = 0 (beta = gamma = 0), R = 10 mm,
+    P = 100 N, Q = 0.5 k P. Hertz's a = (3PR/(4E*))^(1/3) and Mindlin's shift
+    3kP(2 - nu)/(8 G a) [1 - (1 - x)^(2/3)] (two bodies) in metres, c/a within its estimate
+    of (1 - x)^(1/3)."""
+    e_mod, nu, radius, load, k, x = 200e9, 0.0, 0.01, 100.0, 0.3, 0.5
+    r = physical_fretting(radius, None, [0, load, load], [0, 0, x * k * load], (e_mod, nu),
+                          (e_mod, nu), k, geometry="sphere", n=32, steps=4)
+    e_star = e_mod / (2 * (1 - nu**2))
+    a = (3 * load * radius / (4 * e_star)) ** (1 / 3)
+    assert r.a_max == pytest.approx(a, rel=1e-12)
+    row = r.points()[2]
+    assert row["contact radius [m]"] == pytest.approx(a, abs=2.4 * a / 32)  # a cell
+    c = row["stick radius [m]"] / row["contact radius [m]"]
+    assert abs(c - (1 - x) ** (1 / 3)) <= r.result.stick_ratio_error[2]
+    g_mod = e_mod / (2 * (1 + nu))
+    shift = 3 * k * load / (16 * a) * 2 * (2 - nu) / g_mod * (1 - (1 - x) ** (2 / 3))
+    ours = r.result.shift[-1] * r.a_max**2 / r.radius
+    assert ours == pytest.approx(shift, rel=1e-3)  # measured 1.6e-5 relative at n = 32
+    assert r.work_unit == pytest.approx(e_star * a**5 / radius**2, rel=1e-12)
+    assert "sphere R = 10 mm" in r.summary()

@@ -2331,11 +2331,13 @@ def physical_fretting_to_dataset(result: Any) -> xr.Dataset:
                              cf_attrs("stick zone centre minus contact centre", "m"))
     ds["frictional_work_si"] = (("step",), r.dissipation * result.work_unit,
                                 cf_attrs("cumulative frictional work", "J",
-                                         comment="over the cylinder's length"))
+                                         comment="over the cylinder's length"
+                                         if r.geometry == "cylinder" else ""))
     ds.attrs.update({"composite_modulus": float(result.composite_modulus),
                      "radius": float(result.radius), "length": float(result.length),
                      "a_max": float(a), "p0": float(result.p0), "load_max": float(fmax),
                      "work_unit": float(result.work_unit),
                      "scales": "lengths in m = value * a_max; forces in N; work in J = value "
-                               "* work_unit (E* a_max**4 / R**2 * length)"})
+                               "* work_unit (" + ("E* a_max**5 / R**2" if r.geometry == "sphere"
+                                                  else "E* a_max**4 / R**2 * length") + ")"})
     return ds

@@ -119,3 +119,7 @@ def test_sphere_in_si_is_hertz_and_mindlin():
     assert ours == pytest.approx(shift, rel=1e-3)  # measured 1.6e-5 relative at n = 32
     assert r.work_unit == pytest.approx(e_star * a**5 / radius**2, rel=1e-12)
     assert "sphere R = 10 mm" in r.summary()
+    ds = cio.physical_fretting_to_dataset(r)
+    assert ds.attrs["geometry"] == "sphere" and "a_max**5" in ds.attrs["scales"]
+    assert float(ds["frictional_work_si"][-1]) == pytest.approx(
+        r.result.dissipation[-1] * e_star * a**5 / radius**2, rel=1e-12)

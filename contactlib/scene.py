@@ -537,6 +537,11 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
         return (), ()
     tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
+    if raw["geometry"] == "sphere":
+        bad.add("geometry", "a fretting scene covers the cylinder only; the sphere's fretting "
+                            "(Dundurs beta = 0 pairs) is run by contactlib.fretting or "
+                            "'contactlib history --geometry sphere --tangential-path ...'")
+        return (), ()
     try:
         fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, raw["steps"],
                                  n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR))

@@ -352,7 +352,7 @@ def test_fretting_scene_parses_to_the_fretting_call():
 
 
 @pytest.mark.parametrize("extra, key, text", [
-    ({"geometry": "sphere"}, "geometry", "fretting: geometry 'sphere' is not covered"),
+    ({"geometry": "sphere"}, "geometry", "a fretting scene covers the cylinder only"),
     ({"tangential_path": [0, 0.5]}, "tangential_path", "has 2 points but load_path has 3"),
     ({"tangential_path": [0, 0, 1]}, "tangential_path", "gross sliding"),
     ({"tangential_path": [0.1, 0, 0.5]}, "tangential_path", "must start at 0"),

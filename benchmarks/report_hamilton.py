@@ -81,7 +81,7 @@ def maxima() -> None:
     print("    mu  Q/(mu P)   c/a  von Mises      x      z  p0/Y at first yield")
     for mu, ratio in ((0.0, 1.0), (0.1, 1.0), (0.2, 1.0), (0.3, 1.0), (0.4, 1.0),
                       (0.5, 1.0), (0.4, 0.5), (0.4, 0.9)):
-        ds = mindlin_sphere_stresses(max(mu, 1e-12), ratio, x, [0.0], z, NU)
+        ds = mindlin_sphere_stresses(mu, ratio, x, [0.0], z, NU)
         vm = ds.von_mises.values[:, 0, :]
         i, j = np.unravel_index(np.argmax(vm), vm.shape)
         print(f"{mu:6.2f}  {ratio:8.2f}  {ds.attrs['stick_ratio']:4.2f}  {vm[i, j]:9.4f}  "

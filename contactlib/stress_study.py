@@ -61,8 +61,8 @@ def tangential_fields(nu: float = 0.3,
     """The plane y = 0 (x/a in [-1.6, 1.6], z/a in [0, 1.2]) of each (mu, Q/(mu P))."""
     x = np.linspace(-1.6, 1.6, 161)
     z = np.linspace(0.0, 1.2, 61)
-    return [mindlin_sphere_stresses(max(mu, 1e-12), ratio, x, [0.0], z, nu)
-            .isel(y=0).assign_attrs(friction_coefficient=mu) for mu, ratio in cases]
+    return [mindlin_sphere_stresses(mu, ratio, x, [0.0], z, nu).isel(y=0)
+            for mu, ratio in cases]
 
 
 def maxima_rows(partial: Sequence[Any], tangential: Sequence[Any]) -> list[dict[str, Any]]:

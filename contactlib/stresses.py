@@ -56,7 +56,8 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "surface_radial_stress", "default_grid", "check_subsurface_request",
            "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
            "field_error_estimate", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK",
-           "DEPTH_CUTOFF", "TractionPieces", "xi_nodes"]
+           "DEPTH_CUTOFF", "TractionPieces", "xi_nodes", "check_tractions",
+           "check_grid"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
               "cylinder": ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz")}
@@ -75,7 +76,8 @@ _GAUSS = np.polynomial.legendre.leggauss(8)
 
 
 # ----------------------------------------------------------------------------- input
-def _profile(xi: Any, pressure: Any, shear: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def check_tractions(xi: Any, pressure: Any,
+                    shear: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The tabulated tractions as float arrays, checked (nodes increasing in [0, inf))."""
     from .validate import InputError
 
@@ -92,7 +94,7 @@ def _profile(xi: Any, pressure: Any, shear: Any) -> tuple[np.ndarray, np.ndarray
     return r, p, q
 
 
-def _grid(x: Any, z: Any) -> tuple[np.ndarray, np.ndarray]:
+def check_grid(x: Any, z: Any) -> tuple[np.ndarray, np.ndarray]:
     """The output grid's coordinates: 1-d, finite, z >= 0."""
     from .validate import InputError
 
@@ -147,7 +149,7 @@ def halfplane_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
         tractions, tension positive; exact for the piecewise-linear tractions up to
         round-off.
     """
-    r, p, q = _profile(xi, pressure, shear)
+    r, p, q = check_tractions(xi, pressure, shear)
     # both halves: p(-x) = p(x), q(-x) = -q(x); a gap or a jump at x = 0 is two pieces
     # that do not meet
     starts = np.concatenate([-r[:0:-1], r[:-1]])
@@ -194,7 +196,7 @@ def _halfplane_pieces(sa: np.ndarray, sb: np.ndarray, pa: np.ndarray, pb: np.nda
                       nu: float) -> dict[str, np.ndarray]:
     """Johnson's half-plane integrals (Contact Mechanics, Ch. 2) done exactly over linear
     pieces [sa, sb] (values a -> b)."""
-    xs, zs = _grid(x, z)
+    xs, zs = check_grid(x, z)
     h = sb - sa
     mp, mq = (pb - pa) / h, (qb - qa) / h
     cp, cq = pa - mp * sa, qa - mq * sa  # f(s) = c + m s = (c + m x) - m u, u = x - s
@@ -303,11 +305,12 @@ class TractionPieces:
 
 
 INTEGRAL_J0_SWITCH = 15.0
-"""Up to this argument ``int_0^x J0`` is scipy's ``itj0y0``: scipy 1.13's returns values of
-order 1e10 from x ~ 21 on (1.17's is right), and both are 4.5e-10 off at 20. Between it and ``INTEGRAL_J0_ASYMPTOTIC``
-the integral is its value at 20 (``_INTEGRAL_J0_AT_SWITCH``, from mpmath's x 1F2(1/2; 1,
-3/2; -x^2/4) at 40 digits; ``itj0y0`` is 4.5e-10 off there) plus the rest by 24-point
-Gauss-Legendre (J0 is entire, the interval at most 10 long: below 1e-15)."""
+"""Up to this argument ``int_0^x J0`` is scipy's ``itj0y0`` (9.8e-12 off at 14.9). Beyond
+it ``itj0y0`` drifts: 4.5e-10 off at 20 in scipy 1.13 and 1.17, and 1.13's is of order 1e10
+from x ~ 21 on. Between it and ``INTEGRAL_J0_ASYMPTOTIC`` the integral is its value at 15
+(``_INTEGRAL_J0_AT_SWITCH``, from mpmath's x 1F2(1/2; 1, 3/2; -x^2/4) at 40 digits) plus
+the rest by 24-point Gauss-Legendre (J0 is entire, the interval at most 15 long: below
+1e-14)."""
 
 INTEGRAL_J0_ASYMPTOTIC = 30.0
 """Above this argument ``int_0^x J0`` comes from the asymptotic series of the Struve
@@ -384,13 +387,13 @@ def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
         tractions at z > 0; on z = 0 the shear's part of sigma_rr and sigma_tt carries
         the truncation at ``XI_SURFACE`` (docs/stresses.md).
     """
-    r, p, q = _profile(xi, pressure, shear)
+    r, p, q = check_tractions(xi, pressure, shear)
     return _halfspace_pieces(TractionPieces.from_nodes(r, p, q), x, z, nu)
 
 
 def _halfspace_pieces(pieces: TractionPieces, x: Any, z: Any, nu: float) -> dict[str, np.ndarray]:
     """The half-space field of tractions given as linear pieces (:func:`halfspace_stresses`)."""
-    xs, zs = _grid(x, z)
+    xs, zs = check_grid(x, z)
     rr = np.abs(xs)
     out = {k: np.zeros((zs.size, rr.size)) for k in COMPONENTS["sphere"]}
     inside, surface = zs > 0, zs == 0
@@ -677,7 +680,7 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     nu, _, _ = _tractions_of(solution, body)
     xi, p, q = traction_samples(solution)
     q = q if body == "body" else -q
-    xs, zs = _grid(x, z)
+    xs, zs = check_grid(x, z)
     geometry = solution.geometry
     fields = stress_field(geometry, nu, xi, p, q, xs, zs)
     if measures:
@@ -923,7 +926,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     for name in ("slab_ratio", "nu", "indenter_modulus_ratio", "indenter_poisson_ratio"):
         setattr(_Step, name, getattr(result, name, math.inf if "modulus" in name else 0.0))
     nu, p, q = _tractions_of(_Step, body)
-    xs, zs = _grid(x, z)
+    xs, zs = check_grid(x, z)
     bounds = np.asarray(result.xi_bounds, dtype=float)
     mid = np.asarray(result.xi, dtype=float)
     sa, sb = bounds[:, 0], bounds[:, 1]

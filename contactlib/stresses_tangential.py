@@ -41,8 +41,8 @@ from typing import Any
 import numpy as np
 import scipy.special as sp
 
-from .stresses import (CHUNK, DEPTH_CUTOFF, XI_SURFACE, TractionPieces, halfspace_stresses,
-                       xi_nodes)
+from .stresses import (CHUNK, DEPTH_CUTOFF, XI_SURFACE, TractionPieces, check_grid,
+                       check_tractions, halfspace_stresses, xi_nodes)
 
 __all__ = ["CARTESIAN", "shear_x_stresses", "cartesian_stresses", "cartesian_measures",
            "mindlin_tractions", "mindlin_sphere_stresses"]
@@ -52,28 +52,14 @@ CARTESIAN = ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_yz", "sigma_xz", "sigma_
 
 
 def _axes(x: Any, y: Any, z: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    from .validate import InputError
-    out = []
-    for name, v in (("x", x), ("y", y), ("z", z)):
-        a = np.atleast_1d(np.asarray(v, dtype=float))
-        if a.ndim != 1 or a.size == 0 or not np.all(np.isfinite(a)):
-            raise InputError(name, "a non-empty 1-d array of finite numbers", v)
-        out.append(a)
-    if np.any(out[2] < 0):
-        raise InputError("z", "depths z/a >= 0 (positive into the body)", z)
-    return out[0], out[1], out[2]
+    xs, zs = check_grid(x, z)
+    ys, _ = check_grid(y, 0.0)
+    return xs, ys, zs
 
 
-def _pieces(xi: Any, values: Any, name: str) -> TractionPieces:
-    from .validate import InputError
-    r = np.asarray(xi, dtype=float)
-    v = np.asarray(values, dtype=float)
-    if r.ndim != 1 or r.size < 2 or v.shape != r.shape:
-        raise InputError(name, f"values at each of the {r.size} points of xi", values)
-    if not (np.all(np.isfinite(r)) and np.all(np.isfinite(v)) and r[0] >= 0
-            and np.all(np.diff(r) > 0)):
-        raise InputError(name, "finite values on increasing radii xi >= 0", values)
-    zero = np.zeros_like(v)
+def _pieces(xi: Any, values: Any) -> TractionPieces:
+    """A shear tabulated on ``xi`` as linear pieces (in the pressure's slot: its J0 transform)."""
+    r, v, zero = check_tractions(xi, values, np.zeros_like(np.asarray(values, dtype=float)))
     return TractionPieces.from_nodes(r, v, zero)
 
 
@@ -109,7 +95,7 @@ def shear_x_stresses(xi: Any, shear: Any, x: Any, y: Any, z: Any,
         sigma_yy and sigma_xy carry the truncation at ``XI_SURFACE``.
     """
     xs, ys, zs = _axes(x, y, z)
-    pieces = _pieces(xi, shear, "shear")
+    pieces = _pieces(xi, shear)
     rho = np.hypot(ys[:, None], xs[None, :])
     theta = np.arctan2(ys[:, None], xs[None, :])
     rr, inverse = np.unique(rho.ravel(), return_inverse=True)
@@ -247,7 +233,7 @@ def mindlin_tractions(friction: float, load_ratio: float,
     Parameters
     ----------
     friction : float
-        Coulomb's coefficient mu > 0.
+        Coulomb's coefficient mu >= 0 (0: frictionless, no shear).
     load_ratio : float
         Q/(mu P) in [0, 1]; 1 is full sliding (q = mu p, Hamilton's case).
     points : int
@@ -269,8 +255,8 @@ def mindlin_tractions(friction: float, load_ratio: float,
     linear; the field's error from that is measured in docs/stresses.md.
     """
     from .validate import InputError
-    if not (np.isfinite(friction) and friction > 0):
-        raise InputError("friction", "a finite friction coefficient > 0", friction)
+    if not (np.isfinite(friction) and friction >= 0):
+        raise InputError("friction", "a finite friction coefficient >= 0", friction)
     if not (np.isfinite(load_ratio) and 0.0 <= load_ratio <= 1.0):
         raise InputError("load_ratio", "Q/(mu P) in [0, 1]", load_ratio)
     if not (isinstance(points, (int, np.integer)) and points >= 64):

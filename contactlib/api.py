@@ -61,6 +61,12 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
     n = validate.n(n, method)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
     shape = profiles.profile(profile, exponent)
+    if shape.is_flat:
+        raise validate.InputError(
+            "profile", "a power law (paraboloid, cone, power) for solve and sweep", profile,
+            "profile 'flat' is for history only: the flat punch's contact radius is fixed, "
+            "so it has no self-similar solution; run history with profile 'flat' (contactlib history --profile flat); its stick "
+            "ratio is the power laws' c/a at the same k")
     if not shape.is_paraboloid and method != "default":
         raise validate.InputError("method", f"'default' for the {shape.name} profile", method,
                                   f"method {method!r} is measured for the paraboloid only (the "

@@ -185,9 +185,10 @@ def parse_substrate(args: argparse.Namespace, base: str, geometry: str,
 
 def _profile_options(sub: argparse.ArgumentParser) -> None:
     """``--profile`` and ``--exponent`` (the indenter's shape)."""
-    sub.add_argument("--profile", metavar="{paraboloid,cone,power}", default="paraboloid",
+    sub.add_argument("--profile", metavar="{paraboloid,cone,power,flat}", default="paraboloid",
                      help="the indenter's shape h ~ r^d: paraboloid (Hertz, d = 2), cone "
-                          "(d = 1; a wedge for the cylinder) or power (d = --exponent); "
+                          "(d = 1; a wedge for the cylinder), power (d = --exponent) or "
+                          "flat (the flat punch, a = its radius; history only); "
                           "for solve and sweep other than paraboloid with the default "
                           "method only; default: paraboloid")
     sub.add_argument("--exponent", metavar="D", default=None,
@@ -1176,10 +1177,12 @@ def format_history(res: Any) -> str:
     if getattr(res, "load_shape", None):  # a shape or table (contactlib.load_paths)
         head += ", path " + ", ".join(f"{k} {_g(v) if not isinstance(v, str) else v}"
                                       for k, v in res.load_shape.items())
-    if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d
-        power = 2.0 * res.exponent + (1.0 if res.geometry == "sphere" else 0.0)
-        work_scale = f"V/(E* (A d)^2 a_max^{power:g}), h = A r^d"
-        head += f", profile = {res.profile} (d = {res.exponent:g})"
+    if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
+        from contactlib import profiles
+
+        shape = profiles.profile(res.profile, res.exponent if res.profile == "power" else None)
+        work_scale = shape.work_unit(res.geometry == "sphere")
+        head += f", profile = {res.profile}" + ("" if shape.is_flat else f" (d = {res.exponent:g})")
     if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
     if res.slab_ratio > 0:

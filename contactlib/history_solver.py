@@ -282,17 +282,18 @@ def _rhs(ops: Operators, load: float, u_old: np.ndarray, c: np.ndarray,
 
 
 def _scales(ops: Operators, state: np.ndarray, p: np.ndarray, du: np.ndarray,
-            gap: np.ndarray) -> tuple[float, float, float]:
+            gap: np.ndarray, delta: float) -> tuple[float, float, float]:
     """Pressure, gap and slip scales of the switching tolerances and the residual.
 
-    The gap scale is the larger of the largest gap and r^2 of the outermost
-    contact element; the slip scale is the largest slip increment, floored at
-    1e-6 of the gap scale (a^2/R) so that a step with no motion has a finite
-    scale.
+    The gap scale is the larger of the largest gap and the profile's gap scale
+    at the outermost contact element (r^2 for the paraboloid, the approach for
+    the flat punch: :meth:`~contactlib.profiles.Profile.gap_scale`); the slip
+    scale is the largest slip increment, floored at 1e-6 of the gap scale
+    (a^2/R) so that a step with no motion has a finite scale.
     """
     p_scale = max(float(np.abs(p).max()), 1e-300)
     last = np.flatnonzero(state)[-1:]  # the midpoints increase outward
-    g_scale = max(2.0 * float(ops.model.profile.gap(ops.mid[last[0]])) if last.size else 0.0,
+    g_scale = max(ops.model.profile.gap_scale(ops.mid[last[0]], delta) if last.size else 0.0,
                   float(np.abs(gap).max()), 1e-300)
     d_scale = max(float(np.abs(du).max()), 1e-6 * g_scale)
     return p_scale, g_scale, d_scale
@@ -451,7 +452,7 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
             u += u_shift
         gap = w - delta + ops.model.profile.gap(ops.mid)
         du = u - u_old
-        scales = _scales(ops, state, p, du, gap)
+        scales = _scales(ops, state, p, du, gap, delta)
         last = (k, state, p, q, du, gap, scales)  # the residual's arguments, if kept
         new, viol = _violations(ops, k, state, p, q, du, gap, scales)
         if np.array_equal(new, state):
@@ -527,6 +528,10 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
     extrapolation lands more than two elements beyond the last stuck midpoint
     (a receding or stationary edge, as in unloading, where ``d`` rises like a
     square root), the element edge is returned, good to half an element.
+
+    The flat punch's stick edge does not move under a monotonic load (its
+    solution is proportional to the load), so there ``d`` rises like
+    ``(c - r)^(1/2)`` and ``d^2`` is the linear one, with the same checks.
     """
     contact = state > 0
     if not contact[0] or state[0] != STICK:
@@ -543,7 +548,7 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
         d = 1.0 - np.abs(q[j - 3:j]) / (k * p[j - 3:j])  # elements j-3, j-2, j-1
     if not (np.all(np.isfinite(d)) and d[0] > d[1] > d[2] >= 0.0):
         return edge
-    t = d ** (2.0 / 3.0)
+    t = d ** (2.0 if ops.model.profile.is_flat else 2.0 / 3.0)
     last, before = t[1] - t[2], t[0] - t[1]
     if not (1.0 / 1.5 <= last / before <= 1.5):
         return edge

@@ -534,12 +534,17 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     import xarray as xr
 
     from contactlib import history_solver as hs
+    from contactlib import profiles
 
     r = result
     ind = indenter(r.geometry)
     axis = ind.coordinate
     work_scale = f"V R**2 / (E* a_max**{ind.work_exponent})" + (
         ", V per unit length over both sides of the axis" if ind.plane_strain else "")
+    if getattr(r, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
+        shape = profiles.profile(r.profile, r.exponent if r.profile == "power" else None)
+        work_scale = shape.work_unit(not ind.plane_strain).replace("^", "**") + (
+            ", over both sides of the axis" if ind.plane_strain else "")
     sd, ed = ("step",), ("step", "xi")
     coords = {
         "step": ("step", np.arange(r.load_ratio.size, dtype=np.int32),

@@ -42,8 +42,22 @@ In the self-similar problem a point of the stick zone keeps its tangential
 displacement while a grows; with u(r, a) = a^d U(r/a) that makes U ~ (r/a)^d:
 the adherence condition is u = C r^d (:meth:`Profile.adherence`), C unknown.
 
-The flat punch (fixed contact radius, square-root singular pressure) is not a
-power law of this kind: it is not self-similar in a, and no solver takes it yet.
+The flat punch
+--------------
+The flat punch (``flat``: h = 0 for r <= a, the punch's fixed radius) is the limit
+d -> infinity. Its pressure is square-root singular at the sharp edge (Boussinesq:
+P = 2 E* a delta, p = P/(2 pi a sqrt(a^2 - r^2)); plane strain p = P/(pi sqrt(a^2 - x^2)),
+with no finite approach). Its contact does not grow, so it is not self-similar in a
+and only the incremental ``history`` solver takes it. Under a monotonic load every
+increment is the same problem, so the solution is proportional to P: the stick zone
+is fixed, and it is the stick zone of the increment problem that the self-similar
+solution of every power law solves as a grows (the pressure increment at fixed r is
+~ (a^2 - r^2)^(-1/2) for every profile). Hence c/a(k) of the flat punch is the k(c/a)
+of the power laws, and P/(2 E* a delta) is their dP/d(delta) over 2 E* a.
+
+Units of the flat punch: a = E* = 1 and the load unit is ``frictionless_load``, 2
+(sphere: P = 2 E* a delta at delta = 1) or 1 (cylinder: E* a per unit length), so
+displacements are in units of P_max/(2 E* a) (sphere) or P_max/E* (cylinder).
 """
 
 from __future__ import annotations
@@ -53,9 +67,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Profile", "PARABOLOID", "profile", "PROFILES"]
+__all__ = ["Profile", "PARABOLOID", "FLAT", "profile", "PROFILES"]
 
-PROFILES = ("paraboloid", "cone", "power")
+PROFILES = ("paraboloid", "cone", "power", "flat")
 """The names :func:`profile` accepts."""
 
 EXPONENT_RANGE = (0.5, 8.0)
@@ -70,10 +84,11 @@ class Profile:
 
     Parameters
     ----------
-    name : {"paraboloid", "cone", "power"}
-        The name it was made from (``paraboloid``: d = 2, ``cone``: d = 1).
+    name : {"paraboloid", "cone", "power", "flat"}
+        The name it was made from (``paraboloid``: d = 2, ``cone``: d = 1, ``flat``:
+        d = inf, the flat punch of radius 1).
     exponent : float
-        d > 0.
+        d > 0 (``inf`` for the flat punch).
     """
 
     name: str
@@ -84,12 +99,19 @@ class Profile:
         """Whether d = 2: Hertz's profile, computed by the same operations as before."""
         return self.exponent == 2.0
 
+    @property
+    def is_flat(self) -> bool:
+        """Whether this is the flat punch (d = inf): fixed contact radius 1, sharp edge."""
+        return math.isinf(self.exponent)
+
     # ------------------------------------------------------------------ what solvers use
     def gap(self, r: np.ndarray) -> np.ndarray:
         """h(r) = r^d/d: the gap closed by the approach (w = delta - h)."""
         r = np.asarray(r, dtype=float)
         if self.is_paraboloid:
             return 0.5 * r**2
+        if self.is_flat:  # the punch's face; beyond its edge the body never reaches it
+            return np.where(np.abs(r) <= 1.0, 0.0, np.inf)
         d = self.exponent
         return np.abs(r) ** d / d
 
@@ -99,6 +121,14 @@ class Profile:
         if self.is_paraboloid:
             return 0.5 * (r - ref) * (r + ref)
         return self.adherence_difference(r, ref) / self.exponent
+
+    def gap_scale(self, r_edge: float, delta: float) -> float:
+        """The scale of the gap near a contact reaching ``r_edge`` at approach ``delta``:
+        2 h(r_edge) (r_edge^2 for the paraboloid), and |delta| for the flat punch, whose
+        gap is 0 over the whole contact."""
+        if self.is_flat:
+            return abs(float(delta))
+        return 2.0 * float(self.gap(r_edge))
 
     def adherence(self, r: np.ndarray) -> np.ndarray:
         """r^d: the stick zone's tangential displacement is u = C r^d."""
@@ -130,13 +160,18 @@ class Profile:
 
         4/3 and pi/4 for the paraboloid (P_Hertz in units E* a^3/R and E* a^2/R).
         """
+        if self.is_flat:  # Boussinesq's 2 E* a delta at delta = 1; E* a per length
+            return 2.0 if axisymmetric else 1.0
         d = self.exponent
         if axisymmetric:
             return 2.0 / (d + 1.0) * self._gamma_ratio()
         return 0.5 * math.pi / self._gamma_ratio()
 
     def frictionless_approach(self) -> float:
-        """delta at a = 1 of the axisymmetric profile (1 for the paraboloid, pi/2 for the cone)."""
+        """delta at a = 1 of the axisymmetric profile (1 for the paraboloid, pi/2 for the cone,
+        1 for the flat punch at its load unit)."""
+        if self.is_flat:
+            return 1.0
         return self._gamma_ratio() / self.exponent
 
     def reference_pressure(self, axisymmetric: bool) -> float:
@@ -152,11 +187,33 @@ class Profile:
         """The frictional work's factor of a monotonic loading to a = 1 (units E* (A d)^2
         a^(2d+1), per unit length a^(2d)): fields ~ a^(d-1) times slip rates ~ a^(d-1)
         over the area a^2 (a), integrated in a: 2 pi/(2d + 1) and 2/(2d)."""
+        if self.is_flat:
+            raise ValueError("the flat punch has no self-similar loading (its contact is "
+                             "fixed); its work comes from history")
         d = self.exponent
         return 2.0 * math.pi / (2.0 * d + 1.0) if axisymmetric else 1.0 / d
 
+    def work_unit(self, axisymmetric: bool, length: str = "a_max") -> str:
+        """The unit of a work or energy of this profile, as text (``length``: the name of
+        the contact radius the scalings use).
+
+        V R^2/(E* a^5) (a^4 per unit length) for the paraboloid, V/(E* (A d)^2 a^(2d+1))
+        for h = A r^d, and V/(E* a delta0^2) with delta0 = P_max/(2 E* a) for the flat
+        punch of radius a (plane strain: V/(E* delta0^2) per unit length, delta0 =
+        P_max/E*)."""
+        per = "" if axisymmetric else " per unit length"
+        if self.is_paraboloid:
+            return f"V R^2/(E* {length}^{5 if axisymmetric else 4}){per}"
+        if self.is_flat:
+            if axisymmetric:
+                return "V/(E* a delta0^2), delta0 = P_max/(2 E* a), a the punch's radius"
+            return "V/(E* delta0^2) per unit length, delta0 = P_max/E*"
+        power = 2.0 * self.exponent + (1.0 if axisymmetric else 0.0)
+        return f"V/(E* (A d)^2 {length}^{power:g}){per}, h = A r^d"
+
     def frictionless_pressure(self, x: np.ndarray, axisymmetric: bool) -> np.ndarray:
-        """p(x) at a = 1 for the paraboloid and the cone/wedge (closed forms; E* = 1).
+        """p(x) at a = 1 for the paraboloid, the cone/wedge and the flat punch (closed forms;
+        E* = 1; the flat punch at its load unit :meth:`frictionless_load`).
 
         Raises
         ------
@@ -172,6 +229,8 @@ class Profile:
         elif self.exponent == 1.0:
             with np.errstate(divide="ignore"):
                 p = np.arccosh(1.0 / xs) * (0.5 if axisymmetric else 1.0 / math.pi)
+        elif self.is_flat:  # P/(2 pi sqrt(1 - r^2)) at P = 2; P/(pi sqrt(1 - x^2)) at P = 1
+            p = 1.0 / (math.pi * np.sqrt(1.0 - xs**2))
         else:
             raise NotImplementedError("closed-form pressure only for d = 1 and d = 2")
         return np.where(inside, p, 0.0)
@@ -180,15 +239,18 @@ class Profile:
 PARABOLOID = Profile("paraboloid", 2.0)
 """Hertz's profile, the default."""
 
+FLAT = Profile("flat", math.inf)
+"""The flat punch of radius 1 (``history`` only)."""
+
 
 def profile(name: str = "paraboloid", exponent: float | None = None) -> Profile:
     """The profile of a name (and, for ``power``, an exponent); checked.
 
     Parameters
     ----------
-    name : {"paraboloid", "cone", "power"}
+    name : {"paraboloid", "cone", "power", "flat"}
         ``paraboloid`` (default): d = 2; ``cone``: d = 1 (a wedge for the cylinder);
-        ``power``: d = ``exponent``.
+        ``power``: d = ``exponent``; ``flat``: the flat punch (``history`` only).
     exponent : float, optional
         d for ``power``, in :data:`EXPONENT_RANGE`; must be omitted otherwise.
 
@@ -205,7 +267,7 @@ def profile(name: str = "paraboloid", exponent: float | None = None) -> Profile:
         if exponent is not None:
             raise validate.InputError("exponent", f"omitted for the {name} profile (its d is "
                                       "fixed); use profile 'power'", exponent)
-        return PARABOLOID if name == "paraboloid" else Profile("cone", 1.0)
+        return {"paraboloid": PARABOLOID, "flat": FLAT}.get(name, Profile("cone", 1.0))
     if exponent is None:
         raise validate.InputError("exponent", "given for the power profile", exponent)
     lo, hi = EXPONENT_RANGE

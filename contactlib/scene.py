@@ -362,7 +362,11 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
         bad.add("tolerance", "tolerance is not planned on a coated body (base 'elastic'): "
                              "give n (method 'default') instead")
     profile, exponent = _scene_profile(raw, bad)
-    if profile != "paraboloid":
+    if profile == "flat":
+        bad.add("profile", "profile 'flat' is for history only (kind: history): the flat "
+                           "punch's contact radius is fixed, so it has no self-similar "
+                           "solution")
+    elif profile != "paraboloid":
         if "tolerance" in raw:
             bad.add("tolerance", f"tolerance is planned for the paraboloid only; for the "
                                  f"{profile} profile give n (method 'default') instead")
@@ -537,6 +541,10 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
         return (), ()
     tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
+    if raw.get("profile") == "flat":
+        bad.add("profile", "profile 'flat' is not taken by a fretting scene (tangential_path): "
+                           "the flat punch's sharp edge is not covered by the fretting solvers")
+        return (), ()
     if raw["geometry"] == "sphere":
         bad.add("geometry", "a fretting scene covers the cylinder only; the sphere's fretting "
                             "(Dundurs beta = 0 pairs) is run by contactlib.fretting or "

@@ -914,6 +914,12 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
 
     from .validate import InputError
 
+    if getattr(result, "profile", "paraboloid") == "flat":
+        raise InputError("result", "a history of a power-law profile", "profile 'flat'",
+                         "result of profile 'flat': stresses are not available under the "
+                         "flat punch, whose pressure is "
+                         "singular at the sharp edge, where the element-wise field does not "
+                         "converge")
     steps = np.asarray(result.pressure).shape[0]
     if not isinstance(step, (int, np.integer)) or not -steps <= int(step) < steps:
         raise InputError("step", f"an integer in [-{steps}, {steps - 1}]", step)

@@ -233,7 +233,8 @@ def test_profile_keys_follow_the_command_line_spelling():
 
 
 @pytest.mark.parametrize("extra, text", [
-    ({"profile": "flat"}, r"^scenes\.s\.profile: profile must be one of paraboloid, cone, "),
+    ({"profile": "square"}, r"^scenes\.s\.profile: profile must be one of paraboloid, cone, "),
+    ({"profile": "flat"}, r"^scenes\.s\.profile: profile 'flat' is for history only"),
     ({"profile": "power"}, r"^scenes\.s\.exponent: exponent must be given"),
     ({"profile": "cone", "exponent": 1}, r"^scenes\.s\.exponent: exponent must be omitted"),
     ({"profile": "power", "exponent": 0.2}, r"^scenes\.s\.exponent: .*\[0\.5, 8\]"),

@@ -1,0 +1,177 @@
+"""The flat punch (``profile="flat"``) under ``history``: closed forms and partial slip.
+
+Independent truths:
+
+- frictionless: Boussinesq, P = 2 E* a delta and p = P/(2 pi a sqrt(a^2 - r^2)); plane
+  strain p = P/(pi sqrt(a^2 - x^2)) (the closed-form element averages);
+- no slip: Mossakovskii's bonded punch, P/(2 E* a delta) = (1 - nu) ln(3 - 4 nu)/(1 - 2 nu),
+  and in plane strain the bonded punch's q/p = tan(eta ln((a + x)/(a - x))), eta =
+  ln(3 - 4 nu)/(2 pi);
+- partial slip: the solution is proportional to the load (identity: every increment is
+  the same problem), and its stick ratio and stiffness are those of the self-similar
+  power-law problem at the same k, whose pressure increment at fixed r is the flat
+  punch's: the stick ratio of the self-similar default method (a different discrete
+  system: piecewise-linear tractions on a growing contact, k found for a given c/a) and
+  its dP/d(delta), load_ratio/indentation.
+
+Every comparison converges at first order in the element size (the square-root edge
+singularity on constant elements): each is checked at two meshes, the error falling by
+about half.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from contactlib import fretting, history, solve, validate
+from contactlib.cli import main
+from contactlib.profiles import FLAT, profile
+from contactlib.scene import parse_scene
+from contactlib.stresses import history_stresses
+
+
+def _run(geometry: str, nu: float, k: float, n: int, path=(0, 1), steps: int = 2, **kw):
+    return history(geometry, nu, k, list(path), steps, n=n, profile="flat",
+                   error_estimate=False, **kw)
+
+
+def _halving(errors: list[float]) -> None:
+    """First-order convergence: each refinement halves the error (within 0.4-0.6)."""
+    for coarse, fine in zip(errors[:-1], errors[1:]):
+        assert 0.4 < fine / coarse < 0.6, errors
+
+
+def test_the_profile_is_the_flat_punch():
+    assert profile("flat") is FLAT and FLAT.is_flat and not FLAT.is_paraboloid
+    assert FLAT.frictionless_load(True) == 2.0 and FLAT.frictionless_load(False) == 1.0
+    r = np.array([0.0, 0.5, 1.0, 1.5])
+    assert np.array_equal(FLAT.gap(r), [0.0, 0.0, 0.0, np.inf])
+    with pytest.raises(ValueError):
+        profile("flat", 3.0)  # the flat punch has no exponent
+
+
+@pytest.mark.parametrize("geometry, axisymmetric", [("sphere", True), ("cylinder", False)])
+def test_frictionless_is_boussinesq(geometry, axisymmetric):
+    errors_p, errors_d = [], []
+    for n in (120, 240):
+        r = _run(geometry, 0.3, 0.0, n)
+        assert r.converged.all() and "end of the mesh" not in r.message
+        a, b = r.xi_bounds.T
+        assert b[-1] == 1.0  # the mesh is the punch's face
+        if axisymmetric:  # the average of 1/(pi sqrt(1 - r^2)) over each ring
+            exact = 2.0 * (np.sqrt(1 - a**2) - np.sqrt(1 - b**2)) / ((b**2 - a**2) * math.pi)
+        else:
+            exact = (np.arcsin(b) - np.arcsin(a)) / ((b - a) * math.pi)
+        p = r.pressure[-1] * FLAT.reference_pressure(axisymmetric)
+        inner = r.xi < 0.9
+        errors_p.append(float(np.max(np.abs(p[inner] / exact[inner] - 1.0))))
+        if axisymmetric:  # delta = P/(2 E* a) = 1 at the load unit
+            errors_d.append(abs(r.indentation[-1] - 1.0))
+        assert np.all(r.shear == 0.0) and r.frictional_work[-1] == 0.0
+    assert errors_p[-1] < 5e-3
+    _halving(errors_p)
+    if axisymmetric:
+        assert errors_d[-1] < 1e-3
+        _halving(errors_d)
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.45])
+def test_no_slip_sphere_has_mossakovskii_stiffness(nu):
+    expected = (1 - nu) * math.log(3 - 4 * nu) / (1 - 2 * nu)  # P/(2 E* a delta)
+    errors = []
+    for n in (120, 240):
+        r = _run("sphere", nu, math.inf, n)
+        assert r.converged.all()
+        errors.append(abs(2.0 / (2.0 * r.indentation[-1]) / expected - 1.0))
+    assert errors[-1] < 1e-3
+    _halving(errors)
+
+
+@pytest.mark.parametrize("nu", [0.1, 0.3])
+def test_no_slip_cylinder_has_the_bonded_punch_tractions(nu):
+    eta = math.log(3 - 4 * nu) / (2 * math.pi)
+    errors = []
+    for n in (120, 240):
+        r = _run("cylinder", nu, math.inf, n)
+        assert r.converged.all()
+        x = r.xi[r.xi < 0.8]
+        ratio = r.shear[-1][: x.size] / r.pressure[-1][: x.size]
+        errors.append(float(np.max(np.abs(ratio - np.tan(eta * np.log((1 + x) / (1 - x)))))))
+    assert errors[-1] < 1e-3
+    _halving(errors)
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_partial_slip_is_proportional_to_the_load(geometry):
+    r = _run(geometry, 0.3, 0.2, 120, steps=5)
+    load = r.load_ratio[1:, None]
+    assert np.ptp(r.stick_ratio[1:]) < 1e-12  # the stick zone does not move
+    for field in (r.pressure, r.shear, r.tangential_displacement):
+        per_load = field[1:] / load
+        assert np.max(np.abs(per_load - per_load[-1])) < 1e-10 * np.max(np.abs(field))
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("k", [0.1, 0.3, 0.5])
+def test_stick_ratio_is_the_self_similar_one(geometry, k):
+    exact = solve(geometry, 0.3, friction=k, n=512)
+    assert exact.converged
+    for n in (240, 480):  # within half an element (measured: up to 0.26 of one)
+        r = _run(geometry, 0.3, k, n)
+        assert abs(r.stick_ratio[-1] - exact.stick_ratio) < 0.5 / n
+
+
+@pytest.mark.parametrize("k", [0.1, 0.3])
+def test_stiffness_is_the_self_similar_one(k):
+    """P/(2 E* a delta) of the flat punch = dP/d(delta) of the paraboloid over 2 E* a."""
+    s = solve("sphere", 0.3, friction=k, n=512)
+    expected = s.load_ratio / s.extra["indentation"]
+    errors = [abs(1.0 / _run("sphere", 0.3, k, n).indentation[-1] / expected - 1.0)
+              for n in (120, 240)]
+    assert errors[-1] < 1e-3
+    _halving(errors)
+
+
+def test_decoupled_body_has_no_shear():
+    r = _run("sphere", 0.5, 0.2, 60)
+    assert np.all(r.shear == 0.0) and "decouple" in r.message
+
+
+def test_cycle_is_resolved_and_balanced():
+    r = history("sphere", 0.3, 0.2, [0, 1, 0], 40, n=120, profile="flat")
+    assert r.converged.all() and r.profile == "flat"
+    assert "end of the mesh" not in r.message
+    assert np.all(np.diff(r.frictional_work) >= 0.0)
+    # energy balance at the end of the cycle: the indenter's work went into friction
+    assert abs(r.external_work[-1] - r.frictional_work[-1]) < 1e-3 * r.frictional_work[-1]
+    assert np.isfinite(r.work_error_estimate).all()
+
+
+def test_refused_where_it_is_not_covered():
+    with pytest.raises(validate.InputError, match="history only"):
+        solve("sphere", 0.3, friction=0.2, profile="flat")
+    with pytest.raises(validate.InputError, match="fretting"):
+        fretting("cylinder", 0.3, 0.2, [0, 1, 1], [0, 0, 0.5], profile="flat")
+    r = _run("sphere", 0.3, 0.2, 30)
+    with pytest.raises(validate.InputError, match="flat punch"):
+        history_stresses(r, -1, [0.5], [0.5])
+    scene = {"kind": "history", "geometry": "cylinder", "nu": 0.3, "friction": [0.2],
+             "load_path": [0, 1, 1], "steps": 20, "n": 60, "profile": "flat"}
+    assert parse_scene("s", scene).profile == "flat"  # a history scene takes it
+    with pytest.raises(ValueError, match=r"^scenes\.s\.profile: profile 'flat' is not taken"):
+        parse_scene("s", dict(scene, tangential_path=[0, 0, 0.5]))
+
+
+def test_command_line(tmp_path, capsys):
+    assert main(["solve", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.2",
+                 "--profile", "flat"]) == 2
+    assert "history only" in capsys.readouterr().err
+    out = tmp_path / "flat.nc"
+    assert main(["history", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.2",
+                 "--load-path", "0,1", "--steps", "4", "--n", "60", "--profile", "flat",
+                 "--output", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "profile = flat" in text and "delta0" in text and out.exists()

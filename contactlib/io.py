@@ -657,6 +657,12 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
             attrs["resolved_quantities"] = " ".join(
                 name for name, ok in r.resolved_quantities.items() if ok)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
+    if getattr(r, "profile", "paraboloid") == "flat":  # no R: lengths and displacements
+        attrs["length_scale"] = "a_max: the flat punch's radius a"
+        attrs["displacement_scale"] = (
+            "tangential_displacement and indentation are over delta0 = P_max/(2 E* a)"
+            if not ind.plane_strain else "tangential_displacement and indentation are over "
+            "delta0 = P_max/E* (P_max per unit length)")
     if r.message:
         attrs["message"] = r.message
     attrs["contactlib_version"] = version()

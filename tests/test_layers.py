@@ -116,3 +116,98 @@ def test_plot_modules_build_on_the_public_base_only():
         for module, names in _imports(path):
             if module.startswith("contactlib.plot"):
                 assert all(not n.startswith("_") for n in names), (path.name, module, names)
+
+
+# ----------------------------------------------------------------------------- layer order
+# docs/architecture.md, "The layers": every module's layer, in import order. A module
+# imports only its own layer and those before it; a new module must be placed here.
+LAYER_ORDER = ("validation", "model", "operators", "leaf numerics", "solver", "entry points",
+               "io", "plot", "workflow")
+LAYER_MODULES = {
+    "validation": ("validate", "threads"),
+    "model": ("indenter", "body", "model", "geometry", "theory", "profiles", "materials",
+              "load_paths", "kernels"),
+    "operators": ("elements", "influence", "operators", "operators_fused"),
+    "leaf numerics": ("checks", "energy"),
+    "solver": ("discrete", "default_method", "extrapolated_method", "paper_method",
+               "history_solver", "stages", "accuracy", "fretting_solver", "fretting_sphere",
+               "result", "solver_fused"),
+    "entry points": ("api", "history_api", "history_plan", "fretting_api", "convergence",
+                     "layer_study", "coating_study", "physical", "physical_fretting",
+                     "stresses", "stresses_tangential", "stress_study"),
+    "io": ("io",),
+    "plot": ("plot",),
+    "workflow": ("scene", "pipeline", "summary", "cli", "__main__", ""),
+}
+_RANK = {name: LAYER_ORDER.index(layer) for layer, names in LAYER_MODULES.items()
+         for name in names}
+
+
+def _layer_rank(module: str) -> int | None:
+    """Rank of a module (``contactlib.kernels.disc`` -> its package ``kernels``'s)."""
+    name = module.removeprefix("contactlib").lstrip(".")
+    while name not in _RANK:
+        if not name:
+            return None
+        name = name.rpartition(".")[0]
+    return _RANK[name]
+
+
+def _runtime_imports(path: Path) -> list[str]:
+    """The package modules a file imports at run time (``if TYPE_CHECKING:`` blocks left
+    out; ``from contactlib import io`` counts as ``contactlib.io``)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    typing_only = {id(sub) for node in ast.walk(tree)
+                   if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test)
+                   for sub in ast.walk(node)}
+    here = _module_name(path).split(".")
+    if path.name != "__init__.py":
+        here = here[:-1]
+    found = []
+    for node in ast.walk(tree):
+        if id(node) in typing_only:
+            continue
+        if isinstance(node, ast.Import):
+            found += [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = here[:len(here) - node.level + 1] if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            found.append(module)
+            if module in ("contactlib", "contactlib.kernels"):  # modules imported by name
+                found += [f"{module}.{alias.name}" for alias in node.names
+                          if alias.name != "__version__"]
+    return [m for m in found if m.startswith("contactlib.")
+            and m not in ("contactlib.kernels",)]
+
+
+ALL_MODULES = sorted(PACKAGE.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", ALL_MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_every_module_has_a_layer(path):
+    assert _layer_rank(_module_name(path)) is not None, (
+        f"{path.relative_to(PACKAGE.parent)} is in no layer: place it in LAYER_MODULES "
+        f"and in docs/architecture.md")
+
+
+@pytest.mark.parametrize("path", ALL_MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_imports_go_to_earlier_layers_only(path):
+    mine = _layer_rank(_module_name(path))
+    for module in _runtime_imports(path):
+        theirs = _layer_rank(module)
+        assert theirs is not None and theirs <= mine, (
+            f"{path.relative_to(PACKAGE.parent)} ({LAYER_ORDER[mine]}) imports {module} "
+            f"({LAYER_ORDER[theirs] if theirs is not None else 'no layer'}): a layer imports "
+            f"only itself and the layers before it (docs/architecture.md)")
+
+
+def test_kernels_are_closed_forms_only():
+    """docs/architecture.md: ``contactlib/kernels/`` imports nothing else of contactlib."""
+    for path in (PACKAGE / "kernels").glob("*.py"):
+        for module in _runtime_imports(path):
+            assert module.startswith("contactlib.kernels."), (path.name, module)
+
+
+def test_the_layers_page_names_every_layer():
+    text = (PACKAGE.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
+    assert " ─► ".join(LAYER_ORDER) in text

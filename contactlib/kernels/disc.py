@@ -67,7 +67,6 @@ import threading
 
 import numpy as np
 
-from ..theory import beta_of_nu
 
 try:  # the compiled route (setup.py; optional): the same bits, about five times faster
     from . import disc_fused as _fused
@@ -75,6 +74,13 @@ except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 
 __all__ = ["beta_of_nu", "pressure_disc", "shear_disc", "axis_w_disc", "w_difference_disc"]
+
+
+def beta_of_nu(nu: float) -> float:
+    """Dundurs-type coupling beta = (1 - 2 nu) / (2 (1 - nu)) for a rigid indenter
+    (defined here, with the closed forms that use it; :mod:`contactlib.theory` shows it)."""
+    return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
+
 
 _C_W = 4.0 / np.pi  # w of the pressure: (4/pi) s E(m) inside, (4/pi) r A(m') outside
 _C_SHEAR = 4.0 / (3.0 * np.pi)

@@ -144,7 +144,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import disc
-from ..theory import beta_of_nu
+from .disc import beta_of_nu
 
 __all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "THIN_RATIO_MAX", "LayerTable", "Substrate",
            "coated_remainder",

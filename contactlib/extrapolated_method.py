@@ -56,6 +56,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import energy, validate
+from .estimates import estimate
 from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
                              NEAR_ROWS_WIDTH, REFINED_FINAL_STEP, DiscreteSolution, assemble,
                              difference_rows, newton_on_k, solve_default)
@@ -937,13 +938,11 @@ def solve_extrapolated(geometry: Contact, stick_ratio: float, n: int, *,
 
 def work_error(level_work) -> float:
     """Relative error estimate of the finest level's work from its n/4, n/2, n levels: the
-    default method's (:func:`contactlib.accuracy.estimate`)."""
+    default method's (:func:`contactlib.estimates.estimate`)."""
     return _finest_level_error(level_work)
 
 
 def _finest_level_error(values) -> float:
     """The default method's relative error estimate of the last of ``values`` (levels ...,
-    n/4, n/2, n) from its last three (:func:`contactlib.accuracy.estimate`)."""
-    from .accuracy import estimate  # (accuracy plans with this module: imported late)
-
+    n/4, n/2, n) from its last three (:func:`contactlib.estimates.estimate`)."""
     return float(estimate(*tuple(values)[-3:])[0])

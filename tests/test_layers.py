@@ -19,7 +19,7 @@ NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "
             "default_method", "paper_method", "history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
             "discrete", "kernels/layer", "kernels/thin_layer", "layer_study", "fretting_solver",
-            "fretting_api")
+            "fretting_api", "estimates")
 # what the numerics never import: files and conventions (io), figures, workflow
 FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
                          "contactlib.pipeline", "contactlib.scene", "contactlib.cli")
@@ -128,7 +128,7 @@ LAYER_MODULES = {
     "model": ("indenter", "body", "model", "geometry", "theory", "profiles", "materials",
               "load_paths", "kernels"),
     "operators": ("elements", "influence", "operators", "operators_fused"),
-    "leaf numerics": ("checks", "energy"),
+    "leaf numerics": ("checks", "energy", "estimates"),
     "solver": ("discrete", "default_method", "extrapolated_method", "paper_method",
                "history_solver", "stages", "accuracy", "fretting_solver", "fretting_sphere",
                "result", "solver_fused"),

@@ -185,30 +185,38 @@ def parse_substrate(args: argparse.Namespace, base: str, geometry: str,
 
 def _profile_options(sub: argparse.ArgumentParser) -> None:
     """``--profile`` and ``--exponent`` (the indenter's shape)."""
-    sub.add_argument("--profile", metavar="{paraboloid,cone,power,flat}", default="paraboloid",
+    sub.add_argument("--profile", metavar="{paraboloid,cone,power,flat,rounded}",
+                     default="paraboloid",
                      help="the indenter's shape h ~ r^d: paraboloid (Hertz, d = 2), cone "
-                          "(d = 1; a wedge for the cylinder), power (d = --exponent) or "
-                          "flat (the flat punch, a = its radius; history only); "
-                          "for solve and sweep other than paraboloid with the default "
-                          "method only; default: paraboloid")
+                          "(d = 1; a wedge for the cylinder), power (d = --exponent), "
+                          "flat (the flat punch, a = its radius) or rounded (flat to "
+                          "--flat-ratio, a paraboloid beyond); flat and rounded for "
+                          "history only; for solve and sweep other than paraboloid with "
+                          "the default method only; default: paraboloid")
     sub.add_argument("--exponent", metavar="D", default=None,
                      help="d of --profile power, in [0.5, 8]")
+    sub.add_argument("--flat-ratio", metavar="B", default=None,
+                     help="b/a_max of --profile rounded: its flat radius over the "
+                          "frictionless contact radius at P_max, in [0, 0.9]")
 
 
 def _profile_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """``profile`` (and ``exponent``) keywords, only when not the paraboloid (the default)."""
-    if args.profile == "paraboloid" and args.exponent is None:
+    if args.profile == "paraboloid" and args.exponent is None and args.flat_ratio is None:
         return {}
     from contactlib import profiles
 
     exponent = None if args.exponent is None else _float(args.exponent)
+    flat = None if args.flat_ratio is None else _float(args.flat_ratio)
     try:
-        shape = profiles.profile(args.profile, exponent)
+        shape = profiles.profile(args.profile, exponent, flat)
     except ValueError as exc:  # shown with the option it names
-        text = args.exponent if getattr(exc, "name", "") == "exponent" else args.profile
+        text = {"exponent": args.exponent, "flat_ratio": args.flat_ratio}.get(
+            getattr(exc, "name", ""), args.profile)
         raise _usage(exc, text) from None
     return {"profile": shape.name, **({"exponent": shape.exponent}
-                                      if shape.name == "power" else {})}
+                                      if shape.name == "power" else {}),
+            **({"flat_ratio": shape.flat} if shape.is_rounded else {})}
 
 
 def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = False) -> None:
@@ -1180,9 +1188,13 @@ def format_history(res: Any) -> str:
     if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
         from contactlib import profiles
 
-        shape = profiles.profile(res.profile, res.exponent if res.profile == "power" else None)
+        shape = profiles.profile(res.profile, res.exponent if res.profile == "power" else None,
+                                 getattr(res, "flat_ratio", 0.0) if res.profile == "rounded"
+                                 else None)
         work_scale = shape.work_unit(res.geometry == "sphere")
-        head += f", profile = {res.profile}" + ("" if shape.is_flat else f" (d = {res.exponent:g})")
+        head += f", profile = {res.profile}" + (
+            "" if shape.is_flat else f" (b/a_max = {shape.flat:g})" if shape.is_rounded
+            else f" (d = {res.exponent:g})")
     if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
     if res.slab_ratio > 0:

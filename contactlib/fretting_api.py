@@ -364,13 +364,13 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
                 indenter_modulus=indenter_modulus, indenter_nu=indenter_nu)
     nu = validate.nu(nu)
     indenter_modulus, indenter_nu = validate.indenter_material(indenter_modulus, indenter_nu)
-    prof = make_profile(profile, exponent)
-    if prof.is_flat:
+    prof = make_profile(profile, exponent) if profile != "rounded" else None
+    if prof is None or prof.is_flat:
         raise validate.InputError("profile", "a power law (paraboloid, cone, power) for "
-                                  "fretting", profile, "profile 'flat' is not taken by "
-                                  "fretting yet: the flat punch's sharp edge is not covered by the fretting "
-                                  "solvers; use a power law (for example power with exponent "
-                                  "8 for a rounded punch)")
+                                  "fretting", profile, f"profile {profile!r} is not taken by "
+                                  "fretting yet: the fretting solvers cover the power laws "
+                                  "only (for a punch with rounded edges, power with exponent "
+                                  "8 comes close)")
     model = contact(geometry, nu, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
                     profile=prof)
     k = float(friction)

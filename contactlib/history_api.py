@@ -253,6 +253,7 @@ class HistoryResult:
     resolved_quantities: dict[str, bool] | None = None
     profile: str = "paraboloid"  # the indenter's shape h ~ r^d (contactlib.profiles)
     exponent: float = 2.0
+    flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
     segment_steps: tuple[int, ...] = ()  # steps of each segment of a shape or table; ()
     load_shape: dict | None = None  # the shape or table (contactlib.load_paths); None: list
     interpolation_error: float = 0.0  # of a shape between the steps (units of P_max)
@@ -429,7 +430,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             base: str = "smooth", profile: str = "paraboloid",
             exponent: float | None = None,
             tolerance: float | None = None, substrate_modulus: float | None = None,
-            substrate_nu: float | None = None) -> HistoryResult:
+            substrate_nu: float | None = None,
+            flat_ratio: float | None = None) -> HistoryResult:
     """Follow a normal load path with incremental Coulomb stick-slip.
 
     Parameters
@@ -500,14 +502,19 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         layer's) bonded to an elastic half-space or half-plane of
         ``substrate_modulus`` and ``substrate_nu``, a_max/h <= 20/1.2 (elastic
         body only: a relaxation is refused on it).
-    profile : {"paraboloid", "cone", "power"}
+    profile : {"paraboloid", "cone", "power", "flat", "rounded"}
         The indenter's shape h ~ r^d (default the paraboloid; :mod:`contactlib.profiles`).
         Then a_max is the profile's frictionless contact radius at P_max, P_max its
         frictionless load there, the pressure unit the peak pressure of the paraboloid
         with that load, and the work in units of E* (A d)^2 a_max^(2d+1) (per unit
-        length a_max^(2d)) for h = A r^d.
+        length a_max^(2d)) for h = A r^d. ``flat``: the flat punch, a_max its radius
+        (units in docs/profiles.md); ``rounded``: the rounded flat punch, h = (|r| -
+        b)^2/(2R) beyond its flat radius b, with R and the work scaled as the
+        paraboloid's.
     exponent : float, optional
         d for ``profile="power"``, in [0.5, 8] (omitted otherwise).
+    flat_ratio : float, optional
+        b/a_max for ``profile="rounded"``, in [0, 0.9] (omitted otherwise).
     tolerance : float, optional
         Plan n and steps instead (``steps`` and ``n`` then None): the accuracy,
         in [1e-5, 1e-2], asked of the path's frictional work (relative to its
@@ -615,7 +622,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             history, geometry, nu, friction, load_path, tolerance, slab_ratio=slab_ratio,
             progress=progress, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
             relaxation=relaxation, duration=duration, base=base, profile=profile,
-            exponent=exponent, substrate_modulus=substrate_modulus, substrate_nu=substrate_nu)
+            exponent=exponent, substrate_modulus=substrate_modulus, substrate_nu=substrate_nu,
+            flat_ratio=flat_ratio)
     geometry = validate.geometry(geometry)
     nu = validate.nu(nu)
     k = validate.friction(friction)
@@ -648,7 +656,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
                                   "(base 'elastic'): the substrate's kernels are elastic only; "
                                   "use a rigid base or an elastic layer")
 
-    shape = profiles.profile(profile, exponent)
+    shape = profiles.profile(profile, exponent, flat_ratio)
     model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape,
                     substrate_modulus=sub_modulus, substrate_nu=sub_nu)
     if shape.is_flat:  # the mesh is the punch's face: the contact neither grows nor creeps
@@ -799,7 +807,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         stored_energy=raw.stored_energy, viscous_work=raw.viscous_work, base=base,
         substrate_modulus=float(sub_modulus), substrate_poisson_ratio=(
             float(model.body.kernel_base.nu) if base == validate.COATED_BASE else math.nan),
-        profile=shape.name, exponent=float(shape.exponent),
+        profile=shape.name, exponent=float(shape.exponent), flat_ratio=float(shape.flat),
         segment_steps=step_plan.counts if shaped else (),
         load_shape=path.describe() if shaped else None,
         interpolation_error=step_plan.interpolation_error if shaped else 0.0)

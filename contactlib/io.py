@@ -542,7 +542,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     work_scale = f"V R**2 / (E* a_max**{ind.work_exponent})" + (
         ", V per unit length over both sides of the axis" if ind.plane_strain else "")
     if getattr(r, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
-        shape = profiles.profile(r.profile, r.exponent if r.profile == "power" else None)
+        shape = profiles.profile(r.profile, r.exponent if r.profile == "power" else None,
+                                 getattr(r, "flat_ratio", 0.0) if r.profile == "rounded" else None)
         work_scale = shape.work_unit(not ind.plane_strain).replace("^", "**") + (
             ", over both sides of the axis" if ind.plane_strain else "")
     sd, ed = ("step",), ("step", "xi")
@@ -646,6 +647,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     if getattr(r, "profile", "paraboloid") != "paraboloid":  # as the self-similar datasets
         attrs["profile"] = str(r.profile)
         attrs["profile_exponent"] = float(r.exponent)
+        if r.profile == "rounded":  # b/a_max, the flat's radius
+            attrs["profile_flat_ratio"] = float(r.flat_ratio)
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(r.mesh_extent)  # 1.2, or the creep extent (viscoelastic)

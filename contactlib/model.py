@@ -280,11 +280,17 @@ class Contact:
 
     def frictionless_radius(self, level: float) -> float:
         """Frictionless contact radius at load level P/P_max, in units of a_max: P ~ a^(d+1)
-        (rings) or a^d (strips) for h ~ r^d; Hertz's for the paraboloid; 1 for the flat punch."""
+        (rings) or a^d (strips) for h ~ r^d; Hertz's for the paraboloid; 1 for the flat punch;
+        the root of the closed-form load for the rounded one."""
         if self.profile.is_paraboloid:
             return self.indenter.hertz_radius(level)
         if self.profile.is_flat:  # the punch's radius at every load
             return 1.0
+        if self.profile.is_rounded:  # the root of the closed-form load
+            axisymmetric = self.indenter.name == "sphere"
+            load = level * self.profile.frictionless_load(axisymmetric)
+            return self.profile.rounded_radius(load, axisymmetric) if load > 0 else \
+                self.profile.flat
         d = self.profile.exponent
         return float(level ** (1.0 / (d + 1.0 if self.indenter.name == "sphere" else d)))
 

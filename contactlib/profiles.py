@@ -55,6 +55,23 @@ solution of every power law solves as a grows (the pressure increment at fixed r
 ~ (a^2 - r^2)^(-1/2) for every profile). Hence c/a(k) of the flat punch is the k(c/a)
 of the power laws, and P/(2 E* a delta) is their dP/d(delta) over 2 E* a.
 
+The rounded flat punch
+----------------------
+``rounded``: flat over r <= b and a paraboloid beyond it, h = (|r| - b)^2/(2R) for
+|r| > b (``flat_ratio`` = b over the length unit; Ciavarella's rounded punch of fretting
+pads). Its contact grows from b, so the pressure has a smooth edge, and the increment at
+contact radius a is again the flat punch's problem on a: under a monotonic load its stick
+ratio is the power laws' c/a(k) at every load. Frictionless closed forms (Sneddon's
+integrals; R = E* = 1):
+
+    delta = a [sqrt(a^2 - b^2) - b acos(b/a)],
+    P     = 2 [(2 a^2/3 - b^2/6) sqrt(a^2 - b^2) - (a^2 b/2) acos(b/a)],
+    P     = (1/2) [a^2 acos(b/a) - b sqrt(a^2 - b^2)] per unit length (plane strain),
+    p(r)  = (1/pi) int_max(r, b)^a [2 sqrt(t^2 - b^2) - b acos(b/t)] / sqrt(t^2 - r^2) dt.
+
+Only ``history`` takes it; its length unit is a_max, the frictionless contact radius at
+P_max, so ``flat_ratio`` = b/a_max.
+
 Units of the flat punch: a = E* = 1 and the load unit is ``frictionless_load``, 2
 (sphere: P = 2 E* a delta at delta = 1) or 1 (cylinder: E* a per unit length), so
 displacements are in units of P_max/(2 E* a) (sphere) or P_max/E* (cylinder).
@@ -67,15 +84,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Profile", "PARABOLOID", "FLAT", "profile", "PROFILES"]
+__all__ = ["Profile", "PARABOLOID", "FLAT", "profile", "PROFILES", "FLAT_RATIO_RANGE"]
 
-PROFILES = ("paraboloid", "cone", "power", "flat")
+PROFILES = ("paraboloid", "cone", "power", "flat", "rounded")
 """The names :func:`profile` accepts."""
 
 EXPONENT_RANGE = (0.5, 8.0)
 """The exponents d the solvers accept: measured down to d = 0.5 (the pressure's axis
 singularity, r^(d-1), still integrable for the piecewise-linear elements) and up to
 d = 8 (an almost flat punch with rounded edges)."""
+
+FLAT_RATIO_RANGE = (0.0, 0.9)
+"""b/a_max of the rounded flat punch: up to 0.9, where the rounded edge a_max - b spans
+0.1 a_max (24 elements of the default history mesh)."""
 
 
 @dataclass(frozen=True)
@@ -84,20 +105,29 @@ class Profile:
 
     Parameters
     ----------
-    name : {"paraboloid", "cone", "power", "flat"}
+    name : {"paraboloid", "cone", "power", "flat", "rounded"}
         The name it was made from (``paraboloid``: d = 2, ``cone``: d = 1, ``flat``:
-        d = inf, the flat punch of radius 1).
+        d = inf, the flat punch of radius 1; ``rounded``: the rounded flat punch).
     exponent : float
-        d > 0 (``inf`` for the flat punch).
+        d > 0 (``inf`` for the flat punch, 2 for the rounded one's edge).
+    flat : float
+        b, the rounded punch's flat radius in the length unit (0 otherwise).
     """
 
     name: str
     exponent: float
+    flat: float = 0.0
 
     @property
     def is_paraboloid(self) -> bool:
-        """Whether d = 2: Hertz's profile, computed by the same operations as before."""
-        return self.exponent == 2.0
+        """Whether d = 2 with no flat: Hertz's profile, computed by the same operations as
+        before."""
+        return self.exponent == 2.0 and self.name != "rounded"
+
+    @property
+    def is_rounded(self) -> bool:
+        """Whether this is the rounded flat punch (flat to b, a paraboloid beyond)."""
+        return self.name == "rounded"
 
     @property
     def is_flat(self) -> bool:
@@ -112,6 +142,8 @@ class Profile:
             return 0.5 * r**2
         if self.is_flat:  # the punch's face; beyond its edge the body never reaches it
             return np.where(np.abs(r) <= 1.0, 0.0, np.inf)
+        if self.is_rounded:
+            return 0.5 * np.maximum(np.abs(r) - self.flat, 0.0) ** 2
         d = self.exponent
         return np.abs(r) ** d / d
 
@@ -128,6 +160,8 @@ class Profile:
         gap is 0 over the whole contact."""
         if self.is_flat:
             return abs(float(delta))
+        if self.is_rounded:  # the edge's (r - b)^2, or the approach while the edge is short
+            return max(2.0 * float(self.gap(r_edge)), abs(float(delta)))
         return 2.0 * float(self.gap(r_edge))
 
     def adherence(self, r: np.ndarray) -> np.ndarray:
@@ -162,16 +196,41 @@ class Profile:
         """
         if self.is_flat:  # Boussinesq's 2 E* a delta at delta = 1; E* a per length
             return 2.0 if axisymmetric else 1.0
+        if self.is_rounded:
+            return self.rounded_load(1.0, axisymmetric)
         d = self.exponent
         if axisymmetric:
             return 2.0 / (d + 1.0) * self._gamma_ratio()
         return 0.5 * math.pi / self._gamma_ratio()
+
+    def rounded_load(self, a: float, axisymmetric: bool) -> float:
+        """The rounded punch's frictionless load at contact radius ``a`` >= b (R = E* = 1;
+        per unit length in plane strain; see the module's notes)."""
+        b = self.flat
+        root = math.sqrt(max(a * a - b * b, 0.0))
+        angle = math.acos(min(b / a, 1.0)) if a > 0 else 0.5 * math.pi
+        if axisymmetric:
+            return 2.0 * ((2.0 * a * a / 3.0 - b * b / 6.0) * root - 0.5 * a * a * b * angle)
+        return 0.5 * (a * a * angle - b * root)
+
+    def rounded_radius(self, load: float, axisymmetric: bool) -> float:
+        """The contact radius a > b at which :meth:`rounded_load` is ``load`` (> 0)."""
+        from scipy.optimize import brentq
+
+        hi = 1.0
+        while self.rounded_load(hi, axisymmetric) < load:
+            hi *= 2.0
+        return float(brentq(lambda a: self.rounded_load(a, axisymmetric) - load, self.flat,
+                            hi, xtol=1e-15, rtol=1e-15))
 
     def frictionless_approach(self) -> float:
         """delta at a = 1 of the axisymmetric profile (1 for the paraboloid, pi/2 for the cone,
         1 for the flat punch at its load unit)."""
         if self.is_flat:
             return 1.0
+        if self.is_rounded:
+            b = self.flat
+            return math.sqrt(1.0 - b * b) - b * math.acos(b)
         return self._gamma_ratio() / self.exponent
 
     def reference_pressure(self, axisymmetric: bool) -> float:
@@ -187,9 +246,9 @@ class Profile:
         """The frictional work's factor of a monotonic loading to a = 1 (units E* (A d)^2
         a^(2d+1), per unit length a^(2d)): fields ~ a^(d-1) times slip rates ~ a^(d-1)
         over the area a^2 (a), integrated in a: 2 pi/(2d + 1) and 2/(2d)."""
-        if self.is_flat:
-            raise ValueError("the flat punch has no self-similar loading (its contact is "
-                             "fixed); its work comes from history")
+        if self.is_flat or self.is_rounded:
+            raise ValueError(f"the {self.name} punch has no self-similar loading; its work "
+                             f"comes from history")
         d = self.exponent
         return 2.0 * math.pi / (2.0 * d + 1.0) if axisymmetric else 1.0 / d
 
@@ -202,7 +261,7 @@ class Profile:
         punch of radius a (plane strain: V/(E* delta0^2) per unit length, delta0 =
         P_max/E*)."""
         per = "" if axisymmetric else " per unit length"
-        if self.is_paraboloid:
+        if self.is_paraboloid or self.is_rounded:
             return f"V R^2/(E* {length}^{5 if axisymmetric else 4}){per}"
         if self.is_flat:
             if axisymmetric:
@@ -243,26 +302,42 @@ FLAT = Profile("flat", math.inf)
 """The flat punch of radius 1 (``history`` only)."""
 
 
-def profile(name: str = "paraboloid", exponent: float | None = None) -> Profile:
+def profile(name: str = "paraboloid", exponent: float | None = None,
+            flat_ratio: float | None = None) -> Profile:
     """The profile of a name (and, for ``power``, an exponent); checked.
 
     Parameters
     ----------
-    name : {"paraboloid", "cone", "power", "flat"}
+    name : {"paraboloid", "cone", "power", "flat", "rounded"}
         ``paraboloid`` (default): d = 2; ``cone``: d = 1 (a wedge for the cylinder);
-        ``power``: d = ``exponent``; ``flat``: the flat punch (``history`` only).
+        ``power``: d = ``exponent``; ``flat``: the flat punch; ``rounded``: the rounded
+        flat punch (these two ``history`` only).
     exponent : float, optional
         d for ``power``, in :data:`EXPONENT_RANGE`; must be omitted otherwise.
+    flat_ratio : float, optional
+        b/a_max for ``rounded``, in :data:`FLAT_RATIO_RANGE`; must be omitted otherwise.
 
     Raises
     ------
     contactlib.validate.InputError
-        On an unknown name, a missing or out-of-range exponent, or an exponent given
-        with a named profile.
+        On an unknown name, a missing or out-of-range exponent or flat ratio, or either
+        given with a profile that does not take it.
     """
     from . import validate
 
     name = validate.choice("profile", name, PROFILES)
+    if name != "rounded" and flat_ratio is not None:
+        raise validate.InputError("flat_ratio", f"omitted for the {name} profile (it is the "
+                                  "rounded punch's b/a_max); use profile 'rounded'", flat_ratio)
+    if name == "rounded":
+        if exponent is not None:
+            raise validate.InputError("exponent", "omitted for the rounded profile (its edge "
+                                      "is a paraboloid)", exponent)
+        if flat_ratio is None:
+            raise validate.InputError("flat_ratio", "given for the rounded profile (b/a_max)",
+                                      flat_ratio)
+        lo, hi = FLAT_RATIO_RANGE
+        return Profile("rounded", 2.0, validate.number("flat_ratio", flat_ratio, lo=lo, hi=hi))
     if name != "power":
         if exponent is not None:
             raise validate.InputError("exponent", f"omitted for the {name} profile (its d is "

@@ -58,7 +58,7 @@ _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "sti
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
                  "duration", "profile", "exponent", "tangential_path", "bulk_stress",
-                 "substrate_modulus", "substrate_nu")
+                 "substrate_modulus", "substrate_nu", "flat_ratio")
 # keys of a history scene that a fretting path (tangential_path) does not take: the
 # fretting solver covers the half-plane, elastic bodies only
 _NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration", "substrate_modulus",
@@ -80,25 +80,32 @@ def _base_spec(base: str) -> dict[str, str]:
     return {} if base == "smooth" else {"base": base}
 
 
-def _profile_spec(profile: str, exponent: float | None) -> dict[str, Any]:
-    """``profile`` (and ``exponent``) keywords, {} for the paraboloid (keys and jobs as before)."""
+def _profile_spec(profile: str, exponent: float | None,
+                  flat_ratio: float | None = None) -> dict[str, Any]:
+    """``profile`` (and ``exponent`` or ``flat_ratio``) keywords, {} for the paraboloid (keys
+    and jobs as before)."""
     if profile == "paraboloid":
         return {}
-    return {"profile": profile, **({} if exponent is None else {"exponent": exponent})}
+    return {"profile": profile, **({} if exponent is None else {"exponent": exponent}),
+            **({} if flat_ratio is None else {"flat_ratio": flat_ratio})}
 
 
-def _scene_profile(raw: Mapping[str, Any], bad: "_Problems") -> tuple[str, float | None]:
-    """(name, exponent) of a scene's ``profile``/``exponent`` keys, checked by
-    :func:`contactlib.profiles.profile` (the spelling of ``--profile``/``--exponent``);
-    exponent None unless ``power``. A problem is recorded under the key it concerns."""
-    if "profile" not in raw and "exponent" not in raw:
-        return "paraboloid", None
+def _scene_profile(raw: Mapping[str, Any],
+                   bad: "_Problems") -> tuple[str, float | None, float | None]:
+    """(name, exponent, flat_ratio) of a scene's ``profile``/``exponent``/``flat_ratio``
+    keys, checked by :func:`contactlib.profiles.profile` (the spelling of ``--profile``,
+    ``--exponent``, ``--flat-ratio``); exponent None unless ``power``, flat_ratio None
+    unless ``rounded``. A problem is recorded under the key it concerns."""
+    if not {"profile", "exponent", "flat_ratio"} & set(raw):
+        return "paraboloid", None, None
     try:
-        shape = profiles.profile(raw.get("profile", "paraboloid"), raw.get("exponent"))
+        shape = profiles.profile(raw.get("profile", "paraboloid"), raw.get("exponent"),
+                                 raw.get("flat_ratio"))
     except validate.InputError as exc:
         bad.add(exc.name, str(exc))
-        return "paraboloid", None
-    return shape.name, (shape.exponent if shape.name == "power" else None)
+        return "paraboloid", None, None
+    return (shape.name, shape.exponent if shape.name == "power" else None,
+            shape.flat if shape.is_rounded else None)
 
 
 def _ratio_digest(values: tuple[float, ...]) -> str:
@@ -361,11 +368,10 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     if base == validate.COATED_BASE and "tolerance" in raw:
         bad.add("tolerance", "tolerance is not planned on a coated body (base 'elastic'): "
                              "give n (method 'default') instead")
-    profile, exponent = _scene_profile(raw, bad)
-    if profile == "flat":
-        bad.add("profile", "profile 'flat' is for history only (kind: history): the flat "
-                           "punch's contact radius is fixed, so it has no self-similar "
-                           "solution")
+    profile, exponent, _ = _scene_profile(raw, bad)
+    if profile in ("flat", "rounded"):
+        bad.add("profile", f"profile {profile!r} is for history only (kind: history): the "
+                           f"punch's contact does not grow self-similarly")
     elif profile != "paraboloid":
         if "tolerance" in raw:
             bad.add("tolerance", f"tolerance is planned for the paraboloid only; for the "
@@ -448,6 +454,8 @@ class HistoryScene:
     profile, exponent : str, float or None
         The indenter's profile (keys ``profile``, ``exponent``; default the
         paraboloid), as ``contactlib history --profile --exponent`` takes it.
+    flat_ratio : float or None
+        b/a_max of ``profile: rounded`` (key ``flat_ratio``); None otherwise.
     tangential_path : tuple of float
         Q/(k P_max) at the points of ``load_path`` (key ``tangential_path``): a
         fretting path, run by :func:`contactlib.fretting` instead of
@@ -483,6 +491,7 @@ class HistoryScene:
     bulk_stress: tuple[float, ...] = ()
     substrate_modulus: float = float("inf")
     substrate_nu: float | None = None
+    flat_ratio: float | None = None
 
     @property
     def fretting(self) -> bool:
@@ -519,7 +528,7 @@ class HistoryScene:
         spec.update(_base_spec(self.base))
         if self.base == validate.COATED_BASE:
             spec.update(substrate_modulus=self.substrate_modulus, substrate_nu=self.substrate_nu)
-        return spec | _profile_spec(self.profile, self.exponent)
+        return spec | _profile_spec(self.profile, self.exponent, self.flat_ratio)
 
 
 def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any,
@@ -541,9 +550,9 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
         return (), ()
     tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
-    if raw.get("profile") == "flat":
-        bad.add("profile", "profile 'flat' is not taken by a fretting scene (tangential_path): "
-                           "the flat punch's sharp edge is not covered by the fretting solvers")
+    if raw.get("profile") in ("flat", "rounded"):
+        bad.add("profile", f"profile {raw['profile']!r} is not taken by a fretting scene "
+                           f"(tangential_path): the fretting solvers cover the power laws only")
         return (), ()
     if raw["geometry"] == "sphere":
         bad.add("geometry", "a fretting scene covers the cylinder only; the sphere's fretting "
@@ -616,7 +625,7 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
         bad.add("relaxation", "relaxation is not available on a coated body (base 'elastic'): "
                               "the substrate's kernels are elastic only; use a rigid base or "
                               "an elastic layer")
-    profile, exponent = _scene_profile(raw, bad)
+    profile, exponent, flat_ratio = _scene_profile(raw, bad)
     tang, sigma = _fretting_paths(raw, ks, n, bad) if fretting else ((), ())
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
@@ -625,7 +634,7 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                         indenter_nu=ind[1], relaxation=prony, durations=durations,
                         base=base, profile=profile, exponent=exponent, tangential_path=tang,
                         bulk_stress=sigma, substrate_modulus=substrate[0],
-                        substrate_nu=substrate[1])
+                        substrate_nu=substrate[1], flat_ratio=flat_ratio)
 
 
 @dataclass(frozen=True, repr=False)

@@ -39,6 +39,8 @@ def test_schema_follows_validate() -> None:
     assert KEYS["substrate_nu"]["exclusiveMinimum"] == -1 and KEYS["substrate_nu"]["maximum"] == 0.5
     assert KEYS["profile"]["enum"] == list(profiles.PROFILES)
     assert (KEYS["exponent"]["minimum"], KEYS["exponent"]["maximum"]) == profiles.EXPONENT_RANGE
+    assert (KEYS["flat_ratio"]["minimum"], KEYS["flat_ratio"]["maximum"]) == \
+        profiles.FLAT_RATIO_RANGE
     assert KEYS["outputs"]["items"]["enum"] == list(validate.OUTPUTS)
     assert KEYS["n"]["maximum"] == max(validate.MAX_N, validate.HISTORY_MAX_N)
     assert KEYS["n"]["minimum"] == min(validate.DEFAULT_N["paper"], validate.HISTORY_MIN_N,

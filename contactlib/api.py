@@ -60,13 +60,13 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
                                   "'elastic'): give n (method 'default') instead")
     n = validate.n(n, method)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
-    shape = profiles.PARABOLOID if profile == "rounded" else profiles.profile(profile, exponent)
-    if shape.is_flat or profile == "rounded":  # (before the rounded punch's flat_ratio)
+    if profile in profiles.PROFILES and not profiles.takes(profile, "self-similar"):
         raise validate.InputError(
             "profile", "a power law (paraboloid, cone, power) for solve and sweep", profile,
             f"profile {profile!r} is for history only: the punch's contact does not grow "
             f"self-similarly; run history with profile {profile!r} (contactlib history "
             f"--profile {profile}); its stick ratio is the power laws' c/a at the same k")
+    shape = profiles.profile(profile, exponent)
     if not shape.is_paraboloid and method != "default":
         raise validate.InputError("method", f"'default' for the {shape.name} profile", method,
                                   f"method {method!r} is measured for the paraboloid only (the "

@@ -1186,15 +1186,9 @@ def format_history(res: Any) -> str:
         head += ", path " + ", ".join(f"{k} {_g(v) if not isinstance(v, str) else v}"
                                       for k, v in res.load_shape.items())
     if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
-        from contactlib import profiles
-
-        shape = profiles.profile(res.profile, res.exponent if res.profile == "power" else None,
-                                 getattr(res, "flat_ratio", 0.0) if res.profile == "rounded"
-                                 else None)
+        shape = res.profile_shape()
         work_scale = shape.work_unit(res.geometry == "sphere")
-        head += f", profile = {res.profile}" + (
-            "" if shape.is_flat else f" (b/a_max = {shape.flat:g})" if shape.is_rounded
-            else f" (d = {res.exponent:g})")
+        head += f", profile = {res.profile}" + shape.label()
     if ind.reports_layer(res.slab_ratio):
         head += f", a_max/h = {res.slab_ratio:g}"
     if res.slab_ratio > 0:

@@ -261,6 +261,11 @@ class HistoryResult:
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
 
+    def profile_shape(self) -> profiles.Profile:
+        """The indenter's profile (:class:`contactlib.profiles.Profile`) of the run."""
+        return profiles.profile(self.profile, self.exponent if self.profile == "power" else None,
+                                self.flat_ratio if self.profile == "rounded" else None)
+
     def segment_work(self) -> np.ndarray:
         """Frictional work done during each path segment (scaled as ``frictional_work``)."""
         ends = [self.segment_end(i) for i in range(len(self.load_path))]
@@ -659,7 +664,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     shape = profiles.profile(profile, exponent, flat_ratio)
     model = contact(geometry, nu, slab, ratio, nu1, base, relaxation=prony, profile=shape,
                     substrate_modulus=sub_modulus, substrate_nu=sub_nu)
-    if shape.is_flat:  # the mesh is the punch's face: the contact neither grows nor creeps
+    if shape.fixed_contact:  # the mesh is the punch's face: the contact neither grows nor creeps
         extent = 1.0
     else:
         extent = coated_extent(model, geometry, slab) \
@@ -733,7 +738,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         notes.append(f"the slip zone at the largest load spans only {slipping} elements: "
                      f"the frictional work is poorly resolved, use a larger n")
     # the flat punch's mesh is its face: there the contact ends at the mesh's end by design
-    overflow = not shape.is_flat and bool(np.any(raw.state[:, -2:] > 0))
+    overflow = not shape.fixed_contact and bool(np.any(raw.state[:, -2:] > 0))
     if overflow:
         notes.append("the contact reached the end of the mesh: results are not valid")
         resolved[:] = False

@@ -548,7 +548,7 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
         d = 1.0 - np.abs(q[j - 3:j]) / (k * p[j - 3:j])  # elements j-3, j-2, j-1
     if not (np.all(np.isfinite(d)) and d[0] > d[1] > d[2] >= 0.0):
         return edge
-    t = d ** (2.0 if ops.model.profile.is_flat else 2.0 / 3.0)
+    t = d ** ops.model.profile.stick_edge_power
     last, before = t[1] - t[2], t[0] - t[1]
     if not (1.0 / 1.5 <= last / before <= 1.5):
         return edge

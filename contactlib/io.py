@@ -534,7 +534,6 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     import xarray as xr
 
     from contactlib import history_solver as hs
-    from contactlib import profiles
 
     r = result
     ind = indenter(r.geometry)
@@ -542,8 +541,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     work_scale = f"V R**2 / (E* a_max**{ind.work_exponent})" + (
         ", V per unit length over both sides of the axis" if ind.plane_strain else "")
     if getattr(r, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
-        shape = profiles.profile(r.profile, r.exponent if r.profile == "power" else None,
-                                 getattr(r, "flat_ratio", 0.0) if r.profile == "rounded" else None)
+        shape = r.profile_shape()
         work_scale = shape.work_unit(not ind.plane_strain).replace("^", "**") + (
             ", over both sides of the axis" if ind.plane_strain else "")
     sd, ed = ("step",), ("step", "xi")
@@ -645,10 +643,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         attrs["load_path_interpolation_error"] = float(r.interpolation_error)
     attrs.update(_layer_attrs(ind, r))
     if getattr(r, "profile", "paraboloid") != "paraboloid":  # as the self-similar datasets
-        attrs["profile"] = str(r.profile)
-        attrs["profile_exponent"] = float(r.exponent)
-        if r.profile == "rounded":  # b/a_max, the flat's radius
-            attrs["profile_flat_ratio"] = float(r.flat_ratio)
+        attrs.update(shape.attributes())
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
     attrs["mesh_extent"] = float(r.mesh_extent)  # 1.2, or the creep extent (viscoelastic)
@@ -660,12 +655,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
             attrs["resolved_quantities"] = " ".join(
                 name for name, ok in r.resolved_quantities.items() if ok)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
-    if getattr(r, "profile", "paraboloid") == "flat":  # no R: lengths and displacements
-        attrs["length_scale"] = "a_max: the flat punch's radius a"
-        attrs["displacement_scale"] = (
-            "tangential_displacement and indentation are over delta0 = P_max/(2 E* a)"
-            if not ind.plane_strain else "tangential_displacement and indentation are over "
-            "delta0 = P_max/E* (P_max per unit length)")
+    if getattr(r, "profile", "paraboloid") != "paraboloid":  # the flat punch: no R
+        attrs.update(shape.scale_attributes(not ind.plane_strain))
     if r.message:
         attrs["message"] = r.message
     attrs["contactlib_version"] = version()

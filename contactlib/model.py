@@ -284,15 +284,7 @@ class Contact:
         the root of the closed-form load for the rounded one."""
         if self.profile.is_paraboloid:
             return self.indenter.hertz_radius(level)
-        if self.profile.is_flat:  # the punch's radius at every load
-            return 1.0
-        if self.profile.is_rounded:  # the root of the closed-form load
-            axisymmetric = self.indenter.name == "sphere"
-            load = level * self.profile.frictionless_load(axisymmetric)
-            return self.profile.rounded_radius(load, axisymmetric) if load > 0 else \
-                self.profile.flat
-        d = self.profile.exponent
-        return float(level ** (1.0 / (d + 1.0 if self.indenter.name == "sphere" else d)))
+        return self.profile.frictionless_radius(level, self.indenter.name == "sphere")
 
     def shear_shape(self, x: np.ndarray) -> np.ndarray:
         """Shear = shape(x) * phi(x): shape r for the sphere, 1 for the cylinder."""

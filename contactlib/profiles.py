@@ -94,6 +94,22 @@ EXPONENT_RANGE = (0.5, 8.0)
 singularity, r^(d-1), still integrable for the piecewise-linear elements) and up to
 d = 8 (an almost flat punch with rounded edges)."""
 
+SOLVERS = ("self-similar", "history", "fretting", "stresses")
+"""What may take a profile: the self-similar methods (``solve``, ``sweep``), ``history``,
+``fretting`` (a tangential load) and the subsurface stresses of a solution or history step."""
+
+_SOLVERS_OF = {"flat": ("history",), "rounded": ("history", "stresses")}  # others: all
+
+
+def takes(name: str, solver: str) -> bool:
+    """Whether the profile called ``name`` is taken by ``solver`` (one of :data:`SOLVERS`).
+
+    A solver asks this before it builds the profile (which may need parameters it has
+    not been given), and refuses in its own words where it is False.
+    """
+    return solver in _SOLVERS_OF.get(name, SOLVERS)
+
+
 FLAT_RATIO_RANGE = (0.0, 0.9)
 """b/a_max of the rounded flat punch: up to 0.9, where the rounded edge a_max - b spans
 0.1 a_max (24 elements of the default history mesh)."""
@@ -133,6 +149,63 @@ class Profile:
     def is_flat(self) -> bool:
         """Whether this is the flat punch (d = inf): fixed contact radius 1, sharp edge."""
         return math.isinf(self.exponent)
+
+    def takes(self, solver: str) -> bool:
+        """Whether ``solver`` (one of :data:`SOLVERS`) takes this profile (:func:`takes`)."""
+        return takes(self.name, solver)
+
+    @property
+    def fixed_contact(self) -> bool:
+        """Whether the contact radius is the punch's at every load (the flat punch): the
+        history mesh is then the punch's face, and its end is the contact's edge."""
+        return self.is_flat
+
+    @property
+    def stick_edge_power(self) -> float:
+        """q of the stick-edge fit, the power of the traction deficit d = 1 - |q|/(kp)
+        that is linear at the edge: 2/3 where the stick edge advances with the contact
+        (d ~ (c - r)^(3/2)), 2 where it stands (the flat punch, d ~ (c - r)^(1/2))."""
+        return 2.0 if self.fixed_contact else 2.0 / 3.0
+
+    def label(self) -> str:
+        """The profile's parameter as the summaries show it: " (d = 3)", " (b/a_max =
+        0.5)", or "" for the flat punch."""
+        if self.is_flat:
+            return ""
+        if self.is_rounded:
+            return f" (b/a_max = {self.flat:g})"
+        return f" (d = {self.exponent:g})"
+
+    def attributes(self) -> dict[str, float | str]:
+        """Dataset attributes of the profile: ``profile``, ``profile_exponent`` and, for the
+        rounded punch, ``profile_flat_ratio``."""
+        out: dict[str, float | str] = {"profile": self.name,
+                                       "profile_exponent": float(self.exponent)}
+        if self.is_rounded:
+            out["profile_flat_ratio"] = float(self.flat)
+        return out
+
+    def scale_attributes(self, axisymmetric: bool) -> dict[str, str]:
+        """Dataset attributes that replace the paraboloid's scalings of a history: the flat
+        punch has no R (lengths over its radius, displacements over delta0)."""
+        if not self.is_flat:
+            return {}
+        return {"length_scale": "a_max: the flat punch's radius a",
+                "displacement_scale": "tangential_displacement and indentation are over "
+                + ("delta0 = P_max/(2 E* a)" if axisymmetric else
+                   "delta0 = P_max/E* (P_max per unit length)")}
+
+    def frictionless_radius(self, level: float, axisymmetric: bool) -> float:
+        """Frictionless contact radius at load level P/P_max (units of the radius at P_max):
+        P ~ a^(d+1) (rings) or a^d (strips) for h ~ r^d; 1 for the flat punch; the root
+        of the closed-form load for the rounded one."""
+        if self.is_flat:
+            return 1.0
+        if self.is_rounded:
+            load = level * self.frictionless_load(axisymmetric)
+            return self.rounded_radius(load, axisymmetric) if load > 0 else self.flat
+        d = self.exponent
+        return float(level ** (1.0 / (d + 1.0 if axisymmetric else d)))
 
     # ------------------------------------------------------------------ what solvers use
     def gap(self, r: np.ndarray) -> np.ndarray:

@@ -368,11 +368,14 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     if base == validate.COATED_BASE and "tolerance" in raw:
         bad.add("tolerance", "tolerance is not planned on a coated body (base 'elastic'): "
                              "give n (method 'default') instead")
-    profile, exponent, _ = _scene_profile(raw, bad)
-    if profile in ("flat", "rounded"):
-        bad.add("profile", f"profile {profile!r} is for history only (kind: history): the "
-                           f"punch's contact does not grow self-similarly")
-    elif profile != "paraboloid":
+    if raw.get("profile") in profiles.PROFILES and not profiles.takes(raw["profile"],
+                                                                      "self-similar"):
+        bad.add("profile", f"profile {raw['profile']!r} is for history only (kind: history): "
+                           f"the punch's contact does not grow self-similarly")
+        profile, exponent = "paraboloid", None
+    else:
+        profile, exponent, _ = _scene_profile(raw, bad)
+    if profile != "paraboloid":
         if "tolerance" in raw:
             bad.add("tolerance", f"tolerance is planned for the paraboloid only; for the "
                                  f"{profile} profile give n (method 'default') instead")
@@ -550,7 +553,8 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
         return (), ()
     tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
-    if raw.get("profile") in ("flat", "rounded"):
+    if raw.get("profile") in profiles.PROFILES and not profiles.takes(raw["profile"],
+                                                                      "fretting"):
         bad.add("profile", f"profile {raw['profile']!r} is not taken by a fretting scene "
                            f"(tangential_path): the fretting solvers cover the power laws only")
         return (), ()

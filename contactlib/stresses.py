@@ -914,7 +914,9 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
 
     from .validate import InputError
 
-    if getattr(result, "profile", "paraboloid") == "flat":
+    from .profiles import takes
+
+    if not takes(getattr(result, "profile", "paraboloid"), "stresses"):
         raise InputError("result", "a history of a power-law profile", "profile 'flat'",
                          "result of profile 'flat': stresses are not available under the "
                          "flat punch, whose pressure is "

@@ -57,6 +57,8 @@ judge it.) ``frictionless source`` is ``dataset`` when the scene holds the case
 c/a = 0, ``solve`` when it was computed by a frictionless solve with the
 scene's geometry, ν, method, n and a/h. The ``history`` columns are empty
 (NaN) on self-similar rows, the per-case columns NaN on history rows.
+``history c/a at peak load`` is taken at the first step of the largest load, or, on a
+fretting path (a tangential load), of the largest tangential load |Q|.
 """
 
 INDENTER_COLUMNS = ("indenter E1/E2", "indenter nu", "dundurs beta")
@@ -234,6 +236,11 @@ def _history(ds: xr.Dataset) -> list[dict[str, Any]]:
     if load.ndim > 1:
         load = load.reshape(-1, load.shape[-1])[0]
     peak = int(np.argmax(load))  # the first step at the largest load
+    if "tangential_load_ratio" in ds:  # fretting: the first step at the largest |Q|
+        tangential = np.abs(np.asarray(ds["tangential_load_ratio"].values, dtype=float))
+        tangential = tangential.reshape(-1, tangential.shape[-1])[0]
+        if np.any(tangential > 0):
+            peak = int(np.argmax(tangential))
     done = conv.all(axis=1)  # a run with a step that did not converge has no data
     c_peak = np.where(done, by_k("stick_ratio").astype(float).reshape(ks.size, -1)[:, peak],
                       np.nan)

@@ -104,3 +104,16 @@ def test_a_case_not_resolved_counts_as_a_failure():
     row = key_numbers([ds])[0]
     assert row["converged"] == 2
     assert row["consistent up to c/a"] < 0.5  # the good range stops before it
+
+
+def test_fretting_key_number_is_the_stick_ratio_at_the_largest_tangential_load():
+    """beta = 0 (nu = 1/2): Cattaneo's c/a = sqrt(1 - Q/kP) at Q = 0.5 k P, not the full
+    stick (c/a = 1) of the normal loading before it."""
+    from contactlib import fretting
+
+    from contactlib.io import fretting_to_dataset
+
+    ds = fretting_to_dataset(fretting("cylinder", 0.5, 0.3, [0, 1, 1], [0, 0, 0.5], 8,
+                                         n=64))
+    row = key_numbers([ds])[0]
+    assert abs(row["history c/a at peak load"] - math.sqrt(0.5)) < 2e-3

@@ -100,7 +100,7 @@ EXTRAPOLATED_ERROR_AT_256 = np.array([1.5e-7, 1.6e-7, 2.1e-7, 4.0e-7, 6.1e-7, 6.
 LOG_ESTIMATE_AT_1024 = np.array([2.0e-10, 2.0e-10, 2.8e-10, 5.3e-10, 9.0e-10, 6.3e-10, 3.3e-10,
                                  2.4e-10, 2.4e-10])
 LOG_N_MULTIPLE = 512
-PLANNED_METHODS = ("default", "extrapolated")
+PLANNED_METHODS = tuple(name for name, m in validate.METHOD_REGISTRY.items() if m.planned)
 # Time a case costs relative to the default method's at the same n, both with their error
 # estimates (benchmarks/bench_frontier.py, part d: stages.solve_cases, 5 cases c/a = 0.1
 # ... 0.9): extrapolated / default at n = 128, 256, 512 was 0.86, 0.92, 0.84 (sphere) and
@@ -236,7 +236,7 @@ def _cheapest_n(method: str, geometry: Contact, stick_ratios: Sequence[float],
     without it the plan picked an n whose solve could not meet the tolerance (sphere,
     nu = 0.4999999, c/a = 1e-6, tolerance 3e-6: n = 1792, 19 s, estimate 6.4e-5).
     """
-    step = validate.EXTRAPOLATED_N_MULTIPLE if method == "extrapolated" else 64
+    step = max(validate.method_of(method).n_multiple, 64)  # 64: the default method's plan
     inside = np.array([float(c) for c in stick_ratios if 0.0 < float(c) < 1.0])
     limit = tolerance / PLAN_SAFETY[method]
     for n in range(max(step, MIN_N), MAX_N + 1, step):

@@ -67,7 +67,7 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
             f"self-similarly; run history with profile {profile!r} (contactlib history "
             f"--profile {profile}); its stick ratio is the power laws' c/a at the same k")
     shape = profiles.profile(profile, exponent)
-    if not shape.is_paraboloid and method != "default":
+    if not shape.is_paraboloid and not validate.method_of(method).any_profile:
         raise validate.InputError("method", f"'default' for the {shape.name} profile", method,
                                   f"method {method!r} is measured for the paraboloid only (the "
                                   "paper's scheme and the extrapolated method's error model); "

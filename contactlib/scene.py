@@ -212,7 +212,7 @@ class Scene:
             key += f"-E{self.indenter_modulus!r}-nu1{self.indenter_nu!r}"
         if self._substrate_spec():  # (the profile is not in the operators: shared)
             key += f"-E2_{self.substrate_modulus!r}-nu2_{self.substrate_nu!r}"
-        if self.method in ("default", "extrapolated"):  # a mesh per stick ratio
+        if validate.method_of(self.method).nodal:  # a mesh per stick ratio
             key += "-c" + _ratio_digest(self.solved_ratios)
         return key
 
@@ -379,7 +379,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
         if "tolerance" in raw:
             bad.add("tolerance", f"tolerance is planned for the paraboloid only; for the "
                                  f"{profile} profile give n (method 'default') instead")
-        elif method not in (None, "default"):
+        elif method is not None and not validate.method_of(method).any_profile:
             bad.add("method", f"method {method!r} is measured for the paraboloid only; use "
                               f"method 'default' for the {profile} profile")
     outputs = raw.get("outputs", list(DEFAULT_OUTPUTS))
@@ -407,7 +407,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     ratios = None
     if n is not None and "stick_ratios" in raw:
         ratios = bad.check("stick_ratios", validate.stick_ratios, raw["stick_ratios"], n)
-        if ratios is not None and method in ("paper", "paper-literal"):
+        if ratios is not None and not validate.method_of(method).nodal:
             for c in ratios:
                 if bad.check("stick_ratios", validate.paper_multiple, c, n,
                              "stick_ratios") is None:

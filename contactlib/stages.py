@@ -60,7 +60,8 @@ __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter
 # smallest elements measured (n = 512: 2.25e-13 a at c/a = 1e-8, 2.3e-10 a at 1 - 1e-5).
 QUADRATURE_FLOOR_H = {"stick": 2e-13, "annulus": 2e-10}
 OUTPUTS = validate.OUTPUTS
-NODAL_METHODS = ("default", "extrapolated")  # nodal tractions on the graded mesh at c
+NODAL_METHODS = tuple(name for name, m in validate.METHOD_REGISTRY.items()
+                      if m.nodal)  # nodal tractions on the graded mesh at c
 
 
 def decoupled_message(geometry: Contact | None = None) -> str:
@@ -190,8 +191,7 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
     pr = _lookup(normal, method, c, r)
     sh = _lookup(shear, method, c, r) if m > 0 else None
     ops = None if pr is None else (pr, sh)
-    coulomb = "coefficient" if method == "paper-literal" else "resultant"
-    return solve_paper(geometry, m, n, coulomb=coulomb, ops=ops)
+    return solve_paper(geometry, m, n, coulomb=validate.method_of(method).coulomb, ops=ops)
 
 
 def case_record(geometry: Contact, d: SelfSimilarSolution, samples: bool) -> CaseRecord:
@@ -530,7 +530,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         method_for_levels = method
     if (rec.elements is not None or method_for_levels == "extrapolated"):
         # a tolerance scene estimated k itself, or the extrapolated method did
-        if method == "extrapolated":
+        if validate.method_of(method).own_estimate:
             limit = _below_floor(rec, solved, notes)
     elif method not in NODAL_METHODS:
         ref = solve_default(geometry, solved, 64, cache=cache)
@@ -602,7 +602,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         need = (resolving_n(n, est, max_error) if (method == "default" or exact_k)
                 and not limit else
                 extrapolated_method.resolving_n(n, est, max_error, MAX_N)
-                if method == "extrapolated" and not limit else None)
+                if validate.method_of(method).own_estimate and not limit else None)
         hint = (f"n = {need} should resolve it" if need is not None else
                 "no n resolves it" if limit else
                 f"no supported n (up to {MAX_N}) resolves it" if method in NODAL_METHODS else
@@ -710,7 +710,7 @@ def _to_tolerance(geometry: Contact, method: str, n: int, c: float, d: DiscreteS
     if not 0.0 < c < 1.0:  # frictionless, full adhesion, or nu = 0.5: k is exact, and
         # the tolerance applies to the load (both methods solve it as the default method)
         return _load_to_tolerance(geometry, n, c, d, tolerance, cache)
-    if method == "extrapolated":  # its own estimate; n doubled while it falls short
+    if validate.method_of(method).own_estimate:  # n doubled while it falls short
         while d.error_estimate > tolerance and 2 * n <= MAX_N and d.converged:
             finer = extrapolated_method.solve_extrapolated(geometry, c, 2 * n,
                                                            k_guess=d.oriented_k,

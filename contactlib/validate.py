@@ -27,11 +27,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import dataclass
 from numbers import Integral, Real
 from typing import Any, Callable, Iterable
 
 __all__ = [
-    "InputError", "GEOMETRIES", "METHODS", "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
+    "InputError", "GEOMETRIES", "METHODS", "Method", "METHOD_REGISTRY", "method_of",
+    "DEFAULT_N", "MIN_N_DEFAULT_METHOD", "MAX_N",
     "EXTRAPOLATED_N_MULTIPLE", "SolverLimit", "SCENE_NAME_PATTERN", "scene_name",
     "RESULTS_DIR_PATTERN", "results_dir",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
@@ -49,9 +51,74 @@ __all__ = [
 GEOMETRIES: tuple[str, ...] = ("sphere", "cylinder")
 """Indenter shapes: a rigid sphere (rings) or a rigid cylinder (strips)."""
 
-METHODS: tuple[str, ...] = ("default", "paper", "paper-literal", "extrapolated")
-"""Self-similar methods: ours, the paper's scheme, the paper's scheme as printed, and ours
-on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
+@dataclass(frozen=True)
+class Method:
+    """A self-similar method, registered once with what it takes and what it gives.
+
+    The solvers and the drivers ask these fields instead of comparing names.
+
+    Attributes
+    ----------
+    name : str
+        The name ``solve(method=...)`` and ``--method`` take.
+    default_n : int
+        Elements across the half-contact when n is not given.
+    min_n, n_multiple : int
+        The smallest n and the multiple n must be of (1: any).
+    nodal : bool
+        Tractions at the nodes of a mesh graded at each stick ratio (ours); False:
+        the paper's steps on a uniform mesh whose stick ratios are element edges.
+    any_profile : bool
+        Takes every power-law profile (False: its error model or scheme assumes the
+        paraboloid).
+    coated : bool
+        Takes a coated body (base "elastic").
+    planned : bool
+        May be picked by a tolerance (:func:`contactlib.accuracy.plan`).
+    own_estimate : bool
+        Estimates its error from its own nested levels (the extrapolated method); else
+        a nodal method is checked from the same case at n/2 and n/4.
+    coulomb : {"resultant", "coefficient"}
+        Coulomb's law on the slip zone's resultant forces, or with the coefficient as
+        the paper prints it.
+    """
+
+    name: str
+    default_n: int
+    min_n: int = 2
+    n_multiple: int = 1
+    nodal: bool = True
+    any_profile: bool = False
+    coated: bool = False
+    planned: bool = False
+    own_estimate: bool = False
+    coulomb: str = "resultant"
+
+
+MIN_N_DEFAULT_METHOD = 16
+"""Fewest elements the default method accepts (its mesh is in sixteenths)."""
+
+EXTRAPOLATED_N_MULTIPLE = 128
+"""The extrapolated method's n: a multiple of this (its n/8 level is nested in n)."""
+
+METHOD_REGISTRY: dict[str, Method] = {m.name: m for m in (
+    Method("default", 256, min_n=MIN_N_DEFAULT_METHOD, any_profile=True, coated=True,
+           planned=True),
+    Method("paper", 16, nodal=False),
+    Method("paper-literal", 16, nodal=False, coulomb="coefficient"),
+    Method("extrapolated", 256, min_n=EXTRAPOLATED_N_MULTIPLE,
+           n_multiple=EXTRAPOLATED_N_MULTIPLE, planned=True, own_estimate=True),
+)}
+"""Every self-similar method: ours, the paper's scheme, the paper's scheme as printed, and
+ours on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
+
+METHODS: tuple[str, ...] = tuple(METHOD_REGISTRY)
+"""The names of :data:`METHOD_REGISTRY`, in its order."""
+
+
+def method_of(name: str) -> Method:
+    """The registered :class:`Method` of a checked name (:func:`method`)."""
+    return METHOD_REGISTRY[name]
 
 OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy", "subsurface")
 """What a self-similar scene may ask for (``outputs``), in the order the stages run them."""
@@ -92,15 +159,8 @@ HISTORY_SPHERE_LAYER_RATIO_MAX = 20.0
 HISTORY_MESH_EXTENT = 1.2
 """The history solver's mesh length over a_max (``history_solver.MESH_EXTENT``)."""
 
-DEFAULT_N: dict[str, int] = {"default": 256, "paper": 16, "paper-literal": 16,
-                             "extrapolated": 256}
+DEFAULT_N: dict[str, int] = {name: m.default_n for name, m in METHOD_REGISTRY.items()}
 """Default number of elements across the half-contact, per method."""
-
-MIN_N_DEFAULT_METHOD = 16
-"""Fewest elements the default method accepts (its mesh is in sixteenths)."""
-
-EXTRAPOLATED_N_MULTIPLE = 128
-"""The extrapolated method's n: a multiple of this (its n/8 level is nested in n)."""
 
 MAX_N = 4096
 """Most elements of a self-similar solve (about 3.3 GiB at n = 4096)."""
@@ -359,7 +419,7 @@ def substrate(base_name: str, modulus: Any, nu2: Any, geometry_name: str,
                              f"substrate_nu needs base='elastic' (a coated body), not "
                              f"base={base_name!r}, got {nu2!r}")
         return math.inf, None
-    if method_name != "default":
+    if not method_of(method_name).coated:
         raise InputError("method", "'default' on a coated body", method_name,
                          f"method {method_name!r} is not available on a coated body "
                          "(base 'elastic'): use method 'default'")
@@ -489,12 +549,12 @@ def n(value: Any, method_name: str) -> int:
     """Elements of a self-similar solve (None: the method's default)."""
     if value is None:
         return DEFAULT_N[method_name]
-    lo = MIN_N_DEFAULT_METHOD if method_name == "default" else 2
+    spec = method_of(method_name)
+    lo = spec.min_n
     v = integer("n", value, 2, MAX_N)
-    if method_name == "extrapolated" and (v < EXTRAPOLATED_N_MULTIPLE
-                                          or v % EXTRAPOLATED_N_MULTIPLE):
-        raise InputError("n", f"a multiple of {EXTRAPOLATED_N_MULTIPLE} in "
-                         f"[{EXTRAPOLATED_N_MULTIPLE}, {MAX_N}] for the extrapolated method "
+    if spec.n_multiple > 1 and (v < spec.n_multiple or v % spec.n_multiple):
+        raise InputError("n", f"a multiple of {spec.n_multiple} in "
+                         f"[{spec.n_multiple}, {MAX_N}] for the {method_name} method "
                          "(n/8, n/4, n/2 nested in n)", value)
     if v < lo:
         raise InputError("n", f"an integer in [{lo}, {MAX_N}]", value,

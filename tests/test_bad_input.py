@@ -269,7 +269,7 @@ BAD_ARGUMENT = {
                    st.integers(4097, 10**300), st.floats().filter(
                        lambda v: not (math.isfinite(v) and v.is_integer() and 16 <= v <= 4096))),
     "slab_ratio": st.one_of(wrong_type, non_finite,
-                            reals_outside(0.0, 80.0)),  # 80: the smooth-base cylinder's bound
+                            reals_outside(0.0, 1000.0)),  # 1000: the largest bound (sphere)
     "base": st.one_of(junk_text.filter(lambda t: t not in ("smooth", "bonded")), st.none(),
                       st.integers()),
 }
@@ -334,7 +334,7 @@ BAD_SCENE_VALUE = {
     "n": BAD_ARGUMENT["n"].filter(lambda v: not (isinstance(v, int) and abs(v) > 10**300)),
     "slab_ratio": st.one_of(wrong_type, non_finite,
                             reals_outside(0.0, None).filter(lambda v: abs(v) < 1e300),
-                            st.floats(min_value=20.001, max_value=1e6)),  # beyond the range
+                            st.floats(min_value=1000.001, max_value=1e6)),  # beyond the range
     "base": st.one_of(junk_text.filter(lambda t: t not in ("smooth", "bonded")),
                       st.integers()),
     "stick_ratios": st.one_of(st.text(max_size=5).filter(lambda t: t != "all"), st.just([]),

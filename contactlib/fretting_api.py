@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -125,6 +125,9 @@ class FrettingResult:
     resolved: np.ndarray
     cycles: tuple[tuple[int, int, float, float], ...]
     orders: dict[str, float]
+    profile: str = "paraboloid"  # the indenter's profile (contactlib.profiles)
+    exponent: float = 2.0
+    flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
 
     @property
     def shaken_down(self) -> np.ndarray:
@@ -294,7 +297,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
              n: int | None = None, bulk_stress: Sequence[float] | None = None,
              indenter_modulus: float = math.inf, indenter_nu: float | None = None,
              profile: str = "paraboloid", exponent: float | None = None,
-             max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
+             flat_ratio: float | None = None, max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
              progress: Callable[[int, int], None] | None = None) -> FrettingResult:
     """Follow a normal and a tangential load path of a cylinder or sphere with Coulomb friction.
 
@@ -325,8 +328,9 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         at 0); default none.
     indenter_modulus, indenter_nu : float
         An elastic indenter, E1/E2 and nu1 (default rigid; nu1 the body's).
-    profile, exponent : str, float
-        The indenter's profile, as for :func:`contactlib.history`.
+    profile, exponent, flat_ratio : str, float, float
+        The indenter's profile, as for :func:`contactlib.history`: a power law or the
+        rounded flat punch (``flat_ratio`` = b/a_max); the flat punch is refused.
     max_error : float
         Accuracy for ``resolved``: of the stick ratio (absolute) and of the
         cumulative frictional work relative to the path's total (default 1e-3, as
@@ -371,13 +375,15 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
                                   "fretting yet: the fretting solvers cover the power laws "
                                   "only (for a punch with rounded edges, power with exponent "
                                   "8 comes close)")
-    prof = make_profile(profile, exponent)
+    prof = make_profile(profile, exponent, flat_ratio)
     model = contact(geometry, nu, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
                     profile=prof)
     k = float(friction)
     if geometry == "sphere":
-        return sphere_fretting(model, k, load, tang, steps, n, max_error, error_estimate,
-                               progress)
+        res = sphere_fretting(model, k, load, tang, steps, n, max_error, error_estimate,
+                              progress)
+        return replace(res, profile=prof.name, exponent=float(prof.exponent),
+                       flat_ratio=float(prof.flat))
     ops, raw = _run(model, n, steps, k, load, tang, sigma, progress)
     ratio, offset = _derived(raw)
     points = np.arange(load.size) * steps
@@ -427,7 +433,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         slip=raw.slip, tangential_compliance=_compliance(raw.shift, raw.force),
         state=raw.state, point_step=points, stick_ratio_error=ratio_err,
         stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
-        cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)
+        cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders,
+        profile=prof.name, exponent=float(prof.exponent), flat_ratio=float(prof.flat))
 
 
 SPHERE_COUPLED_REFUSAL = (

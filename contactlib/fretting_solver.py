@@ -73,6 +73,7 @@ import numpy as np
 from scipy import linalg
 
 from .model import Contact
+from .profiles import Profile
 
 __all__ = ["SEPARATED", "STICK", "SLIP_POSITIVE", "SLIP_NEGATIVE", "STATE_MEANINGS",
            "MESH_EXTENT", "StripOperators", "strip_operators", "FrettingStep",
@@ -110,6 +111,8 @@ class StripOperators:
         Dundurs' beta of the pair.
     exponent : float
         The profile's exponent d (``h = |x|^d/d``; 2: the paraboloid).
+    shape : Profile
+        The profile itself (its frictionless half-width at a load).
     """
 
     edges: np.ndarray
@@ -125,6 +128,7 @@ class StripOperators:
     strain_share: float
     beta: float
     exponent: float
+    shape: Profile
 
     @property
     def n(self) -> int:
@@ -169,7 +173,7 @@ def strip_operators(model: Contact, n: int, extent: float = MESH_EXTENT) -> Stri
                           qu=log_part, gap0=prof.gap(np.abs(mid)), p_max=p_max,
                           p0=float(prof.reference_pressure(False)),
                           strain_share=float(model.compliance_weights[1]), beta=beta,
-                          exponent=float(prof.exponent))
+                          exponent=float(prof.exponent), shape=prof)
 
 
 @dataclass
@@ -415,8 +419,9 @@ def zone_edges(ops: StripOperators, k: float, step: FrettingStep
 
 
 def _frictionless_width(ops: StripOperators, load: float) -> float:
-    """Frictionless half-width at load P (units a_max): P/P_max = a^d for h = |x|^d/d."""
-    return (max(load, 0.0) / ops.p_max) ** (1.0 / ops.exponent)
+    """Frictionless half-width at load P (units a_max): P/P_max = a^d for h = |x|^d/d (the
+    profile's :meth:`~contactlib.profiles.Profile.frictionless_radius`)."""
+    return ops.shape.frictionless_radius(max(load, 0.0) / ops.p_max, False)
 
 
 @dataclass

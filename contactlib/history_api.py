@@ -263,8 +263,7 @@ class HistoryResult:
 
     def profile_shape(self) -> profiles.Profile:
         """The indenter's profile (:class:`contactlib.profiles.Profile`) of the run."""
-        return profiles.profile(self.profile, self.exponent if self.profile == "power" else None,
-                                self.flat_ratio if self.profile == "rounded" else None)
+        return profiles.of_result(self)
 
     def segment_work(self) -> np.ndarray:
         """Frictional work done during each path segment (scaled as ``frictional_work``)."""

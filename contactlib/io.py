@@ -2136,6 +2136,7 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
     import xarray as xr
 
     from contactlib import fretting_solver as fs
+    from contactlib import profiles
 
     r = result
     sphere = r.geometry == "sphere"
@@ -2231,6 +2232,8 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "cycle_work": np.asarray([c[2] for c in r.cycles], dtype=float),
         "cycle_work_error_estimate": np.asarray([c[3] for c in r.cycles], dtype=float),
         "cycle_shaken_down": r.shaken_down.astype(np.int8),
+        **(profiles.of_result(r).attributes()
+           if getattr(r, "profile", "paraboloid") != "paraboloid" else {}),
         "length_scale": "a_max: frictionless (Hertz) contact "
                         + ("radius" if sphere else "half-width") + " at load level 1",
         **({"field_row": "pressure, shear (x), slip (x), state: the cells at y = h/2 "

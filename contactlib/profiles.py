@@ -81,10 +81,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-__all__ = ["Profile", "PARABOLOID", "FLAT", "profile", "PROFILES", "FLAT_RATIO_RANGE"]
+__all__ = ["Profile", "PARABOLOID", "FLAT", "profile", "of_result", "PROFILES",
+           "FLAT_RATIO_RANGE", "SOLVERS", "takes"]
 
 PROFILES = ("paraboloid", "cone", "power", "flat", "rounded")
 """The names :func:`profile` accepts."""
@@ -98,7 +100,7 @@ SOLVERS = ("self-similar", "history", "fretting", "stresses")
 """What may take a profile: the self-similar methods (``solve``, ``sweep``), ``history``,
 ``fretting`` (a tangential load) and the subsurface stresses of a solution or history step."""
 
-_SOLVERS_OF = {"flat": ("history",), "rounded": ("history", "stresses")}  # others: all
+_SOLVERS_OF = {"flat": ("history",), "rounded": ("history", "fretting", "stresses")}  # others: all
 
 
 def takes(name: str, solver: str) -> bool:
@@ -373,6 +375,13 @@ PARABOLOID = Profile("paraboloid", 2.0)
 
 FLAT = Profile("flat", math.inf)
 """The flat punch of radius 1 (``history`` only)."""
+
+
+def of_result(result: Any) -> Profile:
+    """The profile a result records (its ``profile``, ``exponent`` and ``flat_ratio``)."""
+    name = getattr(result, "profile", "paraboloid")
+    return profile(name, result.exponent if name == "power" else None,
+                   getattr(result, "flat_ratio", 0.0) if name == "rounded" else None)
 
 
 def profile(name: str = "paraboloid", exponent: float | None = None,

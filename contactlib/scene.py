@@ -519,7 +519,7 @@ class HistoryScene:
             if self.indenter_modulus != float("inf"):
                 spec.update(indenter_modulus=self.indenter_modulus,
                             indenter_nu=self.indenter_nu)
-            return spec | _profile_spec(self.profile, self.exponent)
+            return spec | _profile_spec(self.profile, self.exponent, self.flat_ratio)
         spec = {"geometry": self.geometry, "nu": self.nu, "friction": self.frictions[index],
                 "load_path": list(self.load_path), "steps": self.steps, "n": self.n,
                 "slab_ratio": self.slab_ratio, "max_error": self.max_error}

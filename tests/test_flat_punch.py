@@ -330,7 +330,7 @@ def test_rounded_interface():
         history("sphere", 0.3, 0.2, [0, 1], 4, profile="cone", flat_ratio=0.5)
     with pytest.raises(validate.InputError, match=r"^flat_ratio .*\[0, 0\.9\]"):
         history("sphere", 0.3, 0.2, [0, 1], 4, profile="rounded", flat_ratio=0.95)
-    with pytest.raises(validate.InputError, match="fretting"):
+    with pytest.raises(validate.InputError, match="^flat_ratio"):
         fretting("cylinder", 0.3, 0.2, [0, 1, 1], [0, 0, 0.5], profile="rounded")
     scene = {"kind": "history", "geometry": "cylinder", "nu": 0.3, "friction": [0.2],
              "load_path": [0, 1, 0], "steps": 20, "n": 60, "profile": "rounded",
@@ -355,3 +355,30 @@ def test_rounded_command_line(tmp_path, capsys):
                  "--load-path", "0,1", "--steps", "4", "--profile", "rounded",
                  "--output", str(out)]) == 2
     assert "--flat-ratio" in capsys.readouterr().err
+
+
+# Fretting (beta = 0): Cattaneo's superposition holds for any profile (Ciavarella): the stick
+# zone under Q after P is the contact of the same punch under the load P (1 - Q/(k P)).
+@pytest.mark.parametrize("b", [0.5, 0.8])
+def test_rounded_fretting_stick_zone_is_ciavarellas(b):
+    shape = profile("rounded", flat_ratio=b)
+    exact = shape.rounded_radius(0.5 * shape.frictionless_load(False), False)
+    n = 240
+    r = fretting("cylinder", 0.5, 0.3, [0, 1, 1], [0, 0, 0.5], 8, n=n, profile="rounded",
+                 flat_ratio=b)
+    left, right = r.stick_edges[-1]
+    assert abs(0.5 * (right - left) - exact) < 0.05 * 2.4 / n  # measured 0.03 element
+    assert r.profile == "rounded" and r.flat_ratio == b
+    from contactlib.io import fretting_to_dataset
+
+    assert fretting_to_dataset(r).attrs["profile_flat_ratio"] == b
+
+
+def test_rounded_fretting_sphere_within_its_estimate():
+    """Equal bodies, nu = 0 (beta = gamma = 0: Cattaneo-Mindlin exact), b = 0.5."""
+    shape = profile("rounded", flat_ratio=0.5)
+    exact = shape.rounded_radius(0.5 * shape.frictionless_load(True), True)
+    r = fretting("sphere", 0.0, 0.3, [0, 1, 1], [0, 0, 0.5], 4, n=64, profile="rounded",
+                 flat_ratio=0.5, indenter_modulus=1.0, indenter_nu=0.0)
+    assert r.converged.all() and 0 < r.stick_ratio_error[-1] < 0.05
+    assert abs(r.stick_ratio[-1] - exact) <= r.stick_ratio_error[-1]

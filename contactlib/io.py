@@ -2232,6 +2232,8 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "cycle_work": np.asarray([c[2] for c in r.cycles], dtype=float),
         "cycle_work_error_estimate": np.asarray([c[3] for c in r.cycles], dtype=float),
         "cycle_shaken_down": r.shaken_down.astype(np.int8),
+        "p0": float(r.p0),  # the pressure unit at a_max (E* a_max/R): Hertz's 1/2 or 2/pi
+        "p_max": float(r.p_max),  # the load unit (per unit length for the cylinder)
         **(profiles.of_result(r).attributes()
            if getattr(r, "profile", "paraboloid") != "paraboloid" else {}),
         "length_scale": "a_max: frictionless (Hertz) contact "

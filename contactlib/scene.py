@@ -535,7 +535,9 @@ class HistoryScene:
 
 
 def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any,
-                    bad: _Problems) -> tuple[tuple[float, ...], tuple[float, ...]]:
+                    bad: _Problems, nu: float | None = None,
+                    ind: tuple[float, float | None] = (math.inf, None)
+                    ) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(tangential_path, bulk_stress) of a fretting scene, checked by
     :func:`contactlib.fretting_api.check_input` (the library's words, one line under the
     key its message names)."""
@@ -556,16 +558,15 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if raw.get("profile") in profiles.PROFILES and not profiles.takes(raw["profile"],
                                                                       "fretting"):
         bad.add("profile", f"profile {raw['profile']!r} is not taken by a fretting scene "
-                           f"(tangential_path): the fretting solvers cover the power laws only")
+                           f"(tangential_path): the fretting solvers cover the power laws and the "
+                           f"rounded punch")
         return (), ()
-    if raw["geometry"] == "sphere":
-        bad.add("geometry", "a fretting scene covers the cylinder only; the sphere's fretting "
-                            "(Dundurs beta = 0 pairs) is run by contactlib.fretting or "
-                            "'contactlib history --geometry sphere --tangential-path ...'")
-        return (), ()
+    if raw["geometry"] == "sphere" and nu is None:
+        return (), ()  # (nu's own problem is recorded; the sphere's check needs it)
     try:
         fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, raw["steps"],
-                                 n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR))
+                                 n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR),
+                                 nu=nu, indenter_modulus=ind[0], indenter_nu=ind[1])
     except ValueError as exc:
         text = str(exc)
         head, _, rest = text.partition(": ")
@@ -630,7 +631,7 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                               "the substrate's kernels are elastic only; use a rigid base or "
                               "an elastic layer")
     profile, exponent, flat_ratio = _scene_profile(raw, bad)
-    tang, sigma = _fretting_paths(raw, ks, n, bad) if fretting else ((), ())
+    tang, sigma = _fretting_paths(raw, ks, n, bad, nu, ind) if fretting else ((), ())
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,

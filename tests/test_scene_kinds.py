@@ -352,8 +352,21 @@ def test_fretting_scene_parses_to_the_fretting_call():
     assert not parse_scene("h", HIST).fretting
 
 
+def test_sphere_fretting_scene_of_a_beta_zero_pair():
+    """A rigid sphere on nu = 1/2 (beta = 0): the scene runs contactlib.fretting, whose
+    dataset records the sphere's pressure unit (Hertz's 2/pi) for the figure's shift axis."""
+    s = parse_scene("f", dict(FRET, geometry="sphere", n=16, steps=4))
+    assert s.fretting and s.run_spec(0)["geometry"] == "sphere"
+    from contactlib import fretting
+    from contactlib.io import fretting_to_dataset
+
+    ds = fretting_to_dataset(fretting(**s.run_spec(0)))
+    assert ds.attrs["p0"] == pytest.approx(2 / np.pi, rel=1e-15)
+    assert ds.attrs["p_max"] == pytest.approx(4 / 3, rel=1e-15)
+
+
 @pytest.mark.parametrize("extra, key, text", [
-    ({"geometry": "sphere"}, "geometry", "a fretting scene covers the cylinder only"),
+    ({"geometry": "sphere", "nu": 0.3}, "geometry", "Dundurs beta = 0 only"),
     ({"tangential_path": [0, 0.5]}, "tangential_path", "has 2 points but load_path has 3"),
     ({"tangential_path": [0, 0, 1]}, "tangential_path", "gross sliding"),
     ({"tangential_path": [0.1, 0, 0.5]}, "tangential_path", "must start at 0"),

@@ -311,7 +311,8 @@ def _example_targets(*names: str) -> list[str]:
     out = []
     for name in names:
         out.append(f"{EXAMPLE_OUT}/datasets/{name}.nc")
-        if name in ("cattaneo", "fretting-fatigue", "tin-on-steel"):
+        if name in ("cattaneo", "fretting-fatigue", "tin-on-steel", "fretting-pad",
+                    "mindlin-sphere"):
             out += [f"{EXAMPLE_OUT}/tables/{name}.csv", f"{EXAMPLE_OUT}/figures/{name}.png"]
     return out
 
@@ -321,10 +322,10 @@ def test_example_scenes_dry_run_builds_each_scene_s_jobs(tmp_path):
     names = yaml.safe_load((wd / EXAMPLES).read_text())["scenes"]
     counts = job_counts(wd, *_example_targets(*names), "--configfile", EXAMPLES)
     # three self-similar scenes on three influence sets (the cone's sphere set, the power
-    # law's cylinder set and the coated cylinder's own), two histories, two fretting runs
-    # and a coating in physical units
+    # law's cylinder set and the coated cylinder's own), three histories (one a flat
+    # punch), four fretting runs (a rounded pad, a sphere) and a coating in physical units
     assert counts == {"influence": 3, "solve": 3, "check": 3, "energy": 1, "assemble": 3,
-                      "history_run": 2, "fretting_run": 2, "physical_run": 1}, counts
+                      "history_run": 3, "fretting_run": 4, "physical_run": 1}, counts
 
 
 @pytest.mark.slow  # (about 8 s: two scenes end to end)

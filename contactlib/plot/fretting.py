@@ -103,7 +103,7 @@ def fig_fretting_path(ds: xr.Dataset, title: str = "") -> Figure:
             raise ValueError(f"fig_fretting_path: the dataset has no variable {name!r} "
                              "(expected one of contactlib.io.fretting_to_dataset)")
     k = float(ds.attrs["friction_coefficient"])
-    p0 = 0.5  # Hertz's cylinder at a_max = 1
+    p0 = float(ds.attrs.get("p0", 0.5))  # the run's pressure unit (older files: the cylinder's)
     ok = np.cumprod(ds["converged"].values.astype(bool)).astype(bool)
     q = np.where(ok, ds["tangential_load_ratio"].values, np.nan)
     s = np.where(ok, ds["tangential_shift"].values - ds["tangential_shift"].values[0], np.nan)

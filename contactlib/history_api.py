@@ -345,8 +345,9 @@ def coated_extent(model: Contact, geometry: str, slab: float) -> float:
         return hs.MESH_EXTENT
     # the farthest mesh point over h the kernels reach (the sphere's rings r/h <= 20, the
     # cylinder's strip tables |x +- s|/h <= 48 with x, s within the mesh)
-    reach = validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)] * (
-        1.0 if geometry == "sphere" else validate.HISTORY_MESH_EXTENT)
+    reach = (validate.HISTORY_SPHERE_LAYER_RATIO_MAX if geometry == "sphere" else
+             validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)]
+             * validate.HISTORY_MESH_EXTENT)
     probe = min(hs.MESH_EXTENT * model.frictionless_radius(m), reach / slab)
     raw = hs.run_history(hs.build_operators(model, _PROBE_N, probe), 0.0, np.array([0.0, 1.0]))
     extent = hs.MESH_EXTENT * (float(raw.contact_radius[-1]) + probe / _PROBE_N)

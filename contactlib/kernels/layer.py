@@ -108,11 +108,11 @@ smoothly: the share ``b(rho) b(sigma)`` of the series, ``b`` = 1 below 0.2 and
 thick-layer limit, e.g. for the pressure ``w - w_halfspace -> (s^2/h)
 M_0(Rww)`` (uniform, O(s/h) relative).
 
-Supported range: ``max(r, s) / h <= RATIO_MAX = 20`` for the tables; on a
-rigid base (smooth, bonded) beyond it, up to ``THIN_RATIO_MAX = 1200``, the
-remainders are summed in the transform domain instead
-(:mod:`contactlib.kernels.thin_layer`); beyond that, or a coated body beyond
-20, a ``ValueError`` is raised. ``h = inf`` is the half-space.
+Supported range: ``max(r, s) / h <= RATIO_MAX = 20`` for the tables; beyond
+it, up to ``THIN_RATIO_MAX = 1200``, on a rigid base (smooth, bonded) and on a
+coated body alike, the remainders are summed in the transform domain instead
+(:mod:`contactlib.kernels.thin_layer`); beyond that a ``ValueError`` is
+raised. ``h = inf`` is the half-space.
 
 Coated body
 -----------
@@ -125,7 +125,7 @@ same tables, series and quadratures. They tend to constants at ``t -> 0``
 half-space), as the rigid bonded base's do (-1, -beta, -1), so every integral
 above stays regular, and decay like ``t^2 e^{-2t}``. A stiff layer on a soft
 substrate (``m >> 1``) bends over ``t ~ m^(-1/3)``: the quadratures then take
-32 panels on ``0 < t < 2 min(1, m^(-1/3))`` (``_fine_panel``); against a rule
+32 panels on ``0 < t < 2 min(1, m^(-1/3))`` (``fine_panel``); against a rule
 of panels 0.1, 30 points, ``t < 36``, converged to 7e-12 of the scale at
 E2/E1 = 1e-2, 7e-13 at 0.1, 5e-14 at 1e6 (1e-8 at 1e-3, outside the
 supported range). Measured table error at random points: <= 1e-11 of the
@@ -147,7 +147,7 @@ from . import disc
 from .disc import beta_of_nu
 
 __all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "THIN_RATIO_MAX", "LayerTable", "Substrate",
-           "coated_remainder",
+           "coated_remainder", "fine_panel",
            "layer_table", "pressure_disc",
            "remainder_axis_w", "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
 
@@ -155,7 +155,7 @@ Arr = NDArray[np.float64]
 
 BASES = ("smooth", "bonded")
 RATIO_MAX = 20.0  # max(r, s)/h covered by the tables
-THIN_RATIO_MAX = 1200.0  # max(r, s)/h of the transform-domain sums on a rigid base (thin_layer)
+THIN_RATIO_MAX = 1200.0  # max(r, s)/h of the transform-domain sums (thin_layer)
 
 _CELL = 0.5  # table cell width in rho and sigma
 _DEG = 10  # Chebyshev degree in each variable
@@ -165,7 +165,7 @@ _BLEND = 0.05  # the series hands over to the table smoothly over _SERIES_MAX - 
 _SERIES_TERMS = 14
 _T_MAX = 24.0
 _T_PANEL = 0.25
-_FINE_T = 2.0  # coated bodies: 32 panels below this t (times _fine_panel)
+_FINE_T = 2.0  # coated bodies: 32 panels below this t (times fine_panel)
 _GL_ORDER = 20
 _CHUNK = 65536  # points per pass
 _GROUP_MIN = 48  # mean points a cell above which points are grouped by cell
@@ -366,9 +366,23 @@ def coated_remainder(t: ArrayLike, nu: float, modulus: float,
     return rww.reshape(shape), rwu.reshape(shape), ruu.reshape(shape)
 
 
-def _fine_panel(nu: float, base: str | Substrate) -> float | None:
-    """Panel width near t = 0 for a coated body (None: the uniform rule of the rigid bases).
+def fine_panel(nu: float, base: str | Substrate) -> float | None:
+    """Scale of the fine panels near t = 0 of a coated body (None on a rigid base).
 
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio of the layer.
+    base : {"smooth", "bonded"} or Substrate
+
+    Returns
+    -------
+    float or None
+        ``f = min(1, m^(-1/3))`` (dimensionless, in ``t = k h``) on a
+        :class:`Substrate`; None on a rigid base (a uniform rule).
+
+    Notes
+    -----
     A stiff layer on a soft substrate (m = E1*/E2* >> 1) is a plate on a
     compliant foundation: its remainder falls from m - 1 at t = 0 over
     ``t ~ (3/m)^(1/3)`` (bending against the substrate), with complex poles
@@ -384,7 +398,7 @@ def _fine_panel(nu: float, base: str | Substrate) -> float | None:
 def _gauss_panels(t_max: float, fine: float | None = None) -> tuple[Arr, Arr]:
     """Composite Gauss-Legendre nodes and weights on 0 < t < t_max.
 
-    Panels of ``_T_PANEL``; with ``fine`` (:func:`_fine_panel`), 32 panels on
+    Panels of ``_T_PANEL``; with ``fine`` (:func:`fine_panel`), 32 panels on
     ``0 < t < _FINE_T fine`` before them.
     """
     g, w = np.polynomial.legendre.leggauss(_GL_ORDER)
@@ -427,7 +441,7 @@ def _remainder_quadrature(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float
     # here, not at import: contactlib.scene imports this module (Snakemake's own process)
     from scipy import special
 
-    t, wt = _gauss_panels(_T_MAX, _fine_panel(nu, base))
+    t, wt = _gauss_panels(_T_MAX, fine_panel(nu, base))
     rem = dict(zip(("ww", "wu", "uu"), remainder_transfer(t, nu, base)))
     rho = np.atleast_1d(np.asarray(rho, dtype=float))
     sigma = np.atleast_1d(np.asarray(sigma, dtype=float))
@@ -469,7 +483,7 @@ def _rho_series(name: str, n: int) -> tuple[Arr, Arr]:
 
 def _moments(nu: float, base: str, kmax: int) -> dict[str, Arr]:
     """M_k = int_0^inf R(t) t^k dt, k = 0..kmax, for the three remainders."""
-    t, wt = _gauss_panels(96.0, _fine_panel(nu, base))
+    t, wt = _gauss_panels(96.0, fine_panel(nu, base))
     rem = remainder_transfer(t, nu, base)
     powers = t[None, :] ** np.arange(kmax + 1)[:, None]
     return {name: powers @ (wt * r) for name, r in zip(("ww", "wu", "uu"), rem)}
@@ -1000,9 +1014,7 @@ def _scaled_rho_sigma(rb: Arr, sb: Arr, h: float,
 
 
 def _thin(base: str | Substrate, rb: Arr, sb: Arr, h: float) -> bool:
-    """True where the transform-domain sums replace the tables (rigid base, beyond 20)."""
-    if isinstance(base, Substrate):
-        return False
+    """True where the transform-domain sums replace the tables (beyond RATIO_MAX = 20)."""
     big = max(float(np.max(np.abs(rb), initial=0.0)), float(np.max(sb, initial=0.0)))
     return big > RATIO_MAX * h
 
@@ -1140,7 +1152,7 @@ def pressure_disc(r: ArrayLike, s: ArrayLike, nu: float, h: float = np.inf,
     Raises
     ------
     ValueError
-        If ``max(r, s)/h > THIN_RATIO_MAX`` (1200; 20 on a coated body), an
+        If ``max(r, s)/h > THIN_RATIO_MAX`` (1200, any base), an
         unknown base, ``h <= 0`` or
         ``nu`` out of range.
 

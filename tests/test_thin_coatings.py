@@ -127,14 +127,23 @@ def test_continuity_at_20_with_the_coated_tables():
 
 
 @pytest.mark.slow
-def test_estimate_covers_the_refined_coated_solve():
-    """TiN on steel, a/h = 100, c/a = 0.5: n = 64 and 128 against n = 256."""
-    sols = {n: _solve(100.0, 0.5, n=n, nu=0.25, **TIN) for n in (64, 128, 256)}
+@pytest.mark.parametrize("nu, sub", [(0.25, TIN),
+                                     (NU, {"substrate_modulus": 0.01, "substrate_nu": NU})])
+def test_estimate_covers_the_refined_coated_solve(nu, sub):
+    """a/h = 100, c/a = 0.5: n = 64 and 128 against n = 256 (TiN on steel; and the
+    softest substrate, m = 99, flagged at n = 64: estimate 2.3e-3 > max_error). k's
+    estimate covers its difference in both; the load's falls short on the softest
+    substrate at n = 128: 4.11e-4 against 4.42e-4 (0.93x; docs/models.md)."""
+    sols = {n: _solve(100.0, 0.5, n=n, nu=nu, **sub) for n in (64, 128, 256)}
+    assert sols[128].resolved and sols[256].resolved
     for n in (64, 128):
-        assert sols[n].resolved
         dk = abs(sols[n].friction_coefficient / sols[256].friction_coefficient - 1)
         dp = abs(sols[n].load_ratio / sols[256].load_ratio - 1)
-        assert sols[n].error_estimate >= dk and sols[n].load_error_estimate >= dp
+        assert sols[n].error_estimate >= dk
+        if sub is TIN or n == 64:
+            assert sols[n].load_error_estimate >= dp
+        else:  # the shortfall measured, so that a change of it shows
+            assert 0.85 * dp < sols[n].load_error_estimate < dp
 
 
 def test_beyond_1000_is_refused_naming_slab_ratio():

@@ -235,7 +235,8 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
     sub.add_argument("--base", metavar="{smooth,bonded,elastic}", default="smooth",
                      help="the layer's base: rigid and smooth (frictionless) or bonded, or "
                           "elastic (a coated body: the layer bonded to an elastic half-space; "
-                          "default method; a/h <= 20, a_max/h <= 20/1.2 in history); "
+                          "default method; a/h <= 1000 for the sphere, 20 for the "
+                          "cylinder, a_max/h <= 20/1.2 in history); "
                           "default: smooth")
     sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
                      help="with --base elastic: the substrate's Young's modulus over the "

@@ -6,6 +6,7 @@
 #   snakemake --cores 2 --configfile my.yaml  with your own scenes (merged)
 #   snakemake --cores 2 materials             material pairs (not part of the above)
 #   snakemake --cores 2 viscoelastic          viscoelastic cycles against the rate (neither)
+#   snakemake --cores 2 coatings              coatings on elastic substrates against a/h (neither)
 #   snakemake -n                              what would run
 #
 # Layout, interface and habits: docs/workflow.md and docs/conventions.md.
@@ -49,6 +50,7 @@ include: "workflow/rules/viscoelastic.smk"
 include: "workflow/rules/layers.smk"
 include: "workflow/rules/fretting.smk"
 include: "workflow/rules/stresses.smk"
+include: "workflow/rules/coatings.smk"
 
 
 rule all:

@@ -19,7 +19,7 @@ NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "
             "default_method", "paper_method", "history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
             "discrete", "kernels/layer", "kernels/thin_layer", "layer_study", "fretting_solver",
-            "fretting_api", "estimates")
+            "fretting_api", "estimates", "coating_study")
 # what the numerics never import: files and conventions (io), figures, workflow
 FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
                          "contactlib.pipeline", "contactlib.scene", "contactlib.cli")

@@ -14,6 +14,8 @@
   per cycle against the loading rate and load-indentation loops.
 * :mod:`contactlib.plot.layers`: the frictionless load and k against a/h on
   layers (smooth and bonded bases).
+* :mod:`contactlib.plot.coatings`: the same against a/h on coatings bonded to
+  elastic substrates (a :class:`contactlib.coating_study.CoatingStudy`).
 * :mod:`contactlib.plot.stresses`: von Mises and Tresca maps inside the body
   (datasets of :func:`contactlib.stresses.subsurface_stresses`).
 
@@ -32,6 +34,7 @@ Examples
 """
 
 from contactlib.plot.base import style_path
+from contactlib.plot.coatings import fig_coatings
 from contactlib.plot.convergence import fig_convergence
 from contactlib.plot.history import (
     hist_displacement_loop,
@@ -61,6 +64,7 @@ __all__ = [
     "fig_material_pairs",
     "fig_viscoelastic",
     "fig_layers",
+    "fig_coatings",
     "fig_fretting",
     "fig_subsurface",
     "fig_stress_maxima",

@@ -7,7 +7,8 @@ x = log10(E'_s/E'_f), n ~ 1.06 ... 1.32, stated accurate to a few percent.
 
 Here E'_eq/E'_f is the frictionless flat punch's P/delta on the coated body (history,
 profile 'flat', one load step, n = 240) over the half-space's at the same n (the
-discretization cancels to ~1e-4), at nu = nu2 = 0.3, so E'_s/E'_f = E2/E1. For each
+discretization cancels: n = 480 changes the ratio by 2e-4 at a/h = 1, E2/E1 = 0.1 and
+3e-4 at a/h = 10, E2/E1 = 100), at nu = nu2 = 0.3, so E'_s/E'_f = E2/E1. For each
 E2/E1 the script prints the fit's exponent in [1.06, 1.32] that fits best and the
 largest relative departure over a/h = 0.1 ... 16 with it (and with the range's ends).
 

@@ -60,7 +60,7 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
                                   "'elastic'): give n (method 'default') instead")
     n = validate.n(n, method)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
-    if profile in profiles.PROFILES and not profiles.takes(profile, "self-similar"):
+    if not profiles.takes(profile, "self-similar"):
         raise validate.InputError(
             "profile", "a power law (paraboloid, cone, power) for solve and sweep", profile,
             f"profile {profile!r} is for history only: the punch's contact does not grow "

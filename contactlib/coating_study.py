@@ -224,7 +224,9 @@ def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
                     res = history(g, nu, history_friction, [0.0, 1.0, 0.0], history_steps,
                                   n=history_n, slab_ratio=float(ratio),
                                   max_error=HISTORY_MAX_ERROR, **body)
-                except ValueError:  # the contact would outgrow the kernels (soft substrate)
+                except validate.InputError as exc:  # the contact would outgrow the kernels
+                    if exc.name != "slab_ratio":  # (a soft substrate); anything else is a bug
+                        raise
                     refused[i, j, r] = True
                     continue
                 work[i, j, r] = res.frictional_work[-1]

@@ -107,9 +107,10 @@ def takes(name: str, solver: str) -> bool:
     """Whether the profile called ``name`` is taken by ``solver`` (one of :data:`SOLVERS`).
 
     A solver asks this before it builds the profile (which may need parameters it has
-    not been given), and refuses in its own words where it is False.
+    not been given), and refuses in its own words where it is False. A name that is
+    not a profile's is taken: :func:`profile` refuses it with the list of names.
     """
-    return solver in _SOLVERS_OF.get(name, SOLVERS)
+    return not isinstance(name, str) or solver in _SOLVERS_OF.get(name, SOLVERS)
 
 
 FLAT_RATIO_RANGE = (0.0, 0.9)

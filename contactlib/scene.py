@@ -368,8 +368,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     if base == validate.COATED_BASE and "tolerance" in raw:
         bad.add("tolerance", "tolerance is not planned on a coated body (base 'elastic'): "
                              "give n (method 'default') instead")
-    if raw.get("profile") in profiles.PROFILES and not profiles.takes(raw["profile"],
-                                                                      "self-similar"):
+    if not profiles.takes(raw.get("profile", "paraboloid"), "self-similar"):
         bad.add("profile", f"profile {raw['profile']!r} is for history only (kind: history): "
                            f"the punch's contact does not grow self-similarly")
         profile, exponent = "paraboloid", None
@@ -555,8 +554,7 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
         return (), ()
     tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
-    if raw.get("profile") in profiles.PROFILES and not profiles.takes(raw["profile"],
-                                                                      "fretting"):
+    if not profiles.takes(raw.get("profile", "paraboloid"), "fretting"):
         bad.add("profile", f"profile {raw['profile']!r} is not taken by a fretting scene "
                            f"(tangential_path): the fretting solvers cover the power laws and the "
                            f"rounded punch")

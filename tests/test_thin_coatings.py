@@ -62,7 +62,7 @@ def test_coated_sums_converged_at_a_over_h_1000(monkeypatch, modulus):
     monkeypatch.setattr(thin_layer, "T_MAX", 24.0)
     long = thin_layer.remainders("pressure", rho, sigma, NU, base)
     monkeypatch.setattr(thin_layer, "PANEL_SPAN", thin_layer.PANEL_SPAN / 2)
-    monkeypatch.setattr(thin_layer, "FINE_PANELS", 2 * thin_layer.FINE_PANELS)
+    monkeypatch.setattr(layer, "FINE_PANELS", 2 * layer.FINE_PANELS)
     fine = thin_layer.remainders("pressure", rho, sigma, NU, base)
     scale = np.abs(fine).max(axis=(1, 2))[:, None, None]
     assert np.all(np.abs(out - long) < 1e-12 * scale)

@@ -147,7 +147,7 @@ from . import disc
 from .disc import beta_of_nu
 
 __all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "THIN_RATIO_MAX", "LayerTable", "Substrate",
-           "coated_remainder", "fine_panel",
+           "coated_remainder", "fine_panel", "FINE_T", "FINE_PANELS",
            "layer_table", "pressure_disc",
            "remainder_axis_w", "remainder_grid", "remainder_transfer", "shear_disc", "transfer"]
 
@@ -165,7 +165,11 @@ _BLEND = 0.05  # the series hands over to the table smoothly over _SERIES_MAX - 
 _SERIES_TERMS = 14
 _T_MAX = 24.0
 _T_PANEL = 0.25
-_FINE_T = 2.0  # coated bodies: 32 panels below this t (times fine_panel)
+FINE_T = 2.0
+"""A coated body: the fine panels cover ``0 < t < FINE_T f`` (f = :func:`fine_panel`)."""
+FINE_PANELS = 32
+"""A coated body: panels on ``0 < t < FINE_T f`` (the tables' quadrature; at least this
+many in :mod:`contactlib.kernels.thin_layer`)."""
 _GL_ORDER = 20
 _CHUNK = 65536  # points per pass
 _GROUP_MIN = 48  # mean points a cell above which points are grouped by cell
@@ -388,7 +392,7 @@ def fine_panel(nu: float, base: str | Substrate) -> float | None:
     ``t ~ (3/m)^(1/3)`` (bending against the substrate), with complex poles
     that close; panels of 0.25 missed 9e-4 of scale at E2/E1 = 1e-2. Returns
     the scale ``f = min(1, m^(-1/3))``: 32 panels of ``_T_PANEL f / 4`` on
-    ``0 < t < _FINE_T f``, then the uniform ones.
+    ``0 < t < FINE_T f``, then the uniform ones.
     """
     if not isinstance(base, Substrate):
         return None
@@ -399,13 +403,14 @@ def _gauss_panels(t_max: float, fine: float | None = None) -> tuple[Arr, Arr]:
     """Composite Gauss-Legendre nodes and weights on 0 < t < t_max.
 
     Panels of ``_T_PANEL``; with ``fine`` (:func:`fine_panel`), 32 panels on
-    ``0 < t < _FINE_T fine`` before them.
+    ``0 < t < FINE_T fine`` before them.
     """
     g, w = np.polynomial.legendre.leggauss(_GL_ORDER)
     edges = np.arange(0.0, t_max + 0.5 * _T_PANEL, _T_PANEL)
     if fine is not None:
-        t_fine = _FINE_T * fine
-        edges = np.concatenate([np.linspace(0.0, t_fine, 33), edges[edges > t_fine]])
+        t_fine = FINE_T * fine
+        edges = np.concatenate([np.linspace(0.0, t_fine, FINE_PANELS + 1),
+                                edges[edges > t_fine]])
     lo, hi = edges[:-1, None], edges[1:, None]
     return (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel(), (0.5 * (hi - lo) * w).ravel()
 

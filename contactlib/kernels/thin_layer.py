@@ -52,12 +52,6 @@ T_MAX = 18.0
 PANEL_SPAN = 30.0
 """Panel width times (rho + sigma): ~5 periods of the Bessel product a panel."""
 
-FINE_T = 2.0
-"""A coated body: the fine panels cover ``0 < t < FINE_T f`` (as the tables' quadrature)."""
-
-FINE_PANELS = 32
-"""A coated body: at least this many panels on ``0 < t < FINE_T f``."""
-
 MEMORY_BYTES = 48e6
 """Bound on the Bessel values held at once (bytes)."""
 
@@ -94,8 +88,8 @@ def nodes(span: float, fine: float | None = None) -> tuple[Arr, Arr]:
     width = min(0.25, PANEL_SPAN / max(float(span), 1.0))
     edges = np.linspace(0.0, T_MAX, int(np.ceil(T_MAX / width)) + 1)
     if fine is not None:
-        t_fine = FINE_T * fine
-        step = min(width, t_fine / FINE_PANELS)
+        t_fine = layer.FINE_T * fine  # as the tables' quadrature
+        step = min(width, t_fine / layer.FINE_PANELS)
         low = np.linspace(0.0, t_fine, int(np.ceil(t_fine / step)) + 1)
         edges = np.concatenate([low, edges[edges > t_fine]])
     g, w = np.polynomial.legendre.leggauss(_GL_ORDER)

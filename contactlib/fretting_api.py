@@ -297,7 +297,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
              n: int | None = None, bulk_stress: Sequence[float] | None = None,
              indenter_modulus: float = math.inf, indenter_nu: float | None = None,
              profile: str = "paraboloid", exponent: float | None = None,
-             flat_ratio: float | None = None, max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
+             flat_ratio: float | None = None, max_error: float = DEFAULT_MAX_ERROR,
+             error_estimate: bool = True,
              progress: Callable[[int, int], None] | None = None) -> FrettingResult:
     """Follow a normal and a tangential load path of a cylinder or sphere with Coulomb friction.
 
@@ -370,11 +371,11 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     nu = validate.nu(nu)
     indenter_modulus, indenter_nu = validate.indenter_material(indenter_modulus, indenter_nu)
     if not takes(profile, "fretting"):
-        raise validate.InputError("profile", "a power law (paraboloid, cone, power) for "
-                                  "fretting", profile, f"profile {profile!r} is not taken by "
-                                  "fretting yet: the fretting solvers cover the power laws "
-                                  "only (for a punch with rounded edges, power with exponent "
-                                  "8 comes close)")
+        raise validate.InputError("profile", "a power law (paraboloid, cone, power) or rounded "
+                                  "for fretting", profile, f"profile {profile!r} is not taken "
+                                  "by fretting yet: the fretting solvers cover the power laws "
+                                  "and the rounded flat punch (profile 'rounded' with "
+                                  "flat_ratio), not a sharp edge")
     prof = make_profile(profile, exponent, flat_ratio)
     model = contact(geometry, nu, indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
                     profile=prof)

@@ -540,8 +540,8 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     axis = ind.coordinate
     work_scale = f"V R**2 / (E* a_max**{ind.work_exponent})" + (
         ", V per unit length over both sides of the axis" if ind.plane_strain else "")
-    if getattr(r, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch
-        shape = r.profile_shape()
+    shape = r.profile_shape()
+    if not shape.is_paraboloid:  # h = A r^d, or a flat punch
         work_scale = shape.work_unit(not ind.plane_strain).replace("^", "**") + (
             ", over both sides of the axis" if ind.plane_strain else "")
     sd, ed = ("step",), ("step", "xi")
@@ -642,7 +642,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
             attrs[f"load_path_{key}"] = value
         attrs["load_path_interpolation_error"] = float(r.interpolation_error)
     attrs.update(_layer_attrs(ind, r))
-    if getattr(r, "profile", "paraboloid") != "paraboloid":  # as the self-similar datasets
+    if not shape.is_paraboloid:  # as the self-similar datasets
         attrs.update(shape.attributes())
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(r, name, float("nan")))
@@ -655,8 +655,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
             attrs["resolved_quantities"] = " ".join(
                 name for name, ok in r.resolved_quantities.items() if ok)
     attrs["length_scale"] = "a_max: frictionless (Hertz) contact radius at load level 1"
-    if getattr(r, "profile", "paraboloid") != "paraboloid":  # the flat punch: no R
-        attrs.update(shape.scale_attributes(not ind.plane_strain))
+    attrs.update(shape.scale_attributes(not ind.plane_strain))  # the flat punch: no R
     if r.message:
         attrs["message"] = r.message
     attrs["contactlib_version"] = version()

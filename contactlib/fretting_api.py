@@ -1,8 +1,8 @@
 r"""Fretting of the cylinder: :func:`fretting`, a normal and a tangential load path.
 
 The numerics are in :mod:`contactlib.fretting_solver`; this module checks the input,
-plans the runs, estimates the errors from runs refined twofold and fourfold and
-returns a :class:`FrettingResult`. Units are those of
+plans the runs, estimates the errors from coarser runs and a run on a shifted mesh
+(:func:`fretting`, ``error_estimate``) and returns a :class:`FrettingResult`. Units are those of
 :mod:`contactlib.history_api`: E* = R = 1, lengths in units of ``a_max`` (the
 frictionless contact half-width at ``P_max``), the pressure unit ``p0``
 (1/2 for Hertz's cylinder), work per unit length in ``E* a_max^4/R^2``.
@@ -51,6 +51,7 @@ DEFAULT_STEPS = 40  # equal steps a path segment
 SPHERE_DEFAULT_N = 64  # the sphere: cells a side of [-1.2, 1.2]^2 a_max (cell a_max/27)
 SPHERE_DEFAULT_STEPS = 8
 SPHERE_N_MAX = 256
+SPHERE_N_MIN = 16  # the coarsest grid the sphere's estimates use for a Richardson order
 _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
 
 
@@ -194,8 +195,9 @@ def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
 
 
 def _run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
-         sigma: np.ndarray, progress=None) -> tuple[fr.StripOperators, fr.RawFretting]:
-    ops = fr.strip_operators(model, 2 * n)
+         sigma: np.ndarray, progress=None, offset: float = 0.0
+         ) -> tuple[fr.StripOperators, fr.RawFretting]:
+    ops = fr.strip_operators(model, 2 * n, offset=offset)
     big_p = load_levels(load, steps)[0][1:] * ops.p_max
     big_q = load_levels(tang, steps)[0][1:] * k * ops.p_max
     strain = load_levels(sigma, steps)[0][1:] * ops.p0 * ops.strain_share
@@ -216,15 +218,70 @@ def _estimate(fine: np.ndarray, coarse: np.ndarray, coarser: np.ndarray,
     """Richardson estimate of the fine run's error at each point, and the measured order.
 
     The order is measured over the path points (:func:`~contactlib.history_solver.measured_order`)
-    and capped at ``max_order``: 1 for the zone edges, whose sub-element fit converges
-    unevenly as an edge moves across the elements (the estimate is then the twofold
-    difference itself).
+    and capped at ``max_order`` (2 for the works: the discretizations are second order
+    at best, a higher measured order is pre-asymptotic luck).
     """
     ok = np.isfinite(fine) & np.isfinite(coarse) & np.isfinite(coarser)
     order = measured_order(fine[ok], coarse[ok], coarser[ok]) if ok.any() else 1.0
     order = min(order, max_order)
     err = np.abs(fine - coarse) / (2.0**order - 1.0)
     return np.where(ok, err, np.where(np.isfinite(fine), np.inf, np.nan)), order
+
+
+def _edge_estimate(fine: np.ndarray, shifted: np.ndarray, coarse: np.ndarray,
+                   order: float) -> np.ndarray:
+    """Error estimate of a zone edge measure (stick ratio, stick offset) at each point.
+
+    The sub-element edge fit (:func:`~contactlib.fretting_solver.zone_edges`) has two
+    errors. One depends on where the edge falls within its element and changes sign
+    from element to element, so it is not smooth in the element size and a twofold
+    difference can miss it or inflate it (measured: 0.015x to 11x the error against a
+    run refined fourfold): ``|fine - shifted|``, the run on the mesh shifted by half an
+    element, samples it at the same resolution. The other is the tractions' error in
+    the fitted band, smooth in the element size, of ``order``: the Richardson term
+    ``|fine - coarse|/(2^order - 1)``. The estimate is the larger of the two; infinite
+    where the fine value is finite and a comparison run has none, NaN where the fine
+    value is NaN (no contact).
+    """
+    both = np.isfinite(fine) & np.isfinite(shifted) & np.isfinite(coarse)
+    with np.errstate(invalid="ignore"):
+        err = np.maximum(np.abs(fine - shifted), np.abs(fine - coarse) / (2.0**order - 1.0))
+    return np.where(both, err, np.where(np.isfinite(fine), np.inf, np.nan))
+
+
+def _ratio_resolved(ratio: np.ndarray, error: np.ndarray, load: np.ndarray,
+                    max_error: float) -> np.ndarray:
+    """The stick ratio within ``max_error`` (absolute): a point without load has none to
+    resolve; a loaded point whose ratio or estimate is NaN is never resolved."""
+    with np.errstate(invalid="ignore"):
+        ok = np.isfinite(ratio) & (error <= max_error)
+    return np.where(load > 0.0, ok, True)
+
+
+def _work_estimate(fine: np.ndarray, shifted: np.ndarray, mesh_2: np.ndarray,
+                   mesh_4: np.ndarray, steps_2: np.ndarray, steps_4: np.ndarray
+                   ) -> tuple[np.ndarray, float, float]:
+    """Error estimate of a frictional work (cumulative, or a cycle's), and its two orders.
+
+    The mesh and the load steps contribute errors of different orders, and under the
+    joint refinement they can cancel in one twofold difference and not in the next (a
+    coupled cycle's work: 2e-6 between n/2 and n, 2.2e-5 off the run refined fourfold),
+    so they are estimated apart. The mesh's: ``fine`` (n, S) against ``mesh_2`` (n/2, S)
+    at the order measured with ``mesh_4`` (n/4, S), capped at 2 (midpoint collocation
+    and the trapezoid rule are second order: more is pre-asymptotic luck), and at least
+    the difference to the run on the mesh shifted by half an element, ``shifted``,
+    which samples the part that depends on where the zone edges fall in their elements.
+    The steps': ``mesh_2`` against ``steps_2`` (n/2, S/2) at the order measured with
+    ``steps_4`` (n/2, S/4), capped at 2 (where the contact or the slip zone moves during
+    a step, the quadrature of the step's slip is first order: measured 1.0-1.2); the
+    step error hardly depends on the mesh, so the n/2 ladder stands for the fine one.
+    The estimate is their sum.
+    """
+    mesh, o_mesh = _estimate(fine, mesh_2, mesh_4, 2.0)
+    with np.errstate(invalid="ignore"):
+        mesh = np.maximum(mesh, np.abs(fine - shifted))
+    step, o_step = _estimate(mesh_2, steps_2, steps_4, 2.0)
+    return mesh + step, o_mesh, o_step
 
 
 def _compliance(shift: np.ndarray, force: np.ndarray) -> np.ndarray:
@@ -337,9 +394,13 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         cumulative frictional work relative to the path's total (default 1e-3, as
         for :func:`contactlib.history`).
     error_estimate : bool
-        Estimate the errors from runs with (n/2, steps/2) and (n/4, steps/4)
-        (default; they cost about 1/10 of the main run). If False the
-        estimates are NaN and nothing is ``resolved``.
+        Estimate the errors (default). The cylinder runs the path again on the mesh
+        shifted by half an element (the zone edges' error that depends on where they
+        fall in their elements) and with (n/2, steps/2), (n/2, steps), (n/4, steps)
+        and (n/2, steps/4) (the mesh's and the steps' errors of the work, apart):
+        about 1.3 times the main run. The sphere runs (n/2, steps/2) and, from
+        n = 64, (n/4, steps/4). If False the estimates are NaN and nothing is
+        ``resolved``.
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
 
@@ -389,27 +450,38 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     ratio, offset = _derived(raw)
     points = np.arange(load.size) * steps
     if error_estimate:
-        runs = [_run(model, n // f, steps // f, k, load, tang, sigma)[1] for f in (2, 4)]
-        pts = [np.arange(load.size) * (steps // f) for f in (2, 4)]
-        der = [_derived(r) for r in runs]
-        ratio_err, o1 = _estimate(ratio[points], der[0][0][pts[0]], der[1][0][pts[1]], 1.0)
-        off_err, o2 = _estimate(offset[points], der[0][1][pts[0]], der[1][1][pts[1]], 1.0)
-        diss_err, o3 = _estimate(raw.dissipation[points], runs[0].dissipation[pts[0]],
-                                 runs[1].dissipation[pts[1]])
-        orders = {"stick_ratio": o1, "stick_offset": o2, "dissipation": o3}
-        # a cycle's work from its own three values (the cumulative work's errors cancel
+        # (n/2, S/2), (n, S) on the mesh shifted by half an element, then the mesh
+        # ladder (n/2, S), (n/4, S) and the step ladder (n/2, S/4)
+        plan = [(n // 2, steps // 2, 0.0), (n, steps, 0.5), (n // 2, steps, 0.0),
+                (n // 4, steps, 0.0), (n // 2, steps // 4, 0.0)]
+        runs = [_run(model, m, s, k, load, tang, sigma, offset=off)[1] for m, s, off in plan]
+        at = [r.dissipation[np.arange(load.size) * s] for r, (_, s, _) in zip(runs, plan)]
+        der = [_derived(r) for r in runs[:2]]
+        half = np.arange(load.size) * (steps // 2)
+        # the edges' smooth error: where the friction reserve vanishes as a square root
+        # (beta = 0: Cattaneo's form) the fit of its square is exact in form and the
+        # fitted tractions converge at second order; with the coupling (beta != 0) the
+        # edges were measured to converge at first order
+        o1, o2 = (2.0 if ops.beta == 0.0 else 1.0), 1.0
+        ratio_err = _edge_estimate(ratio[points], der[1][0][points], der[0][0][half], o1)
+        off_err = _edge_estimate(offset[points], der[1][1][points], der[0][1][half], o2)
+        fine = raw.dissipation[points]
+        diss_err, o3, o4 = _work_estimate(fine, at[1], at[2], at[3], at[0], at[4])
+        orders = {"stick_ratio": o1, "stick_offset": o2, "dissipation_mesh": o3,
+                  "dissipation_steps": o4}
+        # a cycle's work from its own values (the cumulative work's errors cancel
         # in the difference: its endpoint estimates inflated it 400-fold)
-        works = [np.array([d[j] - d[i] for i, j in _closed(load, tang, sigma)])
-                 for d in (raw.dissipation[points], runs[0].dissipation[pts[0]],
-                           runs[1].dissipation[pts[1]])]
-        cycle_err = _estimate(*works)[0] if works[0].size else works[0]
+        closed = _closed(load, tang, sigma)
+        works = [np.array([d[j] - d[i] for i, j in closed]) for d in [fine] + at]
+        cycle_err = (_work_estimate(works[0], works[2], works[3], works[4], works[1],
+                                    works[5])[0] if closed else works[0])
         # a stick zone too narrow for the edge fit is known to an element at best
         left, right, sl, sr = raw.edges[points].T
         narrow = np.nan_to_num(sr - sl, nan=0.0) < (fr.EDGE_SKIP + fr.EDGE_FIT + 2) * ops.width
         floor = np.where(narrow & np.isfinite(left), ops.width / (right - left), 0.0)
         ratio_err = np.maximum(ratio_err, floor)
         scale = max(float(raw.dissipation[-1]), 1e-300)
-        resolved = ((np.nan_to_num(ratio_err, nan=0.0) <= max_error)
+        resolved = (_ratio_resolved(ratio[points], ratio_err, raw.load[points], max_error)
                     & (diss_err <= max_error * scale) & raw.converged[points])
         if not all(r.converged.all() for r in runs):
             resolved &= False
@@ -485,7 +557,9 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     are those of the row of cells next to the x axis (``y = h/2``). The
     estimates are the differences to the run with ``n/2`` cells and ``steps/2``
     (``orders`` records the order 1 this assumes: the radii's lattice error is
-    not smooth in the cell size).
+    not smooth in the cell size). From ``n = 64`` the frictional work's estimates
+    are Richardson's from a third run with ``n/4`` cells at the measured order
+    (``orders["dissipation"]``, at most 2).
 
     Parameters
     ----------
@@ -521,15 +595,30 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         c_ratio, c_offset = _sphere_measures(coarse)
         ratio_err = np.abs(ratio[points] - c_ratio[cpts])
         off_err = np.abs(offset[points] - c_offset[cpts])
-        diss_err = np.abs(raw.dissipation[points] - coarse.dissipation[cpts])
-        cycle_err = np.array([abs((raw.dissipation[points[j]] - raw.dissipation[points[i]])
-                                  - (coarse.dissipation[cpts[j]] - coarse.dissipation[cpts[i]]))
-                              for i, j in closed])
-        orders = {"stick_ratio": 1.0, "stick_offset": 1.0, "dissipation": 1.0}
+        diss = [raw.dissipation[points], coarse.dissipation[cpts]]
+        ok = bool(coarse.converged.all())
+        if n // 4 >= SPHERE_N_MIN:
+            # the work converges fast but unevenly (the contact disc's cell count):
+            # Richardson from three runs at the order they show, capped at 2 as the
+            # cylinder's (a twofold difference inflated the cycle work's error 20-fold
+            # at n = 64)
+            _, coarser = _sphere_run(model, n // 4, steps // 4, k, load, tang, False)
+            diss.append(coarser.dissipation[np.arange(load.size) * (steps // 4)])
+            ok = ok and bool(coarser.converged.all())
+            diss_err, o3 = _estimate(*diss, 2.0)
+        else:  # no third run on a useful grid: the twofold difference (order 1)
+            diss_err, o3 = np.abs(diss[0] - diss[1]), 1.0
+        works = [np.array([d[j] - d[i] for i, j in closed]) for d in diss]
+        if not closed:
+            cycle_err = works[0]
+        elif len(works) == 3:
+            cycle_err = _estimate(*works, 2.0)[0]
+        else:
+            cycle_err = np.abs(works[0] - works[1])
+        orders = {"stick_ratio": 1.0, "stick_offset": 1.0, "dissipation": o3}
         scale = max(float(raw.dissipation[-1]), 1e-300)
-        resolved = ((np.nan_to_num(ratio_err, nan=0.0) <= max_error)
-                    & (diss_err <= max_error * scale) & raw.converged[points]
-                    & bool(coarse.converged.all()))
+        resolved = (_ratio_resolved(ratio[points], ratio_err, raw.load[points], max_error)
+                    & (diss_err <= max_error * scale) & raw.converged[points] & ok)
     else:
         ratio_err = off_err = diss_err = np.full(load.size, np.nan)
         cycle_err = np.full(len(closed), np.nan)

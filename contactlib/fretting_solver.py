@@ -142,7 +142,8 @@ def _log_integral(t: np.ndarray) -> np.ndarray:
     return np.where(t == 0.0, 0.0, out)
 
 
-def strip_operators(model: Contact, n: int, extent: float = MESH_EXTENT) -> StripOperators:
+def strip_operators(model: Contact, n: int, extent: float = MESH_EXTENT,
+                    offset: float = 0.0) -> StripOperators:
     """Influence matrices of ``n`` equal elements over ``[-extent, extent]`` (units a_max).
 
     Parameters
@@ -154,12 +155,16 @@ def strip_operators(model: Contact, n: int, extent: float = MESH_EXTENT) -> Stri
         Number of elements (even, so that no midpoint lies on the axis).
     extent : float
         Half-length of the mesh over a_max.
+    offset : float
+        The mesh's shift along x, in elements (0: symmetric about the axis; 1/2 moves
+        every element edge by half an element, which changes where the zone edges fall
+        within their elements and nothing else: the error estimates use it).
 
     Returns
     -------
     StripOperators
     """
-    edges = np.linspace(-extent, extent, n + 1)
+    edges = np.linspace(-extent, extent, n + 1) + offset * (2.0 * extent / n)
     mid = 0.5 * (edges[:-1] + edges[1:])
     d_lo = mid[:, None] - edges[None, :-1]
     d_hi = mid[:, None] - edges[None, 1:]

@@ -38,10 +38,11 @@ Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
   start of the path.
 * ``contact_radius`` = a / a_max and ``stick_ratio`` = c / a, c the radius of
   the central stick zone (the run of stuck elements from the axis). a is
-  resolved below the element size from the gap outside the contact, c where
-  the stick edge advances (loading) from the stick-traction deficit; where it
-  recedes or stands (unloading) c is an element edge, good to half an element
-  (see :func:`contactlib.history_solver.contact_radius` and
+  resolved below the element size from the gap outside the contact, c from
+  the stick-traction deficit, whose law differs where the stick edge
+  advances (loading) and where it recedes (unloading); where neither law
+  fits, c is an element edge, good to half an element (see
+  :func:`contactlib.history_solver.contact_radius` and
   :func:`~contactlib.history_solver.stick_radius`). ``stick_ratio`` is NaN
   without contact.
 
@@ -554,18 +555,19 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     from the three runs, and their error is this run minus run A over
     ``2^p - 1`` (Richardson); the stick radius error is this run minus run A
     (not across a jump of A's stick radius), at least half an element
-    wherever the stick edge is an element edge. Measured against runs
+    wherever the stick radius is an element edge. Measured against runs
     refined fourfold (4n elements, 4x steps;
     ``benchmarks/report_history_estimates.py``, docs/accuracy.md) at n =
-    120, 50 steps: the cycle work's estimate is 0.52 ... 1.25 times its error
-    (sphere and half-plane cycles and fretting, a viscoelastic body;
-    measured orders 1.5 ... 2.1), 16 times on a layer whose slip annulus
-    spans under 12 elements (the runs are not asymptotic there, the
-    measured order falls to its bound 1/2); the stick radius's is 1.4 ... 36
-    times its error at the top load (the sub-element edge converges faster
-    than the differences show) and covers it along the path (at least 0.68
-    of it), at most 9.9 times a segment's largest error. The estimate costs
-    about a third of the run.
+    120, 50 steps and n = 240, 100 steps: the cycle work's estimate is 0.48
+    ... 1.46 times its error (sphere and half-plane cycles and fretting, a
+    viscoelastic body, a layer at n = 240; measured orders 1.3 ... 2.1), 16
+    times on a layer whose slip annulus spans under 12 elements (n = 120: the
+    runs are not asymptotic there, the measured order falls to its bound
+    1/2); the stick radius's covers its error along the path (at least 0.60
+    of it) and is at most 1.3 ... 9.9 times a segment's largest error, 1.4
+    ... 36 times the error at the top load (the located edge's error changes
+    sign as the edge crosses the elements, and the coarse run's is twice as
+    large). The estimate costs about a third of the run.
 
     A step is flagged where a quantity is off by more than ``max_error`` at
     its own scale (above); ``resolved_quantities`` and ``message`` say which

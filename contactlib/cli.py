@@ -222,11 +222,13 @@ def _profile_kwargs(args: argparse.Namespace) -> dict[str, Any]:
 def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = False) -> None:
     """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max"); with ``coated`` also
     ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep, history)."""
+    most = validate.LAYER_RATIO_MAX
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help=f"{length}/h of an elastic layer of thickness h on a rigid base, "
-                          f">= 0 (0 = half-space / half-plane); at most 1000 for the sphere "
-                          f"(20/1.2 in history), 80 for the cylinder on a smooth base, "
-                          f"1000 on a bonded one; default: 0")
+                          f">= 0 (0 = half-space / half-plane); at most "
+                          f"{most[('sphere', 'bonded')]:g} for the sphere, "
+                          f"{most[('cylinder', 'smooth')]:g} for the cylinder on a smooth "
+                          f"base, {most[('cylinder', 'bonded')]:g} on a bonded one; default: 0")
     if not coated:
         sub.add_argument("--base", metavar="{smooth,bonded}", default="smooth",
                          help="the layer's rigid base: smooth (frictionless) or bonded; "
@@ -235,8 +237,8 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
     sub.add_argument("--base", metavar="{smooth,bonded,elastic}", default="smooth",
                      help="the layer's base: rigid and smooth (frictionless) or bonded, or "
                           "elastic (a coated body: the layer bonded to an elastic half-space; "
-                          "default method; a/h <= 1000 for the sphere, 20 for the "
-                          "cylinder, a_max/h <= 20/1.2 in history); "
+                          f"a/h <= {most[('sphere', 'elastic')]:g} for the sphere, "
+                          f"{most[('cylinder', 'elastic')]:g} for the cylinder); "
                           "default: smooth")
     sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
                      help="with --base elastic: the substrate's Young's modulus over the "
@@ -1559,8 +1561,8 @@ def _remedy_command(argv: Sequence[str], args: argparse.Namespace, command: str,
             unit = "" if load and not load[-1].isdigit() and load[-1] != "." else "N"
             text = ",".join(("0N" if v == 0 else f"{load}{unit}") for v in value)
         opts.append((option, text))
-    if command == "history":
-        if not physical and "tolerance" not in changes:
+    if command == "history":  # steps, unless the tolerance plans them
+        if not physical and "tolerance" not in changes and "--tolerance" not in dict(opts):
             opts.append(("--steps", "200"))
         opts.append(("--output", "history.nc"))
     elif args.output is not None:

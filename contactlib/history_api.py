@@ -82,12 +82,13 @@ import numpy as np
 
 from . import history_solver as hs
 from . import load_paths, profiles, validate
+from .kernels import layer
 from .model import Contact, contact
 from .result import history_repr
 from .threads import blas_single_threaded
 
 __all__ = ["history", "HistoryResult", "DEFAULT_N", "MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
-           "load_levels", "step_times", "creep_extent", "coated_extent"]
+           "load_levels", "step_times", "creep_extent", "layer_extent"]
 
 DEFAULT_N = validate.HISTORY_DEFAULT_N  # elements over [0, 1.2 a_max]: size a_max / 200
 MIN_N = validate.HISTORY_MIN_N
@@ -319,19 +320,30 @@ def creep_extent(model: Contact) -> float:
     return hs.MESH_EXTENT * model.frictionless_radius(1.0 / relaxed)
 
 
-_PROBE_N = 64  # elements of the frictionless probe that sizes a coated body's mesh
+_PROBE_N = 64  # elements of the frictionless probe that sizes a layer's mesh
 
 
-def coated_extent(model: Contact, geometry: str, slab: float) -> float:
-    """Mesh length over a_max that covers a coated body's contact (``MESH_EXTENT`` on a
-    substrate at least as stiff as the coating).
+def layer_extent(model: Contact, geometry: str, slab: float) -> float:
+    """Mesh length over a_max on a layer or a coated body (``MESH_EXTENT`` where it fits).
 
-    a_max is the coating's Hertz radius at P_max. A softer substrate (m = E1*/E2* > 1)
-    lets the contact grow beyond it, up to the substrate's own radius
-    ``frictionless_radius(m)`` a_max (the coated body is stiffer than a half-space of
-    the substrate). A frictionless one-step probe on ``_PROBE_N`` elements over
-    ``MESH_EXTENT`` times that bound (at most the kernels' reach) finds the radius a_p;
-    the mesh keeps ``MESH_EXTENT (a_p + one probe element)``.
+    a_max is the Hertz radius at P_max of a half-space of the layer's material. Two
+    cases need a mesh sized by the contact itself:
+
+    * a substrate softer than the coating (m = E1*/E2* > 1) lets the contact grow
+      beyond a_max, up to the substrate's own radius ``frictionless_radius(m)`` a_max
+      (the coated body is stiffer than a half-space of the substrate);
+    * a sphere on a layer thinner than the ring tables reach (a_max/h beyond
+      ``layer.RATIO_MAX / MESH_EXTENT``, 16.7; the transform-domain sums of
+      :mod:`contactlib.kernels.thin_layer` take over) has a contact well inside a_max
+      (0.46 a_max at a_max/h = 30 on a bonded base, about (16 h/(3 pi a_max))^(1/4)
+      a_max on a thin smooth one): a mesh over 1.2 a_max would spend most of its
+      elements outside it.
+
+    There a frictionless one-step probe on ``_PROBE_N`` elements over ``MESH_EXTENT``
+    times the bound (at most the kernels' reach) finds the radius a_p, and the mesh
+    keeps ``MESH_EXTENT (a_p + one probe element)``. A viscoelastic layer keeps the
+    creep extent (:func:`creep_extent`, the half-space's, which bounds the layer's).
+    Elsewhere the mesh is ``MESH_EXTENT`` (the contact stays within a_max).
 
     Raises
     ------
@@ -340,26 +352,46 @@ def coated_extent(model: Contact, geometry: str, slab: float) -> float:
         (a_max/h too large for this substrate).
     """
     body = model.body
-    sub = body.kernel_base
-    m = (1.0 - sub.nu ** 2) / ((1.0 - body.nu ** 2) * float(body.substrate_modulus))
-    if m <= 1.0:
+    coated = getattr(body, "base", None) == validate.COATED_BASE
+    m = 1.0
+    if coated:
+        sub = body.kernel_base
+        m = (1.0 - sub.nu ** 2) / ((1.0 - body.nu ** 2) * float(body.substrate_modulus))
+    # the farthest mesh point over h the kernels reach (the sphere's rings: the thin
+    # sums' r/h <= 1200; the cylinder's coated strip tables |x +- s|/h <= 48)
+    if geometry == "sphere":
+        reach = layer.THIN_RATIO_MAX
+        thin = slab * hs.MESH_EXTENT > layer.RATIO_MAX
+    else:
+        reach = (validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)]
+                 * validate.HISTORY_MESH_EXTENT) if coated else math.inf
+        thin = False
+    if getattr(body, "relaxed_ratio", 1.0) != 1.0:
+        extent = creep_extent(model)
+        if extent * slab > reach:
+            raise validate.InputError(
+                "slab_ratio", "small enough that the crept contact stays within the "
+                "kernels' range", slab, f"slab_ratio = {slab:g} is too large for this "
+                f"relaxation: the mesh over the fully crept contact would reach "
+                f"{extent * slab:.3g} h, beyond the {reach:g} h the layer's kernels cover")
+        return extent
+    if m <= 1.0 and not thin:
         return hs.MESH_EXTENT
-    # the farthest mesh point over h the kernels reach (the sphere's rings r/h <= 20, the
-    # cylinder's strip tables |x +- s|/h <= 48 with x, s within the mesh)
-    reach = (validate.HISTORY_SPHERE_LAYER_RATIO_MAX if geometry == "sphere" else
-             validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)]
-             * validate.HISTORY_MESH_EXTENT)
-    probe = min(hs.MESH_EXTENT * model.frictionless_radius(m), reach / slab)
+    bound = model.frictionless_radius(m) if m > 1.0 else 1.0
+    probe = min(hs.MESH_EXTENT * bound, reach / slab)
     raw = hs.run_history(hs.build_operators(model, _PROBE_N, probe), 0.0, np.array([0.0, 1.0]))
     extent = hs.MESH_EXTENT * (float(raw.contact_radius[-1]) + probe / _PROBE_N)
     if np.any(raw.state[-1, -2:] > 0) or extent * slab > reach:
+        grows = (f"beyond {probe:.3g} a_max ({probe * slab:.3g} h)"
+                 if np.any(raw.state[-1, -2:] > 0) else
+                 f"to {extent / hs.MESH_EXTENT:.3g} a_max and the mesh of {hs.MESH_EXTENT:g} "
+                 f"times that would reach {extent * slab:.3g} h")
         raise validate.InputError(
             "slab_ratio", "small enough that the contact stays within the kernels' range",
             slab, f"slab_ratio = {slab:g} is too large for this soft substrate (E1*/E2* = "
-            f"{m:.3g}): the contact grows to {extent / hs.MESH_EXTENT:.3g} a_max and the mesh "
-            f"of {hs.MESH_EXTENT:g} times that would reach {extent * slab:.3g} h, beyond the "
-            f"{reach:g} h the coated kernels cover; use a thicker coating (smaller slab_ratio)")
-    return max(extent, hs.MESH_EXTENT)
+            f"{m:.3g}): the contact grows {grows}, beyond the {reach:g} h the layer's "
+            f"kernels cover; use a thicker coating (smaller slab_ratio)")
+    return extent if thin else max(extent, hs.MESH_EXTENT)
 
 
 def _relative(error: np.ndarray, scale: float) -> np.ndarray:
@@ -471,10 +503,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         contact radius (:func:`creep_extent`), so the elements are larger.
     slab_ratio : float
         a_max / h of the layer (0: half-space or half-plane); h is fixed
-        while a grows. The sphere's mesh reaches 1.2 a_max, so its bound is
-        ``LAYER_RATIO_MAX / 1.2`` (16.7). On a coated body whose substrate is
-        softer than the coating the contact outgrows a_max and the mesh with it
-        (:func:`coated_extent`), which lowers that bound.
+        while a grows. Up to 1000 for the sphere (any base) and as
+        ``validate.LAYER_RATIO_MAX`` for the cylinder. Beyond a_max/h = 16.7
+        the sphere's contact stays well inside a_max and its mesh is sized by
+        a frictionless probe to 1.2 times the contact; on a coated body whose
+        substrate is softer than the coating the contact outgrows a_max and
+        the mesh with it (:func:`layer_extent`); a contact whose mesh would
+        reach beyond the kernels' range (1200 h for the sphere) is refused
+        naming ``slab_ratio``.
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
     max_error : float
@@ -669,8 +705,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     if shape.fixed_contact:  # the mesh is the punch's face: the contact neither grows nor creeps
         extent = 1.0
     else:
-        extent = coated_extent(model, geometry, slab) \
-            if base == validate.COATED_BASE and slab > 0 else creep_extent(model)
+        extent = layer_extent(model, geometry, slab) if slab > 0 else creep_extent(model)
     ops = hs.build_operators(model, n, extent)
     if shaped:
         levels, times, segment = load_paths.sample(path, step_plan, bool(prony))

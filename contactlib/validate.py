@@ -145,17 +145,19 @@ LAYER_RATIO_MAX: dict[tuple[str, str], float] = {
 """Largest a/h (a_max/h in the history solver) per (geometry, base).
 
 Sphere: the ring tables of :mod:`contactlib.kernels.layer` cover
-max(r, s)/h <= 20 (the history solver, whose mesh reaches 1.2 a_max:
-a_max/h <= :data:`HISTORY_SPHERE_LAYER_RATIO_MAX`/1.2); on a rigid base and on
-a coated body :func:`contactlib.solve` goes on to 1000 with the transform-domain
-sums of :mod:`contactlib.kernels.thin_layer` (measured: tests/test_thin_layers.py,
-tests/test_thin_coatings.py).
+max(r, s)/h <= 20; on a rigid base and on a coated body the transform-domain
+sums of :mod:`contactlib.kernels.thin_layer` go on to 1000 (measured:
+tests/test_thin_layers.py, tests/test_thin_coatings.py), in
+:func:`contactlib.solve` and in :func:`contactlib.history` (whose mesh, sized
+by a frictionless probe beyond a_max/h = 16.7, must stay within
+:data:`HISTORY_SPHERE_LAYER_RATIO_MAX` h: tests/test_thin_layer_history.py).
 Cylinder: where k at n = 256 is resolved to 1e-3 by its error estimate,
 measured (docs/validation.md, "Layers").
 """
 
-HISTORY_SPHERE_LAYER_RATIO_MAX = 20.0
-"""max(r, s)/h of the sphere's layer kernels in the history solver (its tables)."""
+HISTORY_SPHERE_LAYER_RATIO_MAX = 1200.0
+"""max(r, s)/h of the sphere's layer kernels in the history solver: the ring tables to
+20, then the transform-domain sums (``kernels.layer.THIN_RATIO_MAX``)."""
 
 HISTORY_MESH_EXTENT = 1.2
 """The history solver's mesh length over a_max (``history_solver.MESH_EXTENT``)."""
@@ -449,7 +451,7 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
         return v
     hi = LAYER_RATIO_MAX[(geometry_name, base_name)]
     if geometry_name == "sphere" and extent != 1.0:
-        hi = min(hi, HISTORY_SPHERE_LAYER_RATIO_MAX) / extent
+        hi = min(hi, HISTORY_SPHERE_LAYER_RATIO_MAX / extent)
     if v > hi:
         raise InputError("slab_ratio", f"<= {hi:g} for a {geometry_name} on a {base_name} "
                          "base (the supported range)", value)

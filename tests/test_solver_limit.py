@@ -63,24 +63,27 @@ class _Limited:
 
 
 def test_remedies_our_own_rules_refuse_are_not_named(capsys, monkeypatch) -> None:
-    """A history on a sphere's layer reaches a_max/h = 20/1.2 only: a solve at a/h = 18 is
-    not sent there; solve --stick-ratio 1 is."""
+    """A history plans for tolerances 1e-5 ... 1e-2 only: a solve asked for 1e-7 is not
+    sent there; solve --stick-ratio 1 is. At 1e-3 the history is named, with the
+    tolerance and without steps (the plan picks them)."""
     monkeypatch.setattr(cli, "_api", lambda: _Limited([
         ("solve", {"stick_ratio": 1.0}),
         ("history", {"friction": 0.5, "load_path": [0.0, 1.0]})]))
     argv = ["solve", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.5", "--base",
-            "bonded", "--output", "out.nc", "--method=default", "--slab-ratio"]
-    assert cli.main(argv + ["18"]) == 3
+            "bonded", "--slab-ratio", "2", "--output", "out.nc", "--method=default",
+            "--tolerance"]
+    assert cli.main(argv + ["1e-7"]) == 3
     lines = capsys.readouterr().err.splitlines()
     assert lines == [
         "contactlib: error: friction 0.5: the contact is most likely fully stuck",
         "contactlib: answer it with: contactlib solve --geometry sphere --nu 0.3 --base "
-        "bonded --method default --slab-ratio 18 --stick-ratio 1 --output out.nc"]
-    assert cli.main(argv + ["2"]) == 3
+        "bonded --slab-ratio 2 --method default --tolerance 1e-7 --stick-ratio 1 "
+        "--output out.nc"]
+    assert cli.main(argv + ["1e-3"]) == 3
     lines = capsys.readouterr().err.splitlines()
     assert lines[2] == ("contactlib: answer it with: contactlib history --geometry sphere "
-                        "--nu 0.3 --base bonded --slab-ratio 2 --friction 0.5 --load-path 0,1 "
-                        "--steps 200 --output history.nc")
+                        "--nu 0.3 --base bonded --slab-ratio 2 --tolerance 1e-3 --friction "
+                        "0.5 --load-path 0,1 --output history.nc")
     assert len(lines) == 3
 
 

@@ -298,7 +298,7 @@ BAD = [
     ("load_path", []), ("load_path", [0]), ("load_path", [0, 1.5]), ("load_path", [0, -0.1]),
     ("load_path", [0.5, 1]), ("load_path", "0,1"), ("load_path", [0, "a"]),
     ("load_path", 1.0), ("geometry", "cone"), ("nu", 0.6), ("nu", -1.0), ("n", 4),
-    ("n", 10.5), ("slab_ratio", 17.0), ("slab_ratio", -1.0), ("base", "glued"),
+    ("n", 10.5), ("slab_ratio", 1001.0), ("slab_ratio", -1.0), ("base", "glued"),
 ]
 
 
@@ -330,7 +330,7 @@ CLI_BAD = [
     (["--load-path", ""], "--load-path"), (["--load-path", "0,1.5"], "--load-path"),
     (["--load-path", "0.2,1"], "--load-path"), (["--load-path", "0,x"], "--load-path"),
     (["--nu", "0.7"], "--nu"), (["--geometry", "cone"], "--geometry"),
-    (["--slab-ratio", "17"], "--slab-ratio"), (["--base", "glued"], "--base"),
+    (["--slab-ratio", "1001"], "--slab-ratio"), (["--base", "glued"], "--base"),
     (["--n", "4"], "n must"),
 ]
 

@@ -38,7 +38,7 @@ def test_history_scene_parses_with_every_friction():
     ("load_path", [0, 1.5], "scenes.h.load_path"), ("steps", 0, "scenes.h.steps"),
     ("steps", 10**9, "scenes.h.steps"), ("n", 8, "scenes.h.n"),
     ("stick_ratios", [0.5], "unknown key"), ("kind", "cycle", "scenes.h.kind"),
-    ("slab_ratio", 17, r"scenes\.h\.slab_ratio: .*<= 16\.6667"),
+    ("slab_ratio", 1001, r"scenes\.h\.slab_ratio: .*<= 1000"),
     ("base", "glued", "scenes.h.base"),
 ])
 def test_bad_history_scene_is_refused_naming_the_key(key, value, text):

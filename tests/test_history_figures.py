@@ -214,6 +214,28 @@ def test_stick_radius_marks_failed_steps(data, figure):
     assert any("NOT CONVERGED at 1 step" in t for t in legend_texts(fig))
 
 
+def test_stick_radius_marks_unresolved_steps_hollow():
+    """A converged step whose stick radius's estimate exceeds max_error gets a hollow
+    circle on its curve, at its (load travelled, c) and nowhere else; a dataset resolved
+    everywhere (max_error 0.5) gets none and no legend entry."""
+    for max_error, expect_marks in ((1e-3, True), (0.5, False)):
+        ds = history_to_dataset(history("sphere", 0.3, 0.2, [0, 1, 0], STEPS, n=N,
+                                        max_error=max_error))
+        fig = hf.hist_stick_radius(ds)
+        marks = lines(fig, "stick-radius-unresolved")
+        loose = ((ds["stick_radius_error_estimate"].values > max_error)
+                 & ds["converged"].values.astype(bool))
+        assert bool(loose.any()) == expect_marks and len(marks) == int(expect_marks)
+        has_key = any("not resolved to max_error" in t for t in legend_texts(fig))
+        assert has_key == expect_marks
+        if expect_marks:
+            (line,) = lines(fig, "stick-radius")
+            x, c = np.asarray(line.get_xdata()), np.asarray(line.get_ydata())
+            assert np.array_equal(marks[0].get_xdata(), x[loose])
+            assert np.array_equal(marks[0].get_ydata(), c[loose])
+            assert marks[0].get_markerfacecolor() == "white"
+
+
 def test_monotonic_loading_stick_zone_grows_inside_contact(figure):
     """Physics: loading only, the stick zone c never recedes and never exceeds a."""
     fig = figure("stick_radius", "monotonic")

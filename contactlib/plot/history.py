@@ -26,6 +26,11 @@ Conventions common to all figures:
   steps a segment;
 * a step with ``converged`` false is always drawn and marked by a black
   cross (matplotlib ``gid`` ``"not-converged"``);
+* in :func:`hist_stick_radius`, a converged step whose stick radius is not
+  resolved (``stick_radius_error_estimate`` above the dataset's
+  ``max_error``, in a_max) carries a hollow circle on its curve (``gid``
+  ``"stick-radius-unresolved"``), as unresolved self-similar cases are
+  hollow in the paper's figures;
 * the drawn data carry a ``gid`` naming what they are (``"stick-radius"``,
   ``"contact-radius"``, ``"load"``, ``"segment-end"``, ``"state-map"``,
   ``"displacement-loop"``, ``"cycle-energy"``, ``"doubled-loading"``,
@@ -247,6 +252,19 @@ def _cross_key() -> Line2D:
     return Line2D([], [], label="step not converged (kept)", **_CROSS)  # type: ignore[arg-type]
 
 
+_HOLLOW = {"ls": "none", "marker": "o", "ms": 3.2, "mew": 0.8, "mfc": "white"}
+
+
+def _stick_unresolved(h: _History) -> np.ndarray | None:
+    """(k, step): converged steps whose stick radius's estimate exceeds ``max_error``; None
+    for a dataset without the estimate (or its ``max_error``)."""
+    if "stick_radius_error_estimate" not in h.ds or "max_error" not in h.ds.attrs:
+        return None
+    est = h.values("stick_radius_error_estimate").astype(float)
+    with np.errstate(invalid="ignore"):
+        return (est > float(h.ds.attrs["max_error"])) & h.values("converged").astype(bool)
+
+
 def _segment_ends(h: _History, along: str = "step") -> np.ndarray:
     """x values (step or travel) at which a path segment ends (all but the last)."""
     segment = h.path("segment")
@@ -366,7 +384,9 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     several = len(members) > 1
     curves = sum(h.ks.size for h in members)
     any_failed = any(not np.all(h.values("converged")) for h in members)
-    entries = curves + 2 + int(any_failed)
+    unresolved = [_stick_unresolved(h) for h in members]
+    any_unresolved = any(u is not None and u.any() for u in unresolved)
+    entries = curves + 2 + int(any_failed) + int(any_unresolved)
     width = 6.4 if several else 5.6
     labels = [_curve_label(h, float(k), ok, several)
               for h in members for k, ok in zip(h.ks, h.values("converged").astype(bool))]
@@ -402,6 +422,10 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
                 bad = ~ok_all[i]
                 _crosses(ax, x[bad], c_all[i][bad])
                 _crosses(ax, x[bad], a_all[i][bad])
+                loose = unresolved[h.index]
+                if loose is not None and loose[i].any():
+                    ax.plot(x[loose[i]], c_all[i][loose[i]], color=color, zorder=z + 0.05,
+                            gid="stick-radius-unresolved", **_HOLLOW)  # type: ignore[arg-type]
                 handles.append(line)
         handles += [
             Line2D([], [], color="0.35", lw=1.4,
@@ -409,6 +433,9 @@ def hist_stick_radius(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
             Line2D([], [], color="0.35", lw=0.9, dashes=(4.0, 2.0),
                    label="contact radius a/a_max"),
         ]
+        if any_unresolved:
+            handles.append(Line2D([], [], color="0.35", label="stick radius not resolved "
+                                  "to max_error", **_HOLLOW))  # type: ignore[arg-type]
         if any_failed:
             handles.append(_cross_key())
         ax.set_ylim(bottom=-0.03)

@@ -946,10 +946,11 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     edges too, so they vanish by coincidence), and its difference counts as
     at least ``h / 2`` (h = element size), also in its neighbours' windows
     (a fit next to two edges that coincide with the coarse run's had an
-    estimate of 2e-16 against an error of 0.29 of an element). A fit kept at the midpoint of the first
-    element not stuck is not such a fallback: its error is the fit's, which
-    the differences measure (the cylinder at k = 0.3, n = 240: 0.065 of an
-    element at the top, where the floor had made the estimate 7.7 times it).
+    estimate of 2e-16 against an error of 0.29 of an element). A fit kept at
+    the midpoint of the first element not stuck is not such a fallback: its
+    error is the fit's, which the differences measure (the cylinder at k =
+    0.3, n = 240: 0.065 of an element at the top, where the floor had made
+    the estimate 7.7 times it).
 
     Parameters
     ----------

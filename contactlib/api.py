@@ -389,7 +389,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         bonded; irrelevant at ``slab_ratio = 0``. ``"elastic"``: a coated
         body, the layer (E, ``nu``; E* is the layer's) bonded to an elastic
         half-space or half-plane (``substrate_modulus``, ``substrate_nu``);
-        method "default", a/h <= 1000 (sphere; cylinder 20; docs/models.md).
+        method "default", a/h <= 1000 (both geometries; docs/models.md).
     tolerance : float, optional
         A relative error of k to reach instead of a resolution, in
         [1e-9, 0.1] (:func:`contactlib.validate.planned_tolerance`): the

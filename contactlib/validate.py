@@ -43,7 +43,8 @@ __all__ = [
     "MIN_TOLERANCE", "MAX_TOLERANCE", "MIN_PLANNED_TOLERANCE", "planned_tolerance",
     "indenter_modulus", "indenter_nu", "indenter_material",
     "indenter_mapping", "BASES", "COATED_BASE", "SUBSTRATE_MODULUS_RANGE", "substrate",
-    "LAYER_RATIO_MAX", "HISTORY_SPHERE_LAYER_RATIO_MAX", "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
+    "LAYER_RATIO_MAX", "HISTORY_SPHERE_LAYER_RATIO_MAX", "HISTORY_CYLINDER_COATED_RATIO_MAX",
+    "HISTORY_MESH_EXTENT", "base", "OUTPUTS",
     "DEFAULT_OUTPUTS", "SUBSURFACE_GRID", "subsurface_grid",
 ]
 
@@ -140,7 +141,7 @@ COATED_BASE = "elastic"
 LAYER_RATIO_MAX: dict[tuple[str, str], float] = {
     ("sphere", "smooth"): 1000.0, ("sphere", "bonded"): 1000.0, ("sphere", "elastic"): 1000.0,
     ("cylinder", "smooth"): 80.0, ("cylinder", "bonded"): 1000.0,
-    ("cylinder", "elastic"): 20.0,
+    ("cylinder", "elastic"): 1000.0,
 }
 """Largest a/h (a_max/h in the history solver) per (geometry, base).
 
@@ -152,8 +153,15 @@ tests/test_thin_layers.py, tests/test_thin_coatings.py), in
 by a frictionless probe beyond a_max/h = 16.7, must stay within
 :data:`HISTORY_SPHERE_LAYER_RATIO_MAX` h: tests/test_thin_layer_history.py).
 Cylinder: where k at n = 256 is resolved to 1e-3 by its error estimate,
-measured (docs/validation.md, "Layers").
+measured (docs/validation.md, "Layers"); on a coated body 1000 with the log-spaced far
+tables of :mod:`contactlib.kernels.strip` (|x +- s|/h <= 3072; measured:
+tests/test_thin_coatings_cylinder.py), in history
+:data:`HISTORY_CYLINDER_COATED_RATIO_MAX`.
 """
+
+HISTORY_CYLINDER_COATED_RATIO_MAX = 20.0
+"""a_max/h of a coated cylinder in the history solver (as verified there; its kernels reach
+further: the contact may grow to 1.2 * 1000 h on a soft substrate)."""
 
 HISTORY_SPHERE_LAYER_RATIO_MAX = 1200.0
 """max(r, s)/h of the sphere's layer kernels in the history solver: the ring tables to
@@ -440,8 +448,9 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
     """a/h of the layer, finite and >= 0 (0: half-space or half-plane).
 
     ``geometry_name`` and ``base_name`` (already checked) bound it by
-    :data:`LAYER_RATIO_MAX` (a coated body: 1000 for the sphere, 20 for the
-    cylinder; the sphere in history: :data:`HISTORY_SPHERE_LAYER_RATIO_MAX`);
+    :data:`LAYER_RATIO_MAX` (a coated body: 1000 for both geometries; in history the
+    sphere's :data:`HISTORY_SPHERE_LAYER_RATIO_MAX` and the coated cylinder's
+    :data:`HISTORY_CYLINDER_COATED_RATIO_MAX`);
     ``extent`` is the farthest point of the mesh in
     units of the length scale (the history solver's 1.2 a_max), which
     divides the sphere's bound (its kernels are bounded in r/h, not a/h).
@@ -452,6 +461,8 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
     hi = LAYER_RATIO_MAX[(geometry_name, base_name)]
     if geometry_name == "sphere" and extent != 1.0:
         hi = min(hi, HISTORY_SPHERE_LAYER_RATIO_MAX / extent)
+    if geometry_name == "cylinder" and base_name == COATED_BASE and extent != 1.0:
+        hi = min(hi, HISTORY_CYLINDER_COATED_RATIO_MAX)
     if v > hi:
         raise InputError("slab_ratio", f"<= {hi:g} for a {geometry_name} on a {base_name} "
                          "base (the supported range)", value)

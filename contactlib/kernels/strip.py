@@ -177,10 +177,25 @@ pressure strip's ``(4 s/pi) ln h`` is multiplied by ``1 - m`` (``-R0``; 1 on the
 bases): far away the line load's ``w`` is ``-(2/pi) m ln|xi|``, the substrate's
 half-plane with the unit reference length. The line-load remainders decay only
 algebraically (``1/eta^2``: the transforms are not analytic at ``k = 0``), so there
-are no far-field forms: the tables (``|eta| <= 48``, spacing 0.02, one per (nu,
-substrate), the quadrature with 32 panels on ``0 < t < 2 min(1, m^(-1/3))`` before
-the panels of 0.25) are the supported range, ``|x +- s|/h <= 48`` (a/h <= 20 for
-``x, s <= a``), and beyond it a ``ValueError`` is raised.
+are no exponentially accurate far-field forms: the tables (``|eta| <= 48``, spacing
+0.02, one per (nu, substrate), the quadrature with 32 panels on ``0 < t < 2 min(1,
+m^(-1/3))`` before the panels of 0.25) are followed, on ``48 < |eta| <= 3072``, by
+log-spaced tables of the smooth parts ``G = X1 - K`` (:func:`_coated_far`), where ``K``
+is the growth that makes the substrate's half-plane::
+
+    K_A1 = K_C1 = -(2/pi) R0 (eta ln|eta| - eta),   K_B1 = -Rwu0 |eta|
+
+(``R0 = m - 1``, ``Rwu0 = m beta2 - beta``): quintic Hermite pieces uniform in
+``ln|eta|`` (40 per doubling of ``eta``), their nodal values and two derivatives by
+the same quadrature with panels ``12/eta_max`` wide, octave by octave (built on first
+use, only the octaves a call reaches: ~0.1 s to eta = 200, ~2.5 s to 3072). Where every
+argument is beyond 48 the kernel is the substrate's half-plane ``m hp(beta2)`` plus
+differences of ``G`` (:func:`_coated_all_far`; the growing ``K`` never enters). Measured
+(tests/test_thin_coatings_cylinder.py): the slopes ``A, B, C`` equal an independent
+QAWO quadrature of their Fourier integrals within 2e-11 of ``max(1, m)`` up to
+``eta = 3000`` (E2/E1 = 0.01 ... 1e3), the tables and the far tables join within the
+step at ``eta = 48``. Beyond ``|x +- s|/h = 3072`` (a/h = 1536 for ``x, s <= a``) a
+``ValueError`` is raised.
 
 Removable points and limits: ``x = +-s`` (``F(0) = 0``), ``x = 0`` and ``s = 0``
 (all outputs 0) are exact. ``du`` of the pressure strip jumps at ``x = +-s``:
@@ -473,12 +488,14 @@ class _SlabTable:
     # -Rww(0): the factor of the (2/pi) ln h that makes the remainder's w scale with h (1 on
     # the rigid bases; 1 - m on a coated body, m = E1*/E2*)
     log_factor: float = 1.0
+    # a coated body: its layer's nu and substrate (the key of its far table, _coated_far)
+    nu: float = float("nan")
+    substrate: Substrate | None = None
 
 
 def _quintic_hermite(f: NDArray[np.float64], df: NDArray[np.float64],
-                     d2f: NDArray[np.float64]) -> list[NDArray[np.float64]]:
-    """Monomial coefficients in u in [0, 1] on each piece (width _DELTA) from nodal f, f', f''."""
-    d = _DELTA
+                     d2f: NDArray[np.float64], d: float = _DELTA) -> list[NDArray[np.float64]]:
+    """Monomial coefficients in u in [0, 1] on each piece (width d) from nodal f, f', f''."""
     f0, f1 = f[:-1], f[1:]
     g0, g1 = d * df[:-1], d * df[1:]
     k0, k1 = d * d * d2f[:-1], d * d * d2f[1:]
@@ -554,8 +571,8 @@ def _bonded_table(nu: float) -> _SlabTable:
 
 @functools.lru_cache(maxsize=8)
 def _coated_table(nu: float, sub: Substrate) -> _SlabTable:
-    """Tables of a coated body on 0 <= |eta| <= _ETA_MAX_BONDED (no far-field forms: its
-    line-load remainders decay algebraically; beyond the table :func:`_far_pair` refuses)."""
+    """Tables of a coated body on 0 <= |eta| <= _ETA_MAX_BONDED (its line-load remainders
+    decay algebraically: beyond, the log-spaced tables of :func:`_coated_far`)."""
     n = int(round(_ETA_MAX_BONDED / _DELTA))
     pos = np.linspace(0.0, _ETA_MAX_BONDED, n + 1)
     a1, b1, c1 = _full_tables(_remainder_exact_coated(pos, nu, sub))
@@ -564,8 +581,164 @@ def _coated_table(nu: float, sub: Substrate) -> _SlabTable:
         pres=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(a1, b1)),
         shear=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(c1, b1)),
         b1_const=nan, c0_const=nan, base="elastic", n_pieces=n, b_inf=nan, a1_inf=nan,
-        c_quad=nan, c1_inf=nan, log_factor=1.0 - sub.stiffness_ratio_of(nu),
+        c_quad=nan, c1_inf=nan, log_factor=1.0 - sub.stiffness_ratio_of(nu), nu=nu,
+        substrate=sub,
     )
+
+
+# --- coated body beyond the tables: log-spaced tables of the smooth parts ----------------
+_ETA_FAR = _ETA_MAX_BONDED * 2.0**6  # 3072: |x +- s|/h of the coated far tables
+_FAR_PER_OCTAVE = 40  # pieces per doubling of |eta| (uniform in ln|eta|; interpolation ~1e-15)
+_FAR_DU = np.log(2.0) / _FAR_PER_OCTAVE
+_FAR_PHASE = 12.0  # panel width times eta: as the tables' panels of 0.25 at eta = 48
+_FAR_BLOCK = 1_000_000  # (eta, t) pairs a quadrature block (8 MB an array)
+
+
+@dataclass(frozen=True)
+class _FarTable:
+    """A coated body's smooth parts ``G = X1 - K`` on ``48 <= |eta| <= 3072``.
+
+    Quintic Hermite pieces in ``u = ln(|eta|/48)`` (width :data:`_FAR_DU`): ``pres[k]``
+    holds the ``u**k`` coefficients of ``G_A1 + i G_B1``, ``shear[k]`` those of
+    ``G_C1 + i G_B1`` (``eta > 0``; ``G_A1``, ``G_C1`` odd, ``G_B1`` even).
+    """
+
+    pres: tuple[NDArray[np.complex128], ...]
+    shear: tuple[NDArray[np.complex128], ...]
+    r0: float  # Rww(0) = Ruu(0) = m - 1
+    rwu0: float  # Rwu(0) = m beta2 - beta
+
+
+def _coated_nodes(nu: float, sub: Substrate, eta_max: float) -> tuple[Arr, Arr]:
+    """The coated tables' quadrature (32 panels on ``0 < t < 2 f``, then panels to
+    ``_T_MAX``), every panel at most ``_FAR_PHASE / eta_max`` wide."""
+    g, wg = np.polynomial.legendre.leggauss(_GL_ORDER)
+    f = min(1.0, sub.stiffness_ratio_of(nu) ** (-1.0 / 3.0))
+    width = min(_PANEL_BONDED, _FAR_PHASE / eta_max)
+    low = np.linspace(0.0, 2.0 * f, max(32, int(np.ceil(2.0 * f / width))) + 1)
+    high = np.linspace(2.0 * f, _T_MAX, int(np.ceil((_T_MAX - 2.0 * f) / width)) + 1)
+    edges = np.concatenate([low, high[1:]])
+    lo, hi = edges[:-1, None], edges[1:, None]
+    return (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel(), (0.5 * (hi - lo) * wg).ravel()
+
+
+def _coated_far_exact(eta: Arr, nu: float, sub: Substrate, eta_max: float) -> dict[str, Arr]:
+    """``_remainder_integrals`` of a coated body at ``eta`` (``48 <= eta <= eta_max``), on
+    panels resolving ``cos(t eta_max)``, in blocks of :data:`_FAR_BLOCK` pairs."""
+    t, wt = _coated_nodes(nu, sub, eta_max)
+    rem = coated_remainder(t, nu, sub.modulus, sub.nu)
+    r0 = sub.stiffness_ratio_of(nu) - 1.0
+    step = max(1, _FAR_BLOCK // t.size)
+    parts = [_remainder_integrals(eta[i:i + step], t, wt, rem, r0)
+             for i in range(0, eta.size, step)]
+    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+
+
+@functools.lru_cache(maxsize=16)
+def _coated_far(nu: float, sub: Substrate, octaves: int = 6) -> _FarTable:
+    """Build (once per process and key) the far tables of a coated body on
+    ``48 <= |eta| <= 48 * 2**octaves`` (octaves <= 6; each octave's nodes and quadrature
+    do not depend on ``octaves``, so a shorter table is a prefix of a longer one).
+
+    The known growth ``K`` (the substrate's half-plane: ``K_A1 = K_C1 = -(2/pi) R0 (eta
+    ln|eta| - eta)``, ``K_B1 = -Rwu0 |eta|``) is taken out; what is left varies on the
+    scale of ``eta`` itself (algebraic decay, and the bending waves of a stiff layer on a
+    soft substrate, damped over ``~ h m^(1/3)``), so pieces uniform in ``ln|eta|`` fit it.
+    The nodal values are quadratures, octave by octave (panels ``12/eta_max`` wide).
+    """
+    m = sub.stiffness_ratio_of(nu)
+    r0, rwu0 = m - 1.0, m * _beta(sub.nu) - _beta(nu)
+    pieces = octaves * _FAR_PER_OCTAVE
+    eta = _ETA_MAX_BONDED * np.exp(_FAR_DU * np.arange(pieces + 1))
+    cut = np.arange(0, pieces + 1, _FAR_PER_OCTAVE)
+    eta[cut] = _ETA_MAX_BONDED * 2.0 ** np.arange(octaves + 1)  # exact octave ends
+    parts = [_coated_far_exact(eta[lo:hi + 1] if hi == pieces else eta[lo:hi], nu, sub,
+                               float(eta[hi])) for lo, hi in zip(cut[:-1], cut[1:])]
+    r = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+    le, k_log = np.log(eta), _TWO_PI * r0
+    funcs = {  # (G, G', G'') in eta
+        "A": (r["A1"] + k_log * (eta * le - eta), r["A"] + k_log * le, r["dA"] + k_log / eta),
+        "B": (r["B1"] + rwu0 * eta, r["B"] + rwu0, r["dB"]),
+        "C": (r["C1"] + k_log * (eta * le - eta), r["C"] + k_log * le, r["dC"] + k_log / eta),
+    }
+    pieces = {name: _quintic_hermite(g, eta * dg, eta * dg + eta * eta * d2g, _FAR_DU)
+              for name, (g, dg, d2g) in funcs.items()}
+    return _FarTable(
+        pres=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(pieces["A"], pieces["B"])),
+        shear=tuple(np.ascontiguousarray(x + 1j * y) for x, y in zip(pieces["C"], pieces["B"])),
+        r0=r0, rwu0=rwu0)
+
+
+def _coated_far_pair(kind: str, eta: Arr, tab: _SlabTable,
+                     smooth_only: bool) -> tuple[Arr, Arr, Arr, Arr]:
+    """A coated body's ``(F1, B1, F, B)`` at ``48 < |eta| <= 3072`` (``F`` = A for the
+    pressure, C for the shear); ``smooth_only``: their smooth parts ``G`` only."""
+    ae = np.abs(eta)
+    if ae.size and ae.max() > _ETA_FAR:
+        raise ValueError(f"|x +- s|/h = {float(ae.max()):.6g} is beyond the coated body's strip "
+                         f"kernels (<= {_ETA_FAR:g}: a/h <= {_ETA_FAR / 2:g} for x, s <= a)")
+    v = np.log(ae * (1.0 / _ETA_MAX_BONDED)) * (1.0 / _FAR_DU)
+    octaves = int(np.clip(np.ceil(v.max(initial=0.0) / _FAR_PER_OCTAVE), 1, 6))
+    far = _coated_far(tab.nu, tab.substrate, octaves)
+    coef = far.pres if kind == "pressure" else far.shear
+    cell = np.clip(np.floor(v), 0.0, octaves * _FAR_PER_OCTAVE - 1.0)
+    u = v - cell
+    idx = cell.astype(np.intp)
+    val = coef[5].take(idx)
+    der = 5.0 * val
+    for k in (4, 3, 2, 1):
+        c = coef[k].take(idx)
+        val = val * u + c
+        der = der * u + k * c
+    val = val * u + coef[0].take(idx)
+    der /= _FAR_DU * ae  # d/d|eta|
+    sg = np.sign(eta)
+    f1, b1 = sg * val.real, val.imag.copy()
+    f, b = der.real.copy(), sg * der.imag
+    if not smooth_only:
+        k_log = _TWO_PI * far.r0
+        la = np.log(ae)
+        f1 -= k_log * (eta * la - eta)
+        f -= k_log * la
+        b1 -= far.rwu0 * ae
+        b -= far.rwu0 * sg
+    return f1, b1, f, b
+
+
+def _coated_all_far(kind: str, x: Arr, s: Arr, h: float,
+                    tab: _SlabTable) -> tuple[Arr, Arr, Arr]:
+    """A coated body where every ``|eta| > 48``: the substrate's half-plane plus the
+    differences of the smooth parts (no cancellation of the growing ``K``)::
+
+        pressure: m hp(beta2) + (h [G_A1(e+) - G_A1(e-)], h [G_B1(e+) - G_B1(e-)],
+                                 G_B(e+) - G_B(e-))
+        shear:    m hp(beta2) + (h [G_B1(e+) + G_B1(e-) - 2 G_B1(e0)],
+                                 h [2 G_C1(e0) - G_C1(e+) - G_C1(e-)],
+                                 2 G_C(e0) - G_C(e+) - G_C(e-))
+
+    (``hp`` the half-plane strip of the layer's material, ``m = E1*/E2*``: the growth
+    ``K`` of the remainders plus the layer's half-plane is the substrate's half-plane.)
+    """
+    sub = tab.substrate
+    m = sub.stiffness_ratio_of(tab.nu)
+    inv_h = 1.0 / h
+    hp = _hp_pressure if kind == "pressure" else _hp_shear
+    w, u, du = hp(x, s, _beta(sub.nu))
+    w *= m
+    u *= m
+    du *= m
+    f1p, b1p, fp, bp = _coated_far_pair(kind, (x + s) * inv_h, tab, True)
+    f1m, b1m, fm, bm = _coated_far_pair(kind, (x - s) * inv_h, tab, True)
+    if kind == "pressure":
+        w += h * (f1p - f1m)
+        u += h * (b1p - b1m)
+        du += bp - bm
+        return w, u, du
+    f10, b10, f0, _ = _coated_far_pair(kind, x * inv_h, tab, True)
+    u += h * (2.0 * f10 - f1p - f1m)
+    du += 2.0 * f0 - fp - fm
+    w += h * (b1p + b1m - 2.0 * b10)
+    return w, u, du
 
 
 def _table_of(base: str | Substrate, nu: float) -> _SlabTable:
@@ -578,9 +751,7 @@ def _table_of(base: str | Substrate, nu: float) -> _SlabTable:
 def _far_pair(kind: str, eta: NDArray[np.float64], tab: _SlabTable) -> tuple[Arr, Arr, Arr, Arr]:
     """Far-field forms (|eta| > _ETA_MAX): values and derivatives of the packed pair."""
     if tab.base == "elastic":
-        raise ValueError(f"|x +- s|/h = {float(np.max(np.abs(eta))):.6g} is beyond the coated "
-                         f"body's strip tables (<= {_ETA_MAX_BONDED:g}: a/h <= 20 for "
-                         "x, s <= a)")
+        return _coated_far_pair(kind, eta, tab, smooth_only=False)
     ae = np.abs(eta)
     sg = np.sign(eta)
     la = np.log(ae)
@@ -797,6 +968,8 @@ def _layer_far(kind: str, x: Arr, s: Arr, h: float, nu: float,
                   du = -(2|x| - |x+s| - |x-s|)/(2h),
                   w = k (|x+s| + |x-s| - 2|x|)
     """
+    if tab.base == "elastic":
+        return _coated_all_far(kind, x, s, h, tab)
     xp, xm = x + s, x - s
     if tab.base == "bonded":
         return _bonded_far(kind, x, xp, xm, h, tab)

@@ -544,10 +544,12 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
     edge has not yet moved and the deficit follows neither law (sphere, nu =
     0, k = 0.3, 0-1-0.5-1-...: a d^2 fit there was 0.55 of an element off).
 
-    Measured (sphere, nu = 0.3, k = 0.2, 0 -> 1 -> 0 in 50 steps a segment, n =
-    120, against n = 480 and 200 steps, unloading): the element edge was 0.25
-    ... 0.5 of an element off at every step; the ``d^2`` fit is within 0.15 of
-    an element at 11 of 13 sampled steps (the cylinder at k = 0.3: 12 of 13).
+    Measured (``python benchmarks/report_stick_edge.py``: sphere, nu = 0.3, k =
+    0.2, 0 -> 1 -> 0 in 50 steps a segment, n = 120, against n = 480 and 200
+    steps, every fourth step of the unloading): the element edge was 0.25 ...
+    0.5 of an element off at every step; now the stick radius is within 0.15 of
+    an element at 11 of 13 steps (the cylinder at k = 0.3: 10 of 13); the last,
+    at P = 0.02 P_max, moves the contact edge over several elements a step.
     """
     contact = state > 0
     if not contact[0] or state[0] != STICK:

@@ -14,9 +14,9 @@ against a_max/h (a_max: the coating's frictionless Hertz radius at the peak
 load, h fixed while a grows).
 
 Only a/h within what the coated body supports is computed: the default grid
-reaches a/h = 100 for the sphere (its solve goes on to 1000, at about 135 s a
-sweep point there, beyond this study's budget) and 20 for the cylinder (its
-limit; the larger a/h of the grid are NaN with ``covered`` False). The
+reaches a/h = 100 for both geometries (their solves go on to 1000, the sphere's
+at about 135 s a sweep point there, beyond this study's budget; a/h beyond a
+geometry's limit would be NaN with ``covered`` False). The
 history's mesh reaches 1.2 times the contact, and a soft substrate lets the
 contact outgrow a_max, so some a_max/h are refused: those cases are NaN with
 ``cycle_refused`` set. Nothing beyond is extrapolated.

@@ -10,6 +10,7 @@ with the code under test:
 * equal materials (E2/E1 = 1, nu2 = nu): the half-plane;
 * a very stiff substrate: the bonded rigid base, departing at first order in E1/E2;
 * a thin stiff coating: the substrate's half-plane (load ratio 1/m), departing like h/a;
+* a thin soft coating on a very hard substrate: Winkler's bonded thin layer;
 * convergence in n against the fourfold refinement.
 """
 
@@ -168,6 +169,22 @@ def test_thin_stiff_coating_tends_to_the_substrate_half_plane():
     assert np.all((scaled > 1.0) & (scaled < 2.2))  # departure ~ h/a: -> 0 as h/a -> 0
     slopes = np.diff(scaled) / np.diff(np.log(ratios))
     np.testing.assert_allclose(slopes, slopes.mean(), rtol=0.05)
+
+
+def test_thin_soft_coating_on_a_hard_substrate_is_winkler_at_a_over_h_1000():
+    """Frictionless, a/h = 1000: load over Winkler's 8 M a/(3 pi E* h) - 1 measured -0.104,
+    -0.0112, -8.5e-4 at E2/E1 = 1e4, 1e5, 1e6, tending to the bonded base's +3.2e-4 at
+    first order in E1/E2 (x E2/E1: -1156, -1168): Winkler needs E2/E1 >> a/h."""
+    e_star, ratio = 1.0, 1000.0
+    g = (1 - NU**2) / (2 * (1 + NU))
+    winkler = 8 * (2 * g * (1 - NU) / (1 - 2 * NU)) * ratio / (3 * np.pi * e_star)
+    bonded = _kc(0.0, slab_ratio=ratio, base="bonded").load_ratio / winkler - 1
+    assert abs(bonded) < 1e-3
+    mods = np.array([1e5, 1e6])
+    dep = np.array([_kc(0.0, slab_ratio=ratio, base="elastic", substrate_modulus=e,
+                        substrate_nu=NU).load_ratio / winkler - 1 for e in mods])
+    np.testing.assert_allclose((dep - bonded) * mods, (dep[-1] - bonded) * mods[-1], rtol=0.02)
+    assert abs(dep[-1]) < 1e-3
 
 
 @pytest.mark.slow

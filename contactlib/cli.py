@@ -238,8 +238,9 @@ def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = Fal
                      help="the layer's base: rigid and smooth (frictionless) or bonded, or "
                           "elastic (a coated body: the layer bonded to an elastic half-space; "
                           f"a/h <= {most[('sphere', 'elastic')]:g} for the sphere, "
-                          f"{most[('cylinder', 'elastic')]:g} for the cylinder); "
-                          "default: smooth")
+                          f"{most[('cylinder', 'elastic')]:g} for the cylinder, a_max/h <= "
+                          f"{validate.HISTORY_CYLINDER_COATED_RATIO_MAX:g} for the cylinder "
+                          "in history); default: smooth")
     sub.add_argument("--substrate-modulus", metavar="E2_OVER_E1", default=None,
                      help="with --base elastic: the substrate's Young's modulus over the "
                           "layer's, in [1e-2, 1e6] (required there)")

@@ -681,6 +681,7 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
     work = external = viscous = 0.0
     p_old = w_old = np.zeros(n)
     hertz_radius = ops.model.frictionless_radius
+    last_direction = 0.0  # sign of the last load change (0 before any)
     for i in range(1, steps):
         level = float(levels[i])
         step_ops, step_cache, shift = ops, cache, (None, None)
@@ -742,7 +743,10 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
         out.work[i] = work
         a_c = contact_radius(ops, res.state, res.gap)
         out.contact_radius[i] = a_c
-        turned = i >= 2 and (level - levels[i - 1]) * (levels[i - 1] - levels[i - 2]) < 0.0
+        # the first step against the last direction of the load (across any hold between)
+        direction = float(np.sign(level - levels[i - 1]))
+        turned = direction * last_direction < 0.0
+        last_direction = direction or last_direction
         out.stick_radius[i] = stick_radius(ops, k, res.state, res.p, res.q, a_c,
                                            receding=level < float(levels[i - 1]),
                                            fit=not turned) if a_c > 0 else np.nan

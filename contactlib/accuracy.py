@@ -59,9 +59,12 @@ __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predict
            "MODEL_SLAB_RATIO"]
 
 MAX_N = validate.MAX_N
+# exact: 4 x 16: the default method's n/4 keeps its sixteenths, nested in n/2 and n
 MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
 MIN_TOLERANCE = validate.MIN_TOLERANCE
 MAX_TOLERANCE = validate.MAX_TOLERANCE
+# convention: the plan's margin below the tolerance (whether plans reach it:
+# tests/test_extrapolated_method.py and tests/test_error_estimate.py, solves with tolerance=)
 SAFETY = 2.0  # the plan aims at tolerance / SAFETY
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR  # a larger estimated k error: not resolved
 
@@ -99,6 +102,7 @@ EXTRAPOLATED_ERROR_AT_256 = np.array([1.5e-7, 1.6e-7, 2.1e-7, 4.0e-7, 6.1e-7, 6.
 # (0.5), 2.4e-10 (0.9), 1.4e-10 (0.97), 1.1e-10 (0.98), within the table. Columns: _X_TABLE.
 LOG_ESTIMATE_AT_1024 = np.array([2.0e-10, 2.0e-10, 2.8e-10, 5.3e-10, 9.0e-10, 6.3e-10, 3.3e-10,
                                  2.4e-10, 2.4e-10])
+# exact: 32 x 16: the five levels nest down to n/32, a mesh of sixteenths
 LOG_N_MULTIPLE = 512
 PLANNED_METHODS = tuple(name for name, m in validate.METHOD_REGISTRY.items() if m.planned)
 # Time a case costs relative to the default method's at the same n, both with their error
@@ -110,6 +114,7 @@ PLANNED_METHODS = tuple(name for name, m in validate.METHOD_REGISTRY.items() if 
 # (an early measurement, 1.2 ... 1.6), which planned the default method at n = 128 for
 # 3e-4 (sphere) and 1e-3 ... 3e-4 (cylinder), where the extrapolated method's n = 128 is
 # cheaper and 20 ... 50 times more accurate.
+# measured: benchmarks/bench_frontier.py part (d) (extrapolated / default 0.78 ... 0.92)
 RELATIVE_COST = {"default": 1.0, "extrapolated": 0.9}
 # The plan aims at tolerance / safety: the default method's table is interpolated from the
 # study's medians (SAFETY), the extrapolated method's constant is the largest error measured
@@ -117,6 +122,8 @@ RELATIVE_COST = {"default": 1.0, "extrapolated": 0.9}
 PLAN_SAFETY = {"default": SAFETY, "extrapolated": 1.5}
 # The largest a/h of the (smooth-base) slab the error models were measured on: the paper's
 # cylinder case, a/h = 1/20 (the sphere's models are the half-space's alone)
+# limit: the slabs the error models were measured on (benchmarks/report_convergence_table.py; the
+# paper's cylinder case a/h = 1/20)
 MODEL_SLAB_RATIO = {"sphere": 0.0, "cylinder": 0.05}
 
 

@@ -33,6 +33,7 @@ GEOMETRIES = validate.GEOMETRIES
 METHODS = validate.METHODS
 DEFAULT_N = validate.DEFAULT_N
 MAX_N = validate.MAX_N
+# convention: the output grid of x = r/a, 201 equally spaced points
 _OUTPUT_POINTS = 201
 
 
@@ -115,8 +116,13 @@ def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | No
 
 
 # ----------------------------------------------------------------------------- inverse problem
+# limit: resolved at the default n down to c/a = 1e-8 (tests/test_extremes.py)
 SMALLEST_STICK_RATIO = 1e-8  # the inverse's floor: the smallest c/a resolved at the default n
+# limit: resolved at the default n up to c/a = 1 - 1e-5 (tests/test_stability_full_stick.py;
+# CHANGELOG, near full stick at strong coupling)
 LARGEST_STICK_RATIO = 1.0 - 1e-5  # its ceiling: the largest c/a resolved at the default n
+# tested: tests/test_stability_full_stick.py (the inverse near full stick); the k at an end moves by
+# 4e-10 with Newton's start, see below
 ENDPOINT_RTOL = 1e-7  # a friction within this of the k at an end is that end: warm-started
 #   Newton's k at c/a = 0.99999 moves by up to 4e-10 relative with its start (measured,
 #   sphere and cylinder, nu = 0.3 and 0.49), and its error estimate there is above 1e-5

@@ -52,8 +52,11 @@ _NEGATIVE_NUMBER = re.compile(r"^-(\.?[0-9]|inf|nan)", re.IGNORECASE)
 _INT_RE = re.compile(r"^\s*\+?[0-9]+\s*$")
 
 
+# convention: exit status of bad input (the project's rule; tests/test_solver_limit.py)
 EXIT_BAD_INPUT = 2
 """Exit status of bad input (one line on stderr naming the option)."""
+# convention: exit status of valid input beyond a solver limit (the project's rule;
+# tests/test_solver_limit.py)
 EXIT_SOLVER_LIMIT = 3
 """Exit status of valid input the solver cannot answer (:class:`SolverLimitError`)."""
 

@@ -60,15 +60,23 @@ __all__ = [
     "perriot_barthel_modulus",
 ]
 
+# convention: the study's grid of E2/E1, hard and soft coatings
 DEFAULT_SUBSTRATE_MODULI = (0.5, 0.1, 10.0, 100.0)
 """E2/E1 of the study: hard coatings (E1/E2 = 2, 10) and soft ones (0.1, 0.01)."""
+# convention: the study's grid of a/h
 DEFAULT_RATIOS = (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0)
+# convention: the study's grid of a_max/h for the history's cycle work
 DEFAULT_HISTORY_RATIOS = (0.01, 0.1, 0.3, 1.0, 3.0, 10.0, 16.0)
+# convention: the study's stick ratios, as the layer study's
 DEFAULT_STICK_RATIOS = (0.25, 0.5, 0.75)
+# convention: as validate.DEFAULT_MAX_ERROR, the accuracy a result is asked by default
 MAX_ERROR = 1e-3
 """Accuracy a load ratio or a k must reach (by its estimate) to count as resolved."""
+# convention: as layer_study.HISTORY_MAX_ERROR, the main job's history scenes
 HISTORY_MAX_ERROR = 1e-2
 """Accuracy a cycle's work must reach to count as resolved (as the layers study)."""
+# convention: the a/h issue 39 asks for (tests/test_coating_study.py checks the study says how far
+# its grid covers it)
 ISSUE_RATIO_MAX = 1000.0
 """The a/h issue 39 asks for; the study covers its grid only and says so."""
 

@@ -116,6 +116,8 @@ def richardson(values: np.ndarray) -> tuple[float, float]:
     return float(v[-1] + d2 / (ratio - 1.0)), order
 
 
+# tested: tests/test_convergence.py (a triple whose differences do not shrink is refused); the
+# runaway it guards against was measured at cylinder, slab, c/a = 0.7 (docstring)
 MIN_ORDER = 1.0
 """Smallest observed order a triple's Richardson value is taken at (differences shrinking at
 least twofold a doubling); below it the triple is outside the asymptotic range or on a
@@ -225,6 +227,7 @@ def study(geometry: str, nu: float, method: str, ns: Sequence[int],
                  peak_memory=memory, reference_source=ref_source, base=base)
 
 
+# convention: an order of 0.58, well below the methods' own orders of 2 and more (docs/accuracy.md)
 MIN_DIGIT_FALL = 1.5
 """The smallest fall of the median error from n/2 to n for which the trade table gives a
 time per digit (an order of 0.58; the method's own orders are 2 and more)."""

@@ -40,12 +40,16 @@ from .result import short_repr
 __all__ = ["LayerStudy", "layer_study", "DEFAULT_RATIOS", "DEFAULT_NUS",
            "DEFAULT_STICK_RATIOS", "HISTORY_MAX_ERROR"]
 
+# convention: the study's grid of a/h (0: the half-space)
 DEFAULT_RATIOS = (0.0, 0.5, 1.0, 2.0, 5.0, 10.0)
+# convention: the study's Poisson's ratios
 DEFAULT_NUS = (0.3, 0.45)
+# convention: the study's stick ratios
 DEFAULT_STICK_RATIOS = (0.25, 0.5, 0.75)
 # the accuracy a cycle's work must reach to count as resolved: that of the main job's
 # history scenes (config/config.yaml); on layers with a_max/h >= 1 even 1e-2 takes
 # n ~ 960 and 400 steps a segment (docs/validation.md, "History on a layer")
+# convention: that of the main job's history scenes (config/config.yaml)
 HISTORY_MAX_ERROR = 1e-2
 
 

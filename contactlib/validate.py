@@ -96,9 +96,11 @@ class Method:
     coulomb: str = "resultant"
 
 
+# convention: the default method's mesh is in sixteenths of the half-contact
 MIN_N_DEFAULT_METHOD = 16
 """Fewest elements the default method accepts (its mesh is in sixteenths)."""
 
+# exact: 8 x MIN_N_DEFAULT_METHOD, so that the n/8 level is a mesh of sixteenths nested in n
 EXTRAPOLATED_N_MULTIPLE = 128
 """The extrapolated method's n: a multiple of this (its n/8 level is nested in n)."""
 
@@ -127,6 +129,7 @@ OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy", "s
 DEFAULT_OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy")
 """The outputs of a scene that names none (``subsurface``, the costliest, only when asked)."""
 
+# convention: default grid of the subsurface output (0 <= x, z <= 2, 101 points each)
 SUBSURFACE_GRID: tuple[tuple[float, float, int], tuple[float, float, int]] = (
     (0.0, 2.0, 101), (0.0, 2.0, 101))
 """Default grid of the ``subsurface`` output: x = r/a (x/a) and z = depth/a as
@@ -138,6 +141,9 @@ BASES: tuple[str, ...] = ("smooth", "bonded")
 COATED_BASE = "elastic"
 """The base of a coated body: the layer bonded to an elastic half-space (half-plane)."""
 
+# limit: sphere and coated bodies to 1000 (tests/test_thin_layers.py, tests/test_thin_coatings.py,
+# tests/test_thin_coatings_cylinder.py); the cylinder on a smooth base to 80 (docs/validation.md
+# "Layers"; CHANGELOG "Coated cylinder to a/h = 1000")
 LAYER_RATIO_MAX: dict[tuple[str, str], float] = {
     ("sphere", "smooth"): 1000.0, ("sphere", "bonded"): 1000.0, ("sphere", "elastic"): 1000.0,
     ("cylinder", "smooth"): 80.0, ("cylinder", "bonded"): 1000.0,
@@ -159,31 +165,43 @@ tests/test_thin_coatings_cylinder.py), in history
 :data:`HISTORY_CYLINDER_COATED_RATIO_MAX`.
 """
 
+# limit: as verified in tests/test_coated_history.py (CHANGELOG, "Coated cylinder to a/h = 1000":
+# history keeps a_max/h <= 20)
 HISTORY_CYLINDER_COATED_RATIO_MAX = 20.0
 """a_max/h of a coated cylinder in the history solver (as verified there; its kernels reach
 further: the contact may grow to 1.2 * 1000 h on a soft substrate)."""
 
+# limit: the probe-sized mesh stays within it (tests/test_thin_layer_history.py)
 HISTORY_SPHERE_LAYER_RATIO_MAX = 1200.0
 """max(r, s)/h of the sphere's layer kernels in the history solver: the ring tables to
 20, then the transform-domain sums (``kernels.layer.THIN_RATIO_MAX``)."""
 
+# exact: history_solver.MESH_EXTENT, repeated (tests/test_model.py checks they agree)
 HISTORY_MESH_EXTENT = 1.2
 """The history solver's mesh length over a_max (``history_solver.MESH_EXTENT``)."""
 
 DEFAULT_N: dict[str, int] = {name: m.default_n for name, m in METHOD_REGISTRY.items()}
 """Default number of elements across the half-contact, per method."""
 
+# limit: memory, about 3.3 GiB at n = 4096 (measured in tests/test_extremes.py)
 MAX_N = 4096
 """Most elements of a self-similar solve (about 3.3 GiB at n = 4096)."""
 
+# convention: the history's default mesh, elements of a_max/200
 HISTORY_DEFAULT_N = 240
 """Default elements of the history solver over [0, 1.2 a_max] (size a_max / 200)."""
 
+# convention: as the default method's fewest elements (MIN_N_DEFAULT_METHOD)
 HISTORY_MIN_N = 16
+# limit: the plan's largest n (tests/test_history_tolerance.py keeps planned runs within it;
+# CHANGELOG, the history tolerance plan)
 HISTORY_MAX_N = 2048
+# limit: about 3 min a segment at the default n (CHANGELOG: runs are named within MAX_N and
+# MAX_STEPS); tests/test_config_rules.py checks the refusal beyond
 MAX_STEPS = 100_000
 """Most load steps per path segment (about 3 min a segment at the default n)."""
 
+# convention: the accuracy a result is asked by default (docs/accuracy.md)
 DEFAULT_MAX_ERROR = 1e-3
 """Default accuracy asked of a result: a larger error estimate is not resolved."""
 
@@ -194,10 +212,16 @@ digit, then letters, digits, ``-`` and ``_``."""
 RESULTS_DIR_PATTERN = r"^[A-Za-z0-9_][A-Za-z0-9_./-]*$"
 """The workflow's ``results_dir`` (the folder of every output): a relative path that
 starts with a letter, digit or ``_`` (so neither ``/`` nor ``..``)."""
+# limit: as MIN_PLANNED_TOLERANCE (measured by benchmarks/report_log_extrapolation.py);
+# tests/test_config_rules.py checks the schema's range
 MIN_TOLERANCE = 1e-9
+# convention: a coarser tolerance is no accuracy target (tests/test_config_rules.py checks the
+# schema's range)
 MAX_TOLERANCE = 0.1
 """Range of a scene's ``tolerance`` (relative error in k)."""
 
+# limit: the extrapolated method's measured reach (benchmarks/report_log_extrapolation.py,
+# benchmarks/report_estimate_coverage.py; see the docstring)
 MIN_PLANNED_TOLERANCE = 1e-9
 """Smallest ``tolerance`` of solve/sweep (library and command line): the extrapolated
 method's measured reach with five levels from n = 1024
@@ -401,6 +425,8 @@ def base(value: Any, coated: bool = False) -> str:
     return choice("base", value, BASES + ((COATED_BASE,) if coated else ()))
 
 
+# limit: the remainder tables against their quadrature and the limits of tests/test_coatings.py
+# (docs/models.md)
 SUBSTRATE_MODULUS_RANGE: tuple[float, float] = (1e-2, 1e6)
 """Verified range of ``substrate_modulus`` E2/E1 of a coated body (the layer's
 remainder tables against their quadrature, and the limits of

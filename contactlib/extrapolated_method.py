@@ -77,9 +77,11 @@ __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS"
            "truncation_factor",
            "LOG_LEVEL_MAX_OFFSET"]
 
+# exact: the orders of the default method's error expansion, n^-2, n^-3, n^-4 (docs/accuracy.md)
 ORDERS = (2.0, 3.0, 4.0)
 """The orders of the default method's error expansion that are eliminated."""
 
+# exact: len(ORDERS) + 1, one level per eliminated order and the finest
 LEVELS = 4
 """Nested meshes used: n/8, n/4, n/2, n."""
 
@@ -91,6 +93,7 @@ ONE_STEP = REFINED_FINAL_STEP
 method's :data:`~contactlib.default_method.REFINED_FINAL_STEP`: the error after a refined
 step is about 0.4 step^2, under 4e-10 here)."""
 
+# tested: tests/test_layer_accuracy.py (the layer's levels' noise, measured below)
 LAYER_FLOOR_FROM_N = 512
 """From this finest n on, on a layer whose rows stay plain (the sphere's: ring kernels on a
 layer have no cancellation-free w(x) - w(ref) away from the axis, so no band around c),
@@ -105,6 +108,8 @@ kernels' local coordinate fixed (:mod:`contactlib.kernels.strip`, a noise of 1e-
 had put up to 1e-6 into k at n = 2048) its levels agree within their own estimates
 (a/h = 1/20 and 1, smooth and bonded base, c/a = 0.3 ... 0.9)."""
 
+# measured: benchmarks/bench_frontier.py (the method's cost: one factorization of the level where it
+# took three); tests/test_extrapolated_method.py checks the root
 PREDICTED_FROM_N = 1024
 """A coarse level with at least this many elements (the level n/2 of a solve at n >= 2048)
 starts, without a caller's guess, from the n^-2 trend of the two coarser levels, k(n/4) +
@@ -115,6 +120,8 @@ level suffices where it took three (two plain Newton steps from k(n/4), then a r
 one); from the same n on, the finest level's system is also equilibrated in place (as the
 default method's from n = 1024)."""
 
+# measured: benchmarks/report_estimate_coverage.py (error / last correction at most 1.68, 1.29,
+# 1.22, 1.15 at n = 128, 256, 512, 768)
 TRUNCATION_FACTOR = 1.5
 """The four-level truncation estimate is the last correction (:func:`extrapolate`) times
 this (times :data:`TRUNCATION_FACTOR_COARSE` below n = 256). The levels carry an n^-3 ln n
@@ -128,6 +135,7 @@ besides one case outside the expansion's range (:data:`LOG_LEVEL_MAX_OFFSET`). T
 last correction likewise: at most 1.63, 1.25 and 1.09 at n = 128, 256 and 512 against the
 load at n = 2048 (both geometries, nu = 0.3 and -0.5, c/a = 0.1, 0.5, 0.9)."""
 
+# measured: benchmarks/report_estimate_coverage.py (error / last correction up to 1.68 at n = 128)
 TRUNCATION_FACTOR_COARSE = 2.0
 """The factor of :data:`TRUNCATION_FACTOR` below n = 256 (error / last correction up to
 1.68 at n = 128)."""
@@ -138,6 +146,7 @@ def truncation_factor(n: int) -> float:
     return TRUNCATION_FACTOR_COARSE if n < 256 else TRUNCATION_FACTOR
 
 
+# measured: benchmarks/report_log_extrapolation.py (the n^-3 ln n term the five levels remove)
 LOG_LEVEL_FROM_N = 1024
 """From this finest n (half-space bodies, the band of difference rows around c, levels
 nested down to n/32) two more levels, n/16 and n/32, are solved (their operators restricted
@@ -157,6 +166,8 @@ of it over 608 solves at n = 1024 ... 3072 (``python benchmarks/report_estimate_
 one solve a case, ``python benchmarks/report_log_extrapolation.py --estimate``, had shown
 0.75 with a bound that 27 of the 608 exceeded)."""
 
+# exact: 2^3 - 1, the divisor of an n^-3 remainder (error / estimate <= 0.69:
+# benchmarks/report_log_extrapolation.py --estimate)
 LOG_ESTIMATE_DIVISOR = 7.0
 """The five-level k's truncation estimate is |k5(n/2) - k5(n)| / 7, k5(n/2) the same
 extrapolation one level down (the levels n/32 ... n/2): exact for a remaining error of
@@ -166,6 +177,7 @@ n = 1024 (both geometries, c/a = 0.003 ... 0.98), error / truncation estimate <=
 the truncation dominates; the rest, from n = 1536 on and next to full stick, is the
 quadrature noise (:func:`log_noise`)."""
 
+# measured: benchmarks/report_estimate_coverage.py (offsets at most 3.9e-3 but one case, 6.1e-3)
 LOG_LEVEL_MAX_OFFSET = 5e-3
 """The five-level k is taken only where the coarsest level n/32 lies within this of it
 (relative): beyond, the levels n/32 and n/16 are too far outside the expansion's range
@@ -178,6 +190,8 @@ with an estimate of 3.7e-9. The margin is thin (3.9e-3 against 6.1e-3). The four
 estimate uses the same bound on its coarsest level n/8: beyond, the finest level's own
 estimate bounds the last correction (see :data:`TRUNCATION_FACTOR`)."""
 
+# measured: benchmarks/report_estimate_coverage.py (the spread of k over stick ratios 1e-15 apart)
+# and benchmarks/report_noise_kernels.py (other BLAS kernels)
 LOG_NOISE = 1.5e-12
 """The five-level k's noise bound is ``LOG_NOISE (1 / (c/a) + 1 / (1 - c/a)^LOG_NOISE_POWER)``
 (:func:`log_noise`, relative): the round-off the levels' roots keep, measured as the spread
@@ -193,6 +207,8 @@ cascade, with every band row relative to the band's edge, the spread was 1.2e-16
 n = 2048) and the bound was 5e-16 max(c/a, 0.1) / h_min. It is also the floor under the
 four-level band bound (:func:`quadrature_noise`)."""
 
+# measured: benchmarks/report_estimate_coverage.py (the spread's growth toward full stick, c/a =
+# 0.9, 0.97, 0.98)
 LOG_NOISE_POWER = 1.5
 """Toward full stick the spread grows like (1 - c/a)^-1.5 (c/a = 0.9, 0.97, 0.98: 9e-12,
 4.5e-11, 8.4e-11 over the 1 - c/a of 0.1, 0.03, 0.02); toward c/a = 0 like (c/a)^-1
@@ -200,6 +216,8 @@ LOG_NOISE_POWER = 1.5
 
 
 
+# measured: benchmarks/bench_frontier.py (the method's cost: one factorization of the level where it
+# took three); tests/test_extrapolated_method.py checks the root
 NEXT_FROM_N = 512
 """A coarse level with at least this many elements (below :data:`PREDICTED_FROM_N`: the
 level n/4 of a solve at n >= 2048, n/2 at n = 1024 ... 1920) starts, without a caller's
@@ -222,7 +240,9 @@ nu = -0.5 ... 0.3)."""
 # c/a < 1/2 (c/a = 1e-4 ... 1e-6 with plain rows: 4.5e-7 at h = 2.2e-9, 2.4e-5 at 9e-11,
 # 5.5e-5 at 2.2e-11) and "annulus" above (c/a = 0.99 ... 0.9999: 3e-7 at h = 2.3e-7,
 # 3.5e-5 at 9.3e-9, 6.8e-4 at 2.3e-9).
+# measured: benchmarks/report_noise_kernels.py (plain rows, the largest errors above)
 NOISE = {"stick": 4.6e-20, "annulus": 7.5e-17}
+# measured: benchmarks/report_noise_kernels.py (the plain rows' growth with 1/h_min)
 NOISE_POWER = 1.5
 # Difference rows (default_method.difference_rows: c/a <= AXIS_ROWS_BELOW, the stick
 # side, or 1 - c/a <= EDGE_ROWS_BELOW, the annulus side), which every level uses as the
@@ -245,7 +265,10 @@ NOISE_POWER = 1.5
 # case, so both constants are doubled (6e-11 -> 1.2e-10, 7.2e-10 -> 1.44e-9): that part
 # is then at most 0.48 of the bound, a factor 2 for a kernel not tried (the kernels moved
 # it by 1.8x between them).
+# measured: benchmarks/report_noise_kernels.py ((error - levels) / bound at most 0.96 before the
+# doubling)
 DIFFERENCE_NOISE = {"stick": 1.2e-10, "annulus": 1.44e-9}
+# measured: benchmarks/report_noise_kernels.py (the difference rows' growth with 1/h_min)
 DIFFERENCE_NOISE_POWER = 0.5
 
 BAND_FROM_N = NEAR_ROWS_FROM_N  # 512, the default method's (one place)
@@ -280,7 +303,9 @@ widths 0.001, 0.003 and 0.01 give k within 1.5e-9 of each other (n = 2048)."""
 # 8.1e-13 at c/a < 0.5 ("stick") and 1.64e-12 at c/a >= 0.5 ("annulus"), both at n = 1024
 # (at n = 2048: 1.5e-13 and 9.9e-13). The bound at n = 2048 is 2.3e-9 (c/a = 0.5) ...
 # 1.2e-8 (c/a = 0.98), above the errors there: the estimate overstates at n = 2048.
+# measured: benchmarks/report_noise_kernels.py (fitted at nu = 0.49999, n = 1024, 2048)
 BAND_NOISE = {"stick": 1e-12, "annulus": 2e-12}
+# measured: benchmarks/report_noise_kernels.py (the band rows' growth with 1/h_min)
 BAND_NOISE_POWER = 0.5
 
 
@@ -466,6 +491,8 @@ def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | Non
     return need if need <= max_n else None
 
 
+# tested: tests/test_extrapolated_method.py (k near full stick against the closed form) and
+# tests/test_influence_speedup.py (the fine rules' cost)
 FINE_QUADRATURE_FROM_N = 1024
 """From this finest n on, the band of difference rows around c of every level is
 integrated with :mod:`contactlib.influence`'s ``"fine"`` rules (:func:`quadrature_for`);
@@ -489,6 +516,7 @@ fine rules -2.2e-11 and -1.8e-11. Below n = 1024 the standard rules, where the f
 truncation dominates."""
 
 
+# tested: tests/test_extrapolated_method.py (the extremes within their estimate)
 EXTREMES_FINEST_FROM_N = 640
 """From this finest n on, at the extremes (the axis or edge difference rows: c/a <= 1e-4
 or 1 - c/a <= 5e-4) the solution is the finest level's own, k not extrapolated, with the
@@ -592,6 +620,7 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
                             float(newton.stagnated))
 
 
+# convention: as the default method's warm start, which solves n = 64 first
 START_N = 64
 """Without a starting k, the first level solved is the coarsest with at least this many
 elements, from the uncoupled closed form (as the default method's own warm start, which

@@ -81,8 +81,11 @@ __all__ = ["SEPARATED", "STICK", "SLIP_POSITIVE", "SLIP_NEGATIVE", "STATE_MEANIN
 
 SEPARATED, STICK, SLIP_POSITIVE, SLIP_NEGATIVE = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_positive_shear slip_negative_shear"
+# convention: the mesh reaches 20 % beyond the largest contact (as history_solver's)
 MESH_EXTENT = 1.2  # mesh half-length over a_max
+# tested: tests/test_fretting.py (Cattaneo's stick ratio and traction)
 _REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
+# convention: a step not settled in 100 set switches is reported as not converged
 _MAX_ITER = 100
 
 
@@ -357,7 +360,11 @@ def solve_step(ops: StripOperators, k: float, load: float, force: float, strain:
     return FrettingStep(p, q, v, gap, delta, shift, state, False, _MAX_ITER)
 
 
+# tested: tests/test_fretting.py (the stick ratio against Cattaneo within its estimate; the skipped
+# elements' tractions were 2-30 % off the closed form)
 EDGE_SKIP = 2  # elements next to an edge whose traction carries the edge's local error
+# tested: tests/test_fretting.py (the stick ratio against Cattaneo within its estimate, the stick
+# offset against Hills and Nowell)
 EDGE_FIT = 7  # elements beyond those fitted by a quadratic in f^2
 
 

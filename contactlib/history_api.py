@@ -96,8 +96,11 @@ MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
+# tested: tests/test_history_error.py (the estimates with and without run C)
 _MIN_ORDER_STEPS = 40  # fewer steps a segment: no run C, order 1 (C would be too coarse)
+# tested: tests/test_solver_limit.py (a work below the floor reads as zero)
 WORK_FLOOR = 1e-4  # the work's error scale: at least this fraction of the indenter's work
+# convention: the advice aims at half of max_error
 _ADVICE_MARGIN = 2.0  # advice aims at max_error / 2 (see _advice)
 
 
@@ -320,6 +323,7 @@ def creep_extent(model: Contact) -> float:
     return hs.MESH_EXTENT * model.frictionless_radius(1.0 / relaxed)
 
 
+# tested: tests/test_thin_layer_history.py (the probe-sized mesh holds the contact)
 _PROBE_N = 64  # elements of the frictionless probe that sizes a layer's mesh
 
 

@@ -63,24 +63,39 @@ __all__ = ["plan", "history_to_tolerance", "STEPS_PER_ELEMENT", "WORK_ERROR_AT_2
            "MAX_REFINEMENTS", "peak_step", "predicted_errors", "reached_tolerance"]
 
 MIN_TOLERANCE, MAX_TOLERANCE = 1e-5, 1e-2  # the tolerances a history plans for
+# measured: benchmarks/report_history_tolerance.py (the plan reaches its tolerance; issue 41, item
+# 3)
 STEPS_PER_ELEMENT = 3  # steps a segment per element
 # relative error of the cycle's work at n = 240, 720 steps a segment (nu = 0.3, path 0, 1, 0;
 # against the n^-p extrapolation of n = 30 ... 960): sphere k = 0.2 9.1e-4, k = 0.05 3e-4;
 # cylinder k = 0.2 1.8e-4
+# measured: benchmarks/report_history_tolerance.py (re-measures whether the plan from this table
+# reaches its tolerance)
 WORK_ERROR_AT_240 = {"sphere": 1.0e-3, "cylinder": 4.0e-4}
+# measured: benchmarks/report_history_tolerance.py (re-measures whether the plan from this order
+# reaches its tolerance)
 WORK_ORDER = 1.7  # measured 1.6 ... 2.1 between n = 60 ... 960 (steps 3n)
 # the stick radius's estimate at the peak (units a_max) at n = 240: |c(n) - c(n/2)| of the
 # sub-element edge, 5e-4 (sphere, k = 0.2); order 1 (the edge's refinement can fall back to
 # an element edge, half an element)
+# measured: benchmarks/report_stick_edge.py (the stick edge against a fourfold refined run) and
+# benchmarks/report_history_tolerance.py
 STICK_ERROR_AT_240 = {"sphere": 1.0e-3, "cylinder": 1.0e-3}
+# convention: the plan's margin (tests/test_history_tolerance.py checks the plan reaches T)
 SAFETY = 2.0  # the plan and the refinements aim at SAFETY times below what the check asks
 # the check asks the work's estimate for T / WORK_CHECK: that estimate was measured 0.41 ...
 # 2.1 times the error to a run refined fourfold or to the n^-p limit (0.41: sphere, k = 0.2,
 # n = 288, 864 steps, against the limit of n = 240, 480, 960), so it may fall short ~2.5x
+# measured: benchmarks/report_history_estimates.py (the work's estimate 0.41 ... 2.1 times the error
+# to a run refined fourfold)
 WORK_CHECK = 3.0
+# convention: refine at most twofold at a time
 MAX_FACTOR = 2.0  # the largest refinement of n and steps at a time
+# convention: at most three runs after the planned one (tests/test_history_tolerance.py)
 MAX_REFINEMENTS = 3  # runs after the planned one
+# convention: n a multiple of 8, so that run C of the estimate has n / 4 elements
 _N_MULTIPLE = 8  # n / 4 an integer (run C of the estimate)
+# convention: the plan never goes below 64 elements
 _MIN_PLANNED_N = 64
 
 

@@ -71,6 +71,7 @@ Kernel = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.nda
 
 __all__ = ["apply_difference", "element_integrals", "QUADRATURES"]
 
+# tested: tests/test_influence_speedup.py (the element integrals against a 40-point rule)
 _NEAR = 2.0  # distance/length below which an element gets the smoothstep rule
 # (lower distance/length bound, Gauss points), nearest class first
 _CLASSES = ((_NEAR, 6), (2.5, 5), (5.0, 4), (12.0, 3), (100.0, 2))
@@ -88,7 +89,11 @@ form, through its band rows). ``"fine"``: 16, 12, 10, 8, 6 and 4 Gauss points fr
 40-point rule, and that k error is 1.1e-10 with the band rows integrated so
 (:data:`contactlib.extrapolated_method.FINE_QUADRATURE_FROM_N`). It costs about 1.35-1.4x
 the kernel time of the standard rules."""
+# convention: scratch size, the results do not depend on it (the solve's speed:
+# benchmarks/bench_solve.py)
 _BLOCK_PAIRS = 1 << 17  # (point, element) pairs classified at once
+# convention: scratch size, the results do not depend on it (the solve's speed:
+# benchmarks/bench_solve.py)
 _CALL_POINTS = 1 << 15  # kernel points per call
 
 

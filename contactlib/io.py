@@ -946,6 +946,7 @@ def _refuse_special(path: Path) -> None:
 # temporary files: ".<name>.<host>-<pid>-<random>.tmp", so that a writer can tell a stale
 # one (left by a killed process of this machine) from one that is being written
 _HOST_TAG = hashlib.sha256(socket.gethostname().encode("utf-8", "replace")).hexdigest()[:6]
+# convention: an hour-old temporary file of an earlier version counts as stale
 _LEGACY_TMP_AGE = 3600.0  # s: ".<name>.<random>.tmp" of earlier versions, no owner recorded
 
 

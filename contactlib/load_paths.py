@@ -83,12 +83,14 @@ __all__ = ["LoadShape", "LoadTable", "SHAPES", "load_path", "is_shaped", "plan",
 SHAPES = ("sinusoidal", "haversine")
 """The named periodic shapes."""
 
+# convention: as history_api's fewest steps for the estimate's order (run C)
 MIN_PIECE_STEPS = 40
 """Fewest steps of a piece (if ``steps`` is at least this): the error estimate measures its
 order from runs on a half and a quarter of the steps only from 40 steps a segment."""
 
 _SHAPE_KEYS = ("shape", "amplitude", "mean", "frequency", "cycles", "ramp")
 _TABLE_KEYS = ("time", "load")
+# exact: 64 halvings take any duration below a double's resolution
 _BISECTIONS = 64  # halvings of a piece's duration when placing a viscoelastic step
 
 

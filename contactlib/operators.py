@@ -61,8 +61,13 @@ __all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators
            "u_difference_rows"]
 
 PARTS = ("normal", "shear")
+# measured: benchmarks/bench_layer.py (a layer's solve against the half-space's);
+# tests/test_layer_contact.py checks the integrals against a 400-panel rule
 _SMOOTH_POINTS = 8  # Gauss points a panel for the smooth remainder
+# measured: benchmarks/bench_layer.py (a layer's solve against the half-space's);
+# tests/test_layer_contact.py checks the integrals against a 400-panel rule
 _SMOOTH_PANEL = 0.5  # longest panel, in layer thicknesses
+# convention: scratch size (512 kB), the results do not depend on it
 _RESTRICT_BLOCK = 1 << 16  # entries of restrict_nested's scratch (512 kB)
 try:  # the compiled route of restrict_nested (setup.py; optional): the same bits
     from . import operators_fused as _fused

@@ -68,13 +68,18 @@ __all__ = ["physical_solve", "physical_history", "PhysicalSolution", "PhysicalHi
            "work_scale", "check_history", "SMALL_STRAIN_LIMIT", "SmallStrainWarning",
            "UNITS", "format_si"]
 
+# convention: the usual bound of the small-strain Hertz theory, a/R <= 0.1 (a warning, not a
+# refusal)
 SMALL_STRAIN_LIMIT = 0.1
 """Largest a/R (a_max/R in a history) reported without a warning (see the module notes)."""
 
+# convention: a strip at most a tenth of the cylinder's length counts as plane strain (a warning,
+# not a refusal)
 PLANE_STRAIN_LIMIT = 0.1
 """Largest a/length of a cylinder reported without a warning (plane strain needs a long
 contact: the strip's half-width small against its length)."""
 
+# convention: the default steps a segment of a physical history
 DEFAULT_HISTORY_STEPS = 200
 """Load steps a segment of a physical history when none are given (the default n = 240
 and 200 steps give the work of a cycle to about 1 %; docs/accuracy.md, "History")."""
@@ -85,6 +90,7 @@ class SmallStrainWarning(UserWarning):
 
 
 # ----------------------------------------------------------------------------- units
+# exact: SI factors of the unit suffixes
 UNITS: dict[str, dict[str, float]] = {
     "length": {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "μm": 1e-6,
                "nm": 1e-9},

@@ -91,6 +91,8 @@ __all__ = ["Profile", "PARABOLOID", "FLAT", "profile", "of_result", "PROFILES",
 PROFILES = ("paraboloid", "cone", "power", "flat", "rounded")
 """The names :func:`profile` accepts."""
 
+# limit: d = 0.5 ... 8 measured in tests/test_profiles.py (the closed forms at d = 0.5, 1, 1.5, 3,
+# 8)
 EXPONENT_RANGE = (0.5, 8.0)
 """The exponents d the solvers accept: measured down to d = 0.5 (the pressure's axis
 singularity, r^(d-1), still integrable for the piecewise-linear elements) and up to
@@ -113,6 +115,7 @@ def takes(name: str, solver: str) -> bool:
     return not isinstance(name, str) or solver in _SOLVERS_OF.get(name, SOLVERS)
 
 
+# limit: b/a_max up to 0.9 measured in tests/test_flat_punch.py (b = 0, 0.5, 0.9)
 FLAT_RATIO_RANGE = (0.0, 0.9)
 """b/a_max of the rounded flat punch: up to 0.9, where the rounded edge a_max - b spans
 0.1 a_max (24 elements of the default history mesh)."""

@@ -58,6 +58,8 @@ __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter
 # 4.0e-6, 6.1e-6 (before 6.4e-5, 2.1e-4, -2.9e-4, 5.7e-3); half-plane within 1.4e-5 at
 # every n for both. The floors were 5e-11 (stick) and 5e-9 (annulus); they are now the
 # smallest elements measured (n = 512: 2.25e-13 a at c/a = 1e-8, 2.3e-10 a at 1 - 1e-5).
+# limit: the smallest elements measured (n = 512 at c/a = 1e-8 and 1 - 1e-5);
+# tests/test_extremes.py checks tiny stick zones against the closed form
 QUADRATURE_FLOOR_H = {"stick": 2e-13, "annulus": 2e-10}
 OUTPUTS = validate.OUTPUTS
 NODAL_METHODS = tuple(name for name, m in validate.METHOD_REGISTRY.items()

@@ -73,6 +73,7 @@ REPORT_COLUMNS = (
 )
 """Columns of :func:`report_rows` (the HTML table of the report)."""
 
+# convention: the stick ratios the report's table shows
 _RATIOS = (0.25, 0.5, 0.75)
 
 

@@ -87,6 +87,7 @@ _C_SHEAR = 4.0 / (3.0 * np.pi)
 _TINY = np.finfo(float).tiny  # ln(m1) clamp at m1 = 0 (r = s exactly)
 
 # f(m) = P(m1) + ln(m1) R(m1), coefficients from low to high degree: (P, R).
+# tested: tests/test_kernels_disc.py (regenerated with mpmath; the fits within 4e-15)
 _FITS: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
     "E": (
         (1.0, 0.4431471805600135, 0.056805193631284744, 0.021831679422434032,
@@ -150,6 +151,8 @@ _STACKS = {"pressure": (_stack("E"), _stack("A1")),
            "shear": (_stack("g1", "gd1"), _stack("h1", "hd2")),
            "shear_u": (_stack("g1"), _stack("h1"))}
 
+# convention: scratch size, the results do not depend on it (kernel speed:
+# benchmarks/bench_kernels.py)
 _CHUNK = 32768  # points per pass: scratch rows stay small and are reused
 
 
@@ -496,6 +499,7 @@ def _e_series(terms: int = 60) -> np.ndarray:
 
 
 _E_SERIES = _e_series()
+# tested: tests/test_kernels_disc.py (the kernels against scipy's E and K)
 _SERIES_M = 0.5  # below, the series; above, the fit of E minus pi/2 (cancels at most 7-fold)
 
 
@@ -581,23 +585,29 @@ def gauss_tiers(gap: np.ndarray, length: np.ndarray):
 # coefficients (highest degree first), evaluated here on whole arrays. numpy's logarithm
 # may differ from the C library's by one ulp, so the values agree with scipy to a few ulp
 # (bit for bit at almost every point).
+# exact: Cephes' published coefficients (ellpe.c)
 _ELLPE_P = (1.53552577301013293365e-4, 2.50888492163602060990e-3, 8.68786816565889628429e-3,
             1.07350949056076193403e-2, 7.77395492516787092951e-3, 7.58395289413514708519e-3,
             1.15688436810574127319e-2, 2.18317996015557253103e-2, 5.68051945617860553470e-2,
             4.43147180560990850618e-1, 1.00000000000000000299e0)
+# exact: Cephes' published coefficients (ellpe.c)
 _ELLPE_Q = (3.27954898576485872656e-5, 1.00962792679356715133e-3, 6.50609489976927491433e-3,
             1.68862163993311317300e-2, 2.61769742454493659583e-2, 3.34833904888224918614e-2,
             4.27180926518931511717e-2, 5.85936634471101055642e-2, 9.37499997197644278445e-2,
             2.49999999999888314361e-1)
+# exact: Cephes' published coefficients (ellpk.c)
 _ELLPK_P = (1.37982864606273237150e-4, 2.28025724005875567385e-3, 7.97404013220415179367e-3,
             9.85821379021226008714e-3, 6.87489687449949877925e-3, 6.18901033637687613229e-3,
             8.79078273952743772254e-3, 1.49380448916805252718e-2, 3.08851465246711995998e-2,
             9.65735902811690126535e-2, 1.38629436111989062502e0)
+# exact: Cephes' published coefficients (ellpk.c)
 _ELLPK_Q = (2.94078955048598507511e-5, 9.14184723865917226571e-4, 5.94058303753167793257e-3,
             1.54850516649762399335e-2, 2.39089602715924892727e-2, 3.01204715227604046988e-2,
             3.73774314173823228969e-2, 4.88280347570998239232e-2, 7.03124996963957469739e-2,
             1.24999999999870820058e-1, 4.99999999999999999821e-1)
+# exact: ln 4 (Cephes' C1, ellpk.c)
 _ELLPK_LOG4 = 1.3862943611198906188e0  # K ~ ln 4 - ln(x)/2 for x <= _MACHEP
+# exact: the double's unit round-off (Cephes' MACHEP)
 _MACHEP = 2.0**-53
 # E - K in one: P_E - P_K and x Q_E - Q_K, both in x = m1 (degree 10: one Horner pass for the
 # two rows and one logarithm, half the work of E and K apart). Each coefficient is the exact
@@ -613,6 +623,8 @@ _E_MINUS_K = np.array([
      0.0014011647343548927, 0.0022680139738568764, 0.0033629189660620874, 0.005340661234510824,
      0.009765628690010277, 0.023437500023368682, 0.12500000000001749, -0.5),
 ]).T[:, :, None].copy()  # (11, 2, 1): rows (P, Q) of E - K = P(x) - ln(x) Q(x)
+# convention: scratch size, the results do not depend on it (kernel speed:
+# benchmarks/bench_kernels.py)
 _ELL_CHUNK = 16384  # points a pass of _dwdr_pressure
 
 

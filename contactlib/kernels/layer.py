@@ -154,25 +154,44 @@ __all__ = ["AXIS_RHO_MAX", "BASES", "RATIO_MAX", "THIN_RATIO_MAX", "LayerTable",
 Arr = NDArray[np.float64]
 
 BASES = ("smooth", "bonded")
+# limit: the tables' range, checked against quadrature in tests/test_kernels_layer.py
 RATIO_MAX = 20.0  # max(r, s)/h covered by the tables
+# limit: the transform-domain sums to 1.2 x 1000 h (tests/test_thin_layers.py,
+# tests/test_thin_coatings.py: a/h = 1000 and its mesh's 20 % beyond)
 THIN_RATIO_MAX = 1200.0  # max(r, s)/h of the transform-domain sums (thin_layer)
 
+# tested: tests/test_kernels_layer.py (the tables against quadrature); their cost:
+# benchmarks/bench_layer.py
 _CELL = 0.5  # table cell width in rho and sigma
+# tested: tests/test_kernels_layer.py (the tables against quadrature); their cost:
+# benchmarks/bench_layer.py
 _DEG = 10  # Chebyshev degree in each variable
 _N_CELLS = int(round(RATIO_MAX / _CELL))
+# tested: tests/test_kernels_layer.py (table and power series against the quadrature)
 _SERIES_MAX = 0.25  # max(rho, sigma) below which the power series is used
+# tested: tests/test_kernels_layer.py (table and power series against the quadrature)
 _BLEND = 0.05  # the series hands over to the table smoothly over _SERIES_MAX - _BLEND ... MAX
+# tested: tests/test_kernels_layer.py (table and power series against the quadrature)
 _SERIES_TERMS = 14
+# tested: tests/test_kernels_layer.py (the tables' quadrature against scipy's quad)
 _T_MAX = 24.0
+# tested: tests/test_kernels_layer.py (the tables' quadrature against scipy's quad)
 _T_PANEL = 0.25
+# tested: tests/test_thin_coatings.py (the coated tables against their quadrature and limits)
 FINE_T = 2.0
 """A coated body: the fine panels cover ``0 < t < FINE_T f`` (f = :func:`fine_panel`)."""
+# tested: tests/test_thin_coatings.py (the coated tables against their quadrature and limits)
 FINE_PANELS = 32
 """A coated body: panels on ``0 < t < FINE_T f`` (the tables' quadrature; at least this
 many in :mod:`contactlib.kernels.thin_layer`)."""
+# tested: tests/test_kernels_layer.py (the tables' quadrature against scipy's quad)
 _GL_ORDER = 20
+# convention: scratch size, the results do not depend on it (speed: benchmarks/bench_layer.py)
 _CHUNK = 65536  # points per pass
+# measured: benchmarks/bench_layer.py (kernel evaluation for 2048 rings against the half-space)
 _GROUP_MIN = 48  # mean points a cell above which points are grouped by cell
+# measured: benchmarks/bench_layer.py (kernel evaluation for 2048 rings against the half-space);
+# tests/test_layer_accuracy.py checks grid and points agree
 _GRID_MIN = 256  # points of an outer-product (r, s) grid above which it is evaluated as one
 
 # (name, remainder, power of sigma in the prefactor (2 sigma^a), sign, Bessel order in
@@ -633,7 +652,9 @@ def _chebyshev_basis(z: Arr) -> Arr:
     return tz
 
 
+# tested: tests/test_layer_accuracy.py (u near the axis, 3e-9 of the quadrature down to rho = 1e-8)
 _PARITY_MAX = 0.05  # rho below which u takes the odd part of its interpolant in rho ...
+# tested: tests/test_layer_accuracy.py (u near the axis, 3e-9 of the quadrature down to rho = 1e-8)
 _PARITY_FULL = 0.03  # ... wholly below this, blended (C^2) between
 _EVEN_MAX, _EVEN_FULL = 0.005, 0.003  # the same for the even part of w and du/dr: the
 # interpolant's even part extrapolates the cell to rho < 0, whose error grows like rho^2

@@ -221,16 +221,26 @@ Arr = NDArray[np.float64]
 _TWO_PI = 2.0 / np.pi
 
 # --- slab tables -------------------------------------------------------------
+# tested: tests/test_kernels_strip.py (table and far-field forms meet without a jump)
 _ETA_MAX = 20.0  # tabulated range of |eta|; beyond: far-field forms (error ~ e^-42)
+# tested: tests/test_kernels_strip.py (the tables against scipy's quad); cost:
+# benchmarks/bench_kernels.py
 _N_PIECES = 1000  # pieces on each side of eta = 0
 _DELTA = _ETA_MAX / _N_PIECES
 _INV_DELTA = 1.0 / _DELTA
+# tested: tests/test_kernels_strip.py (the transforms against scipy's quad; the integrands are O(t^2
+# exp(-2t)) beyond)
 _T_MAX = 25.0  # transform integrands are O(t^2 exp(-2t)) beyond
+# tested: tests/test_kernels_strip.py (the bonded base's table against the far field)
 _ETA_MAX_BONDED = 48.0  # bonded base: corrections decay like exp(-0.74 |eta|) at nu = 1/2
+# tested: tests/test_kernels_strip.py (the bonded base's quadrature against scipy's quad)
 _PANEL_BONDED = 0.25  # finer panels: t * eta up to 25 * 48
 BASES = ("smooth", "bonded")
+# tested: tests/test_kernels_strip.py (the tables' quadrature against scipy's quad)
 _PANEL = 0.5
+# tested: tests/test_kernels_strip.py (the tables' quadrature against scipy's quad)
 _GL_ORDER = 20
+# convention: scratch size, the results do not depend on it (speed: benchmarks/bench_kernels.py)
 _CHUNK = 16384  # points per chunk (keeps temporaries in cache)
 
 
@@ -588,9 +598,14 @@ def _coated_table(nu: float, sub: Substrate) -> _SlabTable:
 
 # --- coated body beyond the tables: log-spaced tables of the smooth parts ----------------
 _ETA_FAR = _ETA_MAX_BONDED * 2.0**6  # 3072: |x +- s|/h of the coated far tables
+# tested: tests/test_thin_coatings_cylinder.py (slopes within 2e-11 of an independent QAWO
+# quadrature; tables 46 kB: benchmarks/bench_thin_coatings_cylinder.py)
 _FAR_PER_OCTAVE = 40  # pieces per doubling of |eta| (uniform in ln|eta|; interpolation ~1e-15)
 _FAR_DU = np.log(2.0) / _FAR_PER_OCTAVE
+# tested: tests/test_thin_coatings_cylinder.py (the far tables against an independent QAWO
+# quadrature)
 _FAR_PHASE = 12.0  # panel width times eta: as the tables' panels of 0.25 at eta = 48
+# convention: scratch size (8 MB an array), the results do not depend on it
 _FAR_BLOCK = 1_000_000  # (eta, t) pairs a quadrature block (8 MB an array)
 
 
@@ -1265,7 +1280,9 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
     return dw, zero, zero.copy()
 
 
+# tested: tests/test_kernels_strip.py (axis_w_strip near the axis)
 _AXIS_SLOPE_UP_TO = 1e-3  # x/h below which axis_w_strip integrates the remainder's slope
+# tested: tests/test_kernels_strip.py (axis_w_strip near the axis)
 _AXIS_SLOPE_POINTS = 8  # Gauss points on [0, x] (the slope is smooth on the scale h)
 
 

@@ -46,15 +46,21 @@ from . import layer
 
 Arr = NDArray[np.float64]
 
+# tested: tests/test_thin_layers.py and tests/test_thin_coatings.py (the sums against the ring
+# tables and the thin limits; the remainders are below 1e-13 beyond)
 T_MAX = 18.0
 """Upper end of the t = k h integrals (the remainders are below 1e-13 beyond)."""
 
+# measured: benchmarks/bench_thin_layers.py (cost and accuracy against Winkler's limit);
+# tests/test_thin_layers.py checks the sums
 PANEL_SPAN = 30.0
 """Panel width times (rho + sigma): ~5 periods of the Bessel product a panel."""
 
+# measured: benchmarks/bench_thin_layers.py (the peak memory of a solve)
 MEMORY_BYTES = 48e6
 """Bound on the Bessel values held at once (bytes)."""
 
+# tested: tests/test_thin_layers.py (the sums against the ring tables, with PANEL_SPAN)
 _GL_ORDER = 20
 
 # row: (remainder, power of sigma, sign, Bessel order in sigma, function of rho, power of t)

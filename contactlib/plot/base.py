@@ -184,7 +184,9 @@ def label_of(ds: xr.Dataset, index: int, description: str) -> tuple[str, str]:
 
 
 # ----------------------------------------------------------------------------- panels
+# convention: a layout size at the style's legend font (inches)
 _LEGEND_LINE_IN = 0.12  # height of one legend entry at the style's legend font, inches
+# convention: a layout size at the style's legend font (inches)
 _LEGEND_PAD_IN = 0.12
 
 
@@ -193,6 +195,7 @@ def legend_height(entries: int) -> float:
     return _LEGEND_PAD_IN + _LEGEND_LINE_IN * max(entries, 1)
 
 
+# convention: panels side by side before they wrap (tests/test_figures.py)
 MAX_COLUMNS = 4
 """Most panels side by side in :func:`panel_grid`; more wrap into rows (bands)."""
 
@@ -241,7 +244,9 @@ def panel_grid(ncol: int, rows_in: Sequence[float], legend_entries: int,
 
 
 # ----------------------------------------------------------------------------- layout
+# convention: draws the frozen layout may take to settle
 _SETTLE_DRAWS = 5
+# convention: a fiftieth of a pixel at 150 dpi counts as settled
 _SETTLE_TOLERANCE = 2e-5  # figure fraction: a fiftieth of a pixel at 150 dpi
 
 

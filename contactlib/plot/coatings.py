@@ -44,6 +44,7 @@ from contactlib.plot.base import (
 
 __all__ = ["fig_coatings"]
 
+# convention: the a/h issue 39 asks for
 _ISSUE_MAX = 1000.0  # the a/h issue 39 asks for (the x axes reach it, shaded beyond the data)
 
 

@@ -19,6 +19,7 @@ from contactlib.plot.base import finish, palette, style_context
 
 __all__ = ["fig_fretting", "fig_fretting_path"]
 
+# convention: the amplitudes the fretting figure draws loops for
 _LOOP_AMPLITUDES = (0.25, 0.5, 0.9)
 
 

@@ -102,7 +102,9 @@ _STATES = (
     ("slip toward the axis", "#E69F00"),
     ("slip away from the axis", "#CC79A7"),
 )
+# convention: most state-map panels in one figure
 _MAX_MAP_PANELS = 4
+# convention: the line styles of the history figures (points on, off)
 _DASHES = ((3.0, 1.5), (1.2, 1.2), (5.0, 1.5, 1.2, 1.5))
 _CROSS = {"ls": "none", "marker": "x", "ms": 6, "mew": 1.2, "color": "black"}
 
@@ -324,7 +326,9 @@ def _legend_rows(entries: int, ncols: int) -> int:
     return math.ceil(max(entries, 1) / ncols)
 
 
+# convention: a layout size at the style's legend font (inches)
 _CHAR_IN = 0.052  # mean width of a legend character at the style's 6.5 pt, inches
+# convention: a layout size at the style's legend font (inches)
 _HANDLE_IN = 0.5  # legend handle, its padding and the column spacing, inches
 
 

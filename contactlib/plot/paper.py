@@ -86,10 +86,13 @@ __all__ = [
     "fig5_work",
 ]
 
+# convention: the stick ratios of the paper's figures
 DEFAULT_STICK_RATIOS: tuple[float, ...] = (0.1, 0.3, 0.5, 0.7, 0.9)
 # fig 3 compares the paper's scheme with ours at the same c/a: values m/16 (the
 # paper's) that the default scenes also hold
+# convention: multiples of 1/16 that the paper's scheme resolves at n = 16
 FIG3_STICK_RATIOS: tuple[float, ...] = (1 / 16, 4 / 16, 8 / 16, 12 / 16)
+# exact: 1/16, the paper's scheme's smallest c/a at its n = 16
 PAPER_SMALLEST_STICK_RATIO = 1.0 / 16.0
 
 _GEOMETRIES = GEOMETRIES
@@ -101,6 +104,7 @@ _WORK_LABEL = {
     "sphere": r"frictional work $V R^2/(E^* a^5)$",
     "cylinder": r"frictional work $V R^2/(E^* a^4)$ per unit length",
 }
+# convention: the line styles of the paper's figures (points on, off)
 _DASHES = ((5.0, 2.5), (1.5, 1.5), (6.0, 2.0, 1.5, 2.0), (3.0, 1.0))
 
 
@@ -457,6 +461,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
         return finish(fig)
 
 
+# convention: how far below zero the k axis may reach, as a fraction of k_max
 _K_AXIS_FLOOR = 0.1  # the k axis reaches below zero by at most this fraction of k_max
 
 

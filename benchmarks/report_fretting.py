@@ -6,7 +6,8 @@
 
 1. Cycle work between +-Q* at constant P (beta = 0, rigid on nu = 0.5) against the
    Mindlin-Deresiewicz closed form of the cylinder, at the default n = 120, 40 steps a
-   segment: relative error, estimate, and the stick ratio at Q* against Cattaneo.
+   segment: relative error, estimate, and the stick ratio at Q* against Cattaneo (the
+   located stick edge, whose fit ``fretting_solver.EDGE_SKIP``/``EDGE_FIT`` set).
 2. Coupled (rigid on nu = 0.3, beta = 0.286): the work of successive cycles (shakedown of
    the coupling) and its estimate against a run refined fourfold in n and steps.
 3. Cost: the wall time of the default fretting path (load, then two cycles) over that of
@@ -26,6 +27,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from contactlib import fretting, history  # noqa: E402
+from contactlib.fretting_solver import EDGE_FIT, EDGE_SKIP  # noqa: E402
 from contactlib.theory import cylinder_cycle_work  # noqa: E402
 
 K = 0.3
@@ -43,6 +45,8 @@ def main() -> None:
     xs = (0.1, 0.25, 0.5, 0.75, 0.9)
     print("1. beta = 0: cycle work W against Mindlin-Deresiewicz (cylinder), c/a against "
           "Cattaneo")
+    print(f"  (the stick edge: f^2 fitted over EDGE_FIT = {EDGE_FIT} elements, the "
+          f"EDGE_SKIP = {EDGE_SKIP} next to it left out)")
     print("  Q*/kP   W/W_MD - 1   estimate/W_MD   c/a - sqrt(1 - x)   its estimate")
     for x in xs:
         r = fretting("cylinder", 0.5, K, PATH, _cycle(x), 40)

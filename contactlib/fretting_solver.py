@@ -360,11 +360,11 @@ def solve_step(ops: StripOperators, k: float, load: float, force: float, strain:
     return FrettingStep(p, q, v, gap, delta, shift, state, False, _MAX_ITER)
 
 
-# tested: tests/test_fretting.py (the stick ratio against Cattaneo within its estimate; the skipped
-# elements' tractions were 2-30 % off the closed form)
+# measured: benchmarks/report_fretting.py (part 1: c/a against Cattaneo; the skipped elements'
+# tractions were 2-30 % off the closed form); tests/test_fretting.py checks it
 EDGE_SKIP = 2  # elements next to an edge whose traction carries the edge's local error
-# tested: tests/test_fretting.py (the stick ratio against Cattaneo within its estimate, the stick
-# offset against Hills and Nowell)
+# measured: benchmarks/report_fretting.py (part 1: c/a against Cattaneo); tests/test_fretting.py
+# checks it within its estimate, and the stick offset against Hills and Nowell
 EDGE_FIT = 7  # elements beyond those fitted by a quadratic in f^2
 
 

@@ -96,7 +96,8 @@ MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
-# tested: tests/test_history_error.py (the estimates with and without run C)
+# tested: tests/test_history_error.py (the estimates against a fourfold refined run at 20 and 50
+# steps a segment: below and above it)
 _MIN_ORDER_STEPS = 40  # fewer steps a segment: no run C, order 1 (C would be too coarse)
 # tested: tests/test_solver_limit.py (a work below the floor reads as zero)
 WORK_FLOOR = 1e-4  # the work's error scale: at least this fraction of the indenter's work

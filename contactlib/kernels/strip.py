@@ -231,9 +231,9 @@ _INV_DELTA = 1.0 / _DELTA
 # tested: tests/test_kernels_strip.py (the transforms against scipy's quad; the integrands are O(t^2
 # exp(-2t)) beyond)
 _T_MAX = 25.0  # transform integrands are O(t^2 exp(-2t)) beyond
-# tested: tests/test_kernels_strip.py (the bonded base's table against the far field)
+# tested: tests/test_kernels_strip.py (the bonded slab against its Fourier integral)
 _ETA_MAX_BONDED = 48.0  # bonded base: corrections decay like exp(-0.74 |eta|) at nu = 1/2
-# tested: tests/test_kernels_strip.py (the bonded base's quadrature against scipy's quad)
+# tested: tests/test_kernels_strip.py (the bonded slab against its Fourier integral)
 _PANEL_BONDED = 0.25  # finer panels: t * eta up to 25 * 48
 BASES = ("smooth", "bonded")
 # tested: tests/test_kernels_strip.py (the tables' quadrature against scipy's quad)

@@ -28,9 +28,11 @@ from .stresses_tangential import mindlin_sphere_stresses
 __all__ = ["STICK_RATIOS", "TANGENTIAL_CASES", "partial_slip_fields", "edge_fields",
            "tangential_fields", "maxima_rows", "study"]
 
+# convention: the c/a of the figures and the table of docs/stresses.md
 STICK_RATIOS = (0.0, 0.25, 0.5, 0.75, 0.9)
 """c/a of the partial-slip maps and maxima."""
 
+# convention: the cases of the tangential figure of docs/stresses.md
 TANGENTIAL_CASES = ((0.0, 1.0), (0.2, 1.0), (0.4, 1.0), (0.4, 0.5))
 """(mu, Q/(mu P)) of the tangential maps: sliding, and partial slip at half the force."""
 

@@ -19,7 +19,7 @@ NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "
             "default_method", "paper_method", "history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
             "discrete", "kernels/layer", "kernels/thin_layer", "layer_study", "fretting_solver",
-            "fretting_api", "estimates", "coating_study")
+            "fretting_api", "estimates", "coating_study", "stresses_grid")
 # what the numerics never import: files and conventions (io), figures, workflow
 FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
                          "contactlib.pipeline", "contactlib.scene", "contactlib.cli")
@@ -134,7 +134,7 @@ LAYER_MODULES = {
                "result", "solver_fused"),
     "entry points": ("api", "history_api", "history_plan", "fretting_api", "convergence",
                      "layer_study", "coating_study", "physical", "physical_fretting",
-                     "stresses", "stresses_tangential", "stress_study"),
+                     "stresses", "stresses_tangential", "stress_study", "stresses_grid"),
     "io": ("io",),
     "plot": ("plot",),
     "workflow": ("scene", "pipeline", "summary", "cli", "__main__", ""),

@@ -25,10 +25,17 @@ C(x - xi1, y - eta1) - C(x - xi2, y - eta1) - C(x - xi1, y - eta2) + C(x - xi2, 
 of an elementary function C with d^2 C/dX dY = D Omega (:data:`_CORNERS`; derived with a
 computer algebra system and checked by differentiation). On a grid the corner sums of
 all cells collapse to one sum over the grid's corners, weighted by the second difference
-of the tractions: a matrix product, in chunks of ``CHUNK`` numbers an array. Only
-round-off is added: the field agrees with the closed forms of Love and Cerruti to 1e-13
-(tests/test_stresses_grid.py). Cost: (points) x (corners where the tractions change)
-evaluations of 14 elementary functions; measured in benchmarks/bench_stresses_grid.py.
+of the tractions. Only round-off is added: the field agrees with Love's closed form to
+1e-14 of the pressure (tests/test_stresses_grid.py). Two routes sum over the corners:
+
+* :func:`grid_stresses` / :func:`stresses_at`, at any points: a matrix product, in chunks
+  of ``CHUNK`` numbers an array; (points) x (corners where the tractions change)
+  evaluations of the 14 functions;
+* :func:`lattice_stresses`, on the lattice of the cell corners (or of h/refine): a
+  zero-padded FFT convolution at each depth, the whole (x, y) plane for 14 function
+  tables of (2n + 1)^2 points and 20 FFTs of (2n + 2)^2; it agrees with the direct sum
+  to 1e-14 and is hundreds of times cheaper for a 3-D field
+  (benchmarks/bench_stresses_grid.py).
 
 On the surface (z = 0) the in-plane stresses of piecewise-constant tractions are
 singular at the cell edges: the field is defined for z > 0 only, and at depths below a
@@ -46,7 +53,7 @@ import numpy as np
 from .stresses import CHUNK
 from .stresses_tangential import CARTESIAN, cartesian_measures
 
-__all__ = ["grid_stresses", "stresses_at", "corner_weights", "fretting_step_stresses", "fretting_stresses",
+__all__ = ["grid_stresses", "stresses_at", "lattice_stresses", "corner_weights", "fretting_step_stresses", "fretting_stresses",
            "field_maxima"]
 
 _TRACTIONS = ("p", "qx", "qy")
@@ -286,6 +293,69 @@ def grid_stresses(p: Any, q: Any, h: float, origin: tuple[float, float], x: Any,
     return {name: v.reshape(zz.shape) for name, v in flat.items()}
 
 
+def lattice_stresses(p: Any, q: Any, h: float, origin: tuple[float, float], z: Any,
+                     nu: float, refine: int = 1) -> dict[str, np.ndarray]:
+    """The field of :func:`grid_stresses` on the lattice of the cell corners, by FFT.
+
+    The same exact corner functions, summed over the corners by a zero-padded FFT
+    convolution at each depth: the full (x, y) plane of every depth for the cost of a
+    few FFTs of (2n + 2)^2 points, rather than (points) x (corners) evaluations.
+
+    Parameters
+    ----------
+    p, q, h, origin, nu
+        As for :func:`grid_stresses` (cells (n, m)).
+    z : array_like, 1-d
+        Depths > 0, in the unit of ``h``.
+    refine : int
+        Points a cell side: the output lies at ``x0 + i h/refine``, i = 0 ... refine n
+        (and likewise in y); 1 gives the cell corners, 2 adds the edges' midpoints and
+        the centres. Costs ``refine^2`` convolutions.
+
+    Returns
+    -------
+    dict of str to ndarray, shape (len(z), refine m + 1, refine n + 1)
+        :data:`~contactlib.stresses_tangential.CARTESIAN` on (z, y, x), as
+        :func:`grid_stresses` on ``x = x0 + i h/refine``, ``y = y0 + j h/refine``
+        (agrees with it to 1e-14 of the tractions, tests/test_stresses_grid.py).
+    """
+    from . import validate
+
+    p, q = _check_tractions(p, q)
+    if not (isinstance(h, (int, float, np.floating)) and math.isfinite(h) and h > 0):
+        raise validate.InputError("h", "a finite cell side > 0", h)
+    if not (isinstance(refine, (int, np.integer)) and refine >= 1):
+        raise validate.InputError("refine", "an integer >= 1", refine)
+    nu = validate.nu(nu)
+    _, _, zs = _check_axes([0.0], [0.0], z)
+    n1, n2 = p.shape
+    m1, m2 = 2 * n1 + 2, 2 * n2 + 2  # circular convolution without wrap for |i - k| <= n
+    w_hat = np.fft.rfft2(corner_weights(p, q), s=(m1, m2))  # (3, m1, m2 // 2 + 1)
+    d1, d2 = np.arange(-n1, n1 + 1), np.arange(-n2, n2 + 1)
+    place = np.ix_(d1 % m1, d2 % m2)
+    out = {name: np.zeros((zs.size, refine * n2 + 1, refine * n1 + 1)) for name in CARTESIAN}
+    for a in range(refine):
+        for b in range(refine):
+            X = (d1 * h + a * h / refine)[:, None]
+            Y = (d2 * h + b * h / refine)[None, :]
+            rows, cols = n1 + 1 - (a > 0), n2 + 1 - (b > 0)
+            for iz, zv in enumerate(zs):
+                k_hat = []
+                for c in _corners(X, Y, np.float64(zv)):
+                    pad = np.zeros((m1, m2))
+                    pad[place] = c
+                    k_hat.append(np.fft.rfft2(pad))
+                for name in CARTESIAN:
+                    spec = np.zeros_like(k_hat[0])
+                    for ti, t in enumerate(_TRACTIONS):
+                        for o, (a0, a1, a2) in _COEFFICIENTS[t][name].items():
+                            coef = (a0 + a1 * nu + a2 * zv) / (2.0 * math.pi)
+                            spec += coef * k_hat[_ORDERS.index(o)] * w_hat[ti]
+                    field = np.fft.irfft2(spec, s=(m1, m2))[:rows, :cols]
+                    out[name][iz, b::refine, a::refine] = field.T
+    return out
+
+
 # ----------------------------------------------------------------------------- fretting
 _MEASURES = ("von_mises", "tresca")
 # tested: tests/test_stresses_grid.py (second order of the field in the cell size, measured
@@ -331,13 +401,19 @@ def field_maxima(ds: Any, names: tuple[str, ...] = _MEASURES) -> dict[str, dict[
 
 
 def _step_fields(ops: Any, raw: Any, step: int, xs: np.ndarray, ys: np.ndarray,
-                 zs: np.ndarray, nu: float) -> dict[str, np.ndarray]:
-    """The field of one step of a run with fields kept, in units of p0(a_max)."""
+                 zs: np.ndarray, nu: float, refine: int = 0) -> dict[str, np.ndarray]:
+    """The field of one step of a run with fields kept, in units of p0(a_max).
+
+    ``refine`` > 0: on the lattice of spacing h/refine (``xs``, ``ys`` are its points),
+    by :func:`lattice_stresses`; 0: at the product grid of ``xs``, ``ys``, ``zs``.
+    """
     if step == 0:
         return {name: np.zeros((zs.size, ys.size, xs.size)) for name in CARTESIAN}
     p = np.asarray(raw.p[step - 1]) / ops.p0
     q = np.asarray(raw.q[step - 1]) / ops.p0
     half = 0.5 * ops.n * ops.h
+    if refine:
+        return lattice_stresses(p, q, ops.h, (-half, -half), zs, nu, refine)
     return grid_stresses(p, q, ops.h, (-half, -half), xs, ys, zs, nu)
 
 
@@ -355,7 +431,8 @@ def _check_step(raw: Any, step: Any) -> int:
 
 def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any, *,
                            nu: float, coarse: tuple[Any, Any, int] | None = None,
-                           coarser: tuple[Any, Any, int] | None = None) -> Any:
+                           coarser: tuple[Any, Any, int] | None = None,
+                           refine: int = 1) -> Any:
     """The stress field under one step of a sphere's fretting run, as an xarray Dataset.
 
     Parameters
@@ -366,9 +443,13 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
         The run, with its fields kept (``run_sphere_fretting(..., keep_fields=True)``).
     step : int
         The step, 0 (unloaded) ... m; negative counts from the end.
-    x, y, z : array_like, 1-d
-        The grid in units of a_max (y along the tangential load's normal, z > 0 the
-        depth into the body).
+    x, y : array_like, 1-d, or None
+        The grid in units of a_max (x along the tangential load). Both None: the lattice
+        of spacing h/``refine`` over the run's grid [-1.2, 1.2]^2 (its cell corners for
+        ``refine`` = 1), computed by FFT (:func:`lattice_stresses`: the whole 3-D field
+        for less than a plane of points costs otherwise, benchmarks/bench_stresses_grid.py).
+    z : array_like, 1-d
+        Depths z > 0 into the body, in units of a_max.
     nu : float
         Poisson's ratio of the body.
     coarse : (ops, raw, step), optional
@@ -381,6 +462,8 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
         a fretting run converge unevenly and a twofold change alone can be small by
         chance: at n = 64 it missed the change to n = 128 at the von Mises maximum by
         1.3 times, tests/test_stresses_grid.py).
+    refine : int
+        Points a cell side of the lattice when ``x`` and ``y`` are None.
 
     Returns
     -------
@@ -407,6 +490,15 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
     from . import validate
 
     nu = validate.nu(nu)
+    lattice = x is None and y is None
+    if lattice:
+        if not (isinstance(refine, (int, np.integer)) and refine >= 1):
+            raise validate.InputError("refine", "an integer >= 1", refine)
+        half = 0.5 * ops.n * ops.h
+        x = y = -half + ops.h / refine * np.arange(refine * ops.n + 1)
+    elif x is None or y is None:
+        raise validate.InputError("x", "given with y, or both None (the lattice)",
+                                  "one of x, y None")
     xs, ys, zs = _check_axes(x, y, z)
     step = _check_step(raw, step)
     runs = [(ops, raw, step)]
@@ -421,7 +513,7 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
             raise validate.SolverLimit(
                 f"fretting stresses: step {r_step} of the run with n = {r_ops.n} did not "
                 "converge, so its tractions are not data; refine the steps or the grid")
-    fields = _step_fields(ops, raw, step, xs, ys, zs, nu)
+    fields = _step_fields(ops, raw, step, xs, ys, zs, nu, refine if lattice else 0)
     fields.update(cartesian_measures(fields))
     dims = ("z", "y", "x")
     data = {k: (dims, v, {"units": "1", "long_name": f"{k} / p0(a_max)"})
@@ -435,7 +527,12 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
     if coarse is not None:
         others = []
         for c_ops, c_raw, c_step in runs[1:]:
-            other = _step_fields(c_ops, c_raw, c_step, xs, ys, zs, nu)
+            ratio = round(c_ops.h / ops.h)
+            if lattice and abs(ratio * ops.h - c_ops.h) > 1e-12 * c_ops.h:
+                raise validate.InputError("coarse", "runs whose cell side is a multiple of "
+                                          "the run's (n/2, n/4) for the lattice", c_ops.n)
+            other = _step_fields(c_ops, c_raw, c_step, xs, ys, zs, nu,
+                                 refine * ratio if lattice else 0)
             other.update(cartesian_measures(other))
             others.append(other)
         for k, v in fields.items():
@@ -496,7 +593,7 @@ def _replay(model: Any, result: Any, n: int, steps: int) -> tuple[Any, Any]:
 
 def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
                       indenter_modulus: float = math.inf, indenter_nu: float | None = None,
-                      error_estimate: bool = True) -> Any:
+                      error_estimate: bool = True, refine: int = 1) -> Any:
     """The stress field under a step of ``contactlib.fretting("sphere", ...)``.
 
     The result keeps only the row of cells next to the x axis, so the path is run again
@@ -514,7 +611,9 @@ def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
         the end. With ``error_estimate`` it must be even, from n = 64 a multiple of 4
         (the coarse runs have fewer steps; every path point is).
     x, y, z : array_like, 1-d
-        The grid in units of a_max, z > 0.
+        The grid in units of a_max, z > 0; x and y both None: the lattice of the run's
+        cell corners (``refine`` points a cell side), by FFT, as
+        :func:`fretting_step_stresses`.
     indenter_modulus, indenter_nu : float
         The indenter the run was made with (the result does not keep them); its Dundurs
         beta is checked against the result's.
@@ -556,7 +655,7 @@ def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
             "step", f"a multiple of {4 if third else 2} with error_estimate (the coarse runs "
             "have fewer steps; every path point is one); pass error_estimate=False for this "
             "step", step)
-    _check_axes(x, y, z)
+    _check_axes(0.0 if x is None else x, 0.0 if y is None else y, z)
     model = _model_of(result, indenter_modulus, indenter_nu)
     ops, raw = _replay(model, result, result.n, result.steps)
     if abs(float(raw.contact_radius[step]) - float(result.contact_edges[step, 1])) > 1e-9:
@@ -570,4 +669,4 @@ def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
         if third:
             coarser = (*_replay(model, result, result.n // 4, result.steps // 4), step // 4)
     return fretting_step_stresses(ops, raw, step, x, y, z, nu=result.nu, coarse=coarse,
-                                  coarser=coarser)
+                                  coarser=coarser, refine=refine)

@@ -16,7 +16,8 @@ from contactlib.fretting_sphere import grid_operators, run_sphere_fretting
 from contactlib.history_api import load_levels
 from contactlib.model import contact
 from contactlib.stresses_grid import (corner_weights, fretting_step_stresses,
-                                      fretting_stresses, grid_stresses, stresses_at)
+                                      fretting_stresses, grid_stresses, lattice_stresses,
+                                      stresses_at)
 from contactlib.stresses_tangential import CARTESIAN, mindlin_sphere_stresses
 from contactlib.validate import InputError
 from test_stresses_tangential import _cerruti
@@ -115,6 +116,20 @@ def test_the_force_across_a_plane_is_the_tractions_force():
         np.testing.assert_allclose(got, -force, atol=1e-5 * np.abs(force).max())
 
 
+@pytest.mark.parametrize("refine", [1, 2, 3])
+def test_the_lattice_by_fft_is_the_direct_sum(refine):
+    rng = np.random.default_rng(refine)
+    n1, n2, h, origin = 6, 5, 0.3, (-0.9, -0.7)
+    p, q = rng.normal(size=(n1, n2)), rng.normal(size=(2, n1, n2))
+    z = [0.05, 0.4]
+    lat = lattice_stresses(p, q, h, origin, z, NU, refine)
+    x = origin[0] + np.arange(refine * n1 + 1) * h / refine
+    y = origin[1] + np.arange(refine * n2 + 1) * h / refine
+    direct = grid_stresses(p, q, h, origin, x, y, z, NU)
+    for name in CARTESIAN:
+        np.testing.assert_allclose(lat[name], direct[name], rtol=0, atol=1e-13)
+
+
 def test_huber_axis_under_the_cells_of_a_hertz_pressure():
     z = np.array([0.2, 0.48, 1.0, 2.0])
     huber_zz = -1 / (1 + z * z)
@@ -196,6 +211,15 @@ def test_fretting_field_converges_and_its_estimate_covers_the_finer_run_at_the_m
                 fine[f"{name}_error"].sel(at))
         assert abs(fine.attrs["max_von_mises"] - exact) <= fine.attrs["max_von_mises_error"]
     assert float(np.abs(ds[128].von_mises - ref.von_mises).max()) < 2e-4  # measured 8.1e-5
+    # the whole lattice (x, y None: the cell corners, by FFT) holds the same values
+    lat = fretting_step_stresses(*runs[32], last, None, None, FRET_Z, nu=0.0,
+                                 coarse=(*runs[16], last), refine=2)
+    assert lat.sizes == {"z": 10, "y": 65, "x": 65}
+    sub = lat.isel(x=slice(None, None, 3), y=[32])  # y = 0
+    direct = fretting_step_stresses(*runs[32], last, sub.x.values, [0.0], FRET_Z, nu=0.0,
+                                    coarse=(*runs[16], last))
+    for name in ("sigma_xx", "sigma_yz", "von_mises", "von_mises_error"):
+        np.testing.assert_allclose(sub[name].values, direct[name].values, atol=1e-12)
 
 
 def test_fretting_stresses_replays_the_result_and_refuses_bad_input():

@@ -28,7 +28,8 @@ y in {0, 0.3}, z in {0.3, 0.5, 0.8}), each with the measured order; the maxima o
 fretting field of equal nu = 0 bodies (where Cattaneo-Mindlin is exact) at n = 16 ... 128
 with their estimates, the change to 2n and the error against the exact field; and the
 maxima of equal nu = 0.3 bodies (gamma = 0.43: the shear turns off x) at n = 64 against
-the Cattaneo-Mindlin approximation's field.
+the Cattaneo-Mindlin approximation's field; and the field after a reversal (Q to
+-0.25 mu P) against Mindlin and Deresiewicz's tractions' Hankel field.
 """
 
 from __future__ import annotations
@@ -44,16 +45,19 @@ from contactlib.fretting_sphere import grid_operators, run_sphere_fretting
 from contactlib.history_api import load_levels
 from contactlib.model import contact
 from contactlib.stresses_grid import fretting_step_stresses, grid_stresses
-from contactlib.stresses_tangential import CARTESIAN, mindlin_sphere_stresses
+from contactlib.stresses_tangential import (CARTESIAN, cartesian_stresses,
+                                            mindlin_deresiewicz_tractions,
+                                            mindlin_sphere_stresses)
 
 NU, FRICTION, STEPS = 0.3, 0.3, 8
 
 
-def _run(n: int, steps: int = STEPS, nu: float = NU):
+def _run(n: int, steps: int = STEPS, nu: float = NU, tangential=(0, 0, 0.5)):
     model = contact("sphere", nu, indenter_modulus=1.0, indenter_nu=nu)  # beta = 0
     ops = grid_operators(model, n)
-    big_p = load_levels([0, 1, 1], steps)[0][1:] * ops.p_max
-    big_q = load_levels([0, 0, 0.5], steps)[0][1:] * FRICTION * ops.p_max
+    load = [0] + [1] * (len(tangential) - 1)
+    big_p = load_levels(load, steps)[0][1:] * ops.p_max
+    big_q = load_levels(tangential, steps)[0][1:] * FRICTION * ops.p_max
     stamps = [time.perf_counter()]
     raw = run_sphere_fretting(ops, FRICTION, big_p, big_q, keep_fields=True,
                               progress=lambda i, m: stamps.append(time.perf_counter()))
@@ -162,6 +166,18 @@ def accuracy() -> None:
         print(f"  n = {sizes[-1]}: largest difference of von Mises to Cattaneo-Mindlin on "
               f"the plane {float(np.abs(fine.von_mises - exact.von_mises).max()):.1e} "
               f"(estimate there at most {float(fine.von_mises_error.max()):.1e})")
+    reversal(fx, fz)
+
+
+def reversal(fx: np.ndarray, fz: np.ndarray) -> None:
+    """Q: 0 -> 0.5 mu P -> -0.25 mu P, equal nu = 0 bodies, against Mindlin-Deresiewicz."""
+    xi, p, q, _, _ = mindlin_deresiewicz_tractions(FRICTION, 0.5, -0.25, 1001)
+    ref = cartesian_stresses(xi, p, fx, [0.0], fz, 0.0, shear_x=q)
+    for n in (32, 64, 128):
+        ops, raw, _ = _run(n, 4, 0.0, (0, 0, 0.5, -0.25))
+        ds = fretting_step_stresses(ops, raw, 12, fx, [0.0], fz, nu=0.0)
+        err = max(float(np.abs(ds[k].values - ref[k]).max()) for k in CARTESIAN)
+        print(f"after a reversal (Mindlin-Deresiewicz), n = {n}: largest error {err:.1e} p0")
 
 
 if __name__ == "__main__":

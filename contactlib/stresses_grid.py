@@ -177,6 +177,16 @@ def _check_tractions(p: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
     return p, q
 
 
+def _check_origin(origin: Any) -> tuple[float, float]:
+    from .validate import InputError
+
+    o = np.asarray(origin, dtype=float)
+    if o.shape != (2,) or not np.all(np.isfinite(o)):
+        raise InputError("origin", "two finite numbers (x0, y0), the grid's lower corner",
+                         origin)
+    return float(o[0]), float(o[1])
+
+
 def _check_axes(x: Any, y: Any, z: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     from .validate import InputError
 
@@ -216,6 +226,7 @@ def stresses_at(p: Any, q: Any, h: float, origin: tuple[float, float], points: A
     if not (isinstance(h, (int, float, np.floating)) and math.isfinite(h) and h > 0):
         raise validate.InputError("h", "a finite cell side > 0", h)
     nu = validate.nu(nu)
+    origin = _check_origin(origin)
     pts = np.asarray(points, dtype=float)
     if pts.ndim != 2 or pts.shape[1] != 3 or not np.all(np.isfinite(pts)):
         raise validate.InputError("points", "an (M, 3) array of finite (x, y, z)", pts.shape)
@@ -327,6 +338,7 @@ def lattice_stresses(p: Any, q: Any, h: float, origin: tuple[float, float], z: A
     if not (isinstance(refine, (int, np.integer)) and refine >= 1):
         raise validate.InputError("refine", "an integer >= 1", refine)
     nu = validate.nu(nu)
+    origin = _check_origin(origin)
     _, _, zs = _check_axes([0.0], [0.0], z)
     n1, n2 = p.shape
     m1, m2 = 2 * n1 + 2, 2 * n2 + 2  # circular convolution without wrap for |i - k| <= n

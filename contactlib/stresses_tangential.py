@@ -45,7 +45,7 @@ from .stresses import (CHUNK, DEPTH_CUTOFF, XI_SURFACE, TractionPieces, check_gr
                        check_tractions, halfspace_stresses, xi_nodes)
 
 __all__ = ["CARTESIAN", "shear_x_stresses", "cartesian_stresses", "cartesian_measures",
-           "mindlin_tractions", "mindlin_sphere_stresses"]
+           "mindlin_tractions", "mindlin_deresiewicz_tractions", "mindlin_sphere_stresses"]
 
 CARTESIAN = ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_yz", "sigma_xz", "sigma_xy")
 """The Cartesian components, in the order of the returned dictionaries."""
@@ -270,6 +270,58 @@ def mindlin_tractions(friction: float, load_ratio: float,
     p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None))
     q = friction * (p - np.sqrt(np.clip(c * c - xi * xi, 0.0, None)))
     return xi, p, q, c
+
+
+def mindlin_deresiewicz_tractions(friction: float, peak_ratio: float, load_ratio: float,
+                                  points: int = 401
+                                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float]:
+    """Hertz pressure and Mindlin and Deresiewicz's shear after Q went 0 -> Q* -> Q along x.
+
+    Parameters
+    ----------
+    friction : float
+        Coulomb's coefficient mu >= 0.
+    peak_ratio : float
+        Q*/(mu P) in [0, 1): the force reached first (Cattaneo-Mindlin).
+    load_ratio : float
+        Q/(mu P) in [-Q*/(mu P), Q*/(mu P)]: the force after the reversal.
+    points : int
+        Sample points in each of the zones' sin-graded sets on [0, 1], [0, c], [0, c']
+        (at least 64).
+
+    Returns
+    -------
+    xi, p, q_x : ndarray
+        r/a and the tractions over p0: p = sqrt(1 - r^2) and q_x = mu [-sqrt(1 - r^2)
+        + 2 sqrt(c'^2 - r^2) - sqrt(c^2 - r^2)] (each root inside its radius only).
+    c, c_reversed : float
+        The stick radius at Q*, (1 - Q*/(mu P))^(1/3), and the radius inside which the
+        shear has not changed since the reversal, (1 - (Q* - Q)/(2 mu P))^(1/3).
+
+    Notes
+    -----
+    Exact for bodies with Dundurs' beta = 0 and gamma = 0, as :func:`mindlin_tractions`;
+    at Q = Q* it is Cattaneo-Mindlin's shear, at Q = -Q* its opposite.
+    """
+    from .validate import InputError
+    if not (np.isfinite(friction) and friction >= 0):
+        raise InputError("friction", "a finite friction coefficient >= 0", friction)
+    if not (np.isfinite(peak_ratio) and 0.0 <= peak_ratio < 1.0):
+        raise InputError("peak_ratio", "Q*/(mu P) in [0, 1)", peak_ratio)
+    if not (np.isfinite(load_ratio) and -peak_ratio <= load_ratio <= peak_ratio):
+        raise InputError("load_ratio", "Q/(mu P) in [-Q*/(mu P), Q*/(mu P)]", load_ratio)
+    if not (isinstance(points, (int, np.integer)) and points >= 64):
+        raise InputError("points", "an integer >= 64", points)
+    c = float((1.0 - peak_ratio) ** (1.0 / 3.0))
+    c_rev = float((1.0 - 0.5 * (peak_ratio - load_ratio)) ** (1.0 / 3.0))
+    graded = np.sin(np.linspace(0.0, 0.5 * np.pi, points))
+    xi = np.union1d(graded, np.concatenate([c * graded, c_rev * graded]))
+
+    def inside(r: float) -> np.ndarray:
+        return np.sqrt(np.clip(r * r - xi * xi, 0.0, None))
+
+    p = inside(1.0)
+    return xi, p, friction * (-p + 2.0 * inside(c_rev) - inside(c)), c, c_rev
 
 
 def mindlin_sphere_stresses(friction: float, load_ratio: float, x: Any, y: Any, z: Any,

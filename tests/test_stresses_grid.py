@@ -18,7 +18,9 @@ from contactlib.model import contact
 from contactlib.stresses_grid import (corner_weights, fretting_step_stresses,
                                       fretting_stresses, grid_stresses, lattice_stresses,
                                       stresses_at)
-from contactlib.stresses_tangential import CARTESIAN, mindlin_sphere_stresses
+from contactlib.stresses_tangential import (CARTESIAN, cartesian_stresses,
+                                            mindlin_deresiewicz_tractions,
+                                            mindlin_sphere_stresses)
 from contactlib.validate import InputError
 from test_stresses_tangential import _cerruti
 
@@ -175,11 +177,12 @@ def test_cattaneo_mindlin_cells_converge_to_the_hankel_field_at_second_order():
     assert np.all(orders > 1.6)  # measured 2.1 and 1.8
 
 
-def _fretting_run(n, steps=4):
-    model = contact("sphere", 0.0, indenter_modulus=1.0, indenter_nu=0.0)  # beta = gamma = 0
+def _fretting_run(n, steps=4, tangential=(0, 0, 0.5)):
+    """Equal nu = 0 bodies (beta = gamma = 0), mu = 0.3, P to P_max, then Q/(mu P_max)."""
+    model = contact("sphere", 0.0, indenter_modulus=1.0, indenter_nu=0.0)
     ops = grid_operators(model, n)
-    big_p = load_levels([0, 1, 1], steps)[0][1:] * ops.p_max
-    big_q = load_levels([0, 0, 0.5], steps)[0][1:] * 0.3 * ops.p_max
+    big_p = load_levels([0] + [1] * (len(tangential) - 1), steps)[0][1:] * ops.p_max
+    big_q = load_levels(tangential, steps)[0][1:] * 0.3 * ops.p_max
     return ops, run_sphere_fretting(ops, 0.3, big_p, big_q, keep_fields=True)
 
 
@@ -222,6 +225,31 @@ def test_fretting_field_converges_and_its_estimate_covers_the_finer_run_at_the_m
         np.testing.assert_allclose(sub[name].values, direct[name].values, atol=1e-12)
 
 
+def test_mindlin_deresiewicz_tractions_carry_the_force_and_reduce_to_cattaneo():
+    for load in (0.5, 0.1, -0.25, -0.5):
+        xi, p, q, c, c_rev = mindlin_deresiewicz_tractions(0.3, 0.5, load, 801)
+        force = np.trapezoid(q * 2 * np.pi * xi, xi)  # Q/p0 a^2; mu P = mu 2 pi/3
+        assert force == pytest.approx(0.3 * 2 * np.pi / 3 * load, abs=2e-5)
+        if abs(load) == 0.5:  # no reversal yet, or a full one: Cattaneo's shear, +-
+            cattaneo = 0.3 * (p - np.sqrt(np.clip(c * c - xi * xi, 0, None)))
+            np.testing.assert_allclose(q, np.sign(load) * cattaneo, atol=1e-15)
+
+
+def test_after_a_reversal_the_fretting_field_is_mindlin_deresiewiczs():
+    """Q: 0 -> 0.5 mu P -> -0.25 mu P at constant P, equal nu = 0 bodies (beta = gamma = 0):
+    the tractions are Mindlin and Deresiewicz's; their field by the Hankel route is the
+    truth."""
+    xi, p, q, _, _ = mindlin_deresiewicz_tractions(0.3, 0.5, -0.25, 1001)
+    ref = cartesian_stresses(xi, p, FRET_X, [0.0], FRET_Z, 0.0, shear_x=q)
+    errors = []
+    for n in (32, 64):
+        run = _fretting_run(n, tangential=(0, 0, 0.5, -0.25))
+        ds = fretting_step_stresses(*run, 12, FRET_X, [0.0], FRET_Z, nu=0.0)
+        errors.append(max(float(np.abs(ds[k].values - ref[k]).max()) for k in CARTESIAN))
+    assert errors[1] < 3e-3  # measured 9.5e-3, 1.6e-3 (and 4.8e-4 at n = 128)
+    assert errors[0] / errors[1] > 3.0
+
+
 def test_fretting_stresses_replays_the_result_and_refuses_bad_input():
     r = fretting("sphere", 0.0, 0.3, [0, 1, 1], [0, 0, 0.5], 4, n=32,
                  indenter_modulus=1.0, indenter_nu=0.0)
@@ -240,6 +268,10 @@ def test_fretting_stresses_replays_the_result_and_refuses_bad_input():
     with pytest.raises(InputError, match="z"):
         fretting_stresses(r, 8, FRET_X, [0.0], [0.0, 0.5], indenter_modulus=1.0,
                           indenter_nu=0.0)
+    with pytest.raises(InputError, match="sphere"):
+        fretting_stresses(None, 8, FRET_X, [0.0], FRET_Z)
+    with pytest.raises(InputError, match="lattice"):
+        fretting_stresses(r, 8, None, [0.0], FRET_Z, indenter_modulus=1.0, indenter_nu=0.0)
 
 
 def test_grid_input_is_checked():
@@ -249,5 +281,7 @@ def test_grid_input_is_checked():
         grid_stresses(np.ones((2, 2)), None, -0.1, (0, 0), [0], [0], [1], NU)
     with pytest.raises(InputError, match="nu"):
         grid_stresses(np.ones((2, 2)), None, 0.1, (0, 0), [0], [0], [1], 0.7)
+    with pytest.raises(InputError, match="origin"):
+        grid_stresses(np.ones((2, 2)), None, 0.1, (0, np.nan), [0], [0], [1], NU)
     w = corner_weights(np.ones((2, 2)))
     assert w.shape == (3, 3, 3) and w[0].sum() == 0.0 and w[0, 0, 0] == 1.0

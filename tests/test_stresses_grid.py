@@ -209,7 +209,7 @@ def test_fretting_field_converges_and_its_estimate_covers_the_finer_run_at_the_m
             top = fine.attrs[f"max_{name}"]
             est = fine.attrs[f"max_{name}_error"]
             assert abs(top - finer.attrs[f"max_{name}"]) <= est
-            at = dict(z=fine.attrs[f"max_{name}_z"], y=0.0, x=fine.attrs[f"max_{name}_x"])
+            at = {"z": fine.attrs[f"max_{name}_z"], "y": 0.0, "x": fine.attrs[f"max_{name}_x"]}
             assert abs(float(fine[name].sel(at) - finer[name].sel(at))) <= float(
                 fine[f"{name}_error"].sel(at))
         assert abs(fine.attrs["max_von_mises"] - exact) <= fine.attrs["max_von_mises_error"]
@@ -227,7 +227,7 @@ def test_fretting_field_converges_and_its_estimate_covers_the_finer_run_at_the_m
 
 def test_mindlin_deresiewicz_tractions_carry_the_force_and_reduce_to_cattaneo():
     for load in (0.5, 0.1, -0.25, -0.5):
-        xi, p, q, c, c_rev = mindlin_deresiewicz_tractions(0.3, 0.5, load, 801)
+        xi, p, q, c, _ = mindlin_deresiewicz_tractions(0.3, 0.5, load, 801)
         force = np.trapezoid(q * 2 * np.pi * xi, xi)  # Q/p0 a^2; mu P = mu 2 pi/3
         assert force == pytest.approx(0.3 * 2 * np.pi / 3 * load, abs=2e-5)
         if abs(load) == 0.5:  # no reversal yet, or a full one: Cattaneo's shear, +-

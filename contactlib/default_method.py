@@ -1011,9 +1011,10 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
                    "as NaN")
         k = np.nan
     elif reversed_ok:
-        msg = "; ".join(x for x in (msg, f"the slip runs {way}, against the sign of the "
-                                         f"half-space beta ({geometry.beta:.3g}): the body's "
-                                         "coupling reverses it") if x)
+        why = (f"against the sign of the half-space beta ({geometry.beta:.3g}): the body's "
+               "coupling reverses it") if geometry.slip_sign else (
+            "the layer's own coupling sets it (its material's beta is 0)")
+        msg = "; ".join(x for x in (msg, f"the slip runs {way}, {why}") if x)
     elif newton.stagnated:
         msg = (f"Newton on k stopped at the round-off floor of the stick-edge condition "
                f"(last step {newton.stagnated:.1e} relative)")

@@ -57,6 +57,10 @@ from .body import ElasticBody, ViscoelasticBody
 from .indenter import Displacements, Indenter, indenter
 from .profiles import PARABOLOID, Profile
 
+# convention: the scale of k on a layer whose material has |beta| below it (beta of
+# nu = 0.45, about 0.09); only starting guesses use it (tests/test_layer_incompressible.py)
+LAYER_BETA_SCALE = 1.0 / 11.0
+
 __all__ = ["Contact", "contact"]
 
 
@@ -240,7 +244,14 @@ class Contact:
 
     @property
     def decoupled(self) -> bool:
-        """beta = 0 (to round-off): the normal and tangential problems decouple."""
+        """beta = 0 (to round-off) between half-spaces: the normal and tangential problems decouple.
+
+        A layer or coating is never decoupled: its surface moves radially under a
+        pressure at any nu (an incompressible layer is squeezed along its base), so
+        Dundurs' beta of its material does not measure its coupling.
+        """
+        if not self.body.is_half_space:
+            return False
         c1, c2 = self.compliance_weights
         scale = abs(c2 * self.body.beta) + abs(c1 * self.indenter_body.beta)
         return bool(abs(self.beta) <= 8.0 * np.finfo(float).eps * scale)
@@ -254,8 +265,17 @@ class Contact:
         return 0.0 if self.decoupled else float(np.sign(self.beta))
 
     def uncoupled_friction(self, gamma: np.ndarray) -> np.ndarray:
-        """k >= 0 of the uncoupled limit at stick ratio ``gamma``, with |beta| (indenter's formula)."""
-        return self.indenter.uncoupled_friction(abs(self.beta), gamma)
+        """k >= 0 of the uncoupled limit at stick ratio ``gamma``, with |beta| (indenter's formula).
+
+        The solvers take it as the scale of k (starting guesses, continuation). On a
+        layer, whose coupling is not beta's (:attr:`decoupled`), |beta| is raised to at
+        least :data:`LAYER_BETA_SCALE`, so that an incompressible layer (beta = 0) has
+        a scale too.
+        """
+        beta = abs(self.beta)
+        if not self.body.is_half_space:
+            beta = max(beta, LAYER_BETA_SCALE)
+        return self.indenter.uncoupled_friction(beta, gamma)
 
     # ------------------------------------------------------------------ Hertz and measures
     @property

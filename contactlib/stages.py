@@ -539,8 +539,17 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         k_ref, load_ref = ref.k, ref.load()
         if not rec.converged:  # no value, so no error of it
             out["error_estimate"] = math.nan
-        elif 0.0 < c < 1.0 and np.isfinite(rec.k) and k_ref > 0.0:
+        elif 0.0 < solved < 1.0 and not k_ref > 0.0:
+            # no measure: the reference found no solution here (its estimate was 0, so a
+            # layer's root with k < 0 where the slip does not oppose the shear was resolved)
+            out["error_estimate"] = math.inf
+            notes.append("no error estimate: the default method at n = 64 found no solution "
+                         f"here ({ref.message})")
+        elif 0.0 < solved < 1.0:
             out["error_estimate"] = abs(rec.k - k_ref) / k_ref
+            if not rec.k > 0.0:
+                notes.append(f"the printed scheme's root has k = {rec.k:.4g}: its slip runs "
+                             f"against sign(beta), the default method's k is {k_ref:.4g}")
         else:
             out["error_estimate"] = 0.0
         out["load_error_estimate"] = abs(rec.load - load_ref) / load_ref

@@ -29,6 +29,7 @@ import pytest
 from scipy import special
 
 from contactlib import api, io, solve, stages
+from contactlib.validate import SolverLimit
 from contactlib.default_method import operator_part
 from contactlib.geometry import Geometry
 from contactlib.kernels import disc, strip
@@ -184,7 +185,8 @@ def test_poisson_ratio_extremes(geometry, slab, nu):
                 assert s.friction_coefficient == np.inf and s.frictional_work == 0.0
             if c == 0.0:
                 assert s.friction_coefficient == 0.0 and np.all(s.shear == 0.0)
-        if nu == 0.5:  # decoupled: no shear for any stick ratio, k = 0 below full stick
+        if nu == 0.5 and slab == 0.0:  # a half-space at nu = 0.5 decouples: no shear for any
+            # stick ratio, k = 0 below full stick (a layer does not: test_layer_incompressible)
             for c, s in zip(ratios, sols):
                 assert np.all(s.shear == 0.0) and s.frictional_work == 0.0
                 if ratios[0] == 0.0:  # every case is the frictionless one
@@ -206,9 +208,12 @@ def test_poisson_ratio_extremes(geometry, slab, nu):
                         assert np.all(s.shear[s.xi > c + 0.05][:-1] <= 0.0)
             if slab == 0.0:  # frictionless: Hertz (a slab is stiffer, O(a/h))
                 assert abs(sols[0].load_ratio - 1) < 1e-3
-    if nu == 0.5:
+    if nu == 0.5 and slab == 0.0:
         inverse = solve(geometry, nu, friction=0.3, n=32, slab_ratio=slab)
         assert inverse.stick_ratio == 1.0 and np.all(inverse.shear == 0.0)
+    elif nu == 0.5:  # the layer's k stays below 0.02 up to its largest stick ratio, 0.96
+        with pytest.raises(SolverLimit, match="full adhesion"):
+            solve(geometry, nu, friction=0.3, n=32, slab_ratio=slab)
     if nu == 0.499 and slab == 0.0:
         for c in (0.02, 0.3, 0.7):
             k = solve(geometry, nu, stick_ratio=c, n=32, energy=False).friction_coefficient
@@ -483,3 +488,13 @@ def test_an_inconsistent_root_is_never_resolved():
     assert sol.converged and sol.error_estimate < 1e-3
     assert not sol.stick_admissible and not sol.consistent
     assert not sol.resolved and "stick zone cannot hold" in sol.message
+
+
+def test_a_paper_root_that_slips_against_sign_beta_is_not_resolved():
+    """The printed scheme orients its slip by sign(beta); on a layer whose slip runs
+    outward its root has k < 0. That k was reported resolved (estimate 0, because the
+    n = 64 reference found no solution here); it carries no estimate now."""
+    s = solve("sphere", 0.45, stick_ratio=0.5, n=8, method="paper", slab_ratio=1.0,
+              base="bonded")
+    assert s.friction_coefficient < 0.0 and not s.resolved
+    assert s.error_estimate == np.inf and "found no solution" in s.message

@@ -92,6 +92,8 @@ _EXTENDED = np.longdouble
 # (sphere) and 8.6e-4 (half-plane) instead of 6e-5 and 1.4e-5; c/a = 1e-7: 9e-5; 1e-5:
 # 6e-7). Above 1e-4 the plain rows are kept (bit for bit as before, no extra element
 # integrals; benchmarks/bench_axis_rows.py).
+# measured: benchmarks/bench_axis_rows.py (the rows' cost and k against the closed form at c/a =
+# 1e-8 ... 1e-4)
 AXIS_ROWS_BELOW = 1e-4
 # 1 - c/a at or below which the thin slip annulus's normal rows (nodes beyond r_i0, the
 # first node beyond 1 - EDGE_REF_WIDTHS (1 - c/a)) and stick rows are written relative
@@ -101,7 +103,10 @@ AXIS_ROWS_BELOW = 1e-4
 # n = 64 ... 512, plain rows: 6.4e-5, 2.1e-4, -2.9e-4, 5.7e-3; difference rows: 4.4e-5,
 # 1.5e-5, 4.0e-6, 6.1e-6 (half-plane 4.0e-5, 1.3e-5, 1.1e-6, -1.1e-5). Above, the plain
 # rows (bit for bit as before).
+# measured: benchmarks/bench_axis_rows.py (the rows' cost and k against the closed form near full
+# stick)
 EDGE_ROWS_BELOW = 5e-4
+# measured: benchmarks/bench_axis_rows.py (the annulus's rows, k against the closed form)
 EDGE_REF_WIDTHS = 4.0
 # High n: where the elements next to c are below NEAR_ROWS_BELOW min(c, a - c) (n >~ 1500;
 # never at the default n = 256, whose are ~9e-5 of it), the normal rows within
@@ -122,9 +127,16 @@ EDGE_REF_WIDTHS = 4.0
 # 1.43 and 1.00, 1.46, 2.06; half-plane c/a = 0.1 (-0.11 ... -0.06): -0.031, -0.110,
 # 0.020 and -0.047, -0.043, -0.092. Neither width keeps the n^-2 trend to 4096 at every
 # c/a; the differences, <= 3.6e-8 relative, are below the method's error there.
+# measured: benchmarks/bench_axis_rows.py (the band's cost at high n)
 NEAR_ROWS_BELOW = 2e-6
+# tested: tests/test_sphere.py (k at n = 2048 with the band; the solve at n = 2048:
+# benchmarks/bench_frontier.py --b)
 NEAR_ROWS_WIDTH = 0.001
+# tested: tests/test_extremes.py (the cascade of references; its noise:
+# benchmarks/report_estimate_coverage.py)
 BAND_REF_RATIO = 2.0
+# tested: tests/test_extremes.py (the cascade of references; its noise:
+# benchmarks/report_estimate_coverage.py)
 BAND_REF_INNER = 2.0
 """The band's rows are written relative to a cascade of reference nodes
 (:func:`band_references`): a row within w of c relative to the node just inside c - w,
@@ -135,6 +147,7 @@ about width / h_min: moving the last stick node by 1e-16 c moved the root of a l
 8.5e-11 (cylinder, nu = 0.4999999, c/a = 0.9, n = 1024, one refined Newton step from a
 fixed k), and it is the round-off noise of the extrapolated method's k
 (:data:`~contactlib.extrapolated_method.LOG_NOISE`); relative to the cascade, by 1e-12."""
+# tested: tests/test_error_estimate.py (near full stick at n >= 512)
 NEAR_ROWS_FROM_N = 512
 """From this n on the band of difference rows around c is written at every c/a (as well
 as where the elements next to c are below :data:`NEAR_ROWS_BELOW` min(c, a - c), which
@@ -155,6 +168,8 @@ are kept: the default n = 256 is bit for bit as before."""
 def _near_c_h(r: np.ndarray, m: int) -> float:
     """The smaller of the two elements next to c."""
     return float(min(r[m] - r[m - 1], r[m + 1] - r[m]))
+# measured: benchmarks/bench_frontier.py --b (the solve at n = 2048: one factorization fewer);
+# tests/test_sphere.py checks the root is Newton's
 REFINED_FINAL_STEP = 3e-5
 """A refined Newton step below this (relative) is final: the error after it is about
 0.4 step^2 (measured: 1e-5 -> 2e-11 ... 2e-9, 1e-4 -> 1.2e-9 ... 6.2e-9 at c/a = 0.1 ...
@@ -162,9 +177,11 @@ REFINED_FINAL_STEP = 3e-5
 2.3e-10 (cylinder, 0.9); but n = 512 at c/a = 0.99: 2.7e-9 from a step near 3e-5).
 The default method uses it from n = 1024, where its own start (three coarse levels) is
 within ~1e-6 (one factorization fewer a solve, where one costs most)."""
+# measured: benchmarks/bench_frontier.py --b (the solve at n = 2048: one factorization fewer)
 _THREE_LEVEL_START_FROM_N = 1024  # start_k from n = 64, 128, 256 (orders 2 and 3) instead
 # of 64 and 128 (order 2): within ~1e-6 of the root instead of 1e-5 ... 3e-5, so that
 # one refined step is final (REFINED_FINAL_STEP) where a factorization costs most
+# measured: benchmarks/report_noise_kernels.py (k's round-off under other BLAS kernels)
 _REFINE_FROM_N = 256  # from n = 256 every solve is refined: without it the round-off in k
 # was 2.7e-5 at n = 256 (half-plane, nu = 0.3, c/a = 0.9, OpenBLAS Sandybridge kernel; its
 # estimate from the levels 3.4e-6, 10x short) where this machine's kernel had 4e-8, and
@@ -344,6 +361,7 @@ def _expand_phi(geometry: Contact, f: np.ndarray) -> np.ndarray:
 # numpy's einsum hands a row of a matrix-vector product over in runs of at most this many
 # elements (its fixed buffer, NPY_BUFSIZE; np.setbufsize does not change it); the compiled
 # residual sums the runs the same way (solver_fused.residual)
+# exact: numpy's NPY_BUFSIZE, fixed in numpy (the compiled residual sums alike)
 _EINSUM_RUN = 8192
 
 
@@ -399,6 +417,7 @@ def _extended_residual(a0: np.ndarray, a1_cols: np.ndarray, cols: np.ndarray | s
 # systems up to this size keep their long-double copy through one Newton iteration
 # (:func:`newton_on_k`; 2 x 16 size^2 bytes, 32 MB at 1024) instead of converting
 # the rows again for every refined solve
+# convention: a memory bound, 32 MB at 1024; the results do not depend on it
 _EXTENDED_COPY_UP_TO = 1024
 
 

@@ -75,7 +75,7 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
 import numpy as np
@@ -200,6 +200,10 @@ class HistoryResult:
     interpolation_error : float
         Largest deviation of a shape from the straight lines between its steps
         (units of P_max; 0 for an elastic body, whose steps are the shape itself).
+    model : contactlib.model.Contact or None
+        The problem model that was solved: ask it rather than rebuilding it from
+        the fields above, which copy it for the datasets (None when rebuilt from a
+        dataset).
 
     Examples
     --------
@@ -263,6 +267,7 @@ class HistoryResult:
     segment_steps: tuple[int, ...] = ()  # steps of each segment of a shape or table; ()
     load_shape: dict | None = None  # the shape or table (contactlib.load_paths); None: list
     interpolation_error: float = 0.0  # of a shape between the steps (units of P_max)
+    model: Contact | None = field(default=None, repr=False, compare=False)  # what was solved
 
     def __repr__(self) -> str:  # a few lines: key numbers, arrays by shape
         return history_repr(self)
@@ -857,7 +862,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         profile=shape.name, exponent=float(shape.exponent), flat_ratio=float(shape.flat),
         segment_steps=step_plan.counts if shaped else (),
         load_shape=path.describe() if shaped else None,
-        interpolation_error=step_plan.interpolation_error if shaped else 0.0)
+        interpolation_error=step_plan.interpolation_error if shaped else 0.0, model=model)
 
 
 def _shaped_plan(path: load_paths.Path, steps: int, prony: tuple, duration: object,

@@ -649,7 +649,6 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
         Where a/R > :data:`SMALL_STRAIN_LIMIT` (or a cylinder's a/length > 0.1).
     """
     from . import api
-    from .model import contact
 
     prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate)
     force = parse_quantity(load, "force", "load")
@@ -679,11 +678,7 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     p0 = hertz_peak_pressure(g, prob.e_star, prob.radius, a)
     eps_l = float(sol.load_error_estimate)
     err_a = eps_l / (3.0 if g == "sphere" else 2.0)
-    model = contact(g, nu, slab, kwargs.get("indenter_modulus", math.inf),
-                    kwargs.get("indenter_nu"), prob.base,
-                    substrate_modulus=kwargs.get("substrate_modulus", math.inf),
-                    substrate_nu=kwargs.get("substrate_nu"))
-    err_gamma = _stick_ratio_error(sol, model, friction is not None)
+    err_gamma = _stick_ratio_error(sol, sol.model, friction is not None)
     gamma = float(sol.stick_ratio)
     delta = float(sol.extra.get("indentation", math.nan))
     approach = delta * a ** 2 / prob.radius if (g == "sphere" or slab > 0) else math.nan

@@ -341,6 +341,10 @@ class Solution:
     substrate_modulus, substrate_poisson_ratio : float
         E2/E1 and nu2 of a coated body's substrate (``base = "elastic"``; inf and
         NaN otherwise).
+    model : contactlib.model.Contact or None
+        The problem model that was solved (indenter, profile, body, layer, base):
+        ask it rather than rebuilding it from the fields above, which copy it for
+        the datasets. None for a solution rebuilt from a dataset or a record file.
     error_estimate : float
         Estimated relative error of ``friction_coefficient`` (embedded
         solves on the nested meshes n/4 and n/2; 0 where k is exact).
@@ -406,6 +410,7 @@ class Solution:
     exponent: float = 2.0
     substrate_modulus: float = float("inf")
     substrate_poisson_ratio: float = float("nan")
+    model: Any = field(default=None, repr=False, compare=False)
 
     def __repr__(self) -> str:
         head = f"Solution: {self.geometry}, nu = {self.nu:.10g}, method = {self.method}, n = {self.n}"

@@ -880,4 +880,5 @@ def to_solution(geometry: Contact, method: str, n: int, rec: CaseRecord, xi: np.
         indenter_modulus_ratio=float(geometry.indenter.modulus_ratio),
         indenter_poisson_ratio=float(geometry.indenter_poisson_ratio),
         dundurs_beta=float(geometry.beta), base=geometry.body.base,
-        profile=geometry.profile.name, exponent=float(geometry.profile.exponent))
+        profile=geometry.profile.name, exponent=float(geometry.profile.exponent),
+        model=geometry)

@@ -227,3 +227,18 @@ def test_graded_mesh_nodes_are_those_of_all_110_bisection_steps():
             targets = float(count(span)) * np.linspace(0.0, 1.0, 97)
             got = elements._invert(count, targets, span)
             np.testing.assert_array_equal(got, plain(count, targets, span))
+
+
+def test_results_carry_the_model_they_solved():
+    """A result carries its problem model; the flat fields copy it for the datasets."""
+    import contactlib
+
+    sol = contactlib.solve("sphere", 0.3, stick_ratio=0.5, n=32, slab_ratio=2.0,
+                           base="bonded", energy=False)
+    want = contact("sphere", 0.3, 2.0, base="bonded")
+    assert isinstance(sol.model, Contact)
+    assert (sol.model.indenter, sol.model.body) == (want.indenter, want.body)
+    assert sol.model.beta == sol.dundurs_beta and sol.model.body.base == sol.base
+    res = contactlib.history("cylinder", 0.25, 0.2, [0, 1], 4, n=40)
+    assert isinstance(res.model, Contact) and res.model.beta == res.dundurs_beta
+    assert res.model.profile.name == res.profile

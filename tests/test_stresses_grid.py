@@ -250,6 +250,28 @@ def test_after_a_reversal_the_fretting_field_is_mindlin_deresiewiczs():
     assert errors[0] / errors[1] > 3.0
 
 
+def test_a_turning_shear_keeps_the_mirror_symmetry_of_the_load():
+    """Equal nu = 0.3 bodies (beta = 0, gamma = 0.43): the shear turns off x (q_y up to 5 %
+    of q_x at n = 32) and is odd in y, q_x even; so sigma_xy and sigma_yz are odd in y and
+    the other components even, and the q_y part of the field is not negligible."""
+    model = contact("sphere", 0.3, indenter_modulus=1.0, indenter_nu=0.3)
+    ops = grid_operators(model, 32)
+    big_p = load_levels([0, 1, 1], 4)[0][1:] * ops.p_max
+    big_q = load_levels([0, 0, 0.5], 4)[0][1:] * 0.3 * ops.p_max
+    raw = run_sphere_fretting(ops, 0.3, big_p, big_q, keep_fields=True)
+    q = raw.q[-1]
+    assert np.abs(q[1]).max() > 0.03 * np.abs(q[0]).max()
+    ds = fretting_step_stresses(ops, raw, 8, FRET_X, [-0.3, 0.0, 0.3], FRET_Z, nu=0.3)
+    for name in CARTESIAN:
+        sign = -1.0 if name in ("sigma_xy", "sigma_yz") else 1.0
+        np.testing.assert_allclose(ds[name].sel(y=0.3), sign * ds[name].sel(y=-0.3),
+                                   atol=1e-10)
+    only_x = grid_stresses(raw.p[-1] / ops.p0, np.stack([q[0], 0 * q[1]]) / ops.p0, ops.h,
+                           (-1.2, -1.2), FRET_X, [0.3], FRET_Z, 0.3)
+    # the q_y part of sigma_yz at y = 0.3: measured 1.3e-3 p0
+    assert np.abs(only_x["sigma_yz"][:, 0] - ds.sigma_yz.sel(y=0.3).values).max() > 5e-4
+
+
 def test_fretting_stresses_replays_the_result_and_refuses_bad_input():
     r = fretting("sphere", 0.0, 0.3, [0, 1, 1], [0, 0, 0.5], 4, n=32,
                  indenter_modulus=1.0, indenter_nu=0.0)

@@ -181,8 +181,8 @@ within ~1e-6 (one factorization fewer a solve, where one costs most)."""
 _THREE_LEVEL_START_FROM_N = 1024  # start_k from n = 64, 128, 256 (orders 2 and 3) instead
 # of 64 and 128 (order 2): within ~1e-6 of the root instead of 1e-5 ... 3e-5, so that
 # one refined step is final (REFINED_FINAL_STEP) where a factorization costs most
-# measured: benchmarks/report_reproducibility.py (the main job under other BLAS kernels: k at n = 256
-# agreed to 1e-10 between kernels with the refinement)
+# measured: benchmarks/report_reproducibility.py (the main job under other BLAS kernels: k at
+# n = 256 agreed to 1e-10 between kernels with the refinement)
 _REFINE_FROM_N = 256  # from n = 256 every solve is refined: without it the round-off in k
 # was 2.7e-5 at n = 256 (half-plane, nu = 0.3, c/a = 0.9, OpenBLAS Sandybridge kernel; its
 # estimate from the levels 3.4e-6, 10x short) where this machine's kernel had 4e-8, and

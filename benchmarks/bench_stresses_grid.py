@@ -26,7 +26,8 @@ Hertz pressure on n x n cells against Huber's axis, and of Cattaneo-Mindlin trac
 against the Hankel field of :mod:`contactlib.stresses_tangential` (x in {-0.8, 0, 0.5},
 y in {0, 0.3}, z in {0.3, 0.5, 0.8}), each with the measured order; the maxima of the
 fretting field of equal nu = 0 bodies (where Cattaneo-Mindlin is exact) at n = 16 ... 128
-with their estimates, the change to 2n and the error against the exact field; and the
+with their estimates, the change to 2n and the error against the exact field, and where
+on the plane the estimate covers that error; and the
 maxima of equal nu = 0.3 bodies (gamma = 0.43: the shear turns off x) at n = 64 against
 the Cattaneo-Mindlin approximation's field; and the field after a reversal (Q to
 -0.25 mu P) against Mindlin and Deresiewicz's tractions' Hankel field.
@@ -162,6 +163,15 @@ def accuracy() -> None:
                       f"({a[f'max_{name}_x']:+.2f}, {a[f'max_{name}_z']:.2f})  estimate "
                       f"{err:.1e}  change to 2n {nxt}  off Cattaneo-Mindlin "
                       f"{abs(a[f'max_{name}'] - top):.1e}")
+        if nu == 0.0:  # Cattaneo-Mindlin exact: where on the plane the estimate covers
+            for n in sizes[1:]:
+                for name in ("von_mises", "sigma_xx", "sigma_xz"):
+                    err = np.abs(ds[n][name].values - exact[name].values)
+                    est = ds[n][f"{name}_error"].values
+                    big = err > 1e-6
+                    print(f"  n = {n:3d}, {name}: the estimate covers the error at "
+                          f"{100 * np.mean(est >= err):.1f} % of the plane's points, at "
+                          f"least {np.min(est[big] / err[big]):.2f} of it")
         fine = ds[sizes[-1]]
         print(f"  n = {sizes[-1]}: largest difference of von Mises to Cattaneo-Mindlin on "
               f"the plane {float(np.abs(fine.von_mises - exact.von_mises).max()):.1e} "

@@ -97,17 +97,25 @@ __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS"
            "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates",
            "annulus_resolved", "straddle", "measured_order", "ORDER_MIN", "ORDER_MAX"]
 
+# convention: the element states the datasets store (meanings in STATE_MEANINGS)
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
 STATE_MEANINGS = "separated stick slip_inward slip_outward"
 MESH_EXTENT = HISTORY_MESH_EXTENT  # mesh length over a_max (validate bounds layers with it)
 
-_REL_TOL = 1e-10  # set-switching tolerance relative to the current scales
-MIN_SLIP_ELEMENTS = 12  # a slip zone over fewer elements is not resolved
-STANDING_EDGE_POWER = 2.0  # d^2 is linear at a standing or receding stick edge (stick_radius)
-# bounds of a measured order of convergence (error_estimates): below 1/2 the runs are not
-# converging, and above 3 the three runs' differences are at round-off or coincidence
+# tested: tests/test_history.py (set switching within 1e-10 of the current scales: the
+# energy balance and the closed forms there hold to 1e-5 and below)
+_REL_TOL = 1e-10
+# tested: tests/test_history_error.py (a slip zone over fewer elements is not resolved)
+MIN_SLIP_ELEMENTS = 12
+# exact: d ~ (c - r)^(1/2), so d^2 is linear at a standing or receding stick edge
+# (stick_radius; benchmarks/report_stick_edge.py measures the located edge)
+STANDING_EDGE_POWER = 2.0
+# measured: benchmarks/report_history_estimates.py. Bounds of a measured order of
+# convergence (error_estimates): below 1/2 the runs are not converging, and above 3 the
+# three runs' differences are at round-off or coincidence
 ORDER_MIN, ORDER_MAX = 0.5, 3.0
-_MAX_DURATIONS = 4  # step durations whose scaled operators a viscoelastic run keeps
+# convention: step durations whose scaled operators a viscoelastic run keeps (a cache)
+_MAX_DURATIONS = 4
 # the LAPACK routines behind scipy.linalg.lu_factor / lu_solve, called without their
 # wrappers' checks (a step's many small systems made those a tenth of its time)
 _GETRF, _GETRS = linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((1, 1)),))
@@ -803,7 +811,9 @@ def annulus_resolved(k: float, state: np.ndarray) -> np.ndarray:
     return (slipping == 0) | (slipping >= MIN_SLIP_ELEMENTS)
 
 
-_WINDOW = 2  # steps either side over which a difference is maximised
+# measured: benchmarks/report_history_estimates.py (coverage and inflation of the
+# estimates): steps either side over which a difference is maximised
+_WINDOW = 2
 
 
 def _window_max(values: np.ndarray, segment: np.ndarray) -> np.ndarray:

@@ -18,7 +18,8 @@ PACKAGE = Path(contactlib.__file__).resolve().parent
 NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "influence",
             "default_method", "paper_method", "history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
-            "discrete", "kernels/layer", "kernels/thin_layer", "layer_study", "fretting_solver",
+            "discrete", "kernels/layer", "kernels/thin_layer", "kernels/layer_transfer",
+            "layer_study", "fretting_solver",
             "fretting_api", "estimates", "coating_study", "stresses_grid")
 # what the numerics never import: files and conventions (io), figures, workflow
 FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
@@ -211,3 +212,25 @@ def test_kernels_are_closed_forms_only():
 def test_the_layers_page_names_every_layer():
     text = (PACKAGE.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
     assert " ─► ".join(LAYER_ORDER) in text
+
+
+def test_no_module_imports_itself_through_others():
+    """No import cycle, function-local imports included (issue 36: the last one,
+    kernels/layer <-> kernels/thin_layer, went when their shared transfer functions
+    moved to kernels/layer_transfer)."""
+    graph = {_module_name(p): {m for m in _runtime_imports(p) if m != _module_name(p)}
+             for p in ALL_MODULES}
+    done: set[str] = set()
+
+    def visit(module: str, path: list[str]) -> None:
+        if module in path:
+            cycle = path[path.index(module):] + [module]
+            raise AssertionError("import cycle: " + " -> ".join(cycle))
+        if module in done:
+            return
+        for nxt in sorted(graph.get(module, ())):
+            visit(nxt, path + [module])
+        done.add(module)
+
+    for module in sorted(graph):
+        visit(module, [])

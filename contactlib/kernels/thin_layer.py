@@ -42,7 +42,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import layer
+from . import layer_transfer
 
 Arr = NDArray[np.float64]
 
@@ -94,8 +94,8 @@ def nodes(span: float, fine: float | None = None) -> tuple[Arr, Arr]:
     width = min(0.25, PANEL_SPAN / max(float(span), 1.0))
     edges = np.linspace(0.0, T_MAX, int(np.ceil(T_MAX / width)) + 1)
     if fine is not None:
-        t_fine = layer.FINE_T * fine  # as the tables' quadrature
-        step = min(width, t_fine / layer.FINE_PANELS)
+        t_fine = layer_transfer.FINE_T * fine  # as the tables' quadrature
+        step = min(width, t_fine / layer_transfer.FINE_PANELS)
         low = np.linspace(0.0, t_fine, int(np.ceil(t_fine / step)) + 1)
         edges = np.concatenate([low, edges[edges > t_fine]])
     g, w = np.polynomial.legendre.leggauss(_GL_ORDER)
@@ -147,7 +147,7 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
     """
     if kind not in _SPECS:
         raise ValueError(f"kind must be 'pressure' or 'shear', got {kind!r}")
-    if not isinstance(base, layer.Substrate) and base not in layer.BASES:
+    if not isinstance(base, layer_transfer.Substrate) and base not in layer_transfer.BASES:
         raise ValueError(f"base must be 'smooth', 'bonded' or a Substrate, got {base!r}")
     rho = np.abs(np.asarray(rho, dtype=float).reshape(-1))
     sigma = np.asarray(sigma, dtype=float).reshape(-1)
@@ -164,11 +164,11 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
     out = np.zeros((3, rho.size, m))
     if rho.size == 0 or sigma.size == 0:
         return out
-    t, wt = nodes(float(rho.max() + sigma.max()), layer.fine_panel(nu, base))
+    t, wt = nodes(float(rho.max() + sigma.max()), layer_transfer.fine_panel(nu, base))
     chunk = max(64, int(MEMORY_BYTES / (8.0 * 10 * (sigma.size + rho.size))))
     for lo in range(0, t.size, chunk):
         tt, ww = t[lo:lo + chunk], wt[lo:lo + chunk]
-        rem = dict(zip(("ww", "wu", "uu"), layer.remainder_transfer(tt, nu, base)))
+        rem = dict(zip(("ww", "wu", "uu"), layer_transfer.remainder_transfer(tt, nu, base)))
         s_fun = _bessel("J1" if kind == "pressure" else "J2", np.multiply.outer(sigma, tt))
         s_fun *= factor[:, None]
         if starts is not None:

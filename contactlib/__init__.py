@@ -17,16 +17,18 @@ from typing import TYPE_CHECKING, Any
 __version__ = "0.1.0"
 
 __all__ = ["__version__", "solve", "sweep", "history", "fretting", "Solution",
-           "physical_solve", "physical_history"]
+           "physical_solve", "physical_history", "contact", "Contact"]
 
 _LAZY = {"solve": "api", "sweep": "api", "history": "history_api",
          "fretting": "fretting_api", "Solution": "result",
-         "physical_solve": "physical", "physical_history": "physical"}
+         "physical_solve": "physical", "physical_history": "physical",
+         "contact": "model", "Contact": "model"}
 
 if TYPE_CHECKING:
     from .api import solve, sweep
     from .fretting_api import fretting
     from .history_api import history
+    from .model import Contact, contact
     from .physical import physical_history, physical_solve
     from .result import Solution
 

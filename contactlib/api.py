@@ -20,6 +20,7 @@ from . import profiles, stages, validate
 from .default_method import DiscreteSolution, solve_default
 from .discrete import SelfSimilarSolution
 from .geometry import Geometry
+from .model import accepts_model
 from .operators import StickBlocks
 from .result import CaseRecord, Solution
 from .threads import blas_single_threaded
@@ -339,6 +340,7 @@ def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
 
 
 # ----------------------------------------------------------------------------- public API
+@accepts_model
 @blas_single_threaded
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
           friction: float | None = None, n: int | None = None, method: str = "default",
@@ -352,8 +354,10 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
 
     Parameters
     ----------
-    geometry : {"sphere", "cylinder"}
-        Rigid sphere or cylinder on a half-space/half-plane or a layer.
+    geometry : {"sphere", "cylinder"} or Contact
+        Rigid sphere or cylinder on a half-space/half-plane or a layer; or the whole
+        model (:func:`contactlib.contact`), which then also gives ``nu`` and the
+        body's, indenter's and profile's keywords (giving one of them again is refused).
     nu : float
         Poisson's ratio of the elastic body, in (-1, 0.5].
     stick_ratio : float, optional
@@ -510,6 +514,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                    f"c/a = {c_interp:.6g} for k = {k:.6g}", max_error=max_error)
 
 
+@accepts_model
 @blas_single_threaded
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
           n: int | None = None, method: str = "default", slab_ratio: float = 0.0,

@@ -83,7 +83,7 @@ import numpy as np
 from . import history_solver as hs
 from . import load_paths, profiles, validate
 from .kernels import layer
-from .model import Contact, contact
+from .model import Contact, accepts_model, contact
 from .result import history_repr
 from .threads import blas_single_threaded
 
@@ -466,6 +466,7 @@ def _advice(n: int, steps: int, needs: dict[str, tuple[float, float]],
 
 
 # ----------------------------------------------------------------------------- public API
+@accepts_model
 @blas_single_threaded
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
             steps: int | None, *, n: int | None = None, slab_ratio: float = 0.0,
@@ -484,10 +485,12 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
 
     Parameters
     ----------
-    geometry : {"sphere", "cylinder"}
+    geometry : {"sphere", "cylinder"} or Contact
         Rigid sphere or cylinder (plane strain) on a half-space/half-plane
         (``slab_ratio = 0``), on a layer on a rigid base, or on a coated body
-        (``base="elastic"``).
+        (``base="elastic"``); or the whole model (:func:`contactlib.contact`), which
+        then also gives ``nu`` and the body's, indenter's and profile's keywords
+        (``history(model, friction, load_path, steps)``).
     nu : float
         Poisson's ratio, in (-1, 0.5].
     friction : float

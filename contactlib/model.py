@@ -48,20 +48,24 @@ True
 
 from __future__ import annotations
 
+import functools
+import inspect
 import math
 from dataclasses import dataclass, field
+from typing import Any, Callable, TypeVar
 
 import numpy as np
 
 from .body import ElasticBody, ViscoelasticBody
 from .indenter import Displacements, Indenter, indenter
 from .profiles import PARABOLOID, Profile
+from .validate import InputError
 
 # convention: the scale of k on a layer whose material has |beta| below it (beta of
 # nu = 0.45, about 0.09); only starting guesses use it (tests/test_layer_incompressible.py)
 LAYER_BETA_SCALE = 1.0 / 11.0
 
-__all__ = ["Contact", "contact"]
+__all__ = ["Contact", "contact", "accepts_model"]
 
 
 @dataclass(frozen=True)
@@ -329,6 +333,42 @@ class Contact:
         """Power of xi in the work integrand (1 for rings, 0 for strips)."""
         return self.indenter.work_weight_power
 
+    # ------------------------------------------------------------------ the public keywords
+    def keywords(self) -> dict[str, Any]:
+        """The public entry points' keywords that build this model (:func:`contact`'s inverse).
+
+        ``solve(**m.keywords(), stick_ratio=0.5)`` solves this model, as does
+        ``solve(m, stick_ratio=0.5)`` (:func:`accepts_model`). Keywords at their
+        defaults are left out, so each entry point is given only what it takes.
+
+        Examples
+        --------
+        >>> from contactlib.model import contact
+        >>> contact("sphere", 0.3, slab_ratio=2.0, base="bonded").keywords()
+        {'geometry': 'sphere', 'nu': 0.3, 'slab_ratio': 2.0, 'base': 'bonded'}
+        """
+        body, ind, prof = self.body, self.indenter, self.profile
+        kw: dict[str, Any] = {"geometry": ind.name, "nu": float(body.nu)}
+        if body.slab_ratio > 0.0:
+            kw.update(slab_ratio=float(body.slab_ratio), base=body.base)
+            if body.base == "elastic":
+                kw["substrate_modulus"] = float(body.substrate_modulus)
+                if body.substrate_nu is not None:
+                    kw["substrate_nu"] = float(body.substrate_nu)
+        if ind.modulus_ratio != math.inf:
+            kw["indenter_modulus"] = float(ind.modulus_ratio)
+        if ind.nu is not None:
+            kw["indenter_nu"] = float(ind.nu)
+        if getattr(body, "relaxation", ()):
+            kw["relaxation"] = [list(term) for term in body.relaxation]
+        if prof.name != PARABOLOID.name:
+            kw["profile"] = prof.name
+            if prof.name == "power":
+                kw["exponent"] = float(prof.exponent)
+            if prof.name == "rounded":
+                kw["flat_ratio"] = float(prof.flat)
+        return kw
+
 
 def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
             indenter_modulus: float = math.inf, indenter_nu: float | None = None,
@@ -363,3 +403,50 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
     body = ViscoelasticBody(nu, slab_ratio, base, relaxation=tuple(relaxation)) \
         if relaxation else ElasticBody(nu, slab_ratio, base, substrate_modulus, substrate_nu)
     return Contact(indenter(geometry, indenter_modulus, indenter_nu), body, profile=profile)
+
+
+_Entry = TypeVar("_Entry", bound=Callable[..., Any])
+
+
+def accepts_model(func: _Entry) -> _Entry:
+    """Let an entry point ``f(geometry, nu, ...)`` take a :class:`Contact` instead.
+
+    ``f(model, ...)`` is ``f(**model.keywords(), ...)``: the positional arguments
+    after the model fill the parameters after ``nu``. A model keyword given again,
+    or one the entry point does not take (a viscoelastic body for ``solve``), is
+    refused with an :class:`~contactlib.validate.InputError` naming it.
+    """
+    signature = inspect.signature(func).parameters
+    params = list(signature)
+    positional = [name for name, p in signature.items()
+                  if p.kind is inspect.Parameter.POSITIONAL_OR_KEYWORD][2:]
+
+    @functools.wraps(func)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        if not (args and isinstance(args[0], Contact)):
+            if isinstance(kwargs.get("geometry"), Contact):
+                kwargs = dict(kwargs)
+                args = (kwargs.pop("geometry"), *args)
+            else:
+                return func(*args, **kwargs)
+        model, rest = args[0], args[1:]
+        if len(rest) > len(positional):
+            raise InputError("model", f"followed by at most {len(positional)} positional "
+                             f"argument(s) of {func.__name__} ({', '.join(positional) or 'none'}"
+                             "; the model gives geometry and nu)", len(rest))
+        given = dict(zip(positional, rest))
+        for name, value in model.keywords().items():
+            if name in given or name in kwargs:
+                raise InputError(name, "given once: by the model or as a keyword, not both",
+                                 given.get(name, kwargs.get(name)))
+            if name not in params:
+                raise InputError("model", f"a model {func.__name__} takes ({name} is not "
+                                 f"one of its parameters)", name,
+                                 f"{func.__name__} does not take a model with {name}="
+                                 f"{value!r}: " + ("use history for a viscoelastic body"
+                                                   if name == "relaxation" else
+                                                   f"{func.__name__} takes no {name}"))
+            given[name] = value
+        return func(**given, **kwargs)
+
+    return wrapper  # type: ignore[return-value]

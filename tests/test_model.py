@@ -22,6 +22,7 @@ from contactlib.geometry import Geometry
 from contactlib.indenter import GEOMETRIES, Cylinder, Sphere, indenter
 from contactlib.kernels import disc, layer, strip
 from contactlib.model import Contact, contact
+from contactlib.profiles import profile
 from contactlib.operators import StickBlocks, nodal_operator_part, operator_part, step_operator
 from contactlib.theory import beta_of_nu, hertz_pressure
 
@@ -242,3 +243,66 @@ def test_results_carry_the_model_they_solved():
     res = contactlib.history("cylinder", 0.25, 0.2, [0, 1], 4, n=40)
     assert isinstance(res.model, Contact) and res.model.beta == res.dundurs_beta
     assert res.model.profile.name == res.profile
+
+
+MODELS = [dict(geometry="sphere", nu=0.3),
+          dict(geometry="cylinder", nu=0.25, slab_ratio=0.5, base="bonded"),
+          dict(geometry="sphere", nu=0.3, slab_ratio=2.0, base="elastic", substrate_modulus=10.0,
+               substrate_nu=0.2),
+          dict(geometry="sphere", nu=0.3, indenter_modulus=2.0, indenter_nu=0.1),
+          dict(geometry="cylinder", nu=0.3, profile="power", exponent=3.0),
+          dict(geometry="sphere", nu=0.3, profile="rounded", flat_ratio=0.5),
+          dict(geometry="sphere", nu=0.3, relaxation=[[0.5, 1.0]])]
+
+
+def _model_of(kw):
+    kw = dict(kw)
+    shape = profile(kw.pop("profile", "paraboloid"), kw.pop("exponent", None),
+                    kw.pop("flat_ratio", None))
+    kw["relaxation"] = tuple(tuple(t) for t in kw.pop("relaxation", ()))
+    return contact(**kw, profile=shape)
+
+
+@pytest.mark.parametrize("kw", MODELS, ids=lambda kw: "-".join(map(str, kw.values())))
+def test_keywords_are_the_inverse_of_contact(kw):
+    m = _model_of(kw)
+    assert m.keywords() == kw
+    again = _model_of(m.keywords())
+    assert (again.indenter, again.body, again.profile) == (m.indenter, m.body, m.profile)
+
+
+def test_entry_points_take_the_model():
+    import contactlib
+
+    for kw in MODELS[:5]:
+        m = _model_of(kw)
+        a = contactlib.solve(m, stick_ratio=0.3, n=32, energy=False)
+        b = contactlib.solve(**kw, stick_ratio=0.3, n=32, energy=False)
+        assert a.friction_coefficient == b.friction_coefficient and a.converged
+        assert (a.model.indenter, a.model.body, a.model.profile) == (m.indenter, m.body,
+                                                                      m.profile)
+    m = _model_of(MODELS[1])
+    assert [s.friction_coefficient for s in contactlib.sweep(m, [0.2, 0.6], n=32,
+                                                              energy=False)] == \
+        [s.friction_coefficient for s in contactlib.sweep(**MODELS[1], stick_ratios=[0.2, 0.6],
+                                                           n=32, energy=False)]
+    for kw in (MODELS[5], MODELS[6]):  # positional arguments after the model: friction, path
+        m = _model_of(kw)
+        extra = {"duration": 1.0} if "relaxation" in kw else {}
+        a = contactlib.history(m, 0.2, [0, 1, 0], 4, n=40, **extra)
+        b = contactlib.history(**kw, friction=0.2, load_path=[0, 1, 0], steps=4, n=40,
+                               **extra)
+        np.testing.assert_array_equal(a.stick_ratio, b.stick_ratio)
+
+
+def test_a_model_given_with_its_keywords_or_to_the_wrong_door_is_refused():
+    import contactlib
+    from contactlib.validate import InputError
+
+    m = _model_of(MODELS[1])
+    with pytest.raises(InputError, match="slab_ratio must be given once"):
+        contactlib.solve(m, stick_ratio=0.3, slab_ratio=1.0)
+    with pytest.raises(InputError, match="at most 0 positional"):
+        contactlib.solve(m, 0.3, stick_ratio=0.3)
+    with pytest.raises(InputError, match="use history for a viscoelastic body"):
+        contactlib.solve(_model_of(MODELS[6]), stick_ratio=0.3)

@@ -111,6 +111,7 @@ _MAX_SECANT = 60
 _PINNED_TOL = 1e-6  # a pinned cell's slip along its shear, relative to the slip scale
 _MIX = 0.5  # damping of the slip directions' update (plain updates diverged)
 _ANDERSON = 5  # Anderson mixing of the slip directions: steps kept
+_PATIENT_TURN = 1e-3  # the retried active set: directions' turn below which cells may stick
 
 
 def tangential_gamma(model: Contact) -> float:
@@ -420,7 +421,30 @@ def solve_shifted(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
     the direction of weakly slipping cells back and forth), and it sticks when
     its own shear could hold it (that slip's magnitude below its self-compliance
     times ``k p``). A stuck cell whose shear exceeds ``k p`` slips along it.
+
+    When that loop does not converge, it is run again from the same start with
+    a patient rule: a slipping cell sticks only once the directions have turned
+    by less than ``_PATIENT_TURN`` in an iteration. Switching cells while the
+    directions were still far from their fixed point made one cell at the stick
+    edge go back and forth, and the cycling rule then eroded the stick zone a
+    cell an iteration (measured: the coupled cycle of a rigid sphere on nu = 0.3,
+    n = 32, 8 steps, at Q = 0.375 k P; the patient run converged in 23
+    iterations). A loop that converged is kept unchanged.
     """
+    first = _active_set(ops, k, p, u_p, shift, v_old, q_start, stick_start, dir_start, 0.0)
+    if first[3]:
+        return first
+    second = _active_set(ops, k, p, u_p, shift, v_old, q_start, stick_start, dir_start,
+                         _PATIENT_TURN)
+    return second[:4] + (first[4] + second[4],)
+
+
+def _active_set(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
+                shift: np.ndarray, v_old: np.ndarray, q_start: np.ndarray,
+                stick_start: np.ndarray, dir_start: np.ndarray, patient: float
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool, int]:
+    """Kalker's active set for :func:`solve_shifted`; ``patient`` > 0: no slipping cell
+    sticks while the directions turn by more than that in an iteration."""
     contact = p > 0
     g = k * np.where(contact, p, 0.0)
     stick = stick_start & contact
@@ -451,6 +475,8 @@ def solve_shifted(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
         back = slip & (slip_along > np.where(pinned, _PINNED_TOL, _SET_TOL) * vscale)
         new_e = np.where(rmag > 0, -rest / np.where(rmag > 0, rmag, 1.0), e)
         turn = float(np.max(np.hypot(*(new_e - e))[slip & ~back], initial=0.0))
+        if patient and turn > patient:
+            back = np.zeros_like(back)
         if not over.any() and not back.any() and turn <= _DIRECTION_TOL and ok:
             # a cell kept slipping to end a cycle must slip (nearly) against its shear
             ok_pinned = not np.any(pinned & slip & (slip_along > _PINNED_TOL * vscale))

@@ -225,7 +225,9 @@ def _profile_kwargs(args: argparse.Namespace) -> dict[str, Any]:
 def _layer_options(sub: argparse.ArgumentParser, length: str, coated: bool = False) -> None:
     """``--slab-ratio`` and ``--base`` (``length``: "a" or "a_max"); with ``coated`` also
     ``--substrate-modulus`` and ``--substrate-nu`` (solve, sweep, history)."""
-    most = validate.LAYER_RATIO_MAX
+    most = dict(validate.LAYER_RATIO_MAX)
+    if length == "a_max":  # history: the cylinder on a smooth base keeps its own range
+        most[("cylinder", "smooth")] = validate.HISTORY_CYLINDER_SMOOTH_RATIO_MAX
     sub.add_argument("--slab-ratio", metavar="A_OVER_H", default="0",
                      help=f"{length}/h of an elastic layer of thickness h on a rigid base, "
                           f">= 0 (0 = half-space / half-plane); at most "

@@ -106,8 +106,8 @@ BAD = [
      "cylinder"),
     (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "1000.5"], "--slab-ratio",
      "sphere"),  # beyond the sphere's supported range (1000)
-    (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "81"], "--slab-ratio",
-     "cylinder"),  # beyond the smooth-base cylinder's (80)
+    (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "501"], "--slab-ratio",
+     "cylinder"),  # beyond the smooth-base cylinder's (500)
     (["--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio", "1", "--base", "glued"],
      "--base", "sphere"),
     (["--stick-ratio", "0.5"], "--nu", "sphere"),

@@ -507,7 +507,8 @@ def slab_ratio(value: Any, geometry_name: str | None = None, base_name: str = "s
         hi = min(hi, HISTORY_CYLINDER_SMOOTH_RATIO_MAX)
     if v > hi:
         raise InputError("slab_ratio", f"<= {hi:g} for a {geometry_name} on a {base_name} "
-                         "base (the supported range)", value)
+                         "base (the supported range, as measured: docs/validation.md, "
+                         "'Layers')", value)
     return v
 
 

@@ -577,8 +577,8 @@ def build_parser() -> argparse.ArgumentParser:
                            "physical problem, 'time,force' (s, N; or units in brackets, "
                            "'time [ms],force [kN]'); linear between its rows, from load 0")
     hist.add_argument("--steps", default=None, metavar="N",
-                      help="equal load steps per path segment (positive integer; required "
-                           "for a dimensionless path, default 200 for a path in newtons); "
+                      help="equal load steps per path segment (positive integer; default "
+                           f"{validate.HISTORY_DEFAULT_STEPS}); "
                            "with --load-shape or --load-table: steps a load travel of "
                            "P_max, each monotone piece getting its share (a multiple of 4)")
     hist.add_argument("--n", metavar="N", default=None,
@@ -690,7 +690,7 @@ def _validate_history(args: argparse.Namespace) -> dict[str, Any]:
         "friction": parse_friction(args.friction),
         "load_path": (parse_history_path(args, physical=False) if shaped
                       else parse_load_path(args.load_path)),
-        "steps": parse_steps(_required(args.steps, "--steps")),
+        "steps": None if args.steps is None else parse_steps(args.steps),
         "n": None if args.n is None else parse_history_n(args.n),
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base,
                                        validate.HISTORY_MESH_EXTENT),

@@ -469,7 +469,7 @@ def _advice(n: int, steps: int, needs: dict[str, tuple[float, float]],
 @accepts_model
 @blas_single_threaded
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
-            steps: int | None, *, n: int | None = None, slab_ratio: float = 0.0,
+            steps: int | None = None, *, n: int | None = None, slab_ratio: float = 0.0,
             progress: Callable[[int, int], None] | None = None,
             max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
             indenter_modulus: float = math.inf,
@@ -505,9 +505,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         tau); see :mod:`contactlib.load_paths`. A shape or table is cut into
         monotone pieces, the path segments, and its durations come from its
         times (``duration`` is then not given).
-    steps : int
+    steps : int, optional
         Equal load steps per path segment of a list (>= 1; 1 gives the
-        one-step load). For a shape or table: steps a unit of load travel,
+        one-step load; default 200, :data:`contactlib.validate.HISTORY_DEFAULT_STEPS`). For a shape or table: steps a unit of load travel,
         each piece getting the steps its load change needs (a multiple of 4,
         at least ``min(steps, 40)``; :func:`contactlib.load_paths.plan`).
     n : int, optional
@@ -686,7 +686,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     shaped = load_paths.is_shaped(load_path)
     path = load_paths.load_path(load_path) if shaped else None
     levels_in = () if shaped else validate.load_path(load_path)
-    steps = validate.steps(steps)
+    steps = validate.steps(validate.HISTORY_DEFAULT_STEPS if steps is None else steps)
     n = validate.history_n(n)
     base = validate.base(base, coated=True)
     slab = validate.slab_ratio(slab_ratio, geometry, base, extent=validate.HISTORY_MESH_EXTENT)

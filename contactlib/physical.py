@@ -79,8 +79,7 @@ PLANE_STRAIN_LIMIT = 0.1
 """Largest a/length of a cylinder reported without a warning (plane strain needs a long
 contact: the strip's half-width small against its length)."""
 
-# convention: the default steps a segment of a physical history
-DEFAULT_HISTORY_STEPS = 200
+DEFAULT_HISTORY_STEPS = validate.HISTORY_DEFAULT_STEPS
 """Load steps a segment of a physical history when none are given (the default n = 240
 and 200 steps give the work of a cycle to about 1 %; docs/accuracy.md, "History")."""
 

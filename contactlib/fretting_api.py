@@ -46,12 +46,19 @@ __all__ = ["FrettingResult", "fretting", "check_input", "amplitude_study", "STUD
            "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
            "sphere_fretting", "cylinder_cycle_work"]
 
+# convention: the cylinder's default elements (element a_max/100)
 DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
+# convention: the cylinder's default steps a segment
 DEFAULT_STEPS = 40  # equal steps a path segment
+# convention: the sphere's default grid
 SPHERE_DEFAULT_N = 64  # the sphere: cells a side of [-1.2, 1.2]^2 a_max (cell a_max/27)
+# convention: the sphere's default steps a segment
 SPHERE_DEFAULT_STEPS = 8
+# convention: the largest grid accepted (memory and time of the FFT products)
 SPHERE_N_MAX = 256
+# convention: the coarsest grid the sphere's estimates use
 SPHERE_N_MIN = 16  # the coarsest grid the sphere's estimates use for a Richardson order
+# convention: the distance kept from gross sliding, relative to k P
 _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
 
 
@@ -324,8 +331,9 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
                 indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> None:
     """Raise ValueError (naming the argument) on input :func:`fretting` refuses; no numerics.
 
-    The sphere needs ``nu`` (and the indenter's material): a tangential load is
-    solved for pairs with Dundurs beta = 0 only (``validate.SolverLimit`` otherwise).
+    The sphere needs ``nu`` (and the indenter's material): a tangential load on a
+    coupled pair (Dundurs beta != 0) is solved for ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P``
+    and ``n <= SPHERE_COUPLED_N_MAX`` only (``validate.SolverLimit`` otherwise).
     Without ``nu`` the sphere is refused.
     """
     load = _path("load_path", load_path, None)
@@ -334,7 +342,7 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
         _path("bulk_stress", bulk_stress, load.size)
     if geometry == "sphere" and nu is None:
         raise ValueError("fretting: geometry 'sphere' is not covered without nu: a tangential "
-                         "load on the sphere is solved for pairs with Dundurs beta = 0 only, "
+                         "load on the sphere depends on the pair's Dundurs beta, "
                          "which needs the materials (pass nu to check_input)")
     n0, steps0 = defaults(geometry)
     _check(geometry, friction, load, tang, n0 if n is None else n,
@@ -345,7 +353,7 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
                              "the cylinder only); give none")
         e1, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
         model = contact("sphere", validate.nu(nu), indenter_modulus=e1, indenter_nu=nu1)
-        _refuse_coupled(model, tang)
+        _refuse_coupled(model, load, tang, n0 if n is None else n)
 
 
 @blas_single_threaded
@@ -363,7 +371,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     ----------
     geometry : {"cylinder", "sphere"}
         The cylinder (plane strain) on a half-plane, or the sphere on a half-space
-        (:func:`sphere_fretting`: pairs with Dundurs beta = 0 under a tangential load).
+        (:func:`sphere_fretting`; a coupled pair, Dundurs beta != 0, under
+        ``|Q| <= 0.5 k P`` with ``n <= 32`` only).
     nu : float
         Poisson's ratio of the body, in (-1, 0.5].
     friction : float
@@ -510,18 +519,32 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         profile=prof.name, exponent=float(prof.exponent), flat_ratio=float(prof.flat))
 
 
+# limit: |Q|/(k P) of a coupled pair's tangential load, verified converged and checked in
+# tests/test_fretting_sphere_coupled.py (rigid sphere on nu = 0.3 and 0 at 0.5)
+SPHERE_COUPLED_FORCE_MAX = 0.5
+# limit: cells a side for a coupled pair, verified in tests/test_fretting_sphere_coupled.py
+# (n = 64 took over 8 minutes a cycle and is not verified)
+SPHERE_COUPLED_N_MAX = 32
 SPHERE_COUPLED_REFUSAL = (
-    "fretting: a tangential load on the sphere is solved for pairs with Dundurs beta = 0 "
-    "only (equal materials, or a rigid indenter on nu = 0.5), got beta = {beta:.4g}: the "
-    "coupled tangential loading does not yet converge reliably. Use the cylinder, or a "
+    "fretting: a tangential load on the sphere is solved for Dundurs beta = 0 only, or for a "
+    "coupled pair (here beta = {beta:.4g}) with |Q| <= {fmax:g} k P and n <= {nmax}: got "
+    "|Q|/(k P) = {x:.4g} and n = {n}, beyond the range whose coupled steps were verified to "
+    "converge. Keep |Q| <= {fmax:g} k P and pass n <= {nmax}, or use the cylinder, or a "
     "beta = 0 pair")
 
 
-def _refuse_coupled(model, tang: np.ndarray) -> float:
-    """The pair's Dundurs beta; SolverLimit if it is not 0 under a tangential load."""
+def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int) -> float:
+    """The pair's Dundurs beta; SolverLimit for a coupled tangential load beyond the
+    verified range (|Q|/(k P) <= SPHERE_COUPLED_FORCE_MAX, n <= SPHERE_COUPLED_N_MAX)."""
     beta = float(model.beta) if not model.decoupled else 0.0
-    if beta != 0.0 and np.any(tang != 0.0):
-        raise validate.SolverLimit(SPHERE_COUPLED_REFUSAL.format(beta=beta))
+    if beta == 0.0 or not np.any(tang != 0.0):
+        return beta
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x = float(np.max(np.where(load > 0, np.abs(tang) / np.where(load > 0, load, 1.0),
+                                  0.0)))
+    if x > SPHERE_COUPLED_FORCE_MAX * (1.0 + 1e-12) or n > SPHERE_COUPLED_N_MAX:
+        raise validate.SolverLimit(SPHERE_COUPLED_REFUSAL.format(
+            beta=beta, fmax=SPHERE_COUPLED_FORCE_MAX, nmax=SPHERE_COUPLED_N_MAX, x=x, n=n))
     return beta
 
 
@@ -530,8 +553,20 @@ def _sphere_run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.
     ops = fsph.grid_operators(model, n)
     big_p = load_levels(load, steps)[0][1:] * ops.p_max
     big_q = load_levels(tang, steps)[0][1:] * k * ops.p_max
-    return ops, fsph.run_sphere_fretting(ops, k, big_p, big_q, keep_fields=keep,
-                                         progress=progress)
+    return ops, _sphere_masked(fsph.run_sphere_fretting(ops, k, big_p, big_q,
+                                                        keep_fields=keep, progress=progress))
+
+
+def _sphere_masked(raw: fsph.RawSphereFretting) -> fsph.RawSphereFretting:
+    """The run with its per-step numbers NaN from the first step that did not converge on
+    (a later step starts from that step's state): never reported as data."""
+    bad = np.maximum.accumulate(~raw.converged)
+    if not bad.any():
+        return raw
+    nan = {name: np.where(bad, np.nan, getattr(raw, name)) for name in (
+        "delta", "contact_radius", "stick_radius", "stick_offset", "stick_area",
+        "contact_area", "dissipation", "external_work", "stored_energy")}
+    return replace(raw, shift=np.where(bad[:, None], np.nan, raw.shift), **nan)
 
 
 def _sphere_measures(raw: fsph.RawSphereFretting) -> tuple[np.ndarray, np.ndarray]:
@@ -564,7 +599,8 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     Parameters
     ----------
     model : Contact
-        A sphere on a half-space; a tangential load needs Dundurs beta = 0.
+        A sphere on a half-space; a tangential load on a coupled pair (beta != 0) needs
+        ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and ``n <= SPHERE_COUPLED_N_MAX``.
     k : float
         Coulomb coefficient.
     load, tang : ndarray
@@ -581,9 +617,9 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     Raises
     ------
     contactlib.validate.SolverLimit
-        (a ValueError) A tangential load on a pair with beta != 0.
+        (a ValueError) A coupled pair's tangential load beyond the verified range.
     """
-    beta = _refuse_coupled(model, tang)
+    beta = _refuse_coupled(model, load, tang, n)
     ops, raw = _sphere_run(model, n, steps, k, load, tang, True, progress)
     ratio, offset = _sphere_measures(raw)
     points = np.arange(load.size) * steps
@@ -638,6 +674,8 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     slip = np.where(touching & ~stick_row, np.diff(v_row, axis=0, prepend=0.0), 0.0)
     state = np.where(~touching, fr.SEPARATED, np.where(
         stick_row, fr.STICK, np.where(q_row >= 0, fr.SLIP_POSITIVE, fr.SLIP_NEGATIVE)))
+    bad = np.maximum.accumulate(~raw.converged)[:, None]
+    p_row, q_row, slip = (np.where(bad, np.nan, f) for f in (p_row, q_row, slip))
     force = raw.force
     return FrettingResult(
         geometry="sphere", nu=float(model.body.nu), friction=k, n=int(n), steps=int(steps),
@@ -656,6 +694,7 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)
 
 
+# convention: the amplitudes of amplitude_study, Q*/(k P)
 STUDY_AMPLITUDES = (0.1, 0.25, 0.5, 0.75, 0.9)
 
 

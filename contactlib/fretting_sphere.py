@@ -98,19 +98,33 @@ __all__ = [
     "zone_radius",
 ]
 
+# convention: the grid reaches 20 % beyond the largest contact (as fretting_solver's)
 MESH_EXTENT = 1.2  # grid half-width over a_max
+# tested: tests/test_fretting_sphere.py (Hertz's contact, Cattaneo–Mindlin within estimates)
 _CG_TOL = 1e-11  # conjugate gradients: residual relative to the right-hand side's scale
+# convention: a solve not done in 2000 iterations is reported as not converged
 _CG_MAX = 2000
+# tested: tests/test_fretting_sphere.py (Cattaneo–Mindlin's stick ratio within its estimate)
 _SET_TOL = 1e-9  # set switching, relative to the traction / slip scales
+# tested: tests/test_fretting_sphere.py (rigid on nu = 0.5: the slip not along the load)
 _DIRECTION_TOL = 1e-7  # slip directions' fixed point (radians, roughly)
+# tested: tests/test_fretting_sphere_coupled.py (tiny beta: within 1e-4 of beta = 0)
 _COUPLING_TOL = 1e-9
+# convention: an active set not settled in 200 iterations is reported as not converged
 _MAX_SETS = 200
+# convention: a coupled step not settled in 100 alternations is reported as not converged
 _MAX_COUPLING = 100
+# tested: tests/test_fretting_sphere_api.py (the shift at Q* against Mindlin's)
 _FORCE_TOL = 1e-10  # the force Q, relative to k P
+# convention: a force not met in 60 secant steps is reported as not converged
 _MAX_SECANT = 60
+# tested: tests/test_fretting_sphere.py (the cycles' work against Mindlin–Deresiewicz)
 _PINNED_TOL = 1e-6  # a pinned cell's slip along its shear, relative to the slip scale
+# tested: tests/test_fretting_sphere.py (every step of the cycles converged)
 _MIX = 0.5  # damping of the slip directions' update (plain updates diverged)
+# tested: tests/test_fretting_sphere.py (every step of the cycles converged)
 _ANDERSON = 5  # Anderson mixing of the slip directions: steps kept
+# tested: tests/test_fretting_sphere_coupled.py (the coupled cycles converged at every step)
 _PATIENT_TURN = 1e-3  # the retried active set: directions' turn below which cells may stick
 
 

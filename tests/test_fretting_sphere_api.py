@@ -1,6 +1,7 @@
 """``contactlib.fretting("sphere", ...)``: against Cattaneo–Mindlin and Mindlin–Deresiewicz
 (equal bodies with nu = 0: beta = gamma = 0, exact), Hertz at Q = 0, the estimates against
-a finer run, the refusal of beta != 0 under a tangential load, and the command line."""
+a finer run, the refusal of beta != 0 beyond the verified tangential load, and the command
+line."""
 
 from __future__ import annotations
 
@@ -108,9 +109,10 @@ def test_normal_load_is_hertz():
 
 
 def test_refuses_coupled_tangential_load():
-    """beta != 0 under a tangential load: one line saying why and what to do instead."""
+    """beta != 0 under a tangential load beyond the verified |Q| <= 0.5 k P: one line saying
+    why and what to do instead (tests/test_fretting_sphere_coupled.py: within it)."""
     with pytest.raises(validate.SolverLimit) as exc:
-        fretting("sphere", 0.3, K, [0, 1, 1], [0, 0, 0.5], 4, n=16)
+        fretting("sphere", 0.3, K, [0, 1, 1], [0, 0, 0.6], 4, n=16)
     msg = str(exc.value)
     assert "\n" not in msg and "beta" in msg and "converge" in msg and "cylinder" in msg
 
@@ -135,7 +137,7 @@ def test_defaults():
 
 def test_command_line_and_dataset(tmp_path, capsys):
     """``contactlib history --geometry sphere --tangential-path`` writes the sphere's dataset;
-    beta != 0 exits with status 3 and one line."""
+    beta != 0 beyond |Q| = 0.5 k P exits with status 3 and one line."""
     import xarray as xr
 
     from contactlib.cli import main
@@ -151,7 +153,7 @@ def test_command_line_and_dataset(tmp_path, capsys):
         assert "radius" in ds.stick_ratio.attrs["long_name"]
         assert "a_max**5" in ds.frictional_work.attrs["comment"]
     rc = main(["history", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.3",
-               "--load-path", "0,1,1", "--tangential-path", "0,0,0.5", "--n", "16",
+               "--load-path", "0,1,1", "--tangential-path", "0,0,0.6", "--n", "16",
                "--steps", "4", "--output", str(tmp_path / "t.nc")])
     err = capsys.readouterr().err
     assert rc == 3 and "beta" in err

@@ -605,7 +605,9 @@ def build_parser() -> argparse.ArgumentParser:
     hist.add_argument("--bulk-stress", metavar="LIST", default=None,
                       help="with --tangential-path: the body's bulk stress along x over p0 "
                            "at the points of --load-path (fretting fatigue specimen)")
-    hist.add_argument("--output", metavar="FILE.nc", required=True, help=_OUTPUT_HELP)
+    hist.add_argument("--output", metavar="FILE.nc", default=None,
+                      help=_OUTPUT_HELP + " (optional: without it the summary is printed "
+                           "and nothing is written)")
     hist.add_argument("--max-error", metavar="E",
                       default=f"{validate.DEFAULT_MAX_ERROR:g}",
                       help="accuracy a step must reach, in (0, 1): a step whose estimated "
@@ -838,20 +840,27 @@ def _run_physical_fretting(args: argparse.Namespace) -> int:
         kwargs["bulk_stress"] = args.bulk_stress
     with _progress("fretting") as progress:
         res = physical_fretting.physical_fretting(progress=progress, **kwargs)
-    io.write_dataset(io.physical_fretting_to_dataset(res), args.output)
+    if args.output is not None:
+        io.write_dataset(io.physical_fretting_to_dataset(res), args.output)
     print(res.summary())
-    print(f"wrote {args.output}")
+    _wrote(args.output)
     return 0
 
 
-def _run_fretting(kwargs: dict[str, Any], output: str) -> int:
+def _wrote(output: str | None) -> None:
+    """The line that says where the dataset went (or that none was asked for)."""
+    print(f"wrote {output}" if output is not None else "(no --output: nothing written)")
+
+
+def _run_fretting(kwargs: dict[str, Any], output: str | None) -> int:
     from contactlib import fretting_api, io
 
     with _progress("fretting") as progress:
         res = fretting_api.fretting(progress=progress, **kwargs)
-    io.write_dataset(io.fretting_to_dataset(res), output)
+    if output is not None:
+        io.write_dataset(io.fretting_to_dataset(res), output)
     print(format_fretting(res))
-    print(f"wrote {output}")
+    _wrote(output)
     return 0
 
 
@@ -1403,7 +1412,7 @@ def _history_api() -> ModuleType:
     return history_api
 
 
-def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int:
+def _run_history(kwargs: dict[str, Any], output: str | None, module: ModuleType) -> int:
     try:
         with _progress("history") as progress:
             res = module.history(progress=progress, **kwargs)
@@ -1411,16 +1420,18 @@ def _run_history(kwargs: dict[str, Any], output: str, module: ModuleType) -> int
         raise SolverLimitError(exc) from exc
     from contactlib import io
 
-    io.write_dataset(io.history_to_dataset(res), output)
+    if output is not None:
+        io.write_dataset(io.history_to_dataset(res), output)
     print(format_history(res))
-    print(f"wrote {output}")
+    _wrote(output)
     if getattr(res, "tolerance_met", None) is False:  # written, flagged, and status 3
         from contactlib.history_plan import reached_tolerance
 
         reach = reached_tolerance(res)
+        written = (f"the dataset {output} is written with its steps flagged"
+                   if output is not None else "its steps are flagged")
         raise SolverLimitError(validate.SolverLimit(
-            f"{res.message.split('; ')[0]}; the dataset {output} is written with its "
-            f"steps flagged",
+            f"{res.message.split('; ')[0]}; {written}",
             remedies=[("history", {"friction": res.friction, "tolerance": reach})]
             if reach is not None else []))
     return 0

@@ -280,3 +280,13 @@ def test_ticker_shows_elapsed_time_on_a_terminal_and_clears_it():
     with _ticker(piped, "solve", after=0.0, every=0.01):
         time.sleep(0.05)
     assert piped.text == ""  # not a terminal: silent
+
+
+def test_history_without_output_prints_the_summary_and_writes_nothing(capsys, tmp_path,
+                                                                       monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, "history", "--geometry", "cylinder", "--nu", "0.3",
+                         "--friction", "0.2", "--load-path", "0,1,0", "--n", "40")
+    assert code == 0, err
+    assert "200 steps per segment" in out  # the default steps (validate.HISTORY_DEFAULT_STEPS)
+    assert "nothing written" in out and list(tmp_path.iterdir()) == []

@@ -124,7 +124,7 @@ _PINNED_TOL = 1e-6  # a pinned cell's slip along its shear, relative to the slip
 _MIX = 0.5  # damping of the slip directions' update (plain updates diverged)
 # tested: tests/test_fretting_sphere.py (every step of the cycles converged)
 _ANDERSON = 5  # Anderson mixing of the slip directions: steps kept
-# tested: tests/test_fretting_sphere_coupled.py (the coupled cycles converged at every step)
+# tested: tests/test_fretting_sphere_coupled.py (the step at Q = 0.375 k P, n = 32, converges)
 _PATIENT_TURN = 1e-3  # the retried active set: directions' turn below which cells may stick
 
 

@@ -97,6 +97,20 @@ def test_coupled_cycle_energy_balance_and_work(steps, bound):
     assert _balance(raw, steps) < bound
 
 
+@pytest.mark.slow
+def test_the_step_the_patient_active_set_rescues():
+    """n = 32, 8 steps a segment: the tangential step to Q = 0.375 k P, where the first
+    active set went back and forth at the stick edge and was flagged before the patient
+    retry (_PATIENT_TURN in contactlib/fretting_sphere.py), now converges, as every step."""
+    ops = fs.grid_operators(contact("sphere", 0.3), 32)
+    t = np.arange(1, 9) / 8
+    load = ops.p_max * np.concatenate([t, np.ones(6)])
+    force = K * ops.p_max * np.concatenate([0 * t, 0.0625 * np.arange(1, 7)])
+    raw = fs.run_sphere_fretting(ops, K, load, force)
+    assert raw.converged.all()
+    assert np.all(np.diff(raw.dissipation) >= 0)
+
+
 # ----------------------------------------------------------------------------- compliance
 def test_compliance_against_mindlin():
     """The first tangential step (dQ = 0.025 k P, 4 steps to Q = 0.1 k P): ds/dQ of the

@@ -2,7 +2,7 @@
 Mindlin–Deresiewicz, the coupled normal loading against the self-similar solution, and the
 cost as a ratio to a normal-load cycle of ``history`` timed in the same run.
 
-    python benchmarks/report_fretting_sphere.py            # about 1 min on 2 cores
+    python benchmarks/report_fretting_sphere.py            # about 2 min on 2 cores
 
 Cases: two equal bodies with nu = 0 (beta = 0, gamma = 0: Cattaneo–Mindlin exact), k = 0.3,
 P: 0 -> P_max, then Q: 0 -> Q* -> -Q* -> Q*, 4 steps a segment (at beta = 0 and constant P
@@ -10,7 +10,8 @@ the grid's solution does not depend on the steps of a monotonic branch), n = 32 
 cells a side over [-1.2, 1.2]^2 a_max. The estimate of a fine run is its difference to the
 run at twice the cell size. Then a rigid sphere on nu = 0.5 (beta = 0, gamma = 1: Mindlin
 approximate) in the same cycles; and the coupled normal loading (rigid on nu = 0.3,
-beta = 0.286, Q = 0, 10 steps) against the self-similar stick ratio. Last, the public door
+beta = 0.286, Q = 0, 10 steps) against the self-similar stick ratio, and its cycle at
+Q* = 0.5 k P through ``fretting`` at n = 16 and 32 (the verified range). Last, the public door
 ``contactlib.fretting("sphere", ...)`` at its defaults (n = 64, 8 steps, with its estimate
 run at n = 32): the cycle above and CONTACT's shipped "cattaneo" example (equal bodies,
 G = 200 N/mm^2, nu = 0.42, a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn; 4 steps) in mm,
@@ -101,6 +102,18 @@ def main() -> None:
               f"estimate {est:.1e}), converged {bool(raw.converged.all())}, {dt:.1f} s "
               f"= {dt / t_hist:.1f} x history")
         prev = c
+
+    print("\nrigid on nu = 0.3 (beta = 0.286), k = 0.3, Q: 0 -> 0.5 -> -0.5 -> 0.5 k P, "
+          "4 steps a segment: fretting('sphere', ..., n=n) with its estimates")
+    for n in (16, 32):
+        t0 = time.perf_counter()
+        r = fretting("sphere", 0.3, K, [0, 1, 1, 1, 1], [0, 0, 0.5, -0.5, 0.5], 4, n=n)
+        dt = time.perf_counter() - t0
+        j = r.point_step[2]
+        _, _, work, est = r.cycles[0]
+        print(f"n = {n}: c/a = {r.stick_ratio[j]:.4f} (estimate {r.stick_ratio_error[2]:.1e}), "
+              f"shift {r.shift[j]:.5f}, cycle work {work:.4e} (estimate {est:.1e}), "
+              f"converged {bool(r.converged.all())}, {dt:.1f} s = {dt / t_hist:.1f} x history")
 
     print("\ncontactlib.fretting('sphere', ...) at its defaults (n = 64, steps = 8)")
     t0 = time.perf_counter()

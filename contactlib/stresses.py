@@ -37,6 +37,10 @@ p, Johnson Ch. 3) and the shear's part the same Hankel integral cut at ``XI_SURF
 its integrand decays only like xi^-2, so the surface values of the shear's part carry a
 truncation error, 2e-5 p0 at most (docs/stresses.md).
 
+A layer of thickness h on a rigid base (sphere, smooth or bonded base):
+:func:`layer_stresses`, the half-space's field plus the correction of
+:mod:`contactlib.stresses_layer` (its notes give the method).
+
 Memory is bounded by working in chunks of about ``CHUNK`` numbers an array (a few arrays
 of 8 * CHUNK bytes at once).
 """
@@ -55,8 +59,8 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "derived_measures", "subsurface_stresses", "field_maximum",
            "surface_radial_stress", "default_grid", "check_subsurface_request",
            "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
-           "field_error_estimate", "COMPONENTS", "XI_SURFACE", "PANEL", "CHUNK",
-           "DEPTH_CUTOFF", "TractionPieces", "xi_nodes", "check_tractions",
+           "field_error_estimate", "layer_stresses", "COMPONENTS", "XI_SURFACE", "PANEL",
+           "CHUNK", "DEPTH_CUTOFF", "TractionPieces", "xi_nodes", "check_tractions",
            "check_grid"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
@@ -475,6 +479,63 @@ def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np
             out["sigma_tt"][js] += tt_part[None, :]
 
 
+def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float,
+                   thickness: float, base: str, *, refine: int = 1) -> dict[str, np.ndarray]:
+    """Axisymmetric stresses in a layer on a rigid base under tabulated p(r) and q(r).
+
+    The half-space's field (:func:`halfspace_stresses`) plus the layer's correction
+    (:mod:`contactlib.stresses_layer`).
+
+    Parameters
+    ----------
+    xi, pressure, shear : array_like, shape (m,)
+        As for :func:`halfspace_stresses` (r/a, any stress unit).
+    x, z : array_like, 1-d
+        Output grid: r/a (|r| is used) and depth z/a in [0, h/a].
+    nu : float
+        Poisson's ratio of the layer, -1 < nu <= 0.5.
+    thickness : float
+        h/a, the layer's thickness over the contact radius (1 / slab_ratio).
+    base : {"smooth", "bonded"}
+        The rigid base at z = h.
+    refine : int
+        Divides the panels of the correction's k integral (convergence checks).
+
+    Returns
+    -------
+    dict of str to ndarray, shape (len(z), len(x))
+        ``sigma_rr``, ``sigma_tt``, ``sigma_zz``, ``sigma_rz``, in the unit of the
+        tractions, tension positive. Error: the half-space's plus the correction's
+        quadrature, below 1e-10 of the tractions (tests/test_stresses_layer.py).
+
+    Raises
+    ------
+    contactlib.validate.InputError
+        For a depth beyond the layer (z > h), a base other than smooth or bonded, or what
+        :func:`halfspace_stresses` refuses.
+    """
+    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer
+    from .validate import InputError
+
+    nu, h, base = check_layer(nu, thickness, base)
+    r, p, q = check_tractions(xi, pressure, shear)
+    xs, zs = check_grid(x, z)
+    if np.any(zs > h * (1 + 1e-12)):
+        raise InputError("z", f"depths within the layer, 0 <= z <= h = {h!r}", zs.max(),
+                         f"z must lie within the layer (0 <= z <= h/a = {h!r}), got "
+                         f"z = {zs.max()!r}")
+    zs = np.minimum(zs, h)
+    pieces = TractionPieces.from_nodes(r, p, q)
+    out = _halfspace_pieces(pieces, xs, zs, nu)
+    rr = np.abs(xs)
+    # panels no wider than PANEL/(1 + max r) (the oscillation) nor PANEL_T/h (the layer)
+    width = min(PANEL / (1.0 + float(max(rr.max(), r.max()))), PANEL_T / h) / max(1, refine)
+    k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
+    P, Q = pieces.hankel(k)
+    add_correction(out, k, w, P, Q, rr, zs, nu, h, base)
+    return out
+
+
 # ----------------------------------------------------------------------------- dispatch
 def stress_field(geometry: str, nu: float, xi: Any, pressure: Any, shear: Any, x: Any,
                  z: Any) -> dict[str, np.ndarray]:
@@ -596,14 +657,24 @@ _LONG_NAMES = {
 }
 
 
-def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarray]:
+def _tractions_of(solution: Any, body: str,
+                  layer: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
     """Poisson's ratio and tractions (p, q) on the body asked for, refusing what is not
-    covered."""
+    covered (a layer unless ``layer``: then a sphere on a smooth or bonded rigid base)."""
     from .validate import InputError
 
     if body not in ("body", "indenter"):
         raise InputError("body", "'body' or 'indenter'", body)
-    if float(getattr(solution, "slab_ratio", 0.0)) > 0:
+    if layer and float(getattr(solution, "slab_ratio", 0.0)) > 0:
+        base = getattr(solution, "base", "smooth")
+        if solution.geometry != "sphere" or base not in ("smooth", "bonded"):
+            raise InputError("slab_ratio", "a sphere on a smooth or bonded rigid base for "
+                             "the stresses in a layer", solution.slab_ratio,
+                             "subsurface stresses in a layer cover the sphere on a smooth "
+                             "or bonded rigid base only: not the "
+                             + (f"{base} base (a coated body)" if base not in
+                                ("smooth", "bonded") else "cylinder on a layer"))
+    elif float(getattr(solution, "slab_ratio", 0.0)) > 0:
         raise InputError("slab_ratio", "0 (a half-space or half-plane) for subsurface "
                          "stresses", solution.slab_ratio,
                          "subsurface stresses cover the half-space and half-plane only: "
@@ -647,7 +718,10 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     Parameters
     ----------
     solution : contactlib.result.Solution
-        A solved case (:func:`contactlib.solve`) on a half-space or half-plane; its
+        A solved case (:func:`contactlib.solve`) on a half-space or half-plane, or a
+        sphere on a layer of thickness h = a / ``slab_ratio`` on a smooth or bonded rigid
+        base (:func:`layer_stresses`; the depths z > h, below
+        the layer, are NaN; attributes ``layer_thickness`` and ``base``); its
         ``pressure`` and ``shear`` (p/p0, q/p0 on ``xi``, piecewise linear between the
         points) are the tractions. p0 is the Hertz peak pressure at the same contact
         radius (docs/conventions.md), so a frictionless case has p = sqrt(1 - xi^2).
@@ -672,7 +746,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     Raises
     ------
     contactlib.validate.InputError
-        For a layer (``slab_ratio`` > 0), a case with NaN tractions, ``body="indenter"``
+        For a cylinder on a layer or a coated body (``base="elastic"``), a case with NaN
+        tractions, ``body="indenter"``
         with a rigid indenter, or a bad grid.
 
     Examples
@@ -687,12 +762,25 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     """
     import xarray as xr
 
-    nu, _, _ = _tractions_of(solution, body)
+    nu, _, _ = _tractions_of(solution, body, layer=True)
     xi, p, q = traction_samples(solution)
     q = q if body == "body" else -q
     xs, zs = check_grid(x, z)
     geometry = solution.geometry
-    fields = stress_field(geometry, nu, xi, p, q, xs, zs)
+    slab = float(getattr(solution, "slab_ratio", 0.0))
+    layer = {}
+    if slab > 0 and body == "body":  # a layer h = a/slab_ratio on a rigid base
+        h = 1.0 / slab
+        within = zs <= h
+        fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
+        if np.any(within):
+            part = layer_stresses(xi, p, q, xs, zs[within], nu, h, solution.base)
+            for name, v in part.items():
+                fields[name][within] = v
+        layer = {"layer_thickness": h, "base": str(solution.base),
+                 "beyond_layer": "NaN at depths z > h (below the layer, the rigid base)"}
+    else:
+        fields = stress_field(geometry, nu, xi, p, q, xs, zs)
     if measures:
         fields.update(derived_measures(geometry, fields))
     coords = {"z": ("z", zs, {"units": "1", "long_name": "depth / a, positive into the "
@@ -708,7 +796,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
              "elements": int(solution.n), "method": str(solution.method),
              "indenter_modulus_ratio": float(solution.indenter_modulus_ratio),
              "dundurs_beta": float(solution.dundurs_beta),
-             "stress_unit": "p0, the Hertz peak pressure at the same contact radius"}
+             "stress_unit": "p0, the Hertz peak pressure at the same contact radius",
+             **layer}
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
@@ -1088,7 +1177,8 @@ def field_error_estimate(solution: Any, x: Any, z: Any, *, body: str = "body") -
         raise InputError("n", f">= {2 * MIN_N_DEFAULT_METHOD} for a field error estimate",
                          solution.n)
     fine = subsurface_stresses(solution, x, z, body=body)
-    kw: dict[str, Any] = {"base": solution.base} if solution.slab_ratio > 0 else {}
+    kw: dict[str, Any] = ({"base": solution.base, "slab_ratio": float(solution.slab_ratio)}
+                          if solution.slab_ratio > 0 else {})
     if not math.isinf(float(solution.indenter_modulus_ratio)):
         kw.update(indenter_modulus=float(solution.indenter_modulus_ratio),
                   indenter_nu=float(solution.indenter_poisson_ratio))

@@ -1,0 +1,191 @@
+"""Stresses inside an elastic layer on a rigid base under axisymmetric surface tractions.
+
+The body is a layer 0 <= z <= h of Poisson's ratio nu on a rigid base at z = h, either
+**smooth** (u_z = 0 and sigma_rz = 0 there) or **bonded** (u_r = u_z = 0), loaded on z = 0
+by the pressure p(r) and the radial shear q(r) of :func:`contactlib.stresses.halfspace_stresses`
+(tabulated on r/a, piecewise linear, zero beyond the table). Lengths in units of a, stresses
+in the unit of the tractions, the signs of :mod:`contactlib.stresses` (tension positive, z
+into the body; sigma_zz = -p and sigma_rz = -q on the surface).
+
+Method
+------
+The field is the half-space's (:func:`contactlib.stresses.halfspace_stresses`) plus a
+correction that has no traction on z = 0 and cancels the half-space's displacements
+(bonded) or its u_z and sigma_rz (smooth) on z = h. With P(k) = int p J0(k r) r dr and
+Q(k) = int q J1(k r) r dr, y = k z and t = k h, the correction is
+
+    sigma_zz = int k J0 S_zz dk,  sigma_rz = int k J1 S_rz dk,
+    sigma_rr = int k (J0 S_rr + J1/(k r) B) dk,  sigma_tt = int k (J0 S_tt - J1/(k r) B) dk,
+
+each S a sum over the four Papkovich-Neuber modes (2G u = grad(phi + z psi) -
+4 (1 - nu) psi e_z, phi and psi harmonic) e^{-y}, y e^{-y} (phi, psi decaying from the
+surface) and e^{-(t - y)}, (y - t) e^{-(t - y)} (decaying from the base), with
+coefficients linear in P and Q from a 4 x 4 system per k (:func:`correction_coefficients`).
+Every entry of that system is bounded (e^{-t}, t e^{-t}), so nothing overflows and the
+correction is computed directly, in relative precision. It decays like t^2 e^{-t} at
+every depth of the layer: the k integral stops at ``T_CUTOFF / h`` and uses Gauss-Legendre
+panels (8 points) no wider than 2 pi/(1 + max r) nor 1/h. The surface transfer functions
+of this solution equal :func:`contactlib.kernels.layer_transfer.transfer` (tested).
+
+:func:`contactlib.stresses.layer_stresses` adds the correction (:func:`add_correction`)
+to the half-space's field; this module imports nothing of :mod:`contactlib.stresses`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import scipy.special as sp
+
+from .kernels.layer_transfer import BASES
+
+__all__ = [
+    "CHUNK",
+    "PANEL_T",
+    "T_CUTOFF",
+    "add_correction",
+    "check_layer",
+    "correction_coefficients",
+    "surface_transfer",
+]
+
+# exact: the correction decays like t^2 e^{-t}: 45^2 e^{-45} = 5.8e-17
+T_CUTOFF = 45.0
+"""k h at which the correction's k integral stops."""
+
+# tested: tests/test_stresses_layer.py (halving the panels changes the field by < 1e-9 p0)
+PANEL_T = 1.0
+"""Widest Gauss-Legendre panel of the correction's k integral, in t = k h."""
+
+# convention: a working array of 2 MB, as contactlib.stresses.CHUNK
+CHUNK = 250_000
+"""Numbers in one working array of a chunk."""
+
+
+def check_layer(nu: float, thickness: float, base: str) -> tuple[float, float, str]:
+    """(nu, h, base) checked: -1 < nu <= 0.5, 0 < h < inf, base smooth or bonded."""
+    from .validate import InputError
+
+    nu = float(nu)
+    if not -1.0 < nu <= 0.5:
+        raise InputError("nu", "in (-1, 0.5]", nu)
+    h = float(thickness)
+    if not (math.isfinite(h) and h > 0):
+        raise InputError("thickness", "finite and > 0 (h / a)", thickness)
+    if base not in BASES:
+        raise InputError("base", f"one of {BASES} (a rigid base)", base,
+                         f"base must be one of {BASES} for the stresses in a layer (a coated "
+                         f"body, base 'elastic', is not covered), got {base!r}")
+    return nu, h, base
+
+
+def _modes(y: np.ndarray, t: np.ndarray, nu: float) -> dict[str, np.ndarray]:
+    """Mode values (stresses / k, 2G u with 2G = 1), shape (..., 4), at y = k z, t = k h."""
+    e = np.exp(-y)
+    f = np.exp(-(t - y))
+    s = y - t
+    one = np.ones_like(y)
+    return {"U": np.stack([-e, -y * e, -f, -s * f], axis=-1),
+            "W": np.stack([-e, -(3 - 4 * nu + y) * e, f, (4 * nu - 3 + s) * f], axis=-1),
+            "zz": np.stack([e, (2 - 2 * nu + y) * e, f, (2 * nu - 2 + s) * f], axis=-1),
+            "rz": np.stack([e, (1 - 2 * nu + y) * e, -f, -(2 * nu - 1 + s) * f], axis=-1),
+            "rr": np.stack([-e, -(y - 2 * nu) * e, -f, -(2 * nu + s) * f], axis=-1),
+            "B": np.stack([e, y * e, f, s * f], axis=-1),
+            "tt": np.stack([0 * one, 2 * nu * e, 0 * one, -2 * nu * f], axis=-1)}
+
+
+def _halfspace_coefficients(nu: float) -> np.ndarray:
+    """(2, 2): the half-space's amplitudes of e^{-y}, y e^{-y} for P = 1 and Q = 1."""
+    # surface: c1 + (2 - 2 nu) c2 = -P, c1 + (1 - 2 nu) c2 = -Q
+    return np.array([[-1.0 + (2 - 2 * nu), -(2 - 2 * nu)], [-1.0, 1.0]])
+
+
+def correction_coefficients(t: Any, nu: float, base: str) -> np.ndarray:
+    """Amplitudes of the four modes of the correction, per unit P and per unit Q.
+
+    Parameters
+    ----------
+    t : array_like
+        k h > 0, dimensionless.
+    nu : float
+        Poisson's ratio.
+    base : {"smooth", "bonded"}
+
+    Returns
+    -------
+    ndarray, shape (len(t), 4, 2)
+        Mode j (e^{-y}, y e^{-y}, e^{-(t-y)}, (y-t) e^{-(t-y)}) of the load P = 1
+        (column 0) or Q = 1 (column 1).
+    """
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    zero = np.zeros_like(t)
+    top = _modes(zero, t, nu)
+    bottom = _modes(t, t, nu)
+    rows = ("W", "rz") if base == "smooth" else ("U", "W")
+    mat = np.stack([top["zz"], top["rz"], bottom[rows[0]], bottom[rows[1]]], axis=-2)
+    hs = _halfspace_coefficients(nu)  # (mode, load)
+    rhs = np.zeros((t.size, 4, 2))
+    for i, name in enumerate(rows):
+        rhs[:, 2 + i, :] = -bottom[name][:, :2] @ hs
+    return np.linalg.solve(mat, rhs)
+
+
+def surface_transfer(t: Any, nu: float, base: str) -> tuple[np.ndarray, np.ndarray,
+                                                            np.ndarray]:
+    """(Cww, Cwu, Cuu) of the layer from this module's interior solution (for checks).
+
+    Parameters and scalings as :func:`contactlib.kernels.layer_transfer.transfer`.
+    """
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    d = correction_coefficients(t, nu, base)
+    top = _modes(np.zeros_like(t), t, nu)
+    hs = _halfspace_coefficients(nu)
+    w = np.einsum("nj,njl->nl", top["W"], d) + top["W"][:, :2] @ hs
+    u = np.einsum("nj,njl->nl", top["U"], d) + top["U"][:, :2] @ hs
+    c = 2.0 * (1.0 - nu)
+    return w[:, 0] / c, -w[:, 1] / c, u[:, 1] / c
+
+
+def add_correction(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np.ndarray,
+                   Q: np.ndarray, r: np.ndarray, z: np.ndarray, nu: float, thickness: float,
+                   base: str) -> None:
+    """Add the layer's correction to the half-space field ``out`` (arrays (len(z), len(r))).
+
+    Parameters
+    ----------
+    out : dict of str to ndarray
+        ``sigma_rr``, ``sigma_tt``, ``sigma_zz``, ``sigma_rz`` of the half-space on the
+        grid (z, r), in the unit of the tractions; updated in place.
+    k, w : ndarray
+        Nodes (1/a) and weights of the k integral on [0, T_CUTOFF/h]: Gauss-Legendre
+        panels no wider than 2 pi/(1 + max r) nor PANEL_T/h
+        (:func:`contactlib.stresses.layer_stresses`).
+    P, Q : ndarray
+        int p J0(k r) r dr and int q J1(k r) r dr at ``k`` (units of the tractions times
+        a^2).
+    r, z : ndarray
+        Radii r/a >= 0 and depths 0 <= z/a <= h/a.
+    nu, thickness, base
+        As for :func:`check_layer`.
+    """
+    h = float(thickness)
+    step = max(1, CHUNK // max(r.size, 4 * z.size, 1))
+    for i in range(0, k.size, step):
+        kc, wc = k[i:i + step], w[i:i + step]
+        d = correction_coefficients(kc * h, nu, base)  # (n, 4, 2)
+        amp = kc[:, None] * (d[:, :, 0] * P[i:i + step, None] + d[:, :, 1] * Q[i:i + step, None])
+        m = _modes(np.outer(kc, z), (kc * h)[:, None], nu)  # (n, nz, 4)
+        prof = {name: np.einsum("nzj,nj->nz", m[name], amp) for name in
+                ("zz", "rz", "rr", "B", "tt")}
+        x_ = np.outer(r, kc)
+        j0 = sp.j0(x_) * wc
+        j1 = sp.j1(x_)
+        j1x = np.where(x_ > 0, j1 / np.where(x_ > 0, x_, 1.0), 0.5) * wc
+        j1 = j1 * wc
+        bracket = j1x @ prof["B"]
+        out["sigma_zz"] += (j0 @ prof["zz"]).T
+        out["sigma_rz"] += (j1 @ prof["rz"]).T
+        out["sigma_rr"] += (j0 @ prof["rr"] + bracket).T
+        out["sigma_tt"] += (j0 @ prof["tt"] - bracket).T

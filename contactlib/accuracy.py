@@ -145,7 +145,7 @@ def predicted_method_error(method: str, geometry: str, stick_ratio: float, n: in
     """Measured-model relative k error of ``method`` (``"default"`` or ``"extrapolated"``)
     on the half-space (the extrapolated method's: its four-level model, or from n = 1024
     the five-level estimate where that is the smaller)."""
-    if method == "default":
+    if validate.method_of(method).nested_estimate:
         return predicted_error(geometry, stick_ratio, n)
     c = float(stick_ratio)
     if c <= 0.0 or c >= 1.0:
@@ -247,7 +247,7 @@ def _cheapest_n(method: str, geometry: Contact, stick_ratios: Sequence[float],
     inside = np.array([float(c) for c in stick_ratios if 0.0 < float(c) < 1.0])
     limit = tolerance / PLAN_SAFETY[method]
     for n in range(max(step, MIN_N), MAX_N + 1, step):
-        if method == "extrapolated":  # c/a = 0 and 1 are exact
+        if validate.method_of(method).own_estimate:  # c/a = 0 and 1 are exact
             # the truncation part is largest where its table is (mid c/a), the noise at the
             # extreme c/a on either side (the smallest elements): each bounded by its largest
             # (from n = 1024 the five-level estimate where it is the smaller: the method

@@ -111,7 +111,7 @@ def _displacement(geom: Geometry, rec: CaseRecord, xi: np.ndarray) -> np.ndarray
 
 def _discrete(geom: Geometry, c: float, n: int, method: str, k_guess: float | None = None):
     """Solve one stick ratio with the chosen method (no post-processing)."""
-    if method == "default":
+    if validate.method_of(method).nested_estimate:
         return solve_default(geom, c, n, k_guess=k_guess)
     return stages.solve_one(geom, method, n, c, None, None)
 
@@ -497,10 +497,10 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
                       "contact sticks (c/a = 1)", max_error=max_error)
         sol.stick_ratio, sol.friction_coefficient = 1.0, k
         return sol
-    if method == "default":
+    if validate.method_of(method).nested_estimate:
         c, d = stick_ratio_for_friction(geom, k, n)
         return _finish(geom, d, method, n, energy, max_error=max_error)
-    if method == "extrapolated":
+    if validate.method_of(method).own_estimate:
         c, d = _extrapolated_for_friction(geom, k, n)
         return _finish(geom, d, method, n, energy, max_error=max_error)
     # paper method: c/a only at m/n; pick the m/n whose k is nearest

@@ -182,7 +182,7 @@ def solve_one(geometry: Contact, method: str, n: int, c: float, normal, shear,
             pw = _lookup(normal, method, c, mesh.nodes)
             qw = _lookup(shear, method, c, mesh.nodes) if 0.0 < c else None
             ops = None if pw is None else (pw, qw)
-        if method == "extrapolated":  # the caller's samples give the finest level's work
+        if validate.method_of(method).own_estimate:  # the samples give the finest level's work
             return extrapolated_method.solve_extrapolated(geometry, c, n, ops=ops,
                                                           k_guess=k_guess, cache=cache,
                                                           work=False,
@@ -315,7 +315,8 @@ def iter_cases(geometry: Contact, method: str, n: int, stick_ratios: Sequence[fl
         solved = _solved_ratio(geometry, c)
         cont = (_continuation_guess(geometry, solved, known) if method in NODAL_METHODS
                 else None)
-        with_coarse = estimate and method == "default" and tolerance is None
+        with_coarse = (estimate and validate.method_of(method).nested_estimate
+                       and tolerance is None)
         d, coarse, ops = _solve_from(geometry, method, n, solved, cont, normal, shear, cache,
                                      with_coarse, level_offsets=offsets)
         if cont is not None and _suspect(d, cont):
@@ -412,7 +413,7 @@ def estimate_case(geometry: Contact, method: str, n: int, rec: CaseRecord, *,
     c = _solved_ratio(geometry, float(rec.stick_ratio))
     cache = StickBlocks()
     coarse = {}
-    if method == "default" and 0.0 < c < 1.0:
+    if validate.method_of(method).nested_estimate and 0.0 < c < 1.0:
         # the coarse Newton starts on the root's side: k relative to sign(beta)
         d = solution if isinstance(solution, DiscreteSolution) else _rebuild(geometry, rec)
         coarse = _coarse_solves(geometry, n, c, d.oriented_k, cache=cache)
@@ -526,7 +527,8 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     # k exact (0 or inf: frictionless, full adhesion, decoupled): the answer is the load
     # (and the work, where there is one), which ``resolved`` judges instead of k
     exact_k = method in NODAL_METHODS and not 0.0 < solved < 1.0
-    if exact_k and method == "extrapolated" and not np.isfinite(rec.load_error_estimate):
+    if (exact_k and validate.method_of(method).own_estimate
+            and not np.isfinite(rec.load_error_estimate)):
         method_for_levels = "default"  # (the extrapolated method solved it as the default)
     else:
         method_for_levels = method
@@ -610,8 +612,8 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     out["resolved"] = good
     out["max_error"] = float(max_error)
     if not good and bool(rec.converged) and np.isfinite(est) and est > max_error:
-        need = (resolving_n(n, est, max_error) if (method == "default" or exact_k)
-                and not limit else
+        need = (resolving_n(n, est, max_error)
+                if (validate.method_of(method).nested_estimate or exact_k) and not limit else
                 extrapolated_method.resolving_n(n, est, max_error, MAX_N)
                 if validate.method_of(method).own_estimate and not limit else None)
         hint = (f"n = {need} should resolve it" if need is not None else

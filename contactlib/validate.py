@@ -96,6 +96,12 @@ class Method:
     own_estimate: bool = False
     coulomb: str = "resultant"
 
+    @property
+    def nested_estimate(self) -> bool:
+        """Estimated from the same case on the nested meshes n/2 and n/4, solved by the
+        caller (a nodal method without its own estimate)."""
+        return self.nodal and not self.own_estimate
+
 
 # convention: the default method's mesh is in sixteenths of the half-contact
 MIN_N_DEFAULT_METHOD = 16

@@ -37,7 +37,7 @@ p, Johnson Ch. 3) and the shear's part the same Hankel integral cut at ``XI_SURF
 its integrand decays only like xi^-2, so the surface values of the shear's part carry a
 truncation error, 2e-5 p0 at most (docs/stresses.md).
 
-A layer of thickness h on a rigid base (sphere, smooth or bonded base):
+A layer of thickness h on a smooth or bonded rigid base (sphere and cylinder):
 :func:`layer_stresses`, the half-space's field plus the correction of
 :mod:`contactlib.stresses_layer` (its notes give the method).
 
@@ -480,31 +480,36 @@ def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np
 
 
 def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float,
-                   thickness: float, base: str, *, refine: int = 1) -> dict[str, np.ndarray]:
-    """Axisymmetric stresses in a layer on a rigid base under tabulated p(r) and q(r).
+                   thickness: float, base: str, *, geometry: str = "sphere",
+                   refine: int = 1) -> dict[str, np.ndarray]:
+    """Stresses in a layer on a rigid base under tabulated p and q (sphere or cylinder).
 
-    The half-space's field (:func:`halfspace_stresses`) plus the layer's correction
-    (:mod:`contactlib.stresses_layer`).
+    The half-space's (half-plane's) field (:func:`stress_field`) plus the layer's
+    correction (:mod:`contactlib.stresses_layer`).
 
     Parameters
     ----------
     xi, pressure, shear : array_like, shape (m,)
-        As for :func:`halfspace_stresses` (r/a, any stress unit).
+        As for :func:`halfspace_stresses` (r/a) or :func:`halfplane_stresses` (x/a;
+        p even and q odd in x), any stress unit.
     x, z : array_like, 1-d
-        Output grid: r/a (|r| is used) and depth z/a in [0, h/a].
+        Output grid: r/a (|r| is used; x/a of either sign for the cylinder) and depth
+        z/a in [0, h/a].
     nu : float
         Poisson's ratio of the layer, -1 < nu <= 0.5.
     thickness : float
         h/a, the layer's thickness over the contact radius (1 / slab_ratio).
     base : {"smooth", "bonded"}
         The rigid base at z = h.
+    geometry : {"sphere", "cylinder"}
+        Axisymmetric (Hankel) or plane strain (Fourier).
     refine : int
         Divides the panels of the correction's k integral (convergence checks).
 
     Returns
     -------
     dict of str to ndarray, shape (len(z), len(x))
-        ``sigma_rr``, ``sigma_tt``, ``sigma_zz``, ``sigma_rz``, in the unit of the
+        The components of :data:`COMPONENTS` for ``geometry``, in the unit of the
         tractions, tension positive. Error: the half-space's plus the correction's
         quadrature, below 1e-10 of the tractions (tests/test_stresses_layer.py).
 
@@ -514,7 +519,8 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
         For a depth beyond the layer (z > h), a base other than smooth or bonded, or what
         :func:`halfspace_stresses` refuses.
     """
-    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer
+    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer, \
+        fourier_amplitudes
     from .validate import InputError
 
     nu, h, base = check_layer(nu, thickness, base)
@@ -525,14 +531,17 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
                          f"z must lie within the layer (0 <= z <= h/a = {h!r}), got "
                          f"z = {zs.max()!r}")
     zs = np.minimum(zs, h)
-    pieces = TractionPieces.from_nodes(r, p, q)
-    out = _halfspace_pieces(pieces, xs, zs, nu)
-    rr = np.abs(xs)
+    out = stress_field(geometry, nu, r, p, q, xs, zs)
     # panels no wider than PANEL/(1 + max r) (the oscillation) nor PANEL_T/h (the layer)
-    width = min(PANEL / (1.0 + float(max(rr.max(), r.max()))), PANEL_T / h) / max(1, refine)
+    r_max = float(max(np.abs(xs).max(), r.max()))
+    width = min(PANEL / (1.0 + r_max), PANEL_T / h) / max(1, refine)
     k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
-    P, Q = pieces.hankel(k)
-    add_correction(out, k, w, P, Q, rr, zs, nu, h, base)
+    if geometry == "sphere":
+        P, Q = TractionPieces.from_nodes(r, p, q).hankel(k)
+        add_correction(out, k, w, P, Q, np.abs(xs), zs, nu, h, base)
+    else:
+        P, Q = fourier_amplitudes(r, p, q, k)
+        add_correction(out, k, w, P / k, Q / k, xs, zs, nu, h, base, geometry)
     return out
 
 
@@ -660,26 +669,24 @@ _LONG_NAMES = {
 def _tractions_of(solution: Any, body: str,
                   layer: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
     """Poisson's ratio and tractions (p, q) on the body asked for, refusing what is not
-    covered (a layer unless ``layer``: then a sphere on a smooth or bonded rigid base)."""
+    covered (a layer unless ``layer``: then one on a smooth or bonded rigid base)."""
     from .validate import InputError
 
     if body not in ("body", "indenter"):
         raise InputError("body", "'body' or 'indenter'", body)
     if layer and float(getattr(solution, "slab_ratio", 0.0)) > 0:
         base = getattr(solution, "base", "smooth")
-        if solution.geometry != "sphere" or base not in ("smooth", "bonded"):
-            raise InputError("slab_ratio", "a sphere on a smooth or bonded rigid base for "
-                             "the stresses in a layer", solution.slab_ratio,
-                             "subsurface stresses in a layer cover the sphere on a smooth "
-                             "or bonded rigid base only: not the "
-                             + (f"{base} base (a coated body)" if base not in
-                                ("smooth", "bonded") else "cylinder on a layer"))
+        if base not in ("smooth", "bonded"):
+            raise InputError("base", "smooth or bonded (a rigid base) for the stresses in "
+                             "a layer", base,
+                             "subsurface stresses in a layer cover a smooth or bonded rigid "
+                             f"base only: not the {base} base (a coated body)")
     elif float(getattr(solution, "slab_ratio", 0.0)) > 0:
         raise InputError("slab_ratio", "0 (a half-space or half-plane) for subsurface "
                          "stresses", solution.slab_ratio,
-                         "subsurface stresses cover the half-space and half-plane only: "
-                         f"slab_ratio must be 0, got {solution.slab_ratio!r} (a layer on a "
-                         "rigid base is not covered)")
+                         "the stresses of a history step cover the half-space and "
+                         f"half-plane only: slab_ratio must be 0, got {solution.slab_ratio!r}"
+                         " (a layer's field is given for a solve: subsurface_stresses)")
     p = np.asarray(solution.pressure, dtype=float)
     q = np.asarray(solution.shear, dtype=float)
     if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
@@ -718,9 +725,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     Parameters
     ----------
     solution : contactlib.result.Solution
-        A solved case (:func:`contactlib.solve`) on a half-space or half-plane, or a
-        sphere on a layer of thickness h = a / ``slab_ratio`` on a smooth or bonded rigid
-        base (:func:`layer_stresses`; the depths z > h, below
+        A solved case (:func:`contactlib.solve`) on a half-space or half-plane, or on a
+        layer of thickness h = a / ``slab_ratio`` on a smooth or bonded rigid base (:func:`layer_stresses`; the depths z > h, below
         the layer, are NaN; attributes ``layer_thickness`` and ``base``); its
         ``pressure`` and ``shear`` (p/p0, q/p0 on ``xi``, piecewise linear between the
         points) are the tractions. p0 is the Hertz peak pressure at the same contact
@@ -746,9 +752,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     Raises
     ------
     contactlib.validate.InputError
-        For a cylinder on a layer or a coated body (``base="elastic"``), a case with NaN
-        tractions, ``body="indenter"``
-        with a rigid indenter, or a bad grid.
+        For a coated body (``base="elastic"``), a case with NaN tractions,
+        ``body="indenter"`` with a rigid indenter, or a bad grid.
 
     Examples
     --------
@@ -774,7 +779,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
         within = zs <= h
         fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
         if np.any(within):
-            part = layer_stresses(xi, p, q, xs, zs[within], nu, h, solution.base)
+            part = layer_stresses(xi, p, q, xs, zs[within], nu, h, solution.base,
+                                  geometry=geometry)
             for name, v in part.items():
                 fields[name][within] = v
         layer = {"layer_thickness": h, "base": str(solution.base),
@@ -885,7 +891,8 @@ def check_subsurface_request(output: Any, slab_ratio: float) -> None:
     Raises
     ------
     contactlib.validate.InputError
-        Without an output file, or on a layer (``slab_ratio`` > 0: not covered).
+        Without an output file, or on a layer (``slab_ratio`` > 0: the command line does
+        not write a layer's field; :func:`subsurface_stresses` gives it).
     """
     from .validate import InputError
 
@@ -894,8 +901,9 @@ def check_subsurface_request(output: Any, slab_ratio: float) -> None:
                          "subsurface needs an output file (--output FILE.nc) for the field")
     if float(slab_ratio) > 0:
         raise InputError("slab_ratio", "0 with subsurface", slab_ratio,
-                         "slab_ratio must be 0 for subsurface stresses (a layer on a rigid "
-                         f"base is not covered), got {slab_ratio!r}")
+                         "slab_ratio must be 0 for subsurface stresses on the command line, "
+                         f"got {slab_ratio!r} (a layer's field: the library's "
+                         "contactlib.stresses.subsurface_stresses)")
 
 
 def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None) -> Any:

@@ -1,11 +1,12 @@
-"""Stresses inside an elastic layer on a rigid base under axisymmetric surface tractions.
+"""Stresses inside an elastic layer on a rigid base under surface tractions.
 
 The body is a layer 0 <= z <= h of Poisson's ratio nu on a rigid base at z = h, either
 **smooth** (u_z = 0 and sigma_rz = 0 there) or **bonded** (u_r = u_z = 0), loaded on z = 0
-by the pressure p(r) and the radial shear q(r) of :func:`contactlib.stresses.halfspace_stresses`
-(tabulated on r/a, piecewise linear, zero beyond the table). Lengths in units of a, stresses
-in the unit of the tractions, the signs of :mod:`contactlib.stresses` (tension positive, z
-into the body; sigma_zz = -p and sigma_rz = -q on the surface).
+by the pressure p and the shear q of :mod:`contactlib.stresses`: axisymmetric (sphere, q
+radial) or in plane strain (cylinder, p even and q odd in x), tabulated on r/a (x/a),
+piecewise linear, zero beyond the table. Lengths in units of a, stresses in the unit of
+the tractions, the signs of :mod:`contactlib.stresses` (tension positive, z into the body;
+sigma_zz = -p and sigma_rz = -q on the surface).
 
 Method
 ------
@@ -22,13 +23,17 @@ each S a sum over the four Papkovich-Neuber modes (2G u = grad(phi + z psi) -
 surface) and e^{-(t - y)}, (y - t) e^{-(t - y)} (decaying from the base), with
 coefficients linear in P and Q from a 4 x 4 system per k (:func:`correction_coefficients`).
 Every entry of that system is bounded (e^{-t}, t e^{-t}), so nothing overflows and the
-correction is computed directly, in relative precision. It decays like t^2 e^{-t} at
+correction is computed directly, in relative precision. The cylinder's correction is
+the same with cos(k x), sin(k x) for J0, J1, no B term, sigma_yy = nu (sigma_xx +
+sigma_zz) and the Fourier amplitudes of :func:`fourier_amplitudes` divided by k for P, Q
+(the modes and the 4 x 4 system do not change: the plane-strain transfer functions are
+the axisymmetric ones). It decays like t^2 e^{-t} at
 every depth of the layer: the k integral stops at ``T_CUTOFF / h`` and uses Gauss-Legendre
 panels (8 points) no wider than 2 pi/(1 + max r) nor 1/h. The surface transfer functions
 of this solution equal :func:`contactlib.kernels.layer_transfer.transfer` (tested).
 
 :func:`contactlib.stresses.layer_stresses` adds the correction (:func:`add_correction`)
-to the half-space's field; this module imports nothing of :mod:`contactlib.stresses`.
+to the half-space's (half-plane's) field; this module imports nothing of :mod:`contactlib.stresses`.
 """
 
 from __future__ import annotations
@@ -48,6 +53,7 @@ __all__ = [
     "add_correction",
     "check_layer",
     "correction_coefficients",
+    "fourier_amplitudes",
     "surface_transfer",
 ]
 
@@ -148,29 +154,74 @@ def surface_transfer(t: Any, nu: float, base: str) -> tuple[np.ndarray, np.ndarr
     return w[:, 0] / c, -w[:, 1] / c, u[:, 1] / c
 
 
+def fourier_amplitudes(x: np.ndarray, pressure: np.ndarray, shear: np.ndarray,
+                       k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(2/pi) int_0^inf p cos(k x) dx and (2/pi) int_0^inf q sin(k x) dx, exactly.
+
+    Parameters
+    ----------
+    x, pressure, shear : ndarray, shape (m,)
+        Increasing x/a >= 0 and p, q there, piecewise linear between, zero beyond.
+    k : ndarray
+        Wavenumbers (1/a), > 0.
+
+    Returns
+    -------
+    ndarray, ndarray
+        The surface amplitudes of the cylinder (p even, q odd in x): p(x) = int of the
+        first times cos(k x) dk, q(x) = int of the second times sin(k x) dk.
+    """
+    s = 0.5 * (x[:-1] + x[1:])
+    d = 0.5 * np.diff(x)
+    ps, mp = 0.5 * (pressure[:-1] + pressure[1:]), np.diff(pressure) / (2 * d)
+    qs, mq = 0.5 * (shear[:-1] + shear[1:]), np.diff(shear) / (2 * d)
+    step = max(1, CHUNK // max(s.size, 1))
+    P, Q = np.empty(k.size), np.empty(k.size)
+    for i in range(0, k.size, step):
+        kc = k[i:i + step, None]
+        y = kc * d
+        sinc = 2 * d * np.sinc(y / np.pi)  # int_{-d}^{d} cos(k u) du
+        ys = np.where(y < 0.1, 0.1, y)
+        g = np.where(y < 0.1, y / 3 - y**3 / 30 + y**5 / 840 - y**7 / 45360,
+                     (np.sin(ys) - ys * np.cos(ys)) / ys**2)
+        usin = 2 * d * d * g  # int_{-d}^{d} u sin(k u) du
+        c, sn = np.cos(kc * s), np.sin(kc * s)
+        P[i:i + step] = (c * sinc) @ ps - (sn * usin) @ mp
+        Q[i:i + step] = (sn * sinc) @ qs + (c * usin) @ mq
+    return 2.0 / math.pi * P, 2.0 / math.pi * Q
+
+
 def add_correction(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np.ndarray,
                    Q: np.ndarray, r: np.ndarray, z: np.ndarray, nu: float, thickness: float,
-                   base: str) -> None:
-    """Add the layer's correction to the half-space field ``out`` (arrays (len(z), len(r))).
+                   base: str, geometry: str = "sphere") -> None:
+    """Add the layer's correction to the half-space (half-plane) field ``out``.
 
     Parameters
     ----------
     out : dict of str to ndarray
-        ``sigma_rr``, ``sigma_tt``, ``sigma_zz``, ``sigma_rz`` of the half-space on the
-        grid (z, r), in the unit of the tractions; updated in place.
+        The half-space's ``sigma_rr``, ``sigma_tt``, ``sigma_zz``, ``sigma_rz`` (sphere)
+        or the half-plane's ``sigma_xx``, ``sigma_yy``, ``sigma_zz``, ``sigma_xz``
+        (cylinder) on the grid (len(z), len(r)), in the unit of the tractions; updated in
+        place.
     k, w : ndarray
         Nodes (1/a) and weights of the k integral on [0, T_CUTOFF/h]: Gauss-Legendre
         panels no wider than 2 pi/(1 + max r) nor PANEL_T/h
         (:func:`contactlib.stresses.layer_stresses`).
     P, Q : ndarray
-        int p J0(k r) r dr and int q J1(k r) r dr at ``k`` (units of the tractions times
-        a^2).
+        Sphere: int p J0(k r) r dr and int q J1(k r) r dr at ``k``. Cylinder:
+        :func:`fourier_amplitudes` divided by k.
     r, z : ndarray
-        Radii r/a >= 0 and depths 0 <= z/a <= h/a.
+        r/a >= 0 (x/a, any sign, for the cylinder) and depths 0 <= z/a <= h/a.
     nu, thickness, base
         As for :func:`check_layer`.
+    geometry : {"sphere", "cylinder"}
+        Hankel (J0, J1) or Fourier (cos, sin) kernels; the cylinder's sigma_yy is
+        nu (sigma_xx + sigma_zz).
     """
     h = float(thickness)
+    sphere = geometry == "sphere"
+    names = (("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz") if sphere
+             else ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xz"))
     step = max(1, CHUNK // max(r.size, 4 * z.size, 1))
     for i in range(0, k.size, step):
         kc, wc = k[i:i + step], w[i:i + step]
@@ -180,12 +231,19 @@ def add_correction(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: 
         prof = {name: np.einsum("nzj,nj->nz", m[name], amp) for name in
                 ("zz", "rz", "rr", "B", "tt")}
         x_ = np.outer(r, kc)
-        j0 = sp.j0(x_) * wc
-        j1 = sp.j1(x_)
-        j1x = np.where(x_ > 0, j1 / np.where(x_ > 0, x_, 1.0), 0.5) * wc
-        j1 = j1 * wc
-        bracket = j1x @ prof["B"]
-        out["sigma_zz"] += (j0 @ prof["zz"]).T
-        out["sigma_rz"] += (j1 @ prof["rz"]).T
-        out["sigma_rr"] += (j0 @ prof["rr"] + bracket).T
-        out["sigma_tt"] += (j0 @ prof["tt"] - bracket).T
+        if sphere:
+            j0 = sp.j0(x_) * wc
+            j1 = sp.j1(x_)
+            j1x = np.where(x_ > 0, j1 / np.where(x_ > 0, x_, 1.0), 0.5) * wc
+            j1 = j1 * wc
+            bracket = j1x @ prof["B"]
+        else:  # plane strain: no hoop term
+            j0, j1 = np.cos(x_) * wc, np.sin(x_) * wc
+            bracket = 0.0
+        out[names[2]] += (j0 @ prof["zz"]).T
+        out[names[3]] += (j1 @ prof["rz"]).T
+        out[names[0]] += (j0 @ prof["rr"] + bracket).T
+        if sphere:
+            out[names[1]] += (j0 @ prof["tt"] - bracket).T
+    if not sphere:
+        out["sigma_yy"] = nu * (out["sigma_xx"] + out["sigma_zz"])

@@ -397,8 +397,9 @@ def test_measures_from_components():
 
 # ----------------------------------------------------------------------------- refusals
 def test_layers_and_rigid_indenters_are_refused():
-    layer = solve("cylinder", NU, stick_ratio=0.0, n=32, slab_ratio=0.5, energy=False)
-    with pytest.raises(InputError, match="not the cylinder on a layer"):
+    layer = solve("sphere", NU, stick_ratio=0.0, n=32, slab_ratio=0.5, energy=False,
+                  base="elastic", substrate_modulus=2.0, substrate_nu=NU)
+    with pytest.raises(InputError, match="coated body"):
         subsurface_stresses(layer, [0.0], [0.5])
     rigid = solve("sphere", NU, stick_ratio=0.0, n=32, energy=False)
     with pytest.raises(InputError, match="rigid indenter"):

@@ -16,11 +16,13 @@ import math
 import numpy as np
 import pytest
 
-from contactlib import solve
+from contactlib import history, solve
 from contactlib.kernels.layer_transfer import transfer
 from contactlib.stresses import (
     field_error_estimate,
+    halfplane_stresses,
     halfspace_stresses,
+    history_stresses,
     layer_stresses,
     subsurface_stresses,
 )
@@ -181,7 +183,86 @@ def test_layer_routing_and_refusals():
         layer_stresses(XI, HERTZ, ZERO, [0.0], [0.6], NU, 0.5, "smooth")
     with pytest.raises(InputError, match="coated body"):
         layer_stresses(XI, HERTZ, ZERO, [0.0], [0.1], NU, 0.5, "elastic")
-    coated = solve("sphere", NU, stick_ratio=0.0, n=32, slab_ratio=2.0, energy=False,
+    coated = solve("cylinder", NU, stick_ratio=0.0, n=32, slab_ratio=2.0, energy=False,
                    base="elastic", substrate_modulus=2.0, substrate_nu=0.3)
     with pytest.raises(InputError, match="coated body"):
         subsurface_stresses(coated, [0.0], [0.1])
+    steps = history("sphere", NU, 0.3, [0, 1], steps=4, n=16, slab_ratio=0.5)
+    with pytest.raises(InputError, match="history step cover the half-space"):
+        history_stresses(steps, -1, [0.0], [0.1])
+
+
+# ----------------------------------------------------------------------------- cylinder
+@pytest.mark.parametrize("base", ["smooth", "bonded"])
+def test_cylinder_thick_layer_is_the_half_plane(base):
+    """In plane strain the layer's effect falls like a/h (the half-plane's stress at depth
+    h is P/(pi h)): 7.7e-3 p0 (smooth), 6.5e-3 (bonded) at h = 100 a."""
+    x, z = np.array([-1.5, -0.5, 0.0, 0.5, 1.5]), np.array([0.0, 0.25, 0.5, 1.0, 2.0])
+    half = halfplane_stresses(XI, HERTZ, ZERO, x, z, NU)
+    dev = {}
+    for h in (100.0, 1000.0):
+        f = layer_stresses(XI, HERTZ, ZERO, x, z, NU, h, base, geometry="cylinder")
+        dev[h] = max(np.abs(f[c] - half[c]).max() for c in f)
+    assert dev[1000.0] < 1e-3
+    assert dev[100.0] / dev[1000.0] == pytest.approx(10.0, rel=0.01)
+
+
+@pytest.mark.parametrize("base", ["smooth", "bonded"])
+def test_cylinder_surface_base_and_force(base):
+    h, x = 1.0, np.linspace(-3.0, 3.0, 13)
+    z = np.array([0.0, 0.5, h])
+    f = layer_stresses(XI, HERTZ, 0.2 * HERTZ, x, z, NU, h, base, geometry="cylinder")
+    assert np.abs(f["sigma_zz"][0] + hertz_at(x)).max() < 1e-12
+    assert np.abs(f["sigma_xz"][0] + 0.2 * np.sign(x) * hertz_at(x)).max() < 1e-12
+    assert np.abs(f["sigma_yy"] - NU * (f["sigma_xx"] + f["sigma_zz"])).max() < 1e-14
+    if base == "smooth":
+        assert np.abs(f["sigma_xz"][-1]).max() < 1e-12
+    else:  # u = 0 on z = h: eps_xx = 0, so sigma_xx = nu/(1 - nu) sigma_zz
+        assert np.abs(f["sigma_xx"][-1] - NU / (1 - NU) * f["sigma_zz"][-1]).max() < 1e-12
+    g = layer_stresses(XI, HERTZ, 0.2 * HERTZ, x, z, NU, h, base, geometry="cylinder",
+                       refine=2)
+    assert max(np.abs(f[c] - g[c]).max() for c in f) < 1e-9
+    # 2 int_0^inf sigma_zz dx = -int p dx over the line (shear odd: no net part)
+    r, w = _radial_rule(30.0, 120)
+    f = layer_stresses(XI, HERTZ, 0.3 * HERTZ, r, np.array([0.3, 0.7, 1.0]), NU, 1.0, base,
+                       geometry="cylinder")
+    line_load = np.sum(np.diff(XI) * (HERTZ[:-1] + HERTZ[1:]))  # exact, both halves
+    assert np.abs(2.0 * f["sigma_zz"] @ w + line_load).max() < 1e-9  # measured 2e-11
+
+
+def test_cylinder_thin_layer_limits():
+    """Bonded: sigma_zz = -p and sigma_xx = nu/(1 - nu) sigma_zz (no lateral strain).
+    Smooth: sigma_zz = -p and sigma_xx = 0 (a plate free to stretch in x, held in y).
+    Below the surface (z = h/2, h), r <= 0.5 a; departures fall like (h/a)^2."""
+    x = np.array([0.0, 0.3, 0.5])
+    err = {"bonded": {}, "smooth": {}}
+    for h in (0.05, 0.02):
+        z = np.array([0.5 * h, h])
+        b = layer_stresses(XI, HERTZ, ZERO, x, z, NU, h, "bonded", geometry="cylinder")
+        s = layer_stresses(XI, HERTZ, ZERO, x, z, NU, h, "smooth", geometry="cylinder")
+        err["bonded"][h] = max(np.abs(b["sigma_zz"] + hertz_at(x)).max(),
+                               np.abs(b["sigma_xx"] - NU / (1 - NU) * b["sigma_zz"]).max())
+        err["smooth"][h] = max(np.abs(s["sigma_zz"] + hertz_at(x)).max(),
+                               np.abs(s["sigma_xx"]).max())
+    for e in err.values():
+        assert e[0.02] < 3e-4  # measured 2.2e-4 (bonded), 2.1e-4 (smooth)
+        assert e[0.05] / e[0.02] > 0.8 * (0.05 / 0.02) ** 2
+
+
+def test_cylinder_solved_layer_converges():
+    """A solved cylinder on a bonded layer (a/h = 1, c/a = 0.5): n = 128 against n = 512;
+    the estimate (the change from n = 64) bounds the grid's largest error of each
+    component and covers the error at the maxima of von Mises and Tresca."""
+    x, z = np.linspace(-1.5, 1.5, 31), np.linspace(0.0, 1.0, 11)
+    kw = {"stick_ratio": 0.5, "slab_ratio": 1.0, "base": "bonded", "energy": False}
+    sol = solve("cylinder", NU, n=128, **kw)
+    fine = subsurface_stresses(sol, x, z)
+    ref = subsurface_stresses(solve("cylinder", NU, n=512, **kw), x, z)
+    est = field_error_estimate(sol, x, z)
+    for name in ("sigma_zz", "sigma_xx", "sigma_xz", "von_mises", "tresca"):
+        true = np.abs(fine[name] - ref[name]).values
+        assert true.max() < 2e-3  # measured 1.4e-3 (sigma_xx)
+        assert est[name].values.max() >= true.max()
+    for name in ("von_mises", "tresca"):
+        at = np.unravel_index(int(np.argmax(fine[name].values)), fine[name].shape)
+        assert est[name].values[at] >= abs(fine[name] - ref[name]).values[at]

@@ -332,8 +332,8 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
     """Raise ValueError (naming the argument) on input :func:`fretting` refuses; no numerics.
 
     The sphere needs ``nu`` (and the indenter's material): a tangential load on a
-    coupled pair (Dundurs beta != 0) is solved for ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P``
-    and ``n <= SPHERE_COUPLED_N_MAX`` only (``validate.SolverLimit`` otherwise).
+    coupled pair (Dundurs beta != 0) is solved for ``|beta| <= SPHERE_COUPLED_BETA_MAX``,
+    ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and ``n <= SPHERE_COUPLED_N_MAX`` only (``validate.SolverLimit`` otherwise).
     Without ``nu`` the sphere is refused.
     """
     load = _path("load_path", load_path, None)
@@ -371,8 +371,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     ----------
     geometry : {"cylinder", "sphere"}
         The cylinder (plane strain) on a half-plane, or the sphere on a half-space
-        (:func:`sphere_fretting`; a coupled pair, Dundurs beta != 0, under
-        ``|Q| <= 0.5 k P`` with ``n <= 32`` only).
+        (:func:`sphere_fretting`; a coupled pair, Dundurs beta != 0, with
+        ``|beta| <= 0.3`` under ``|Q| <= 0.5 k P`` with ``n <= 32`` only).
     nu : float
         Poisson's ratio of the body, in (-1, 0.5].
     friction : float
@@ -520,31 +520,37 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
 
 
 # limit: |Q|/(k P) of a coupled pair's tangential load, verified converged and checked in
-# tests/test_fretting_sphere_coupled.py (rigid sphere on nu = 0.3 and 0 at 0.5)
+# tests/test_fretting_sphere_coupled.py (beta = +-0.286 at 0.5)
 SPHERE_COUPLED_FORCE_MAX = 0.5
 # limit: cells a side for a coupled pair, verified in tests/test_fretting_sphere_coupled.py
 # (n = 64 took over 8 minutes a cycle and is not verified)
 SPHERE_COUPLED_N_MAX = 32
+# limit: |beta| of a coupled pair's tangential load, verified in
+# tests/test_fretting_sphere_coupled.py at +-0.286 (at beta = 0.5, n = 32, inner solves failed)
+SPHERE_COUPLED_BETA_MAX = 0.3
 SPHERE_COUPLED_REFUSAL = (
     "fretting: a tangential load on the sphere is solved for Dundurs beta = 0 only, or for a "
-    "coupled pair (here beta = {beta:.4g}) with |Q| <= {fmax:g} k P and n <= {nmax}: got "
-    "|Q|/(k P) = {x:.4g} and n = {n}, beyond the range whose coupled steps were verified to "
-    "converge. Keep |Q| <= {fmax:g} k P and pass n <= {nmax}, or use the cylinder, or a "
-    "beta = 0 pair")
+    "coupled pair with |beta| <= {bmax:g}, |Q| <= {fmax:g} k P and n <= {nmax}: got beta = "
+    "{beta:.4g}, |Q|/(k P) = {x:.4g} and n = {n}, beyond the range whose coupled steps were "
+    "verified to converge. Keep |Q| <= {fmax:g} k P and pass n <= {nmax}, or use the "
+    "cylinder, or a pair with |beta| <= {bmax:g}")
 
 
 def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int) -> float:
     """The pair's Dundurs beta; SolverLimit for a coupled tangential load beyond the
-    verified range (|Q|/(k P) <= SPHERE_COUPLED_FORCE_MAX, n <= SPHERE_COUPLED_N_MAX)."""
+    verified range (|beta| <= SPHERE_COUPLED_BETA_MAX, |Q|/(k P) <= SPHERE_COUPLED_FORCE_MAX,
+    n <= SPHERE_COUPLED_N_MAX)."""
     beta = float(model.beta) if not model.decoupled else 0.0
     if beta == 0.0 or not np.any(tang != 0.0):
         return beta
     with np.errstate(invalid="ignore", divide="ignore"):
         x = float(np.max(np.where(load > 0, np.abs(tang) / np.where(load > 0, load, 1.0),
                                   0.0)))
-    if x > SPHERE_COUPLED_FORCE_MAX * (1.0 + 1e-12) or n > SPHERE_COUPLED_N_MAX:
+    if x > SPHERE_COUPLED_FORCE_MAX * (1.0 + 1e-12) or n > SPHERE_COUPLED_N_MAX \
+            or abs(beta) > SPHERE_COUPLED_BETA_MAX:
         raise validate.SolverLimit(SPHERE_COUPLED_REFUSAL.format(
-            beta=beta, fmax=SPHERE_COUPLED_FORCE_MAX, nmax=SPHERE_COUPLED_N_MAX, x=x, n=n))
+            beta=beta, bmax=SPHERE_COUPLED_BETA_MAX, fmax=SPHERE_COUPLED_FORCE_MAX,
+            nmax=SPHERE_COUPLED_N_MAX, x=x, n=n))
     return beta
 
 
@@ -600,7 +606,8 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     ----------
     model : Contact
         A sphere on a half-space; a tangential load on a coupled pair (beta != 0) needs
-        ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and ``n <= SPHERE_COUPLED_N_MAX``.
+        ``|beta| <= SPHERE_COUPLED_BETA_MAX``, ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and
+        ``n <= SPHERE_COUPLED_N_MAX``.
     k : float
         Coulomb coefficient.
     load, tang : ndarray

@@ -83,6 +83,24 @@ def test_tiny_beta_is_continuous():
     assert 3.0 < d[1, 2] / d[0, 2] < 5.0
 
 
+def test_negative_beta_is_the_mirror():
+    """A soft indenter (E1/E2 = 1e-3, nu = 0.3) on nu = 0.3: beta = -0.285, the rigid
+    sphere's (0.286) with the sign turned. The cycle's stick ratio, shift and work are the
+    rigid sphere's to the beta^2 term's share of the difference in |beta| (measured at
+    n = 16: c/a equal, shift 2.2e-4 and work 9.1e-4 relative)."""
+    out = []
+    for model in (contact("sphere", 0.3), contact("sphere", 0.3, indenter_modulus=1e-3,
+                                                  indenter_nu=0.3)):
+        ops, raw = _run(model, 16, 4)
+        assert raw.converged.all()
+        i = 2 * 4
+        out.append((ops.beta, raw.stick_radius[i] / raw.contact_radius[i], raw.shift[i, 0],
+                    raw.dissipation[-1] - raw.dissipation[i]))
+    (b1, *m1), (b2, *m2) = out
+    assert b1 > 0.28 and -0.29 < b2 < -0.28
+    assert np.all(np.abs(np.array(m2) / np.array(m1) - 1) < 2e-3)
+
+
 # ----------------------------------------------------------------------------- energy
 @pytest.mark.parametrize("steps,bound", [(4, 4e-2), pytest.param(8, 1e-2,
                                                              marks=pytest.mark.slow)])
@@ -133,14 +151,16 @@ def test_compliance_against_mindlin():
 # ----------------------------------------------------------------------------- API
 def test_api_runs_within_the_limit_and_refuses_beyond():
     """``fretting("sphere", 0.3, ...)`` solves a cycle at |Q| <= 0.5 k P with its estimates;
-    beyond the verified range one line (validate.SolverLimit) says what to do."""
+    beyond the verified range (|Q| > 0.5 k P, n > 32, |beta| > 0.3) one line
+    (validate.SolverLimit) says what to do."""
     r = fretting("sphere", 0.3, K, [0, 1, 1, 1, 1], [0, 0, X, -X, X], 4, n=16)
     assert r.converged.all() and r.beta == pytest.approx(2 / 7, rel=1e-12)
     assert np.all(np.isfinite(r.stick_ratio_error[1:])) and r.cycles[0][:2] == (2, 4)
     assert r.cycles[0][2] > 0 and np.isfinite(r.cycles[0][3])
-    for tang, n in (([0, 0, 0.6], 16), ([0, 0, 0.5], fa.SPHERE_COUPLED_N_MAX + 4)):
+    for nu, tang, n in ((0.3, [0, 0, 0.6], 16), (0.3, [0, 0, 0.5], fa.SPHERE_COUPLED_N_MAX + 4),
+                        (0.0, [0, 0, 0.3], 16)):  # rigid on nu = 0: beta = 0.5
         with pytest.raises(validate.SolverLimit) as exc:
-            fretting("sphere", 0.3, K, [0, 1, 1], tang, 4, n=n)
+            fretting("sphere", nu, K, [0, 1, 1], tang, 4, n=n)
         msg = str(exc.value)
         assert "\n" not in msg and "beta" in msg and "cylinder" in msg and "0.5 k P" in msg
 

@@ -689,6 +689,10 @@ def _tractions_of(solution: Any, body: str,
                          " (a layer's field is given for a solve: subsurface_stresses)")
     p = np.asarray(solution.pressure, dtype=float)
     q = np.asarray(solution.shear, dtype=float)
+    if not bool(getattr(solution, "converged", True)):  # its tractions are no data
+        raise InputError("solution", "a converged case", "not converged",
+                         "the solution did not converge (its message says why): no "
+                         "stresses from it")
     if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
         raise InputError("solution", "a converged case with finite tractions", "NaN tractions",
                          "the solution's tractions are NaN (a case that did not converge): "
@@ -1037,6 +1041,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     class _Step:  # the step's tractions in the shape _tractions_of reads
         pressure = np.asarray(result.pressure)[step]
         shear = np.asarray(result.shear)[step]
+        converged = bool(np.asarray(result.converged)[step])
 
     for name in ("slab_ratio", "nu", "indenter_modulus_ratio", "indenter_poisson_ratio"):
         setattr(_Step, name, getattr(result, name, math.inf if "modulus" in name else 0.0))

@@ -622,3 +622,16 @@ def test_integral_of_j0_in_every_supported_scipy():
     with mpmath.workdps(40):
         want = np.array([float(t * mpmath.hyp1f2(0.5, 1, 1.5, -t * t / 4)) for t in x])
     assert np.max(np.abs(got - want)) < 2e-11  # measured 9.8e-12 (itj0y0 at 14.9)
+
+
+def test_a_case_that_did_not_converge_gives_no_field():
+    """Its tractions (the last iterate, finite here) are no data: refused in one line."""
+    from contactlib import solve
+    from contactlib.stresses import subsurface_stresses
+    from contactlib.validate import InputError
+
+    sol = solve("cylinder", 0.3, stick_ratio=0.5, n=128, slab_ratio=1.0, base="smooth",
+                energy=False)
+    assert not sol.converged and np.all(np.isfinite(sol.pressure))  # measured
+    with pytest.raises(InputError, match="did not converge"):
+        subsurface_stresses(sol, [0.0, 0.5], [0.2, 0.4])

@@ -1357,7 +1357,8 @@ def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType,
     try:
         if subsurface:  # before any numerics: refuses a layer and a missing --output
             from contactlib.stresses import check_subsurface_request
-            check_subsurface_request(output, kwargs.get("slab_ratio", 0.0))
+            check_subsurface_request(output, kwargs.get("slab_ratio", 0.0),
+                                     kwargs.get("base", "smooth"))
         with _ticker(sys.stderr, "solve"):
             sol = api.solve(**kwargs)
     except validate.SolverLimit as exc:  # valid input beyond the method: status 3

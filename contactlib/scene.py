@@ -391,11 +391,8 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
     grid = bad.check("subsurface_grid", validate.subsurface_grid, raw.get("subsurface_grid", {}))
     if "subsurface" in outputs:
         if base == validate.COATED_BASE:
-            bad.add("outputs", "subsurface covers the half-space and half-plane only, not a "
-                               "coated body (base 'elastic')")
-        elif isinstance(slab, float) and slab > 0:
-            bad.add("outputs", "subsurface covers the half-space and half-plane only (slab_ratio "
-                               f"0), got slab_ratio {slab!r}")
+            bad.add("outputs", "subsurface covers the half-space, the half-plane and a layer "
+                               "on a rigid base, not a coated body (base 'elastic')")
     elif "subsurface_grid" in raw:
         bad.add("subsurface_grid", "given without subsurface in outputs")
     ind = _scene_indenter(raw, nu, bad)

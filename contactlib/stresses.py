@@ -57,7 +57,7 @@ import scipy.special as sp
 __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses",
            "stress_field", "principal_stresses", "von_mises", "tresca", "hydrostatic",
            "derived_measures", "subsurface_stresses", "field_maximum",
-           "surface_radial_stress", "default_grid", "check_subsurface_request",
+           "surface_radial_stress", "default_grid", "check_subsurface_request", "body_field",
            "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
            "field_error_estimate", "layer_stresses", "COMPONENTS", "XI_SURFACE", "PANEL",
            "CHUNK", "DEPTH_CUTOFF", "TractionPieces", "xi_nodes", "check_tractions",
@@ -722,6 +722,24 @@ def traction_samples(solution: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]
             np.asarray(solution.shear, dtype=float))
 
 
+def body_field(geometry: str, nu: float, xi: Any, p: Any, q: Any, xs: np.ndarray,
+               zs: np.ndarray, slab_ratio: float = 0.0, base: str = "smooth"
+               ) -> dict[str, np.ndarray]:
+    """The stress components in the body: the half-space's or half-plane's
+    (:func:`stress_field`), or, at ``slab_ratio`` > 0, a layer's on its rigid base
+    (:func:`layer_stresses`; NaN at the depths z > h = 1/slab_ratio, below the layer)."""
+    if not slab_ratio > 0:
+        return stress_field(geometry, nu, xi, p, q, xs, zs)
+    h = 1.0 / float(slab_ratio)
+    within = zs <= h
+    fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
+    if np.any(within):
+        part = layer_stresses(xi, p, q, xs, zs[within], nu, h, base, geometry=geometry)
+        for name, v in part.items():
+            fields[name][within] = v
+    return fields
+
+
 def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
                         measures: bool = True) -> Any:
     """The stress field under a solved case, as an xarray Dataset in units of p0.
@@ -776,21 +794,12 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     q = q if body == "body" else -q
     xs, zs = check_grid(x, z)
     geometry = solution.geometry
-    slab = float(getattr(solution, "slab_ratio", 0.0))
+    slab = float(getattr(solution, "slab_ratio", 0.0)) if body == "body" else 0.0
+    fields = body_field(geometry, nu, xi, p, q, xs, zs, slab, getattr(solution, "base", ""))
     layer = {}
-    if slab > 0 and body == "body":  # a layer h = a/slab_ratio on a rigid base
-        h = 1.0 / slab
-        within = zs <= h
-        fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
-        if np.any(within):
-            part = layer_stresses(xi, p, q, xs, zs[within], nu, h, solution.base,
-                                  geometry=geometry)
-            for name, v in part.items():
-                fields[name][within] = v
-        layer = {"layer_thickness": h, "base": str(solution.base),
+    if slab > 0:
+        layer = {"layer_thickness": 1.0 / slab, "base": str(solution.base),
                  "beyond_layer": "NaN at depths z > h (below the layer, the rigid base)"}
-    else:
-        fields = stress_field(geometry, nu, xi, p, q, xs, zs)
     if measures:
         fields.update(derived_measures(geometry, fields))
     coords = {"z": ("z", zs, {"units": "1", "long_name": "depth / a, positive into the "
@@ -889,25 +898,25 @@ def default_grid() -> tuple[np.ndarray, np.ndarray]:
     return np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
 
 
-def check_subsurface_request(output: Any, slab_ratio: float) -> None:
+def check_subsurface_request(output: Any, slab_ratio: float, base: str = "smooth") -> None:
     """Refuse, before any solving, a subsurface request that cannot be met.
 
     Raises
     ------
     contactlib.validate.InputError
-        Without an output file, or on a layer (``slab_ratio`` > 0: the command line does
-        not write a layer's field; :func:`subsurface_stresses` gives it).
+        Without an output file, or on a coated body (a layer on an elastic substrate,
+        ``base`` "elastic": its field is not covered; a layer on a rigid base is).
     """
-    from .validate import InputError
+    from .validate import COATED_BASE, InputError
 
     if output is None:
         raise InputError("subsurface", "given with an output file", True,
                          "subsurface needs an output file (--output FILE.nc) for the field")
-    if float(slab_ratio) > 0:
-        raise InputError("slab_ratio", "0 with subsurface", slab_ratio,
-                         "slab_ratio must be 0 for subsurface stresses on the command line, "
-                         f"got {slab_ratio!r} (a layer's field: the library's "
-                         "contactlib.stresses.subsurface_stresses)")
+    if float(slab_ratio) > 0 and base == COATED_BASE:
+        raise InputError("base", "smooth or bonded with subsurface", base,
+                         "subsurface stresses cover the half-space, the half-plane and a "
+                         "layer on a rigid base (smooth or bonded), not a coated body (base "
+                         "elastic)")
 
 
 def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None) -> Any:
@@ -1127,7 +1136,9 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         if "nodes" in prof:  # the solve's own tractions, as the API's field (traction_samples)
             at, p, q = prof["nodes"], prof["nodal_pressure"], prof["nodal_shear"]
         for prefix, (nu, sign) in bodies.items():
-            fields = stress_field(geometry, nu, at, p, sign * q, xs, zs)
+            slab = float(getattr(scene, "slab_ratio", 0.0)) if not prefix else 0.0
+            fields = body_field(geometry, nu, at, p, sign * q, xs, zs, slab,
+                                getattr(scene, "base", "smooth"))
             fields.update(derived_measures(geometry, fields))
             for name in names:
                 stack[prefix + name][i] = fields[name]

@@ -518,7 +518,8 @@ def test_scene_subsurface_holds_the_indenter_field_too():
 
 
 @pytest.mark.parametrize("extra,key", [
-    ({"outputs": ["subsurface"], "slab_ratio": 0.5}, "outputs"),
+    ({"outputs": ["subsurface"], "slab_ratio": 0.5, "base": "elastic",
+      "substrate_modulus": 10.0}, "outputs"),
     ({"subsurface_grid": {"x": [0, 1, 11]}}, "subsurface_grid"),
     ({"outputs": ["subsurface"], "subsurface_grid": {"z": [-1, 1, 11]}}, "subsurface_grid"),
     ({"outputs": ["subsurface"], "subsurface_grid": {"x": [0, 1, 1]}}, "subsurface_grid"),
@@ -597,14 +598,16 @@ def test_cli_writes_both_fields_for_an_elastic_indenter(tmp_path):
                            atol=1e-12)
 
 
-def test_cli_refuses_a_layer_before_solving(tmp_path):
+def test_cli_refuses_a_coated_body_before_solving(tmp_path):
     out = tmp_path / "x.nc"
     run = subprocess.run([sys.executable, "-m", "contactlib", "solve", "--geometry",
                           "sphere", "--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio",
-                          "1", "--subsurface", "--output", str(out)],
+                          "1", "--base", "elastic", "--substrate-modulus", "10",
+                          "--subsurface", "--output", str(out)],
                          capture_output=True, text=True, env=ENV, cwd=REPO)
     assert run.returncode == 2
-    assert run.stderr.startswith("contactlib: error: --slab-ratio must be 0")
+    assert run.stderr.startswith("contactlib: error: subsurface stresses cover")
+    assert "not a coated body" in run.stderr and run.stderr.count("\n") == 1
     assert not out.exists()
 
 
@@ -635,3 +638,30 @@ def test_a_case_that_did_not_converge_gives_no_field():
     assert not sol.converged and np.all(np.isfinite(sol.pressure))  # measured
     with pytest.raises(InputError, match="did not converge"):
         subsurface_stresses(sol, [0.0, 0.5], [0.2, 0.4])
+
+
+def test_scene_subsurface_on_a_layer_is_the_api_field(tmp_path):
+    """A layer on a rigid base: the scene's field is the API's (NaN below the layer), and
+    the command line writes it."""
+    from contactlib import cli, io, pipeline
+
+    scene = _scene(outputs=["k_curve", "subsurface"], slab_ratio=1.0, base="bonded",
+                   subsurface_grid={"x": [0.0, 1.5, 7], "z": [0.0, 1.5, 7]})
+    parts = {p: pipeline.influence(scene.influence_spec(), p) for p in scene.parts}
+    records = pipeline.solve(scene, parts["normal"], parts["shear"])
+    ds = pipeline.assemble(scene, records, checks=pipeline.check(records))
+    ref = subsurface_stresses(solve("sphere", NU, stick_ratio=0.5, n=64, slab_ratio=1.0,
+                                    base="bonded", energy=False),
+                              np.linspace(0.0, 1.5, 7), np.linspace(0.0, 1.5, 7))
+    for name in ("von_mises", "sigma_zz", "sigma_rz"):
+        got, want = ds[name].values[1], ref[name].values
+        assert np.array_equal(np.isnan(got), np.isnan(want)), name
+        assert np.nanmax(np.abs(got - want)) < 1e-12, name
+    assert np.all(np.isnan(ds.von_mises.values[1][np.linspace(0, 1.5, 7) > 1.0]))  # z > h
+    out = tmp_path / "layer.nc"
+    code = cli.main(["solve", "--geometry", "sphere", "--nu", str(NU), "--stick-ratio", "0.5",
+                     "--slab-ratio", "1", "--base", "bonded", "--n", "64", "--subsurface",
+                     "--output", str(out)])
+    assert code == 0
+    field = io.read_dataset(out)
+    assert field.attrs["base"] == "bonded" and np.isfinite(field.von_mises.values).any()

@@ -580,13 +580,22 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
     mag = np.hypot(q_start[0], q_start[1])
     e0 = np.where(mag > 0, q_start / np.where(mag > 0, mag, 1.0), 0.0)
     total = 0
-    state = {"q": q_start, "stick": stick_start, "e": e0}
+    state = {"q": q_start, "stick": stick_start, "e": e0, "patient": False}
 
     def evaluate(sx: float):
+        # as solve_shifted; once a loop needed the patient retry, the step's later shifts
+        # start patient (at n = 64 each first loop failed after _MAX_SETS iterations)
         nonlocal total
-        q, v, st, ok, it = solve_shifted(ops, k, p, u_p, np.array([sx, 0.0]), v_old,
-                                         state["q"], state["stick"], state["e"])
-        total += it
+        args = (ops, k, p, u_p, np.array([sx, 0.0]), v_old, state["q"], state["stick"],
+                state["e"])
+        ok = False
+        if not state["patient"]:
+            q, v, st, ok, it = _active_set(*args, 0.0)
+            total += it
+        if not ok:
+            q, v, st, ok, it = _active_set(*args, _PATIENT_TURN)
+            total += it
+            state["patient"] = True
         return float(q[0].sum()) * h2, (q, v, st, ok)
 
     s0 = float(shift_start)

@@ -523,7 +523,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
 # tests/test_fretting_sphere_coupled.py (beta = +-0.286 at 0.5)
 SPHERE_COUPLED_FORCE_MAX = 0.5
 # limit: cells a side for a coupled pair, verified in tests/test_fretting_sphere_coupled.py
-# (n = 64 took over 8 minutes a cycle and is not verified)
+# (at n = 64 the step to Q = 0.25 k P was flagged: neither active-set rule converged)
 SPHERE_COUPLED_N_MAX = 32
 # limit: |beta| of a coupled pair's tangential load, verified in
 # tests/test_fretting_sphere_coupled.py at +-0.286 (at beta = 0.5, n = 32, inner solves failed)

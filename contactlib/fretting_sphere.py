@@ -59,7 +59,9 @@ Conditions at the cell centres
   the others take the direction opposite to the slip the other cells and the
   shift impose on them, the fixed point accelerated by Anderson mixing. The
   loop ends when nothing changes and the directions agree to
-  ``_DIRECTION_TOL``. The force is met by a safeguarded secant method on
+  ``_DIRECTION_TOL``; a loop that does not is run again with a patient rule
+  (no cell sticks while the directions still turn by more than
+  ``_PATIENT_TURN``), which the coupled pairs need. The force is met by a safeguarded secant method on
   ``s_x`` (:func:`solve_tangential`; ``s_y = 0`` by symmetry). Force control
   inside the active set made the shift oscillate and grow.
 * coupling (beta != 0): the normal and tangential problems are solved in

@@ -781,8 +781,8 @@ def thin_smooth_layer_k(geometry: Contact, stick_ratio: float) -> float | None:
     ``k = 3 h nu (1 + c^2) / (2 (1 - nu)(1 - c^3))``: outward slip for nu > 0, against
     sign(beta). It is within 9 % of the solutions at a/h = 100 ... 1000 for nu = 0.3 and
     38 % for nu = 0.45 (c/a = 0.05 ... 0.95; the inner layer at c adds), where the uncoupled
-    half-plane start (inward, ~100 times too large) took Newton to wrong roots. None where it does not apply (a sphere, another
-    base, a/h below :data:`THIN_START_FROM`, nu = 0).
+    half-plane start (inward, ~100 times too large) took Newton to wrong roots. None where
+    it does not apply (a sphere, another base, a/h below :data:`THIN_START_FROM`, nu = 0).
     """
     body = geometry.body
     if (geometry.indenter.name != "cylinder" or body.base != "smooth"

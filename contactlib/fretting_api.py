@@ -333,7 +333,8 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
 
     The sphere needs ``nu`` (and the indenter's material): a tangential load on a
     coupled pair (Dundurs beta != 0) is solved for ``|beta| <= SPHERE_COUPLED_BETA_MAX``,
-    ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and ``n <= SPHERE_COUPLED_N_MAX`` only (``validate.SolverLimit`` otherwise).
+    ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and ``n <= SPHERE_COUPLED_N_MAX`` only
+    (``validate.SolverLimit`` otherwise).
     Without ``nu`` the sphere is refused.
     """
     load = _path("load_path", load_path, None)

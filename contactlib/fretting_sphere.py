@@ -61,8 +61,8 @@ Conditions at the cell centres
   loop ends when nothing changes and the directions agree to
   ``_DIRECTION_TOL``; a loop that does not is run again with a patient rule
   (no cell sticks while the directions still turn by more than
-  ``_PATIENT_TURN``), which the coupled pairs need. The force is met by a safeguarded secant method on
-  ``s_x`` (:func:`solve_tangential`; ``s_y = 0`` by symmetry). Force control
+  ``_PATIENT_TURN``), which the coupled pairs need. The force is met by a safeguarded
+  secant method on ``s_x`` (:func:`solve_tangential`; ``s_y = 0`` by symmetry). Force control
   inside the active set made the shift oscillate and grow.
 * coupling (beta != 0): the normal and tangential problems are solved in
   turn until the pressure and the shear change by less than

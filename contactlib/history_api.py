@@ -507,9 +507,10 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         times (``duration`` is then not given).
     steps : int, optional
         Equal load steps per path segment of a list (>= 1; 1 gives the
-        one-step load; default 200, :data:`contactlib.validate.HISTORY_DEFAULT_STEPS`). For a shape or table: steps a unit of load travel,
-        each piece getting the steps its load change needs (a multiple of 4,
-        at least ``min(steps, 40)``; :func:`contactlib.load_paths.plan`).
+        one-step load; default 200, :data:`contactlib.validate.HISTORY_DEFAULT_STEPS`).
+        For a shape or table: steps a unit of load travel, each piece getting
+        the steps its load change needs (a multiple of 4, at least
+        ``min(steps, 40)``; :func:`contactlib.load_paths.plan`).
     n : int, optional
         Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200);
         with a relaxation over ``[0, 1.2 a_inf]``, a_inf the fully crept

@@ -9,7 +9,8 @@ Scales: E* from the two materials; a_max = (4 P_max R/(pi E* L))^(1/2), the
 frictionless half-width at the largest normal force P_max of the path; p0 =
 E* a_max/(2R); lengths in units of a_max, work in E* a_max^4/R^2 per unit length
 times L. The sphere (``geometry="sphere"``; a coupled pair, Dundurs beta != 0, with
-``|beta| <= 0.3`` under ``|Q| <= 0.5 k P`` with ``n <= 32`` only): a_max = (3 P_max R/(4 E*))^(1/3), p0 = 2 E* a_max/(pi R), work in E* a_max^5/R^2.
+``|beta| <= 0.3`` under ``|Q| <= 0.5 k P`` with ``n <= 32`` only): a_max = (3 P_max
+R/(4 E*))^(1/3), p0 = 2 E* a_max/(pi R), work in E* a_max^5/R^2.
 """
 
 from __future__ import annotations

@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
@@ -92,6 +93,9 @@ class FrettingResult:
     repeats an earlier one (same P, Q and bulk stress), the pair of point
     indices, the frictional work of the cycle and its estimate. ``shaken_down``
     per cycle: its work is within its estimate of zero (the slip has stopped).
+
+    ``model`` is the :class:`contactlib.model.Contact` that was solved (None for a
+    result rebuilt elsewhere): ask it rather than rebuilding it from the fields.
     """
 
     geometry: str
@@ -136,6 +140,7 @@ class FrettingResult:
     profile: str = "paraboloid"  # the indenter's profile (contactlib.profiles)
     exponent: float = 2.0
     flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
+    model: Any = field(default=None, repr=False, compare=False)  # the Contact solved
 
     @property
     def shaken_down(self) -> np.ndarray:
@@ -455,7 +460,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         res = sphere_fretting(model, k, load, tang, steps, n, max_error, error_estimate,
                               progress)
         return replace(res, profile=prof.name, exponent=float(prof.exponent),
-                       flat_ratio=float(prof.flat))
+                       flat_ratio=float(prof.flat), model=model)
     ops, raw = _run(model, n, steps, k, load, tang, sigma, progress)
     ratio, offset = _derived(raw)
     points = np.arange(load.size) * steps
@@ -517,7 +522,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         state=raw.state, point_step=points, stick_ratio_error=ratio_err,
         stick_offset_error=off_err, dissipation_error=diss_err, resolved=resolved,
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders,
-        profile=prof.name, exponent=float(prof.exponent), flat_ratio=float(prof.flat))
+        profile=prof.name, exponent=float(prof.exponent), flat_ratio=float(prof.flat),
+        model=model)
 
 
 # limit: |Q|/(k P) of a coupled pair's tangential load, verified converged and checked in
@@ -699,7 +705,8 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         tangential_compliance=_compliance(raw.shift[:, 0], force), state=state.astype(np.int8),
         point_step=points, stick_ratio_error=ratio_err, stick_offset_error=off_err,
         dissipation_error=diss_err, resolved=resolved,
-        cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders)
+        cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders,
+        model=model)
 
 
 # convention: the amplitudes of amplitude_study, Q*/(k P)

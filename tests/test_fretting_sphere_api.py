@@ -189,3 +189,13 @@ def test_contact_cattaneo_example_against_mindlin():
     miss = shift - mindlin  # measured -1.5e-5 mm (-1.9e-3), estimate 1.8e-6 mm
     assert abs(miss) > 3 * estimate
     assert -5e-3 < miss / mindlin < 0
+
+
+def test_fretting_results_carry_their_model():
+    from contactlib import fretting
+
+    for geometry, kw in (("sphere", dict(indenter_modulus=1.0, indenter_nu=0.3)),
+                         ("cylinder", {})):
+        r = fretting(geometry, 0.3, 0.3, [0, 1, 1], [0, 0, 0.5], 4, n=16, **kw)
+        assert r.model.indenter.name == geometry and r.model.body.nu == 0.3
+        assert r.model.beta == pytest.approx(r.beta) or r.model.decoupled

@@ -54,6 +54,7 @@ __all__ = [
     "check_layer",
     "correction_coefficients",
     "fourier_amplitudes",
+    "fourier_pieces",
     "surface_transfer",
 ]
 
@@ -171,10 +172,21 @@ def fourier_amplitudes(x: np.ndarray, pressure: np.ndarray, shear: np.ndarray,
         The surface amplitudes of the cylinder (p even, q odd in x): p(x) = int of the
         first times cos(k x) dk, q(x) = int of the second times sin(k x) dk.
     """
-    s = 0.5 * (x[:-1] + x[1:])
-    d = 0.5 * np.diff(x)
-    ps, mp = 0.5 * (pressure[:-1] + pressure[1:]), np.diff(pressure) / (2 * d)
-    qs, mq = 0.5 * (shear[:-1] + shear[1:]), np.diff(shear) / (2 * d)
+    return fourier_pieces(x[:-1], x[1:], pressure[:-1], pressure[1:], shear[:-1], shear[1:], k)
+
+
+def fourier_pieces(sa: np.ndarray, sb: np.ndarray, pa: np.ndarray, pb: np.ndarray,
+                   qa: np.ndarray, qb: np.ndarray, k: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`fourier_amplitudes` of tractions given as linear pieces on [sa, sb] (x/a >= 0).
+
+    On each piece p runs linearly from ``pa`` to ``pb`` and q from ``qa`` to ``qb``; the
+    pieces need not meet (element-wise tractions of a history). Zero outside them all.
+    """
+    s = 0.5 * (sa + sb)
+    d = 0.5 * (sb - sa)
+    ps, mp = 0.5 * (pa + pb), (pb - pa) / (2 * d)
+    qs, mq = 0.5 * (qa + qb), (qb - qa) / (2 * d)
     step = max(1, CHUNK // max(s.size, 1))
     P, Q = np.empty(k.size), np.empty(k.size)
     for i in range(0, k.size, step):

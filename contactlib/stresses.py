@@ -666,27 +666,20 @@ _LONG_NAMES = {
 }
 
 
-def _tractions_of(solution: Any, body: str,
-                  layer: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
+def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarray]:
     """Poisson's ratio and tractions (p, q) on the body asked for, refusing what is not
-    covered (a layer unless ``layer``: then one on a smooth or bonded rigid base)."""
+    covered (a layer on anything but a smooth or bonded rigid base)."""
     from .validate import InputError
 
     if body not in ("body", "indenter"):
         raise InputError("body", "'body' or 'indenter'", body)
-    if layer and float(getattr(solution, "slab_ratio", 0.0)) > 0:
+    if float(getattr(solution, "slab_ratio", 0.0)) > 0:
         base = getattr(solution, "base", "smooth")
         if base not in ("smooth", "bonded"):
             raise InputError("base", "smooth or bonded (a rigid base) for the stresses in "
                              "a layer", base,
                              "subsurface stresses in a layer cover a smooth or bonded rigid "
                              f"base only: not the {base} base (a coated body)")
-    elif float(getattr(solution, "slab_ratio", 0.0)) > 0:
-        raise InputError("slab_ratio", "0 (a half-space or half-plane) for subsurface "
-                         "stresses", solution.slab_ratio,
-                         "the stresses of a history step cover the half-space and "
-                         f"half-plane only: slab_ratio must be 0, got {solution.slab_ratio!r}"
-                         " (a layer's field is given for a solve: subsurface_stresses)")
     p = np.asarray(solution.pressure, dtype=float)
     q = np.asarray(solution.shear, dtype=float)
     if not bool(getattr(solution, "converged", True)):  # its tractions are no data
@@ -789,7 +782,7 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     """
     import xarray as xr
 
-    nu, _, _ = _tractions_of(solution, body, layer=True)
+    nu, _, _ = _tractions_of(solution, body)
     xi, p, q = traction_samples(solution)
     q = q if body == "body" else -q
     xs, zs = check_grid(x, z)
@@ -995,6 +988,26 @@ def first_yield(solution: Any, x: Any = None, z: Any = None, *,
             "x": top["x"], "z": top["z"]}
 
 
+def _add_layer_pieces(out: dict[str, np.ndarray], geometry: str, sa: np.ndarray,
+                      sb: np.ndarray, p: np.ndarray, q: np.ndarray, mid: np.ndarray,
+                      xs: np.ndarray, zs: np.ndarray, nu: float, h: float, base: str) -> None:
+    """Add a rigid-based layer's correction (:mod:`contactlib.stresses_layer`) to the
+    half-space (half-plane) field ``out`` of a history step's element tractions: p
+    constant and q = q_j r/r_j (sphere) or constant (cylinder) on [sa, sb], r_j = ``mid``."""
+    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer, fourier_pieces
+
+    nu, h, base = check_layer(nu, h, base)
+    r_max = float(max(np.abs(xs).max(), sb.max()))
+    width = min(PANEL / (1.0 + r_max), PANEL_T / h)  # as layer_stresses
+    k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
+    if geometry == "sphere":
+        P, Q = TractionPieces(sa, sb, p, p, q * sa / mid, q * sb / mid).hankel(k)
+        add_correction(out, k, w, P, Q, np.abs(xs), zs, nu, h, base)
+    else:
+        P, Q = fourier_pieces(sa, sb, p, p, q, q, k)
+        add_correction(out, k, w, P / k, Q / k, xs, zs, nu, h, base, geometry)
+
+
 def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "body",
                      measures: bool = True) -> Any:
     """The stress field under one step of a loading history, as an xarray Dataset.
@@ -1002,7 +1015,9 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     Parameters
     ----------
     result : contactlib.history_api.HistoryResult
-        A followed load path (:func:`contactlib.history`) on a half-space or half-plane.
+        A followed load path (:func:`contactlib.history`) on a half-space or half-plane,
+        or on a layer on a smooth or bonded rigid base (``slab_ratio`` = a_max/h > 0:
+        the depths below the layer, z > h, are NaN; :func:`layer_stresses`).
         Its tractions are element-wise, as the history solver has them: on element j
         (edges ``xi_bounds[j]``) the pressure is constant and the shear is q_j r / r_j
         (sphere) or constant (cylinder, odd in x), r_j the midpoint ``xi[j]``.
@@ -1028,7 +1043,8 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     Raises
     ------
     contactlib.validate.InputError
-        As :func:`subsurface_stresses`, and for a step out of range.
+        As :func:`subsurface_stresses` (a coated body, a step that did not converge),
+        and for a step out of range.
     """
     import xarray as xr
 
@@ -1054,21 +1070,32 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
 
     for name in ("slab_ratio", "nu", "indenter_modulus_ratio", "indenter_poisson_ratio"):
         setattr(_Step, name, getattr(result, name, math.inf if "modulus" in name else 0.0))
+    _Step.base = getattr(result, "base", "smooth")
     nu, p, q = _tractions_of(_Step, body)
     xs, zs = check_grid(x, z)
     bounds = np.asarray(result.xi_bounds, dtype=float)
     mid = np.asarray(result.xi, dtype=float)
     sa, sb = bounds[:, 0], bounds[:, 1]
     geometry = result.geometry
+    slab = float(getattr(result, "slab_ratio", 0.0))
+    # the layer (h = a_max/slab_ratio) holds the body's field; the indenter is a half-space
+    h = 1.0 / slab if slab > 0 and body == "body" else math.inf
+    within = zs <= h * (1 + 1e-12)
+    zin = np.minimum(zs[within], h)
     if geometry == "sphere":  # q = q_j r / r_j on element j
-        fields = _halfspace_pieces(TractionPieces(sa, sb, p, p, q * sa / mid, q * sb / mid), xs, zs,
-                                   nu)
+        pieces = TractionPieces(sa, sb, p, p, q * sa / mid, q * sb / mid)
+        part = _halfspace_pieces(pieces, xs, zin, nu) if zin.size else {}
     else:  # both sides: p even, q odd, constant on each element
-        fields = _halfplane_pieces(np.concatenate([-sb[::-1], sa]),
-                                   np.concatenate([-sa[::-1], sb]),
-                                   np.concatenate([p[::-1], p]), np.concatenate([p[::-1], p]),
-                                   np.concatenate([-q[::-1], q]), np.concatenate([-q[::-1], q]),
-                                   xs, zs, nu)
+        part = _halfplane_pieces(np.concatenate([-sb[::-1], sa]),
+                                 np.concatenate([-sa[::-1], sb]),
+                                 np.concatenate([p[::-1], p]), np.concatenate([p[::-1], p]),
+                                 np.concatenate([-q[::-1], q]), np.concatenate([-q[::-1], q]),
+                                 xs, zin, nu) if zin.size else {}
+    if math.isfinite(h) and zin.size:
+        _add_layer_pieces(part, geometry, sa, sb, p, q, mid, xs, zin, nu, h, _Step.base)
+    fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
+    for name, v in part.items():
+        fields[name][within] = v
     if measures:
         fields.update(derived_measures(geometry, fields))
     into = "indenter" if body == "indenter" else "body"
@@ -1081,6 +1108,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     attrs = {"geometry": geometry, "poisson_ratio": nu, "body": body, "step": step,
              "load_ratio": float(np.asarray(result.load_ratio)[step]),
              "contact_radius": float(np.asarray(result.contact_radius)[step]),
+             "slab_ratio": float(getattr(result, "slab_ratio", 0.0)),
              "friction_coefficient": float(result.friction), "elements": int(result.n),
              "indenter_modulus_ratio": float(getattr(result, "indenter_modulus_ratio",
                                                      math.inf)),

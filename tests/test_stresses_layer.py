@@ -16,13 +16,12 @@ import math
 import numpy as np
 import pytest
 
-from contactlib import history, solve
+from contactlib import solve
 from contactlib.kernels.layer_transfer import transfer
 from contactlib.stresses import (
     field_error_estimate,
     halfplane_stresses,
     halfspace_stresses,
-    history_stresses,
     layer_stresses,
     subsurface_stresses,
 )
@@ -187,9 +186,6 @@ def test_layer_routing_and_refusals():
                    base="elastic", substrate_modulus=2.0, substrate_nu=0.3)
     with pytest.raises(InputError, match="coated body"):
         subsurface_stresses(coated, [0.0], [0.1])
-    steps = history("sphere", NU, 0.3, [0, 1], steps=4, n=16, slab_ratio=0.5)
-    with pytest.raises(InputError, match="history step cover the half-space"):
-        history_stresses(steps, -1, [0.0], [0.1])
 
 
 # ----------------------------------------------------------------------------- cylinder

@@ -522,8 +522,9 @@ def build_parser() -> argparse.ArgumentParser:
     solve.add_argument("--subsurface", action="store_true",
                        help="add the stress field inside the body to --output (variables "
                             "sigma_*, von_mises, tresca, ... in units of p0 on x = r/a "
-                            "(x/a) and z = depth/a, 0 ... 2; docs/stresses.md); half-space "
-                            "and half-plane only")
+                            "(x/a) and z = depth/a, 0 ... 2; docs/stresses.md); half-space, "
+                            "half-plane, a layer on a rigid base or a coated body (z > h: "
+                            "the substrate)")
 
     sweep = subs.add_parser(
         "sweep", help="solve a sweep over c/a", allow_abbrev=False,
@@ -1355,7 +1356,7 @@ def _silence_stdout() -> None:
 def _run_solve(kwargs: dict[str, Any], output: str | None, api: ModuleType,
                subsurface: bool = False) -> int:
     try:
-        if subsurface:  # before any numerics: refuses a layer and a missing --output
+        if subsurface:  # before any numerics: refuses a missing --output
             from contactlib.stresses import check_subsurface_request
             check_subsurface_request(output, kwargs.get("slab_ratio", 0.0),
                                      kwargs.get("base", "smooth"))

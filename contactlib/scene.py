@@ -389,11 +389,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                            f"{outputs!r}")
         outputs = []
     grid = bad.check("subsurface_grid", validate.subsurface_grid, raw.get("subsurface_grid", {}))
-    if "subsurface" in outputs:
-        if base == validate.COATED_BASE:
-            bad.add("outputs", "subsurface covers the half-space, the half-plane and a layer "
-                               "on a rigid base, not a coated body (base 'elastic')")
-    elif "subsurface_grid" in raw:
+    if "subsurface" not in outputs and "subsurface_grid" in raw:
         bad.add("subsurface_grid", "given without subsurface in outputs")
     ind = _scene_indenter(raw, nu, bad)
     n = None

@@ -481,11 +481,12 @@ def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np
 
 def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float,
                    thickness: float, base: str, *, geometry: str = "sphere",
-                   refine: int = 1) -> dict[str, np.ndarray]:
-    """Stresses in a layer on a rigid base under tabulated p and q (sphere or cylinder).
+                   refine: int = 1, substrate: Any = None) -> dict[str, np.ndarray]:
+    """Stresses in a layer on a rigid base, or in a coated body, under tabulated p and q.
 
     The half-space's (half-plane's) field (:func:`stress_field`) plus the layer's
-    correction (:mod:`contactlib.stresses_layer`).
+    correction (:mod:`contactlib.stresses_layer`); in a coated body's substrate (z > h)
+    the substrate's own field.
 
     Parameters
     ----------
@@ -494,55 +495,101 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
         p even and q odd in x), any stress unit.
     x, z : array_like, 1-d
         Output grid: r/a (|r| is used; x/a of either sign for the cylinder) and depth
-        z/a in [0, h/a].
+        z/a in [0, h/a] on a rigid base, z/a >= 0 in a coated body (z <= h: the layer,
+        z > h: the substrate).
     nu : float
         Poisson's ratio of the layer, -1 < nu <= 0.5.
     thickness : float
         h/a, the layer's thickness over the contact radius (1 / slab_ratio).
-    base : {"smooth", "bonded"}
-        The rigid base at z = h.
+    base : {"smooth", "bonded", "elastic"}
+        The rigid base at z = h, or ``"elastic"``: the layer bonded to ``substrate``.
     geometry : {"sphere", "cylinder"}
         Axisymmetric (Hankel) or plane strain (Fourier).
     refine : int
         Divides the panels of the correction's k integral (convergence checks).
+    substrate : contactlib.kernels.layer_transfer.Substrate or (float, float), optional
+        With ``base="elastic"`` only: E2/E1 and the substrate's Poisson's ratio nu2.
 
     Returns
     -------
     dict of str to ndarray, shape (len(z), len(x))
         The components of :data:`COMPONENTS` for ``geometry``, in the unit of the
         tractions, tension positive. Error: the half-space's plus the correction's
-        quadrature, below 1e-10 of the tractions (tests/test_stresses_layer.py).
+        quadrature, below 1e-10 of the tractions (tests/test_stresses_layer.py,
+        tests/test_stresses_coated.py).
 
     Raises
     ------
     contactlib.validate.InputError
-        For a depth beyond the layer (z > h), a base other than smooth or bonded, or what
-        :func:`halfspace_stresses` refuses.
+        For a depth beyond a rigid-based layer (z > h), a base other than smooth, bonded
+        or elastic, ``base="elastic"`` without a substrate (or a substrate without it),
+        or what :func:`halfspace_stresses` refuses.
     """
     from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer, \
-        fourier_amplitudes
+        coated_nodes, fourier_amplitudes, substrate_field
     from .validate import InputError
 
-    nu, h, base = check_layer(nu, thickness, base)
+    kernel_base = _kernel_base(base, substrate)
+    nu, h, kernel_base = check_layer(nu, thickness, kernel_base)
+    coated = not isinstance(kernel_base, str)  # a Substrate
     r, p, q = check_tractions(xi, pressure, shear)
     xs, zs = check_grid(x, z)
-    if np.any(zs > h * (1 + 1e-12)):
+    if not coated and np.any(zs > h * (1 + 1e-12)):
         raise InputError("z", f"depths within the layer, 0 <= z <= h = {h!r}", zs.max(),
                          f"z must lie within the layer (0 <= z <= h/a = {h!r}), got "
                          f"z = {zs.max()!r}")
-    zs = np.minimum(zs, h)
-    out = stress_field(geometry, nu, r, p, q, xs, zs)
-    # panels no wider than PANEL/(1 + max r) (the oscillation) nor PANEL_T/h (the layer)
+    within = zs <= h * (1 + 1e-12)
+    zin = np.minimum(zs[within], h)
+    # panels no wider than PANEL/(1 + max r) (the oscillation) nor PANEL_T/h (the layer),
+    # nor PANEL_T/z_max in a substrate (its field decays like e^{-k z})
     r_max = float(max(np.abs(xs).max(), r.max()))
-    width = min(PANEL / (1.0 + r_max), PANEL_T / h) / max(1, refine)
-    k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
+    if coated:
+        width = min(PANEL / (1.0 + r_max), PANEL_T / max(h, float(zs.max()))) / max(1, refine)
+        k, w = coated_nodes(width, h, nu, kernel_base, refine)
+    else:
+        width = min(PANEL / (1.0 + r_max), PANEL_T / h) / max(1, refine)
+        k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
     if geometry == "sphere":
         P, Q = TractionPieces.from_nodes(r, p, q).hankel(k)
-        add_correction(out, k, w, P, Q, np.abs(xs), zs, nu, h, base)
+        rs = np.abs(xs)
     else:
         P, Q = fourier_amplitudes(r, p, q, k)
-        add_correction(out, k, w, P / k, Q / k, xs, zs, nu, h, base, geometry)
+        P, Q, rs = P / k, Q / k, xs
+    out = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
+    if zin.size:
+        part = stress_field(geometry, nu, r, p, q, xs, zin)
+        add_correction(part, k, w, P, Q, rs, zin, nu, h, kernel_base, geometry)
+        for name, v in part.items():
+            out[name][within] = v
+    if not np.all(within):
+        part = substrate_field(k, w, P, Q, rs, zs[~within], nu, h, kernel_base, geometry)
+        for name, v in part.items():
+            out[name][~within] = v
     return out
+
+
+def _kernel_base(base: str, substrate: Any) -> Any:
+    """The rigid base's name, or a coated body's Substrate (base "elastic"), checked."""
+    from .kernels.layer_transfer import Substrate
+    from .validate import COATED_BASE, InputError
+
+    if base != COATED_BASE:
+        if substrate is not None:
+            raise InputError("substrate", "given with base 'elastic' only", substrate,
+                             f"substrate needs base='elastic' (a coated body), not {base!r}")
+        return base
+    if substrate is None:
+        raise InputError("substrate", "given with base 'elastic'", None,
+                         "substrate=(E2/E1, nu2) is needed with base 'elastic' (a coated "
+                         "body)")
+    if isinstance(substrate, Substrate):
+        return substrate
+    try:
+        return Substrate(*substrate)
+    except (TypeError, ValueError) as exc:
+        raise InputError("substrate", "(E2/E1 in (0, inf), -1 < nu2 <= 0.5)", substrate,
+                         f"substrate must be (E2/E1 in (0, inf), nu2 in (-1, 0.5]): "
+                         f"{exc}") from None
 
 
 # ----------------------------------------------------------------------------- dispatch
@@ -666,20 +713,23 @@ _LONG_NAMES = {
 }
 
 
-def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarray]:
+def _tractions_of(solution: Any, body: str,
+                  coated: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
     """Poisson's ratio and tractions (p, q) on the body asked for, refusing what is not
-    covered (a layer on anything but a smooth or bonded rigid base)."""
-    from .validate import InputError
+    covered (a layer on anything but a smooth or bonded rigid base, or, with ``coated``,
+    on an elastic substrate: base "elastic")."""
+    from .validate import COATED_BASE, InputError
 
     if body not in ("body", "indenter"):
         raise InputError("body", "'body' or 'indenter'", body)
     if float(getattr(solution, "slab_ratio", 0.0)) > 0:
         base = getattr(solution, "base", "smooth")
-        if base not in ("smooth", "bonded"):
+        if base not in ("smooth", "bonded") and not (coated and base == COATED_BASE):
             raise InputError("base", "smooth or bonded (a rigid base) for the stresses in "
                              "a layer", base,
-                             "subsurface stresses in a layer cover a smooth or bonded rigid "
-                             f"base only: not the {base} base (a coated body)")
+                             "the stresses of a history step in a layer cover a smooth or "
+                             f"bonded rigid base only: not the {base} base (a coated body; a "
+                             "solve's field covers it: subsurface_stresses)")
     p = np.asarray(solution.pressure, dtype=float)
     q = np.asarray(solution.shear, dtype=float)
     if not bool(getattr(solution, "converged", True)):  # its tractions are no data
@@ -699,6 +749,15 @@ def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarr
     return float(solution.indenter_poisson_ratio), p, -q
 
 
+def _substrate_of(solution: Any) -> tuple[float, float] | None:
+    """(E2/E1, nu2) of a coated body's solution (base "elastic"), None otherwise."""
+    from .validate import COATED_BASE
+
+    if getattr(solution, "base", "smooth") != COATED_BASE:
+        return None
+    return (float(solution.substrate_modulus), float(solution.substrate_poisson_ratio))
+
+
 def traction_samples(solution: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(xi, p/p0, q/p0) whose piecewise-linear interpolation the field integrates.
 
@@ -716,14 +775,19 @@ def traction_samples(solution: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
 def body_field(geometry: str, nu: float, xi: Any, p: Any, q: Any, xs: np.ndarray,
-               zs: np.ndarray, slab_ratio: float = 0.0, base: str = "smooth"
-               ) -> dict[str, np.ndarray]:
+               zs: np.ndarray, slab_ratio: float = 0.0, base: str = "smooth",
+               substrate: Any = None) -> dict[str, np.ndarray]:
     """The stress components in the body: the half-space's or half-plane's
     (:func:`stress_field`), or, at ``slab_ratio`` > 0, a layer's on its rigid base
-    (:func:`layer_stresses`; NaN at the depths z > h = 1/slab_ratio, below the layer)."""
+    (:func:`layer_stresses`; NaN at the depths z > h = 1/slab_ratio, below the layer), or
+    a coated body's (base "elastic" on ``substrate`` = (E2/E1, nu2): the layer for
+    z <= h, the substrate below)."""
     if not slab_ratio > 0:
         return stress_field(geometry, nu, xi, p, q, xs, zs)
     h = 1.0 / float(slab_ratio)
+    if substrate is not None:
+        return layer_stresses(xi, p, q, xs, zs, nu, h, base, geometry=geometry,
+                              substrate=substrate)
     within = zs <= h
     fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
     if np.any(within):
@@ -741,8 +805,11 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     ----------
     solution : contactlib.result.Solution
         A solved case (:func:`contactlib.solve`) on a half-space or half-plane, or on a
-        layer of thickness h = a / ``slab_ratio`` on a smooth or bonded rigid base (:func:`layer_stresses`; the depths z > h, below
-        the layer, are NaN; attributes ``layer_thickness`` and ``base``); its
+        layer of thickness h = a / ``slab_ratio`` on a smooth or bonded rigid base
+        (:func:`layer_stresses`; the depths z > h, below the layer, are NaN; attributes
+        ``layer_thickness`` and ``base``), or a coated body (``base="elastic"``: z > h is
+        the substrate; attributes also ``substrate_modulus`` E2/E1 and
+        ``substrate_poisson_ratio``); its
         ``pressure`` and ``shear`` (p/p0, q/p0 on ``xi``, piecewise linear between the
         points) are the tractions. p0 is the Hertz peak pressure at the same contact
         radius (docs/conventions.md), so a frictionless case has p = sqrt(1 - xi^2).
@@ -767,8 +834,8 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     Raises
     ------
     contactlib.validate.InputError
-        For a coated body (``base="elastic"``), a case with NaN tractions,
-        ``body="indenter"`` with a rigid indenter, or a bad grid.
+        For a case with NaN tractions, ``body="indenter"`` with a rigid indenter, or a
+        bad grid.
 
     Examples
     --------
@@ -782,17 +849,23 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     """
     import xarray as xr
 
-    nu, _, _ = _tractions_of(solution, body)
+    nu, _, _ = _tractions_of(solution, body, coated=True)
     xi, p, q = traction_samples(solution)
     q = q if body == "body" else -q
     xs, zs = check_grid(x, z)
     geometry = solution.geometry
     slab = float(getattr(solution, "slab_ratio", 0.0)) if body == "body" else 0.0
-    fields = body_field(geometry, nu, xi, p, q, xs, zs, slab, getattr(solution, "base", ""))
-    layer = {}
+    substrate = _substrate_of(solution) if slab > 0 else None
+    fields = body_field(geometry, nu, xi, p, q, xs, zs, slab, getattr(solution, "base", ""),
+                        substrate)
+    layer: dict[str, Any] = {}
     if slab > 0:
         layer = {"layer_thickness": 1.0 / slab, "base": str(solution.base),
                  "beyond_layer": "NaN at depths z > h (below the layer, the rigid base)"}
+    if substrate is not None:
+        layer.update(substrate_modulus=substrate[0], substrate_poisson_ratio=substrate[1],
+                     beyond_layer="the substrate at depths z > h (E2/E1 substrate_modulus, "
+                                  "Poisson's ratio substrate_poisson_ratio)")
     if measures:
         fields.update(derived_measures(geometry, fields))
     coords = {"z": ("z", zs, {"units": "1", "long_name": "depth / a, positive into the "
@@ -894,22 +967,19 @@ def default_grid() -> tuple[np.ndarray, np.ndarray]:
 def check_subsurface_request(output: Any, slab_ratio: float, base: str = "smooth") -> None:
     """Refuse, before any solving, a subsurface request that cannot be met.
 
+    ``slab_ratio`` and ``base`` are kept for callers; every body is covered (half-space,
+    half-plane, a layer on a rigid base, a coated body).
+
     Raises
     ------
     contactlib.validate.InputError
-        Without an output file, or on a coated body (a layer on an elastic substrate,
-        ``base`` "elastic": its field is not covered; a layer on a rigid base is).
+        Without an output file.
     """
-    from .validate import COATED_BASE, InputError
+    from .validate import InputError
 
     if output is None:
         raise InputError("subsurface", "given with an output file", True,
                          "subsurface needs an output file (--output FILE.nc) for the field")
-    if float(slab_ratio) > 0 and base == COATED_BASE:
-        raise InputError("base", "smooth or bonded with subsurface", base,
-                         "subsurface stresses cover the half-space, the half-plane and a "
-                         "layer on a rigid base (smooth or bonded), not a coated body (base "
-                         "elastic)")
 
 
 def with_subsurface(dataset: Any, solution: Any, x: Any = None, z: Any = None) -> Any:
@@ -1145,6 +1215,8 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         :func:`subsurface_stresses` with ``body="indenter"``); attribute
         ``subsurface_body``.
     """
+    from .validate import COATED_BASE
+
     (x0, x1, nx), (z0, z1, nz) = scene.subsurface_grid
     xs, zs = np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
     geometry = scene.geometry
@@ -1156,6 +1228,10 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         bodies["indenter_"] = (float(nu1), -1.0)
     stack = {prefix + name: np.full((len(profiles), zs.size, xs.size), np.nan)
              for prefix in bodies for name in names}
+    substrate = None  # a coated body's (E2/E1, nu2; nu2 None: the layer's)
+    if getattr(scene, "base", "smooth") == COATED_BASE:
+        nu2 = scene.nu if scene.substrate_nu is None else scene.substrate_nu
+        substrate = (float(scene.substrate_modulus), float(nu2))
     for i, prof in enumerate(profiles):
         p, q = np.asarray(prof["pressure"]), np.asarray(prof["shear"])
         if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
@@ -1166,7 +1242,7 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         for prefix, (nu, sign) in bodies.items():
             slab = float(getattr(scene, "slab_ratio", 0.0)) if not prefix else 0.0
             fields = body_field(geometry, nu, at, p, sign * q, xs, zs, slab,
-                                getattr(scene, "base", "smooth"))
+                                getattr(scene, "base", "smooth"), substrate)
             fields.update(derived_measures(geometry, fields))
             for name in names:
                 stack[prefix + name][i] = fields[name]
@@ -1231,6 +1307,9 @@ def field_error_estimate(solution: Any, x: Any, z: Any, *, body: str = "body") -
     fine = subsurface_stresses(solution, x, z, body=body)
     kw: dict[str, Any] = ({"base": solution.base, "slab_ratio": float(solution.slab_ratio)}
                           if solution.slab_ratio > 0 else {})
+    substrate = _substrate_of(solution) if solution.slab_ratio > 0 else None
+    if substrate is not None:
+        kw.update(substrate_modulus=substrate[0], substrate_nu=substrate[1])
     if not math.isinf(float(solution.indenter_modulus_ratio)):
         kw.update(indenter_modulus=float(solution.indenter_modulus_ratio),
                   indenter_nu=float(solution.indenter_poisson_ratio))

@@ -251,8 +251,6 @@ def test_profile_keys_follow_the_command_line_spelling():
      r"^scenes\.s\.substrate_nu: "),
     ({"base": "elastic", "slab_ratio": 0.5, "substrate_modulus": 2, "method": "paper",
       "n": 16, "stick_ratios": [0.25]}, r"^scenes\.s\.method: .*coated body"),
-    ({"base": "elastic", "slab_ratio": 0.5, "substrate_modulus": 2,
-      "outputs": ["subsurface"]}, r"^scenes\.s\.outputs: .*not a coated body"),
 ])
 def test_bad_profile_or_coating_is_one_line_naming_the_key(extra, text):
     raw = {k: v for k, v in dict(SELF, **extra).items() if v is not None}

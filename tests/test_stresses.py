@@ -396,11 +396,7 @@ def test_measures_from_components():
 
 
 # ----------------------------------------------------------------------------- refusals
-def test_layers_and_rigid_indenters_are_refused():
-    layer = solve("sphere", NU, stick_ratio=0.0, n=32, slab_ratio=0.5, energy=False,
-                  base="elastic", substrate_modulus=2.0, substrate_nu=NU)
-    with pytest.raises(InputError, match="coated body"):
-        subsurface_stresses(layer, [0.0], [0.5])
+def test_rigid_indenters_and_bad_grids_are_refused():
     rigid = solve("sphere", NU, stick_ratio=0.0, n=32, energy=False)
     with pytest.raises(InputError, match="rigid indenter"):
         subsurface_stresses(rigid, [0.0], [0.5], body="indenter")
@@ -518,8 +514,6 @@ def test_scene_subsurface_holds_the_indenter_field_too():
 
 
 @pytest.mark.parametrize("extra,key", [
-    ({"outputs": ["subsurface"], "slab_ratio": 0.5, "base": "elastic",
-      "substrate_modulus": 10.0}, "outputs"),
     ({"subsurface_grid": {"x": [0, 1, 11]}}, "subsurface_grid"),
     ({"outputs": ["subsurface"], "subsurface_grid": {"z": [-1, 1, 11]}}, "subsurface_grid"),
     ({"outputs": ["subsurface"], "subsurface_grid": {"x": [0, 1, 1]}}, "subsurface_grid"),
@@ -598,17 +592,26 @@ def test_cli_writes_both_fields_for_an_elastic_indenter(tmp_path):
                            atol=1e-12)
 
 
-def test_cli_refuses_a_coated_body_before_solving(tmp_path):
+def test_cli_writes_a_coated_body_field(tmp_path):
+    """A coated body (base elastic): the layer's and the substrate's field (z > h = a)."""
     out = tmp_path / "x.nc"
-    run = subprocess.run([sys.executable, "-m", "contactlib", "solve", "--geometry",
-                          "sphere", "--nu", "0.3", "--stick-ratio", "0.5", "--slab-ratio",
-                          "1", "--base", "elastic", "--substrate-modulus", "10",
-                          "--subsurface", "--output", str(out)],
-                         capture_output=True, text=True, env=ENV, cwd=REPO)
-    assert run.returncode == 2
-    assert run.stderr.startswith("contactlib: error: subsurface stresses cover")
-    assert "not a coated body" in run.stderr and run.stderr.count("\n") == 1
-    assert not out.exists()
+    args = ["--geometry", "cylinder", "--nu", "0.3", "--stick-ratio", "0.5", "--n", "64",
+            "--slab-ratio", "1", "--base", "elastic", "--substrate-modulus", "0.5",
+            "--substrate-nu", "0.2"]
+    run = subprocess.run([sys.executable, "-m", "contactlib", "solve", *args, "--subsurface",
+                          "--output", str(out)], capture_output=True, text=True, env=ENV,
+                         cwd=REPO)
+    assert run.returncode == 0, run.stderr
+    ds = io.read_dataset(out)
+    assert ds.attrs["substrate_modulus"] == 0.5 and ds.attrs["substrate_poisson_ratio"] == 0.2
+    assert np.all(np.isfinite(ds["von_mises"].values))
+    sol = solve("cylinder", NU, stick_ratio=0.5, n=64, slab_ratio=1.0, base="elastic",
+                substrate_modulus=0.5, substrate_nu=0.2)
+    x, z = ds.x.values[::10], ds.z.values[40:61:10]  # z = 0.8, 1.0, 1.2: layer, substrate
+    ref = subsurface_stresses(sol, x, z)
+    for name in ("von_mises", "sigma_xx", "sigma_zz"):
+        assert np.allclose(ds[name].values[40:61:10, ::10], ref[name].values, rtol=0,
+                           atol=1e-12)
 
 
 def test_integral_of_j0_in_every_supported_scipy():

@@ -45,7 +45,7 @@ from .validate import DEFAULT_MAX_ERROR
 
 __all__ = ["FrettingResult", "fretting", "check_input", "amplitude_study", "STUDY_AMPLITUDES",
            "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
-           "sphere_fretting", "cylinder_cycle_work"]
+           "sphere_fretting", "cylinder_cycle_work", "run_path"]
 
 # convention: the cylinder's default elements (element a_max/100)
 DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
@@ -206,9 +206,32 @@ def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
         raise ValueError(f"max_error: must lie in (0, 1), got {max_error!r}")
 
 
-def _run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
-         sigma: np.ndarray, progress=None, offset: float = 0.0
-         ) -> tuple[fr.StripOperators, fr.RawFretting]:
+def run_path(model: Any, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
+             sigma: np.ndarray, progress: Callable[[int, int], None] | None = None,
+             offset: float = 0.0) -> tuple[fr.StripOperators, fr.RawFretting]:
+    """Run a cylinder's fretting path on ``2 n`` strip elements, ``steps`` a segment.
+
+    Parameters
+    ----------
+    model : contactlib.model.Contact
+        The cylinder's contact.
+    n, steps : int
+        Elements over 1.2 a_max on each side (any n >= 1, unchecked) and equal steps a
+        segment.
+    k : float
+        The friction coefficient.
+    load, tang, sigma : ndarray
+        P/P_max, Q/(k P_max) and the bulk stress over p0 at the path's points.
+    progress : callable, optional
+        As for :func:`fretting`.
+    offset : float
+        The mesh's shift in elements (:func:`contactlib.fretting_solver.strip_operators`).
+
+    Returns
+    -------
+    (StripOperators, RawFretting)
+        The operators and the raw run (forces in E* a_max^2/R, tractions in E* a_max/R).
+    """
     ops = fr.strip_operators(model, 2 * n, offset=offset)
     big_p = load_levels(load, steps)[0][1:] * ops.p_max
     big_q = load_levels(tang, steps)[0][1:] * k * ops.p_max
@@ -461,7 +484,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
                               progress)
         return replace(res, profile=prof.name, exponent=float(prof.exponent),
                        flat_ratio=float(prof.flat), model=model)
-    ops, raw = _run(model, n, steps, k, load, tang, sigma, progress)
+    ops, raw = run_path(model, n, steps, k, load, tang, sigma, progress)
     ratio, offset = _derived(raw)
     points = np.arange(load.size) * steps
     if error_estimate:
@@ -469,7 +492,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         # ladder (n/2, S), (n/4, S) and the step ladder (n/2, S/4)
         plan = [(n // 2, steps // 2, 0.0), (n, steps, 0.5), (n // 2, steps, 0.0),
                 (n // 4, steps, 0.0), (n // 2, steps // 4, 0.0)]
-        runs = [_run(model, m, s, k, load, tang, sigma, offset=off)[1] for m, s, off in plan]
+        runs = [run_path(model, m, s, k, load, tang, sigma, offset=off)[1]
+                for m, s, off in plan]
         at = [r.dissipation[np.arange(load.size) * s] for r, (_, s, _) in zip(runs, plan)]
         der = [_derived(r) for r in runs[:2]]
         half = np.arange(load.size) * (steps // 2)

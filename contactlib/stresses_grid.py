@@ -654,7 +654,9 @@ def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
 
     if getattr(result, "geometry", None) != "sphere":
         raise validate.InputError("result", "a sphere's FrettingResult (contactlib.fretting("
-                                  "'sphere', ...))", getattr(result, "geometry", result))
+                                  "'sphere', ...); the cylinder's: contactlib.stresses."
+                                  "cylinder_fretting_stresses)",
+                                  getattr(result, "geometry", result))
     total = len(result.load_ratio)
     if not isinstance(step, (int, np.integer)) or not -total <= int(step) < total:
         raise validate.InputError("step", f"an integer in [-{total}, {total - 1}]", step)

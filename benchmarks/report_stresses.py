@@ -3,8 +3,8 @@
 1. Errors against the closed forms (Huber, McEwen, Smith-Liu) from exact samples of
    sqrt(1 - x^2) on m = 201 and 2001 points, and through a Solution (n = 256).
 2. The maximum shear (Tresca) of the closed forms against the field's.
-3. The method's own errors: the xi quadrature (panels halved) and the surface cut
-   XI_SURFACE (4000 against 16000 and 64000).
+3. The method's own errors: the xi quadrature (panels halved) and the surface row's ring
+   integrals (rules of twice the density).
 4. The partial-slip field as n grows (128, 256, 512).
 5. The sphere against c/a (nu = 0.3, n = 256): k, the maxima of Tresca and von Mises
    and where they are, the surface radial stress at r = a and its largest value.
@@ -114,23 +114,16 @@ def method_errors() -> None:
         st.PANEL = panel
     e = max(np.max(np.abs(base[k][1:] - half[k][1:])) for k in base)
     print(f"xi quadrature (panels halved), z > 0: {e:.1e}")
-    cut = st.XI_SURFACE
-    xs = np.linspace(0.0, 2.0, 201)
-    ref = None
-    rows = []
+    xs = np.linspace(0.0, 2.0, 2001)  # through every node of the tractions
+    base = st.halfspace_stresses(*args, xs, [0.0], NU)
+    rules = st.RING_TANH_SINH, st.RING_GAUSS
     try:
-        for c in (64000.0, 16000.0, 4000.0):
-            st.XI_SURFACE = c
-            f = st.halfspace_stresses(*args, xs, [0.0], NU)["sigma_rr"][0]
-            if ref is None:
-                ref = f
-            else:
-                d = np.abs(f - ref)
-                rows.append(f"XI_SURFACE = {c:g}: surface sigma_rr off by {np.max(d):.1e} "
-                            f"at most, median {np.median(d):.1e}")
+        st.RING_TANH_SINH, st.RING_GAUSS = (1.0 / 12.0, 4.0), 20
+        fine = st.halfspace_stresses(*args, xs, [0.0], NU)
     finally:
-        st.XI_SURFACE = cut
-    print("\n".join(reversed(rows)) + " (against 64000)")
+        st.RING_TANH_SINH, st.RING_GAUSS = rules
+    e = max(np.max(np.abs(base[k] - fine[k])) for k in base)
+    print(f"surface row z = 0 (ring integrals against rules of twice the density): {e:.1e}")
 
 
 def convergence() -> None:

@@ -29,13 +29,17 @@ Half-space (axisymmetric): Hankel transforms (Boussinesq's potentials, Sneddon)
 (Papkovich-Neuber potentials 2G u = grad(phi + z psi) - 4 (1 - nu) psi e_z), with P(xi) =
 int p J0(xi r) r dr and Q(xi) = int q J1(xi r) r dr in closed form for the piecewise-linear
 tractions (``scipy.special.itj0y0``). The xi integral is Gauss-Legendre on panels of width
-``PANEL/(1 + max r)`` = 2 pi/(1 + max r) (8 points each) up to 36/z_min (e^{-36} < 3e-16),
-where z_min is the smallest positive depth asked for; halving the panels changes the
-field by 1e-10 p0 (benchmarks/report_stresses.py, section 3). On the surface (z = 0)
-the pressure's part is Johnson's closed form (sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt -
-p, Johnson Ch. 3) and the shear's part the same Hankel integral cut at ``XI_SURFACE``:
-its integrand decays only like xi^-2, so the surface values of the shear's part carry a
-truncation error, 2e-5 p0 at most (docs/stresses.md).
+``PANEL/(1 + max r)`` = 2 pi/(1 + max r) (8 points each; beyond the first few, panels of
+``TAIL_PERIODS`` such widths with 32 points) up to 36/z_min (e^{-36} < 3e-16), where z_min
+is the smallest positive depth asked for; each depth takes the xi values up to 40/z only.
+Halving the panels changes the field by 1e-10 p0 (benchmarks/bench_stresses.py). On the
+surface (z = 0) the field is in closed form: the pressure's part is Johnson's
+(sigma_rr = (1 - 2 nu)/r^2 int_0^r p t dt - p, Johnson Ch. 3), the shear's part follows
+from U(r) = int q(t) t W(r, t) dt with the ring kernel W = int_0^inf J1(k r) J1(k t) dk
+(complete elliptic integrals K, E), integrated over each linear piece by Gauss-Legendre
+(tanh-sinh next to the kernel's log singularity at t = r): 2e-12 p0 against rules of
+twice the density, and the closed form of q = r on r < a to 1e-13 (benchmarks/
+bench_stresses.py).
 
 A layer of thickness h on a smooth or bonded rigid base (sphere and cylinder):
 :func:`layer_stresses`, the half-space's field plus the correction of
@@ -61,7 +65,8 @@ __all__ = ["halfplane_stresses", "halfplane_stresses_line", "halfspace_stresses"
            "with_subsurface", "first_yield", "history_stresses", "scene_subsurface",
            "cylinder_fretting_stresses",
            "field_error_estimate", "layer_stresses", "COMPONENTS", "XI_SURFACE", "PANEL",
-           "CHUNK", "DEPTH_CUTOFF", "TractionPieces", "xi_nodes", "check_tractions",
+           "CHUNK", "DEPTH_CUTOFF", "TAIL_PERIODS", "RING_TANH_SINH", "RING_GAUSS",
+           "TractionPieces", "xi_nodes", "check_tractions",
            "check_grid"]
 
 COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
@@ -73,10 +78,12 @@ COMPONENTS = {"sphere": ("sigma_rr", "sigma_tt", "sigma_zz", "sigma_rz"),
 CHUNK = 250_000
 """Numbers in one working array of a chunk (2 MB)."""
 
-# measured: benchmarks/report_stresses.py section 3 (the surface sigma_rr moves by 2.1e-5 p0
-# against a cut at 64000)
+# tested: tests/test_stresses_tangential.py (the tangential field's surface row with this cut
+# is the interior's limit to 1e-4; report_stresses.py section 3 measured 2.1e-5 p0 against a
+# cut at 64000 for the axisymmetric surface, which is now in closed form)
 XI_SURFACE = 4000.0
-"""Upper end of the xi integral of the shear's part of the surface (z = 0) stresses."""
+"""Upper end of the xi integral of the tangential field's surface (z = 0) stresses
+(:mod:`contactlib.stresses_tangential`); the axisymmetric surface row is in closed form."""
 
 # exact: e^-36 = 2.3e-16, below the double precision of the integrand's scale
 DEPTH_CUTOFF = 36.0
@@ -124,14 +131,16 @@ def _plane_antiderivatives(u: np.ndarray, z: np.ndarray) -> dict[str, np.ndarray
     ``M3``, ``M4``.
     """
     d = u * u + z * z
-    dsafe = np.where(d > 0, d, 1.0)
-    at = np.arctan2(u, z)
-    zu = z * u / (2.0 * dsafe)
-    return {"z3M0": zu + 0.5 * at,
-            "z2M1": -z * z / (2.0 * dsafe),
-            "zM2": -zu + 0.5 * at,
-            "M3": np.where(d > 0, 0.5 * np.log(dsafe), 0.0) + z * z / (2.0 * dsafe),
-            "M4": u - 1.5 * z * at + z * z * u / (2.0 * dsafe)}
+    dsafe = np.where(d > 0, d, 1.0)  # ln(dsafe) = 0 where d = 0
+    zinv = z * (0.5 / dsafe)
+    zu = zinv * u
+    half_at = 0.5 * np.arctan2(u, z)
+    z2M1 = -z * zinv
+    return {"z3M0": half_at + zu,
+            "z2M1": z2M1,
+            "zM2": half_at - zu,
+            "M3": 0.5 * np.log(dsafe) - z2M1,
+            "M4": u - 3.0 * z * half_at - z2M1 * u}
 
 
 def halfplane_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
@@ -214,12 +223,14 @@ def _halfplane_pieces(sa: np.ndarray, sb: np.ndarray, pa: np.ndarray, pb: np.nda
     X, Z = np.meshgrid(xs, zs)
     xf, zf = X.ravel(), Z.ravel()
     out = {k: np.empty(xf.size) for k in ("sigma_xx", "sigma_zz", "sigma_xz")}
+    # a sum over the pieces of c (F(x - sa) - F(x - sb)) as node weights times F at nodes
+    cp, mp, cq, mq = (np.bincount(ia, v, nodes.size) - np.bincount(ib, v, nodes.size)
+                      for v in (cp, mp, cq, mq))
     step = max(1, CHUNK // nodes.size)
     for i in range(0, xf.size, step):
         xc, zc = xf[i:i + step], zf[i:i + step]
-        fn = _plane_antiderivatives(xc[:, None] - nodes, zc[:, None])
+        dm = _plane_antiderivatives(xc[:, None] - nodes, zc[:, None])
         # int over a piece of (A - m u) K(u) du, u from x - sb up to x - sa, A = c + m x
-        dm = {k: f[:, ia] - f[:, ib] for k, f in fn.items()}
 
         def weighted(key: str, c: np.ndarray, m: np.ndarray) -> np.ndarray:
             d = dm[key]
@@ -243,16 +254,43 @@ PANEL = 2.0 * math.pi
 """Panel width of the xi quadrature times (1 + max r): one period of the fastest
 oscillation, cos((1 + r) xi), a panel of 8 Gauss-Legendre points."""
 
+# tested: tests/test_stresses.py (the tail panels against 8 points a period everywhere, to
+# 1e-11; the 32-point rule's relative error on e^{i 8 pi t} over a panel is 3e-19)
+TAIL_PERIODS = 8
+"""The half-space's xi quadrature beyond its first ``2 TAIL_PERIODS`` panels: panels of
+TAIL_PERIODS periods of the fastest oscillation with 32 Gauss-Legendre points (4 a period
+where the first panels have 8; the 8-point rule's relative error on one period is 2e-10,
+the 32-point rule's on 8 periods 3e-19). A depth that still contributes there (xi z < 40)
+decays by at most e^{-20} over such a panel, which the rule integrates as exactly."""
+_GAUSS_TAIL = np.polynomial.legendre.leggauss(32)
+
+
+def _gauss_panels(edges: np.ndarray, rule: tuple[np.ndarray, np.ndarray]
+                  ) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes and weights of the Gauss-Legendre ``rule`` on the panels between ``edges``."""
+    t, w = rule
+    half = 0.5 * np.diff(edges)
+    nodes = (0.5 * (edges[:-1] + edges[1:]))[:, None] + half[:, None] * t[None, :]
+    return nodes.ravel(), (half[:, None] * w[None, :]).ravel()
+
 
 def xi_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
     """Gauss-Legendre nodes and weights on panels of width PANEL/(1 + r_max) on [0, xi_max]."""
     width = PANEL / (1.0 + r_max)
     panels = max(1, int(math.ceil(xi_max / width)))
-    edges = np.linspace(0.0, xi_max, panels + 1)
-    t, w = _GAUSS
-    half = 0.5 * np.diff(edges)
-    nodes = (0.5 * (edges[:-1] + edges[1:]))[:, None] + half[:, None] * t[None, :]
-    return nodes.ravel(), (half[:, None] * w[None, :]).ravel()
+    return _gauss_panels(np.linspace(0.0, xi_max, panels + 1), _GAUSS)
+
+
+def _halfspace_nodes(xi_max: float, r_max: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`xi_nodes` up to two tail panels, then the tail panels (``TAIL_PERIODS``)."""
+    tail = TAIL_PERIODS * PANEL / (1.0 + r_max)
+    start = 2.0 * tail
+    if xi_max <= start + tail:
+        return xi_nodes(xi_max, r_max)
+    k0, w0 = xi_nodes(start, r_max)
+    panels = int(math.ceil((xi_max - start) / tail))
+    k1, w1 = _gauss_panels(np.linspace(start, xi_max, panels + 1), _GAUSS_TAIL)
+    return np.concatenate([k0, k1]), np.concatenate([w0, w1])
 
 
 class TractionPieces:
@@ -266,6 +304,7 @@ class TractionPieces:
                  qa: np.ndarray, qb: np.ndarray) -> None:
         h = sb - sa
         self.sa, self.sb = sa, sb
+        self.qa, self.qb = qa, qb
         self.mp, self.mq = (pb - pa) / h, (qb - qa) / h
         self.cp, self.cq = pa - self.mp * sa, qa - self.mq * sa
         self.nodes = np.union1d(sa, sb)
@@ -274,6 +313,12 @@ class TractionPieces:
     @classmethod
     def from_nodes(cls, r: np.ndarray, p: np.ndarray, q: np.ndarray) -> "TractionPieces":
         return cls(r[:-1], r[1:], p[:-1], p[1:], q[:-1], q[1:])
+
+    def on_nodes(self, c: np.ndarray) -> np.ndarray:
+        """Per-node weights of a sum over the pieces of c (g(sb) - g(sa)): sum_j g(node_j)
+        times the result."""
+        n = self.nodes.size
+        return np.bincount(self.ib, c, n) - np.bincount(self.ia, c, n)
 
     def at(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """p and q at ``x`` (the last piece starting at or before x; 0 outside them all)."""
@@ -293,23 +338,23 @@ class TractionPieces:
         """P(k) = int p J0(k r) r dr and Q(k) = int q J1(k r) r dr, in closed form.
 
         On each piece int r J0 = x J1 / k^2, int r^2 J0 = (x^2 J1 + x J0 - int_0^x J0) /
-        k^3, int r J1 = (int_0^x J0 - x J0) / k^2, int r^2 J1 = x^2 J2 / k^3 (x = k r).
+        k^3, int r J1 = (int_0^x J0 - x J0) / k^2, int r^2 J1 = x^2 J2 / k^3 (x = k r),
+        summed over the pieces as weights on their ends (:meth:`on_nodes`).
         """
         P, Q = np.empty(k.size), np.empty(k.size)
+        a0, a1, b0, b1 = (self.on_nodes(c) for c in (self.cp, self.mp, self.cq, self.mq))
         step = max(1, CHUNK // self.nodes.size)
         for i in range(0, k.size, step):
-            kc = k[i:i + step, None]
-            x = kc * self.nodes[None, :]
+            kk = k[i:i + step]
+            x = kk[:, None] * self.nodes[None, :]
             j0, j1 = sp.j0(x), sp.j1(x)
             ij0 = _integral_j0(x, j0, j1)
             small = x <= 1.0  # the recurrence J2 = 2 J1/x - J0 cancels at small x
             j2 = 2.0 * j1 / np.where(small, 1.0, x) - j0
             j2[small] = sp.jv(2, x[small])
-            kk = kc[:, 0]
-            d = [g[:, self.ib] - g[:, self.ia]
-                 for g in (x * j1, x * x * j1 + x * j0 - ij0, ij0 - x * j0, x * x * j2)]
-            P[i:i + step] = (d[0] @ self.cp) / kk**2 + (d[1] @ self.mp) / kk**3
-            Q[i:i + step] = (d[2] @ self.cq) / kk**2 + (d[3] @ self.mq) / kk**3
+            xj0, xj1 = x * j0, x * j1
+            P[i:i + step] = (xj1 @ a0) / kk**2 + ((x * xj1 + xj0 - ij0) @ a1) / kk**3
+            Q[i:i + step] = ((ij0 - xj0) @ b0) / kk**2 + ((x * x * j2) @ b1) / kk**3
         return P, Q
 
 
@@ -318,7 +363,8 @@ class TractionPieces:
 INTEGRAL_J0_SWITCH = 15.0
 """Up to this argument ``int_0^x J0`` is scipy's ``itj0y0`` (9.8e-12 off at 14.9). Beyond
 it ``itj0y0`` drifts: 4.5e-10 off at 20 in scipy 1.13 and 1.17, and 1.13's is of order 1e10
-from x ~ 21 on. Between it and ``INTEGRAL_J0_ASYMPTOTIC`` the integral is its value at 15
+from x ~ 21 on. Between it and ``INTEGRAL_J0_ASYMPTOTIC`` the integral is a Chebyshev series of degree
+32 (``_INTEGRAL_J0_MID``, within 1e-14 of mpmath) interpolating its value at 15
 (``_INTEGRAL_J0_AT_SWITCH``, from mpmath's x 1F2(1/2; 1, 3/2; -x^2/4) at 40 digits) plus
 the rest by 24-point Gauss-Legendre (J0 is entire, the interval at most 15 long: below
 1e-14)."""
@@ -348,33 +394,54 @@ def _integral_j0_asymptotic(x: np.ndarray, j0: np.ndarray, j1: np.ndarray) -> np
     ``j0``, ``j1`` are J0(x) and J1(x)."""
     u = 1.0 / (x * x)
     c = _DOUBLE_FACTORIAL_SQUARED
-    s0 = np.zeros_like(x)
-    t1 = np.zeros_like(x)
-    for k in range(_ASYMPTOTIC_TERMS, -1, -1):
-        s0 = s0 * u + (-1)**k * c[k]
+    top = _ASYMPTOTIC_TERMS
+    s0 = np.full_like(x, (-1)**top * c[top])
+    t1 = np.full_like(x, (-1)**top * c[top] / (1 - 2 * top))
+    for k in range(top - 1, -1, -1):
+        s0 *= u
+        s0 += (-1)**k * c[k]
         if k > 0:
-            t1 = t1 * u + (-1)**k * c[k] / (1 - 2 * k)
-    return 1.0 + j1 * s0 - x * j0 * (t1 * u)
+            t1 *= u
+            t1 += (-1)**k * c[k] / (1 - 2 * k)
+    t1 *= u
+    return 1.0 + j1 * s0 - x * j0 * t1
+
+
+def _integral_j0_gauss(x: np.ndarray) -> np.ndarray:
+    """int_0^x J0 for x in [INTEGRAL_J0_SWITCH, INTEGRAL_J0_ASYMPTOTIC]: the value at the
+    switch plus 24-point Gauss-Legendre (fits ``_INTEGRAL_J0_MID`` once)."""
+    start = INTEGRAL_J0_SWITCH
+    half = 0.5 * (x - start)
+    t, w = _GAUSS_24
+    nodes = (start + half)[:, None] + half[:, None] * t[None, :]
+    return _INTEGRAL_J0_AT_SWITCH + half * (sp.j0(nodes) @ w)
+
+
+_MID_CENTRE = 0.5 * (INTEGRAL_J0_ASYMPTOTIC + INTEGRAL_J0_SWITCH)
+_MID_HALF = 0.5 * (INTEGRAL_J0_ASYMPTOTIC - INTEGRAL_J0_SWITCH)
+# tested: tests/test_stresses.py (int_0^x J0 against mpmath to 2e-11 across [15, 30]);
+# degree 32 interpolates the Gauss-Legendre values to 1e-14 (28: 2e-14, 24: 2e-12)
+_INTEGRAL_J0_MID_DEGREE = 32
+_INTEGRAL_J0_MID = np.polynomial.chebyshev.chebinterpolate(
+    lambda u: _integral_j0_gauss(_MID_CENTRE + _MID_HALF * u), _INTEGRAL_J0_MID_DEGREE)
 
 
 def _integral_j0(x: np.ndarray, j0: np.ndarray | None = None,
                  j1: np.ndarray | None = None) -> np.ndarray:
     """int_0^x J0(t) dt, the same in every supported scipy (see INTEGRAL_J0_SWITCH);
-    ``j0``, ``j1``: J0(x) and J1(x) if the caller has them."""
-    out = np.empty_like(x)
-    low = x <= INTEGRAL_J0_SWITCH
-    out[low] = sp.itj0y0(x[low])[0]
-    high = x > INTEGRAL_J0_ASYMPTOTIC
-    xh = x[high]
-    out[high] = _integral_j0_asymptotic(xh, sp.j0(xh) if j0 is None else j0[high],
-                                        sp.j1(xh) if j1 is None else j1[high])
-    mid = ~(low | high)
-    if mid.any():
-        start = INTEGRAL_J0_SWITCH
-        half = 0.5 * (x[mid] - start)
-        t, w = _GAUSS_24
-        nodes = (start + half)[:, None] + half[:, None] * t[None, :]
-        out[mid] = _INTEGRAL_J0_AT_SWITCH + half * (sp.j0(nodes) @ w)
+    ``j0``, ``j1``: J0(x) and J1(x) if the caller has them. The asymptotic series is
+    evaluated everywhere (no gathers of the large arrays) and replaced below its range."""
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        out = _integral_j0_asymptotic(x, sp.j0(x) if j0 is None else j0,
+                                      sp.j1(x) if j1 is None else j1)
+    below = x <= INTEGRAL_J0_ASYMPTOTIC
+    if below.any():
+        xb = x[below]
+        vals = np.polynomial.chebyshev.chebval((xb - _MID_CENTRE) / _MID_HALF,
+                                               _INTEGRAL_J0_MID)
+        low = xb <= INTEGRAL_J0_SWITCH
+        vals[low] = sp.itj0y0(xb[low])[0]
+        out[below] = vals
     return out
 
 
@@ -399,8 +466,9 @@ def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
     dict of str to ndarray, shape (len(z), len(x))
         ``sigma_rr``, ``sigma_tt`` (hoop), ``sigma_zz``, ``sigma_rz`` in the unit of the
         tractions, tension positive. Error: the xi quadrature's, below 1e-9 of the
-        tractions at z > 0; on z = 0 the shear's part of sigma_rr and sigma_tt carries
-        the truncation at ``XI_SURFACE`` (docs/stresses.md).
+        tractions at z > 0; on z = 0 the ring integrals', 2e-12 (closed forms otherwise).
+        A radial shear with q(0) != 0 is log-infinite on the surface's axis: there
+        int q/t dt is started at t = 1/``XI_SURFACE`` (a finite stand-in, no data).
     """
     r, p, q = check_tractions(xi, pressure, shear)
     return _halfspace_pieces(TractionPieces.from_nodes(r, p, q), x, z, nu)
@@ -412,72 +480,176 @@ def _halfspace_pieces(pieces: TractionPieces, x: Any, z: Any, nu: float) -> dict
     rr = np.abs(xs)
     out = {k: np.zeros((zs.size, rr.size)) for k in COMPONENTS["sphere"]}
     inside, surface = zs > 0, zs == 0
-    r_max = float(max(rr.max(), pieces.sb.max()))
-    xi_max = 0.0
     if np.any(inside):
-        xi_max = DEPTH_CUTOFF / zs[inside].min()
-    if np.any(surface) and (np.any(pieces.cq != 0) or np.any(pieces.mq != 0)):
-        xi_max = max(xi_max, XI_SURFACE)
-    if xi_max > 0:
-        k, w = xi_nodes(xi_max, r_max)
+        r_max = float(max(rr.max(), pieces.sb.max()))
+        k, w = _halfspace_nodes(DEPTH_CUTOFF / zs[inside].min(), r_max)
         P, Q = pieces.hankel(k)
-        _hankel_sums(out, k, w, P, Q, rr, zs, nu, inside, surface)
+        _hankel_sums(out, k, w, P, Q, rr, zs, nu, inside)
     if np.any(surface):
-        # the pressure's part in closed form (Johnson Ch. 3), q's part from the sums
+        # closed forms: the pressure's part (Johnson Ch. 3) and the shear's (ring integrals)
         pr, qr = pieces.at(rr)
         p_axis = pieces.at(np.zeros(1))[0][0]
         with np.errstate(invalid="ignore", divide="ignore"):
             moment = np.where(rr > 0, pieces.moment(rr) / np.where(rr > 0, rr, 1)**2,
                               0.5 * p_axis)
+        q_rr, q_tt = _surface_shear(pieces, rr, nu)
         j = np.flatnonzero(surface)
         out["sigma_zz"][j] = -pr
         out["sigma_rz"][j] = -qr
-        out["sigma_rr"][j] += -pr + (1 - 2 * nu) * moment
-        out["sigma_tt"][j] += -2 * nu * pr - (1 - 2 * nu) * moment
+        out["sigma_rr"][j] = -pr + (1 - 2 * nu) * moment + q_rr
+        out["sigma_tt"][j] = -2 * nu * pr - (1 - 2 * nu) * moment + q_tt
     return out
 
 
 def _hankel_sums(out: dict[str, np.ndarray], k: np.ndarray, w: np.ndarray, P: np.ndarray,
                  Q: np.ndarray, r: np.ndarray, z: np.ndarray, nu: float,
-                 inside: np.ndarray, surface: np.ndarray) -> None:
-    """Add the xi integrals to ``out``: (J(k r) w) @ (polynomial in k z times e^{-k z}).
-
-    Inside (z > 0) all of the field; on the surface only the shear's part of sigma_rr and
-    sigma_tt (k integrals cut at ``XI_SURFACE``).
-    """
-    zi = z[inside]
-    zmin = float(zi.min()) if zi.size else math.inf
-    step = max(1, CHUNK // max(r.size, zi.size, 1))
-    ksurf = k <= XI_SURFACE
+                 inside: np.ndarray) -> None:
+    """Add the xi integrals of the depths z > 0 (``inside``) to ``out``: (J(k r) w) @
+    (polynomial in k z times e^{-k z}), each depth only over the chunks of k (increasing)
+    where k z < 40 (e^{-k z} < 4e-18 beyond)."""
+    jin = np.flatnonzero(inside)
+    zi = z[jin]
+    step = max(1, min(SUM_CHUNK, CHUNK // max(r.size, zi.size, 1)))
     for i in range(0, k.size, step):
         kc, wc, Pc, Qc = k[i:i + step], w[i:i + step], P[i:i + step], Q[i:i + step]
+        active = kc[0] * zi < 40.0
+        if not active.any():
+            break
+        ja, kz = jin[active], np.outer(kc, zi[active])
         x = np.outer(r, kc)
         j0 = sp.j0(x) * wc
         j1 = sp.j1(x)
         j1x = np.where(x > 0, j1 / np.where(x > 0, x, 1.0), 0.5) * wc
         j1 = j1 * wc
-        if zi.size and kc[0] * zmin < 40.0:  # else e^{-k z} < 4e-18 at every depth
-            kz = np.outer(kc, zi)
-            # exact zeros beyond e^-40 (denormals would slow every product down)
-            e0 = np.where(kz < 40.0, np.exp(-np.minimum(kz, 40.0)), 0.0)
-            e1 = kz * e0
-            kP, kQ = (kc * Pc)[:, None], (kc * Qc)[:, None]
-            a1 = (1 - 2 * nu) * kP - 2 * (1 - nu) * kQ  # the J1/(k r) bracket
-            b1 = kQ - kP
-            jin = np.flatnonzero(inside)
-            out["sigma_zz"][jin] += (j0 @ (-kP * e0 + b1 * e1)).T
-            out["sigma_rz"][jin] += (j1 @ (-kQ * e0 + b1 * e1)).T
-            bracket = j1x @ (a1 * e0 + b1 * e1)
-            out["sigma_rr"][jin] += (j0 @ ((2 * kQ - kP) * e0 - b1 * e1)).T + bracket.T
-            out["sigma_tt"][jin] += (j0 @ (2 * nu * b1 * e0)).T - bracket.T
-        if np.any(surface):
-            m = ksurf[i:i + step]
-            kQs = kc * Qc * m
-            rr_part = j0 @ (2 * kQs) - j1x @ (2 * (1 - nu) * kQs)
-            tt_part = j0 @ (2 * nu * kQs) + j1x @ (2 * (1 - nu) * kQs)
-            js = np.flatnonzero(surface)
-            out["sigma_rr"][js] += rr_part[None, :]
-            out["sigma_tt"][js] += tt_part[None, :]
+        # exact zeros beyond e^-40 (denormals would slow every product down)
+        e0 = np.where(kz < 40.0, np.exp(-np.minimum(kz, 40.0)), 0.0)
+        e1 = kz * e0
+        kP, kQ = (kc * Pc)[:, None], (kc * Qc)[:, None]
+        a1 = (1 - 2 * nu) * kP - 2 * (1 - nu) * kQ  # the J1/(k r) bracket
+        b1 = kQ - kP
+        out["sigma_zz"][ja] += (j0 @ (-kP * e0 + b1 * e1)).T
+        out["sigma_rz"][ja] += (j1 @ (-kQ * e0 + b1 * e1)).T
+        bracket = j1x @ (a1 * e0 + b1 * e1)
+        out["sigma_rr"][ja] += (j0 @ ((2 * kQ - kP) * e0 - b1 * e1)).T + bracket.T
+        out["sigma_tt"][ja] += (j0 @ (2 * nu * b1 * e0)).T - bracket.T
+
+
+# ----------------------------------------------------------------------------- surface shear
+def _tanh_sinh(step: float, span: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Tanh-sinh nodes on [0, 1]: x, 1 - x (accurate near 1) and the weights."""
+    s = np.arange(-span, span + 0.5 * step, step)
+    y = 0.5 * math.pi * np.sinh(s)
+    return (1.0 / (1.0 + np.exp(-2.0 * y)), 1.0 / (1.0 + np.exp(2.0 * y)),
+            step * 0.25 * math.pi * np.cosh(s) / np.cosh(y)**2)
+
+
+# measured: benchmarks/bench_stresses.py (the surface row against rules of twice the density,
+# 2e-12 p0 on a grid through the tractions' nodes): 39 nodes, weights below 1e-20 at the ends
+RING_TANH_SINH = (1.0 / 6.0, 3.2)
+"""(step, span) of the tanh-sinh rule of the ring integrals next to the log singularity at
+t = r: nodes s = -span ... span, step apart."""
+# measured: benchmarks/bench_stresses.py (as RING_TANH_SINH): the nearest singularity (t = r)
+# lies 3 half-lengths from a far piece's centre, 3.73^-20 = 4e-12
+RING_GAUSS = 10
+"""Gauss-Legendre points of a ring integral over a piece at least its length away from r."""
+# exact: below it the series' next term is 5e-17 relative, above it the direct form loses
+# at most 1e-13 to the cancellation of K - E
+RING_SERIES_M = 1e-3
+"""m = (min/max)^2 below which (K(m) - E(m))/sqrt(m) comes from its Taylor series."""
+# measured: benchmarks/bench_stresses.py (k values a chunk of the depth sums: depths drop
+# out chunk by chunk as xi z passes 40; 32 to 64 were fastest, 512 1.2 times slower)
+SUM_CHUNK = 32
+
+
+def _ring_kernel(r: np.ndarray, t: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    """W(r, t) = int_0^inf J1(k r) J1(k t) dk = 2/(pi M) (K(m) - E(m))/sqrt(m), M = max(r,
+    t) > 0, m = (min/max)^2 (elliptic parameter); ``delta`` = t - r given accurately (the
+    log singularity at t = r); 0 where min(r, t) = 0."""
+    big = np.maximum(r, t)
+    ratio = np.minimum(r, t) / big
+    m1 = np.abs(delta) / big
+    m1 *= 1.0 + ratio
+    np.maximum(m1, 1e-300, out=m1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = (sp.ellipkm1(m1) - sp.ellipe(1.0 - m1)) / ratio
+    small = ratio * ratio < RING_SERIES_M
+    if small.any():
+        q = ratio[small]
+        m = q * q
+        out[small] = q * (0.5 + m * (3 / 16 + m * (15 / 128 + m * (175 / 2048
+                                                                  + m * 2205 / 32768))))
+        out[small] *= 0.5 * math.pi
+    out *= 2.0 / math.pi
+    out /= big
+    return out
+
+
+def _ring_moments(r: np.ndarray, sa: np.ndarray, sb: np.ndarray) -> tuple[np.ndarray, ...]:
+    """I_j[i, l] = int_{sa_l}^{sb_l} t^j W(r_i, t) dt for j = 1, 2 and r_i > 0: Gauss-Legendre
+    (``RING_GAUSS`` points) for a piece at least its length away from r_i, else tanh-sinh
+    (``RING_TANH_SINH``) on each side of r_i."""
+    shape = (r.size, sa.size)
+    R, A, B = (np.broadcast_to(v, shape) for v in (r[:, None], sa[None, :], sb[None, :]))
+    far = np.maximum(np.maximum(A - R, R - B), 0.0) >= B - A
+    moments = np.zeros((2,) + shape)
+    t0, w0 = np.polynomial.legendre.leggauss(RING_GAUSS)
+    rf, af, bf = R[far][:, None], A[far][:, None], B[far][:, None]
+    t = 0.5 * (af + bf) + 0.5 * (bf - af) * t0
+    wt = _ring_kernel(rf, t, t - rf) * (0.5 * (bf - af) * w0) * t
+    moments[0][far], moments[1][far] = wt.sum(axis=1), (wt * t).sum(axis=1)
+    rn, an, bn = R[~far][:, None], A[~far][:, None], B[~far][:, None]
+    x, xc, wx = _tanh_sinh(*RING_TANH_SINH)
+    cut = np.clip(rn, an, bn)
+    for lo, hi in ((an, cut), (cut, bn)):
+        length = hi - lo
+        t = lo + length * x
+        delta = np.where(x < 0.5, (lo - rn) + length * x, (hi - rn) - length * xc)
+        wt = _ring_kernel(rn, t, delta) * (length * wx) * t
+        moments[0][~far] += wt.sum(axis=1)
+        moments[1][~far] += (wt * t).sum(axis=1)
+    return moments[0], moments[1]
+
+
+def _surface_shear(pieces: TractionPieces, r: np.ndarray,
+                   nu: float) -> tuple[np.ndarray, np.ndarray]:
+    """The radial shear's part of sigma_rr and sigma_tt on the surface z = 0, at r >= 0.
+
+    With U(r) = int_0^inf Q(k) J1(k r) dk = int q(t) t W(r, t) dt (half the surface radial
+    displacement times E*), sigma_rr = 2 U' + 2 nu U/r and sigma_tt = 2 nu U' + 2 U/r (the
+    xi integrals of the module's notes at z = 0). W is homogeneous of degree -1, so r dW/dr
+    = -W - t dW/dt, and by parts r U' = sum over the pieces of int (c t + 2 m t^2) W dt minus
+    the jumps of q (ends included) times t^2 W(r, t) at them (a traction jump's stress is
+    log-singular there). On the axis U' = U/r = (1/2) int_0^inf q/t dt (log-infinite if
+    q(0) != 0, a radial traction that does not vanish on the axis: see the code).
+    """
+    out_rr, out_tt = np.zeros(r.size), np.zeros(r.size)
+    if not (np.any(pieces.cq != 0) or np.any(pieces.mq != 0)):
+        return out_rr, out_tt
+    n = pieces.nodes.size
+    jump = np.bincount(pieces.ib, pieces.qb, n) - np.bincount(pieces.ia, pieces.qa, n)
+    jumps = np.flatnonzero(jump)
+    axis = r == 0
+    pos = np.flatnonzero(~axis)
+    step = max(1, CHUNK // (pieces.sa.size * RING_GAUSS))
+    for i in range(0, pos.size, step):
+        idx = pos[i:i + step]
+        rp = r[idx]
+        i1, i2 = _ring_moments(rp, pieces.sa, pieces.sb)
+        u = i1 @ pieces.cq + i2 @ pieces.mq
+        tj = pieces.nodes[jumps]
+        wj = _ring_kernel(rp[:, None], tj[None, :], tj[None, :] - rp[:, None])
+        du = (i1 @ pieces.cq + 2.0 * (i2 @ pieces.mq) - (wj * tj**2) @ jump[jumps]) / rp
+        out_rr[idx] = 2.0 * du + 2.0 * nu * u / rp
+        out_tt[idx] = 2.0 * nu * du + 2.0 * u / rp
+    if np.any(axis):
+        # q(0) != 0 makes the axis value log-infinite: int q/t dt is then started at t =
+        # 1/XI_SURFACE (a finite stand-in, as the xi integral's cut there gave before)
+        start = np.maximum(pieces.sa, np.where(pieces.sa > 0, 0.0, 1.0 / XI_SURFACE))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            logs = np.where(pieces.cq != 0, pieces.cq * np.log(pieces.sb / start), 0.0)
+        value = (1 + nu) * (logs.sum() + pieces.mq @ (pieces.sb - pieces.sa))
+        out_rr[axis] = out_tt[axis] = value
+    return out_rr, out_tt
 
 
 def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float,

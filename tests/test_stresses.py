@@ -323,8 +323,8 @@ def test_radial_shear_near_the_surface_against_the_disc_kernels():
 
 def test_radial_shear_surface_value_on_the_axis(partial):
     """sigma_rr(0, 0) = (1 + nu) int_0^1 q(t)/t dt - (1 + 2 nu) p(0)/2 in closed form for
-    the piecewise-linear q; the surface integral is cut at XI_SURFACE = 4000, whose
-    truncation error was measured at 2e-5 (16000: 1e-6)."""
+    the piecewise-linear q (the surface row was a xi integral cut at 4000, 2e-5 off; it is
+    now in closed form too, the ring integrals of test_radial_shear_surface_row_*)."""
     sol = partial[256]
     t, p, q = traction_samples(sol)
     m = np.diff(q) / np.diff(t)
@@ -668,3 +668,69 @@ def test_scene_subsurface_on_a_layer_is_the_api_field(tmp_path):
     assert code == 0
     field = io.read_dataset(out)
     assert field.attrs["base"] == "bonded" and np.isfinite(field.von_mises.values).any()
+
+
+def test_radial_shear_surface_row_is_the_disc_kernels_closed_form():
+    """The surface row z = 0 of q = r on r < a, tabulated on 40 pieces, against the surface
+    displacement of contactlib.kernels.disc.shear_disc (the paper's elliptic closed forms)
+    by Hooke's law with sigma_zz = 0: sigma_rr = du/dr + nu u/r, sigma_tt = u/r + nu du/dr
+    (E* = 1, the unit of q). The ring integrals leave 1e-14 (3e-11 at r = 1e-6, the
+    kernels' own); the jump of q at r = a is included."""
+    from contactlib.kernels.disc import shear_disc
+
+    t = np.linspace(0.0, 1.0, 41)
+    r = np.array([1e-6, 0.013, 0.3, 0.6, 0.999, 1.0 - 1e-9, 1.001, 1.5, 2.0])
+    _, u, du = shear_disc(r, 1.0, NU)
+    f = halfspace_stresses(t, 0 * t, t, np.concatenate([[0.0], r]), [0.0], NU)
+    assert np.max(np.abs(f["sigma_rr"][0, 1:] - (du + NU * u / r))) < 1e-10
+    assert np.max(np.abs(f["sigma_tt"][0, 1:] - (u / r + NU * du))) < 1e-10
+    # the axis: sigma_rr = sigma_tt = (1 + nu) int_0^1 q/t dt = 1 + nu
+    assert abs(f["sigma_rr"][0, 0] - (1 + NU)) < 1e-12 and abs(f["sigma_tt"][0, 0] - (1 + NU)) < 1e-12
+
+
+def test_radial_shear_surface_row_of_a_uniform_annulus_against_mpmath():
+    """q = 1 on 0.3 < r < 0.8 (constant pieces, jumps at both ends): U(r) = int t W(r, t) dt
+    with W = int_0^inf J1(k r) J1(k t) dk = 2/(pi M) (K(m) - E(m))/sqrt(m) (m = (min/max)^2,
+    M = max), integrated by mpmath on either side of t = r and differentiated by
+    mpmath.diff; sigma_rr = 2 U' + 2 nu U/r, sigma_tt = 2 nu U' + 2 U/r. W itself against the
+    Bessel integral (mpmath.quadosc) at one point."""
+    import mpmath
+
+    mpmath.mp.dps = 20
+
+    def kernel(r, t):
+        big, small = max(r, t), min(r, t)
+        m = (small / big)**2
+        return 2 / (mpmath.pi * big) * (mpmath.ellipk(m) - mpmath.ellipe(m)) / mpmath.sqrt(m)
+
+    def u_of(r):
+        cuts = [0.3] + ([r] if 0.3 < r < 0.8 else []) + [0.8]
+        return mpmath.quad(lambda t: t * kernel(r, t), cuts)
+
+    bessel = mpmath.quadosc(lambda k: mpmath.besselj(1, 0.3 * k) * mpmath.besselj(1, 0.7 * k),
+                            [0, mpmath.inf], period=2 * mpmath.pi / 0.3)
+    assert abs(float(kernel(0.3, 0.7)) - float(bessel)) < 1e-12
+    r = [0.1, 0.5, 0.75, 1.2]
+    f = halfspace_stresses([0.3, 0.8], [0.0, 0.0], [1.0, 1.0], r, [0.0], NU)
+    for i, ri in enumerate(r):
+        u, du = float(u_of(ri)), float(mpmath.diff(u_of, ri))
+        assert abs(f["sigma_rr"][0, i] - (2 * du + 2 * NU * u / ri)) < 1e-9
+        assert abs(f["sigma_tt"][0, i] - (2 * NU * du + 2 * u / ri)) < 1e-9
+    mpmath.mp.dps = 15
+
+
+def test_halfspace_tail_panels_change_the_field_by_round_off(monkeypatch, partial):
+    """The wide tail panels of the xi quadrature (TAIL_PERIODS, 4 points a period) against 8
+    points a period everywhere (TAIL_PERIODS huge), and the field against halved panels
+    (convergence): 1.5e-12 and 1e-10 measured, on the benchmark's grid's first rows."""
+    import contactlib.stresses as stresses
+
+    xi, p, q = traction_samples(partial[256])
+    x, z = np.linspace(0.0, 2.0, 41), np.array([0.0202, 0.05, 0.3, 1.0])
+    f = halfspace_stresses(xi, p, q, x, z, NU)
+    monkeypatch.setattr(stresses, "TAIL_PERIODS", 10**6)
+    g = halfspace_stresses(xi, p, q, x, z, NU)
+    monkeypatch.setattr(stresses, "PANEL", stresses.PANEL / 2)
+    h = halfspace_stresses(xi, p, q, x, z, NU)
+    assert max(np.max(np.abs(f[c] - g[c])) for c in f) < 1e-11
+    assert max(np.max(np.abs(f[c] - h[c])) for c in f) < 1e-9

@@ -53,7 +53,7 @@ from .model import Contact
 
 __all__ = ["ERROR_AT_256", "MAX_N", "MIN_TOLERANCE", "check_tolerance", "predicted_error",
            "plan", "estimate", "solve_to_tolerance",
-           "resolving_n", "DEFAULT_MAX_ERROR", "EXTRAPOLATED_ERROR_AT_256", "RELATIVE_COST",
+           "resolving_n", "DEFAULT_MAX_ERROR", "EXTRAPOLATED_ERROR_AT_256",
            "PLANNED_METHODS", "predicted_method_error", "relative_cost", "planned_body",
            "default_noise",
            "MODEL_SLAB_RATIO"]
@@ -63,9 +63,7 @@ MAX_N = validate.MAX_N
 MIN_N = 64  # n/4 >= 16 for the order estimate, and n a multiple of 64 (nested meshes)
 MIN_TOLERANCE = validate.MIN_TOLERANCE
 MAX_TOLERANCE = validate.MAX_TOLERANCE
-# convention: the plan's margin below the tolerance (whether plans reach it:
-# tests/test_extrapolated_method.py and tests/test_error_estimate.py, solves with tolerance=)
-SAFETY = 2.0  # the plan aims at tolerance / SAFETY
+SAFETY = validate.DEFAULT_PLAN_SAFETY  # the default method's plan aims at tolerance / SAFETY
 DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR  # a larger estimated k error: not resolved
 
 # Relative k error of the default method at n = 256 (nu = 0.3) against the
@@ -105,21 +103,6 @@ LOG_ESTIMATE_AT_1024 = np.array([2.0e-10, 2.0e-10, 2.8e-10, 5.3e-10, 9.0e-10, 6.
 # exact: 32 x 16: the five levels nest down to n/32, a mesh of sixteenths
 LOG_N_MULTIPLE = 512
 PLANNED_METHODS = tuple(name for name, m in validate.METHOD_REGISTRY.items() if m.planned)
-# Time a case costs relative to the default method's at the same n, both with their error
-# estimates (benchmarks/bench_frontier.py, part d: stages.solve_cases, 5 cases c/a = 0.1
-# ... 0.9): extrapolated / default at n = 128, 256, 512 was 0.86, 0.92, 0.84 (sphere) and
-# 0.80, 0.81, 0.78 (cylinder) on the Intel machine with the compiled kernels, 0.87, 0.83,
-# 0.97 and 0.82, 0.80, 0.84 on the AMD one before them (the default method's estimate
-# solves n/2 and n/4 again; the extrapolated method's levels are its estimate). It was 1.5
-# (an early measurement, 1.2 ... 1.6), which planned the default method at n = 128 for
-# 3e-4 (sphere) and 1e-3 ... 3e-4 (cylinder), where the extrapolated method's n = 128 is
-# cheaper and 20 ... 50 times more accurate.
-# measured: benchmarks/bench_frontier.py part (d) (extrapolated / default 0.78 ... 0.92)
-RELATIVE_COST = {"default": 1.0, "extrapolated": 0.9}
-# The plan aims at tolerance / safety: the default method's table is interpolated from the
-# study's medians (SAFETY), the extrapolated method's constant is the largest error measured
-# over 30 cases (1.5 is enough: 6.5e-7 x 1.5 < 1e-6)
-PLAN_SAFETY = {"default": SAFETY, "extrapolated": 1.5}
 # The largest a/h of the (smooth-base) slab the error models were measured on: the paper's
 # cylinder case, a/h = 1/20 (the sphere's models are the half-space's alone)
 # limit: the slabs the error models were measured on (benchmarks/report_convergence_table.py; the
@@ -231,7 +214,7 @@ def relative_cost(method: str, n: int) -> float:
     """Time of one case, in units of the default method's at n = 256: ~n^2 (kernels) up to
     n = 1024, the dense LU's n^3 beyond."""
     scale = (n / 256.0) ** 2 * max(1.0, n / 1024.0)
-    return RELATIVE_COST[method] * scale
+    return validate.method_of(method).relative_cost * scale
 
 
 def _cheapest_n(method: str, geometry: Contact, stick_ratios: Sequence[float],
@@ -245,7 +228,7 @@ def _cheapest_n(method: str, geometry: Contact, stick_ratios: Sequence[float],
     """
     step = max(validate.method_of(method).n_multiple, 64)  # 64: the default method's plan
     inside = np.array([float(c) for c in stick_ratios if 0.0 < float(c) < 1.0])
-    limit = tolerance / PLAN_SAFETY[method]
+    limit = tolerance / validate.method_of(method).plan_safety
     for n in range(max(step, MIN_N), MAX_N + 1, step):
         if validate.method_of(method).own_estimate:  # c/a = 0 and 1 are exact
             # the truncation part is largest where its table is (mid c/a), the noise at the

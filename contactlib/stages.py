@@ -532,7 +532,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         method_for_levels = "default"  # (the extrapolated method solved it as the default)
     else:
         method_for_levels = method
-    if (rec.elements is not None or method_for_levels == "extrapolated"):
+    if rec.elements is not None or validate.method_of(method_for_levels).own_estimate:
         # a tolerance scene estimated k itself, or the extrapolated method did
         if validate.method_of(method).own_estimate:
             limit = _below_floor(rec, solved, notes)

@@ -83,6 +83,12 @@ class Method:
     coulomb : {"resultant", "coefficient"}
         Coulomb's law on the slip zone's resultant forces, or with the coefficient as
         the paper prints it.
+    relative_cost : float
+        A planned method's time for a case, with its error estimate, over the default
+        method's at the same n (:func:`contactlib.accuracy.relative_cost`).
+    plan_safety : float
+        A planned method's margin: the plan aims at tolerance / plan_safety
+        (:func:`contactlib.accuracy.plan`).
     """
 
     name: str
@@ -95,6 +101,8 @@ class Method:
     planned: bool = False
     own_estimate: bool = False
     coulomb: str = "resultant"
+    relative_cost: float = 1.0
+    plan_safety: float = 2.0
 
     @property
     def nested_estimate(self) -> bool:
@@ -111,13 +119,28 @@ MIN_N_DEFAULT_METHOD = 16
 EXTRAPOLATED_N_MULTIPLE = 128
 """The extrapolated method's n: a multiple of this (its n/8 level is nested in n)."""
 
+# convention: the default method's plan margin (tolerance / 2; whether plans reach it:
+# tests/test_extrapolated_method.py and tests/test_error_estimate.py, solves with tolerance=)
+DEFAULT_PLAN_SAFETY = 2.0
+# measured: benchmarks/bench_frontier.py part (d): the extrapolated method's time over the
+# default method's at the same n, both with their estimates (stages.solve_cases, 5 cases
+# c/a = 0.1 ... 0.9): 0.86, 0.92, 0.84 (sphere) and 0.80, 0.81, 0.78 (cylinder) at n = 128,
+# 256, 512 on one machine, 0.87, 0.83, 0.97 and 0.82, 0.80, 0.84 on another. (It was 1.5,
+# an early measurement, which planned the default method at n = 128 for 3e-4 where the
+# extrapolated method's n = 128 is cheaper and 20 ... 50 times more accurate.)
+EXTRAPOLATED_RELATIVE_COST = 0.9
+# tested: tests/test_extrapolated_method.py (the plan's margin: its constant is the largest
+# error measured over 30 cases, and 1.5 is enough: 6.5e-7 x 1.5 < 1e-6)
+EXTRAPOLATED_PLAN_SAFETY = 1.5
+
 METHOD_REGISTRY: dict[str, Method] = {m.name: m for m in (
     Method("default", 256, min_n=MIN_N_DEFAULT_METHOD, any_profile=True, coated=True,
-           planned=True),
+           planned=True, plan_safety=DEFAULT_PLAN_SAFETY),
     Method("paper", 16, nodal=False),
     Method("paper-literal", 16, nodal=False, coulomb="coefficient"),
     Method("extrapolated", 256, min_n=EXTRAPOLATED_N_MULTIPLE,
-           n_multiple=EXTRAPOLATED_N_MULTIPLE, planned=True, own_estimate=True),
+           n_multiple=EXTRAPOLATED_N_MULTIPLE, planned=True, own_estimate=True,
+           relative_cost=EXTRAPOLATED_RELATIVE_COST, plan_safety=EXTRAPOLATED_PLAN_SAFETY),
 )}
 """Every self-similar method: ours, the paper's scheme, the paper's scheme as printed, and
 ours on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""

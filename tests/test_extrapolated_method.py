@@ -565,7 +565,7 @@ def test_plan_covers_every_requested_stick_ratio():
             assert both >= n([0.5]) and both >= n([0.02, 0.98])
             for c in (0.02, 0.5, 0.98):
                 assert accuracy.predicted_method_error("extrapolated", geometry, c, both) \
-                    <= tol / accuracy.PLAN_SAFETY["extrapolated"]
+                    <= tol / validate.method_of("extrapolated").plan_safety
 
 
 @pytest.mark.parametrize("geometry", ["sphere", "cylinder"])

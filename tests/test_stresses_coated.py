@@ -74,7 +74,7 @@ def test_equal_materials_are_the_half_space(geometry):
     ref = (halfspace_stresses if geometry == "sphere" else halfplane_stresses)(
         XI, HERTZ, SHEAR, x, z, NU)
     dev = max(np.abs(f[c] - ref[c]).max() for c in f)
-    assert dev < 1e-10  # measured 1.5e-11 (sphere), 4e-15 (cylinder)
+    assert dev < 1e-10  # measured 1.5e-11 (sphere), 1.3e-14 (cylinder)
     if geometry == "sphere":  # deeper, on the axis: Boussinesq's integral
         deep = np.array([2.0, 4.0])
         g = layer_stresses(XI, HERTZ, 0.0 * HERTZ, [0.0], deep, NU, h, "elastic",
@@ -126,6 +126,23 @@ def test_interface_continuity_and_the_hooke_jump(geometry, substrate):
         below = ((1 - nu2**2) * rr[2] - nu2 * (1 + nu2) * zz[2]) / m
         assert np.abs(layer - below).max() < 1e-10  # measured 4.4e-11
         assert np.abs(tt[2] - nu2 * (rr[2] + zz[2])).max() < 1e-14  # the substrate's nu
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+@pytest.mark.parametrize("h,substrate", [(0.05, (0.01, 0.3)), (1.0, (0.01, 0.45))])
+def test_halving_the_k_panels_moves_the_field_by_little(geometry, h, substrate):
+    """A stiff coating on a very soft substrate (E2/E1 = 0.01, the fine panels near k = 0
+    matter), thin (a/h = 20) and thick (a/h = 1), the grid through layer and substrate:
+    halving every panel of the k integral moves the field by < 1e-9 p0 (measured 2.3e-13,
+    3.3e-14 thin; 1.9e-12, 5.0e-11 thick, sphere, cylinder; the field reaches 12 p0).
+    With the kernels' fine panels unsplit (FINE_SPLIT = 1) the thin cylinder moved 5e-8."""
+    x = np.linspace(0.0, 2.0, 11)
+    if geometry == "cylinder":
+        x = np.concatenate([-x[:0:-1], x])
+    z = np.unique(np.concatenate([np.linspace(0.0, 2.0, 11), [h / 2, h]]))
+    f, g = (layer_stresses(XI, HERTZ, SHEAR, x, z, NU, h, "elastic", geometry=geometry,
+                           substrate=substrate, refine=refine) for refine in (1, 2))
+    assert max(np.abs(f[c] - g[c]).max() for c in f) < 1e-9
 
 
 @pytest.mark.parametrize("geometry,substrate", [("sphere", (0.25, 0.2)),

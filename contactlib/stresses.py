@@ -363,10 +363,10 @@ class TractionPieces:
 INTEGRAL_J0_SWITCH = 15.0
 """Up to this argument ``int_0^x J0`` is scipy's ``itj0y0`` (9.8e-12 off at 14.9). Beyond
 it ``itj0y0`` drifts: 4.5e-10 off at 20 in scipy 1.13 and 1.17, and 1.13's is of order 1e10
-from x ~ 21 on. Between it and ``INTEGRAL_J0_ASYMPTOTIC`` the integral is a Chebyshev series of degree
-32 (``_INTEGRAL_J0_MID``, within 1e-14 of mpmath) interpolating its value at 15
-(``_INTEGRAL_J0_AT_SWITCH``, from mpmath's x 1F2(1/2; 1, 3/2; -x^2/4) at 40 digits) plus
-the rest by 24-point Gauss-Legendre (J0 is entire, the interval at most 15 long: below
+from x ~ 21 on. Between it and ``INTEGRAL_J0_ASYMPTOTIC`` the integral is a Chebyshev
+series of degree 32 (``_INTEGRAL_J0_MID``, within 1e-14 of mpmath) interpolating its value
+at 15 (``_INTEGRAL_J0_AT_SWITCH``, from mpmath's x 1F2(1/2; 1, 3/2; -x^2/4) at 40 digits)
+plus the rest by 24-point Gauss-Legendre (J0 is entire, the interval at most 15 long: below
 1e-14)."""
 
 # tested: tests/test_stresses.py (int_0^x J0 against mpmath to 2e-11, x = 0.5 ... 4321);

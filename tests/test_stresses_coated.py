@@ -177,25 +177,28 @@ def test_force_across_every_plane_is_the_load(geometry, substrate):
     assert np.abs(extrapolated).max() < 1e-7 * load
 
 
-def test_a_solved_coated_case_converges_and_its_estimate_covers_the_error():
-    """A solved sphere on a coating (a/h = 1, E2/E1 = 0.5, nu2 = 0.2, c/a = 0.5): the
-    field at n = 128 against n = 512 on a grid through layer and substrate; the estimate
-    (the change from n = 64) bounds the grid's largest error of each component and
-    covers the error at the maxima of von Mises and Tresca."""
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_a_solved_coated_case_converges_and_its_estimate_covers_the_error(geometry):
+    """A solved case on a coating (a/h = 1, E2/E1 = 0.5, nu2 = 0.2, c/a = 0.5): the field
+    at n = 128 against n = 512 on a grid through layer and substrate; the estimate (the
+    change from n = 64) bounds the grid's largest error of each component and covers the
+    error at the maxima of von Mises and Tresca."""
     x, z = np.linspace(0.0, 1.5, 16), np.linspace(0.0, 2.0, 21)
+    if geometry == "cylinder":
+        x = np.linspace(-1.5, 1.5, 31)
     kw = {"stick_ratio": 0.5, "slab_ratio": 1.0, "base": "elastic", "substrate_modulus": 0.5,
           "substrate_nu": 0.2, "energy": False}
-    sol = solve("sphere", NU, n=128, **kw)
+    sol = solve(geometry, NU, n=128, **kw)
     fine = subsurface_stresses(sol, x, z)
-    ref = subsurface_stresses(solve("sphere", NU, n=512, **kw), x, z)
+    ref = subsurface_stresses(solve(geometry, NU, n=512, **kw), x, z)
     est = field_error_estimate(sol, x, z)
     assert fine.attrs["substrate_modulus"] == 0.5
     assert fine.attrs["substrate_poisson_ratio"] == 0.2 and fine.attrs["base"] == "elastic"
     assert est.attrs["substrate_modulus"] == 0.5 and est.attrs["reference_elements"] == 64
     assert np.all(np.isfinite(fine["von_mises"].values))  # z > h is the substrate
-    for name in ("sigma_zz", "sigma_rr", "sigma_tt", "sigma_rz", "von_mises", "tresca"):
+    for name in fine.data_vars:
         true = np.abs(fine[name] - ref[name]).values
-        assert true.max() < 5e-3  # measured 3.0e-3 (sigma_rr)
+        assert true.max() < 1e-2  # measured 3.0e-3 (sphere), 6.5e-3 (cylinder), sigma_rr/xx
         assert est[name].values.max() >= true.max()
     for name in ("von_mises", "tresca"):
         at = np.unravel_index(int(np.argmax(fine[name].values)), fine[name].shape)

@@ -379,7 +379,7 @@ def test_netcdf_hdf_error_on_a_full_disk_says_so(tmp_path, monkeypatch) -> None:
     path = tmp_path / "out.nc"
     with pytest.raises(RuntimeError, match=f"cannot write {path}: NetCDF: HDF error"):
         io.write_dataset(_dataset(), path)  # space left: the error, now naming the file
-    monkeypatch.setattr(io, "_disk_full", lambda folder: True)
+    monkeypatch.setattr(io.atomic, "_disk_full", lambda folder: True)
     with pytest.raises(OSError, match=f"cannot write {path}: no space left on device"):
         io.write_dataset(_dataset(), path)
     assert os.listdir(tmp_path) == []
@@ -408,7 +408,7 @@ def _dead_pid() -> int:
 
 def test_stale_temporaries_of_killed_writers_are_removed(tmp_path) -> None:
     path = tmp_path / "out.nc"
-    tag = io._HOST_TAG
+    tag = io.atomic._HOST_TAG
     stale = tmp_path / f".out.nc.{tag}-{_dead_pid()}-abcd1234.tmp"
     live = tmp_path / f".out.nc.{tag}-{os.getppid()}-abcd1234.tmp"  # a running process
     other_host = tmp_path / ".out.nc.zzzzzz-1-abcd1234.tmp"  # no hex digest: not ours

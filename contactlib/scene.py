@@ -527,7 +527,7 @@ class HistoryScene:
 
 
 def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any,
-                    bad: _Problems, nu: float | None = None,
+                    steps: int | None, bad: _Problems, nu: float | None = None,
                     ind: tuple[float, float | None] = (math.inf, None)
                     ) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(tangential_path, bulk_stress) of a fretting scene, checked by
@@ -544,7 +544,7 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
         bad.add("friction", f"a fretting scene (tangential_path) takes one friction "
                             f"coefficient (tangential_path is Q/(k P_max)), got {list(ks)!r}")
         ks = None
-    if ks is None or "load_path" not in raw or "steps" not in raw or "geometry" not in raw:
+    if ks is None or "load_path" not in raw or steps is None or "geometry" not in raw:
         return (), ()
     tang, sigma = raw["tangential_path"], raw.get("bulk_stress")
     if not profiles.takes(raw.get("profile", "paraboloid"), "fretting"):
@@ -555,7 +555,7 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     if raw["geometry"] == "sphere" and nu is None:
         return (), ()  # (nu's own problem is recorded; the sphere's check needs it)
     try:
-        fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, raw["steps"],
+        fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, steps,
                                  n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR),
                                  nu=nu, indenter_modulus=ind[0], indenter_nu=ind[1])
     except ValueError as exc:
@@ -572,8 +572,7 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
 
 def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
     bad = _Problems(name)
-    bad.keys(raw, _HISTORY_KEYS, ("geometry", "nu", "friction", "load_path", "steps"),
-             "history")
+    bad.keys(raw, _HISTORY_KEYS, ("geometry", "nu", "friction", "load_path"), "history")
     ks = None
     if "friction" in raw:
         friction = raw["friction"]
@@ -586,8 +585,13 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                 bad.add("friction", f"repeats a value: {values!r}")
     path = bad.check("load_path", validate.load_path, raw["load_path"]) \
         if "load_path" in raw else None
-    steps = bad.check("steps", validate.steps, raw["steps"]) if "steps" in raw else None
     fretting = "tangential_path" in raw
+    if "steps" in raw:
+        steps = bad.check("steps", validate.steps, raw["steps"])
+    else:  # the library's default (a fretting path's is the cylinder's: scenes take no other)
+        from .fretting_api import DEFAULT_STEPS as fretting_steps
+
+        steps = fretting_steps if fretting else validate.HISTORY_DEFAULT_STEPS
     if "bulk_stress" in raw and not fretting:
         bad.add("bulk_stress", "needs tangential_path (a fretting path)")
     if fretting:  # the fretting solver's own n (a multiple of 4) and default
@@ -622,7 +626,7 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                               "the substrate's kernels are elastic only; use a rigid base or "
                               "an elastic layer")
     profile, exponent, flat_ratio = _scene_profile(raw, bad)
-    tang, sigma = _fretting_paths(raw, ks, n, bad, nu, ind) if fretting else ((), ())
+    tang, sigma = _fretting_paths(raw, ks, n, steps, bad, nu, ind) if fretting else ((), ())
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,

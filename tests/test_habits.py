@@ -358,14 +358,14 @@ def test_parse_scenes_reports_every_problem_at_once() -> None:
         "a": {"geometry": "cone", "nu": 0.7, "stick_ratios": [0.2], "colour": 1},
         "b": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.5, 0.5]},
         "h": {"kind": "history", "geometry": "sphere", "nu": 0.3, "friction": -1,
-              "load_path": [0, 1]},
+              "load_path": [0, 1], "steps": 0},
         "ok": {"geometry": "sphere", "nu": 0.3, "n": 32, "stick_ratios": [0.5]},
     }
     with pytest.raises(ConfigError) as err:
         parse_scenes(scenes)
     where = [line.split(":", 1)[0] for line in err.value.problems]
     assert where == ["scenes.a.colour", "scenes.a.geometry", "scenes.a.nu",
-                     "scenes.b.stick_ratios", "scenes.h.steps", "scenes.h.friction"], where
+                     "scenes.b.stick_ratios", "scenes.h.friction", "scenes.h.steps"], where
     assert str(err.value).count("\n") == len(where) - 1
 
 
@@ -376,14 +376,14 @@ def test_workflow_reports_scene_and_figure_problems_in_one_pass(tmp_path) -> Non
     config = {
         "scenes": {
             "cycle": {"kind": "history", "geometry": "sphere", "nu": 0.3, "friction": 0.2,
-                      "load_path": [0, 1, 0]},  # no steps
+                      "load_path": [0, 1, 0], "steps": 0},
             "curve": {"geometry": "sphere", "nu": 0.3, "n": 8, "stick_ratios": [0.5]},
         },
         "figures": {"history_loop": ["cylce"], "fig2": ["curve", "curves"]},
     }
     code, text = dry_run(make_workdir(tmp_path, config, folders=("workflow",)))
     assert code != 0
-    for where in ("scenes.cycle.steps: is required",
+    for where in ("scenes.cycle.steps:",
                   "scenes.curve.n: n must be at least 16",
                   "figures.history_loop: no scene named 'cylce'",
                   "figures.fig2: no scene named 'curves'"):
@@ -483,8 +483,8 @@ def test_check_config_merges_like_snakemake_and_reports_every_scene_problem(tmp_
     assert code == 2 and len(lines) == 1 and lines[0].endswith("none.yaml: no such file")
     code, out, err = run(capsys, "check-config", str(bad))
     assert code == 2
-    for where in ("scenes.a.nu: nu must be in (-1, 0.5], got 0.7", "scenes.b.load_path: is required",
-                  "scenes.b.steps: is required"):
+    for where in ("scenes.a.nu: nu must be in (-1, 0.5], got 0.7",
+                  "scenes.b.load_path: is required"):  # (steps default to 200)
         assert where in err, (where, err)
 
 

@@ -32,6 +32,17 @@ def test_history_scene_parses_with_every_friction():
     assert parse_scene("h", dict(HIST, friction=0.2)).frictions == (0.2,)
 
 
+def test_steps_default_to_the_librarys():
+    """Without ``steps`` a history scene takes contactlib.history's 200 a segment and a
+    fretting scene contactlib.fretting's 40 (the cylinder's), as the command line does."""
+    from contactlib import fretting_api, validate
+
+    plain = {k: v for k, v in HIST.items() if k != "steps"}
+    assert parse_scene("h", plain).steps == validate.HISTORY_DEFAULT_STEPS == 200
+    fret = {k: v for k, v in FRET.items() if k != "steps"}
+    assert parse_scene("f", fret).steps == fretting_api.DEFAULT_STEPS == 40
+
+
 @pytest.mark.parametrize("key, value, text", [
     ("friction", -0.1, "scenes.h.friction"), ("friction", [], "scenes.h.friction"),
     ("friction", [0.1, 0.1], "repeats"), ("load_path", [0.5, 1], "scenes.h.load_path"),

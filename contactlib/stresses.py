@@ -698,24 +698,50 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
         or elastic, ``base="elastic"`` without a substrate (or a substrate without it),
         or what :func:`halfspace_stresses` refuses.
     """
-    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer, \
-        coated_nodes, fourier_amplitudes, substrate_field
+    from .stresses_layer import check_layer
     from .validate import InputError
 
     kernel_base = _kernel_base(base, substrate)
     nu, h, kernel_base = check_layer(nu, thickness, kernel_base)
-    coated = not isinstance(kernel_base, str)  # a Substrate
     r, p, q = check_tractions(xi, pressure, shear)
     xs, zs = check_grid(x, z)
-    if not coated and np.any(zs > h * (1 + 1e-12)):
+    if isinstance(kernel_base, str) and np.any(zs > h * (1 + 1e-12)):
         raise InputError("z", f"depths within the layer, 0 <= z <= h = {h!r}", zs.max(),
                          f"z must lie within the layer (0 <= z <= h/a = {h!r}), got "
                          f"z = {zs.max()!r}")
+    return _layer_field(geometry, nu, (r[:-1], r[1:], p[:-1], p[1:], q[:-1], q[1:]), xs, zs,
+                        h, kernel_base, refine)
+
+
+def _pieces_field(geometry: str, nu: float, pieces: tuple[np.ndarray, ...], xs: np.ndarray,
+                  zs: np.ndarray) -> dict[str, np.ndarray]:
+    """The half-space's (half-plane's) field of linear pieces (sa, sb, pa, pb, qa, qb) on
+    r >= 0 (x >= 0: the cylinder's p is even and q odd, so each piece is mirrored)."""
+    sa, sb, pa, pb, qa, qb = pieces
+    if geometry == "sphere":
+        return _halfspace_pieces(TractionPieces(sa, sb, pa, pb, qa, qb), xs, zs, nu)
+    return _halfplane_pieces(np.concatenate([-sb[::-1], sa]), np.concatenate([-sa[::-1], sb]),
+                             np.concatenate([pb[::-1], pa]), np.concatenate([pa[::-1], pb]),
+                             np.concatenate([-qb[::-1], qa]), np.concatenate([-qa[::-1], qb]),
+                             xs, zs, nu)
+
+
+def _layer_field(geometry: str, nu: float, pieces: tuple[np.ndarray, ...], xs: np.ndarray,
+                 zs: np.ndarray, h: float, kernel_base: Any, refine: int = 1
+                 ) -> dict[str, np.ndarray]:
+    """A layer's field (``kernel_base`` a rigid base's name: NaN below the layer; or a
+    Substrate: the substrate's field there) of linear traction pieces (as
+    :func:`_pieces_field`), checked arguments: :func:`layer_stresses`' method."""
+    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, coated_nodes, \
+        fourier_pieces, substrate_field
+
+    coated = not isinstance(kernel_base, str)  # a Substrate
+    sa, sb, pa, pb, qa, qb = pieces
     within = zs <= h * (1 + 1e-12)
     zin = np.minimum(zs[within], h)
     # panels no wider than PANEL/(1 + max r) (the oscillation) nor PANEL_T/h (the layer),
     # nor PANEL_T/z_max in a substrate (its field decays like e^{-k z})
-    r_max = float(max(np.abs(xs).max(), r.max()))
+    r_max = float(max(np.abs(xs).max(), sb.max()))
     if coated:
         width = min(PANEL / (1.0 + r_max), PANEL_T / max(h, float(zs.max()))) / max(1, refine)
         k, w = coated_nodes(width, h, nu, kernel_base, refine)
@@ -723,18 +749,18 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
         width = min(PANEL / (1.0 + r_max), PANEL_T / h) / max(1, refine)
         k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
     if geometry == "sphere":
-        P, Q = TractionPieces.from_nodes(r, p, q).hankel(k)
+        P, Q = TractionPieces(*pieces).hankel(k)
         rs = np.abs(xs)
     else:
-        P, Q = fourier_amplitudes(r, p, q, k)
+        P, Q = fourier_pieces(*pieces, k)
         P, Q, rs = P / k, Q / k, xs
     out = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
     if zin.size:
-        part = stress_field(geometry, nu, r, p, q, xs, zin)
+        part = _pieces_field(geometry, nu, pieces, xs, zin)
         add_correction(part, k, w, P, Q, rs, zin, nu, h, kernel_base, geometry)
         for name, v in part.items():
             out[name][within] = v
-    if not np.all(within):
+    if coated and not np.all(within):
         part = substrate_field(k, w, P, Q, rs, zs[~within], nu, h, kernel_base, geometry)
         for name, v in part.items():
             out[name][~within] = v
@@ -1231,26 +1257,6 @@ def first_yield(solution: Any, x: Any = None, z: Any = None, *,
             "x": top["x"], "z": top["z"]}
 
 
-def _add_layer_pieces(out: dict[str, np.ndarray], geometry: str, sa: np.ndarray,
-                      sb: np.ndarray, p: np.ndarray, q: np.ndarray, mid: np.ndarray,
-                      xs: np.ndarray, zs: np.ndarray, nu: float, h: float, base: str) -> None:
-    """Add a rigid-based layer's correction (:mod:`contactlib.stresses_layer`) to the
-    half-space (half-plane) field ``out`` of a history step's element tractions: p
-    constant and q = q_j r/r_j (sphere) or constant (cylinder) on [sa, sb], r_j = ``mid``."""
-    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, check_layer, fourier_pieces
-
-    nu, h, base = check_layer(nu, h, base)
-    r_max = float(max(np.abs(xs).max(), sb.max()))
-    width = min(PANEL / (1.0 + r_max), PANEL_T / h)  # as layer_stresses
-    k, w = xi_nodes(T_CUTOFF / h, PANEL / width - 1.0)
-    if geometry == "sphere":
-        P, Q = TractionPieces(sa, sb, p, p, q * sa / mid, q * sb / mid).hankel(k)
-        add_correction(out, k, w, P, Q, np.abs(xs), zs, nu, h, base)
-    else:
-        P, Q = fourier_pieces(sa, sb, p, p, q, q, k)
-        add_correction(out, k, w, P / k, Q / k, xs, zs, nu, h, base, geometry)
-
-
 def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "body",
                      measures: bool = True) -> Any:
     """The stress field under one step of a loading history, as an xarray Dataset.
@@ -1259,8 +1265,9 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     ----------
     result : contactlib.history_api.HistoryResult
         A followed load path (:func:`contactlib.history`) on a half-space or half-plane,
-        or on a layer on a smooth or bonded rigid base (``slab_ratio`` = a_max/h > 0:
-        the depths below the layer, z > h, are NaN; :func:`layer_stresses`).
+        on a layer on a smooth or bonded rigid base (``slab_ratio`` = a_max/h > 0: the
+        depths below the layer, z > h, are NaN) or on a coated body (base "elastic":
+        below the layer the substrate's field; :func:`layer_stresses`).
         Its tractions are element-wise, as the history solver has them: on element j
         (edges ``xi_bounds[j]``) the pressure is constant and the shear is q_j r / r_j
         (sphere) or constant (cylinder, odd in x), r_j the midpoint ``xi[j]``.
@@ -1314,31 +1321,24 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     for name in ("slab_ratio", "nu", "indenter_modulus_ratio", "indenter_poisson_ratio"):
         setattr(_Step, name, getattr(result, name, math.inf if "modulus" in name else 0.0))
     _Step.base = getattr(result, "base", "smooth")
-    nu, p, q = _tractions_of(_Step, body)
+    nu, p, q = _tractions_of(_Step, body, coated=True)
     xs, zs = check_grid(x, z)
     bounds = np.asarray(result.xi_bounds, dtype=float)
     mid = np.asarray(result.xi, dtype=float)
     sa, sb = bounds[:, 0], bounds[:, 1]
     geometry = result.geometry
+    # element tractions: p constant, q = q_j r/r_j (sphere) or constant (cylinder)
+    pieces = ((sa, sb, p, p, q * sa / mid, q * sb / mid) if geometry == "sphere"
+              else (sa, sb, p, p, q, q))
     slab = float(getattr(result, "slab_ratio", 0.0))
-    # the layer (h = a_max/slab_ratio) holds the body's field; the indenter is a half-space
-    h = 1.0 / slab if slab > 0 and body == "body" else math.inf
-    within = zs <= h * (1 + 1e-12)
-    zin = np.minimum(zs[within], h)
-    if geometry == "sphere":  # q = q_j r / r_j on element j
-        pieces = TractionPieces(sa, sb, p, p, q * sa / mid, q * sb / mid)
-        part = _halfspace_pieces(pieces, xs, zin, nu) if zin.size else {}
-    else:  # both sides: p even, q odd, constant on each element
-        part = _halfplane_pieces(np.concatenate([-sb[::-1], sa]),
-                                 np.concatenate([-sa[::-1], sb]),
-                                 np.concatenate([p[::-1], p]), np.concatenate([p[::-1], p]),
-                                 np.concatenate([-q[::-1], q]), np.concatenate([-q[::-1], q]),
-                                 xs, zin, nu) if zin.size else {}
-    if math.isfinite(h) and zin.size:
-        _add_layer_pieces(part, geometry, sa, sb, p, q, mid, xs, zin, nu, h, _Step.base)
-    fields = {name: np.full((zs.size, xs.size), np.nan) for name in COMPONENTS[geometry]}
-    for name, v in part.items():
-        fields[name][within] = v
+    if slab > 0 and body == "body":  # the layer (h = a_max/slab_ratio) holds the body's field
+        from .stresses_layer import check_layer
+
+        kernel_base = _kernel_base(_Step.base, _substrate_of(result))
+        nu, h, kernel_base = check_layer(nu, 1.0 / slab, kernel_base)
+        fields = _layer_field(geometry, nu, pieces, xs, zs, h, kernel_base)
+    else:  # a half-space, or an elastic indenter (a half-space) on a layer
+        fields = _pieces_field(geometry, nu, pieces, xs, zs)
     if measures:
         fields.update(derived_measures(geometry, fields))
     into = "indenter" if body == "indenter" else "body"
@@ -1356,6 +1356,10 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
              "indenter_modulus_ratio": float(getattr(result, "indenter_modulus_ratio",
                                                      math.inf)),
              "stress_unit": "p0(a_max), the Hertz peak pressure at a_max"}
+    if attrs["slab_ratio"] > 0:
+        attrs["base"] = _Step.base
+        if _substrate_of(result) is not None:
+            attrs["substrate_modulus"], attrs["substrate_poisson_ratio"] = _substrate_of(result)
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 

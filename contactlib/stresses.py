@@ -467,8 +467,8 @@ def halfspace_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any,
         ``sigma_rr``, ``sigma_tt`` (hoop), ``sigma_zz``, ``sigma_rz`` in the unit of the
         tractions, tension positive. Error: the xi quadrature's, below 1e-9 of the
         tractions at z > 0; on z = 0 the ring integrals', 2e-12 (closed forms otherwise).
-        A radial shear with q(0) != 0 is log-infinite on the surface's axis: there
-        int q/t dt is started at t = 1/``XI_SURFACE`` (a finite stand-in, no data).
+        A radial shear with q(0) != 0 is log-infinite on the surface's axis: sigma_rr
+        and sigma_tt are NaN there (a solve's shear vanishes on the axis).
     """
     r, p, q = check_tractions(xi, pressure, shear)
     return _halfspace_pieces(TractionPieces.from_nodes(r, p, q), x, z, nu)
@@ -642,12 +642,15 @@ def _surface_shear(pieces: TractionPieces, r: np.ndarray,
         out_rr[idx] = 2.0 * du + 2.0 * nu * u / rp
         out_tt[idx] = 2.0 * nu * du + 2.0 * u / rp
     if np.any(axis):
-        # q(0) != 0 makes the axis value log-infinite: int q/t dt is then started at t =
-        # 1/XI_SURFACE (a finite stand-in, as the xi integral's cut there gave before)
-        start = np.maximum(pieces.sa, np.where(pieces.sa > 0, 0.0, 1.0 / XI_SURFACE))
-        with np.errstate(invalid="ignore", divide="ignore"):
-            logs = np.where(pieces.cq != 0, pieces.cq * np.log(pieces.sb / start), 0.0)
-        value = (1 + nu) * (logs.sum() + pieces.mq @ (pieces.sb - pieces.sa))
+        # q(0) != 0 makes the axis value log-infinite: no number there (NaN)
+        at_axis = pieces.sa == 0
+        if np.any(at_axis & (pieces.cq != 0)):
+            value = math.nan
+        else:
+            start = np.where(at_axis, 1.0, pieces.sa)  # (cq = 0 on the pieces from 0)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                logs = np.where(pieces.cq != 0, pieces.cq * np.log(pieces.sb / start), 0.0)
+            value = (1 + nu) * (logs.sum() + pieces.mq @ (pieces.sb - pieces.sa))
         out_rr[axis] = out_tt[axis] = value
     return out_rr, out_tt
 

@@ -735,3 +735,15 @@ def test_halfspace_tail_panels_change_the_field_by_round_off(monkeypatch, partia
     h = halfspace_stresses(xi, p, q, x, z, NU)
     assert max(np.max(np.abs(f[c] - g[c])) for c in f) < 1e-11
     assert max(np.max(np.abs(f[c] - h[c])) for c in f) < 1e-9
+
+
+def test_a_radial_shear_that_does_not_vanish_on_the_axis_has_no_surface_value_there():
+    """q(0) != 0 is a radial shear whose surface sigma_rr, sigma_tt are log-infinite on the
+    axis: NaN there, finite next to it and below it; q(0) = 0 gives a finite axis value."""
+    xi = np.linspace(0.0, 1.0, 101)
+    p = np.sqrt(1.0 - xi**2)
+    ds = halfspace_stresses(xi, p, 0.2 * p, [0.0, 0.1], [0.0, 0.1], NU)
+    assert np.isnan(ds["sigma_rr"][0, 0]) and np.isnan(ds["sigma_tt"][0, 0])
+    assert np.isfinite(ds["sigma_rr"][0, 1]) and np.all(np.isfinite(ds["sigma_rr"][1]))
+    ok = halfspace_stresses(xi, p, 0.2 * xi * p, [0.0], [0.0], NU)
+    assert np.isfinite(ok["sigma_rr"][0, 0]) and np.isfinite(ok["sigma_tt"][0, 0])

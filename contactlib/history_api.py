@@ -331,6 +331,9 @@ def creep_extent(model: Contact) -> float:
 
 # tested: tests/test_thin_layer_history.py (the probe-sized mesh holds the contact)
 _PROBE_N = 64  # elements of the frictionless probe that sizes a layer's mesh
+# the cylinder's mesh is sized by the probe beyond it on a smooth base or a coated body (the
+# range those had in history before: below it the mesh stays 1.2 a_max, results unchanged)
+_CYLINDER_PROBE_RATIO = 20.0
 
 
 def layer_extent(model: Contact, geometry: str, slab: float) -> float:
@@ -347,7 +350,8 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
       :mod:`contactlib.kernels.thin_layer` take over) has a contact well inside a_max
       (0.46 a_max at a_max/h = 30 on a bonded base, about (16 h/(3 pi a_max))^(1/4)
       a_max on a thin smooth one): a mesh over 1.2 a_max would spend most of its
-      elements outside it.
+      elements outside it; so does a cylinder on a smooth base or a coated one beyond
+      a_max/h = ``_CYLINDER_PROBE_RATIO`` (20).
 
     There a frictionless one-step probe on ``_PROBE_N`` elements over ``MESH_EXTENT``
     times the bound (at most the kernels' reach) finds the radius a_p, and the mesh
@@ -375,7 +379,11 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
     else:
         reach = (validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)]
                  * validate.HISTORY_MESH_EXTENT) if coated else math.inf
-        thin = False
+        # a thin smooth-based or coated layer shrinks the contact well inside a_max (0.12
+        # a_max at a_max/h = 500, smooth base; 0.32 at 1000 on E2/E1 = 10): a mesh over 1.2
+        # a_max left 25 ... 60 of n = 240 elements on it (benchmarks/report_coated_history_thin.py)
+        thin = slab > _CYLINDER_PROBE_RATIO and getattr(body, "base", None) in (
+            "smooth", validate.COATED_BASE)
     if getattr(body, "relaxed_ratio", 1.0) != 1.0:
         extent = creep_extent(model)
         if extent * slab > reach:

@@ -180,5 +180,5 @@ def test_beyond_the_range_is_refused_with_it():
     assert hi == 500.0
     with pytest.raises(ValueError, match="<= 500 for a cylinder on a smooth base"):
         contactlib.solve("cylinder", NU, stick_ratio=0.5, slab_ratio=hi * 1.01, base="smooth")
-    with pytest.raises(ValueError, match="<= 80 for a cylinder on a smooth base"):
-        contactlib.history("cylinder", NU, 0.2, [0, 1], 4, slab_ratio=81.0)
+    with pytest.raises(ValueError, match="<= 500 for a cylinder on a smooth base"):
+        contactlib.history("cylinder", NU, 0.2, [0, 1], 4, slab_ratio=501.0)

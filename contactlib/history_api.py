@@ -379,11 +379,12 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
     else:
         reach = (validate.LAYER_RATIO_MAX[(geometry, validate.COATED_BASE)]
                  * validate.HISTORY_MESH_EXTENT) if coated else math.inf
-        # a thin smooth-based or coated layer shrinks the contact well inside a_max (0.12
-        # a_max at a_max/h = 500, smooth base; 0.32 at 1000 on E2/E1 = 10): a mesh over 1.2
-        # a_max left 25 ... 60 of n = 240 elements on it (benchmarks/report_coated_history_thin.py)
+        # a thin layer shrinks the contact well inside a_max (0.12 a_max at a_max/h = 500,
+        # smooth base; 0.32 at 1000 on E2/E1 = 10; 0.098 at 1000 on a bonded base): a mesh
+        # over 1.2 a_max left 19 ... 60 of n = 240 elements on it
+        # (benchmarks/report_coated_history_thin.py, tests/test_coated_history_thin.py)
         thin = slab > _CYLINDER_PROBE_RATIO and getattr(body, "base", None) in (
-            "smooth", validate.COATED_BASE)
+            "smooth", "bonded", validate.COATED_BASE)
     if getattr(body, "relaxed_ratio", 1.0) != 1.0:
         extent = creep_extent(model)
         if extent * slab > reach:

@@ -141,7 +141,8 @@ LAYER_MODULES = {
     "io": ("io", "io.conventions", "io.checksums", "io.atomic", "io.inputs", "io.datasets",
            "io.fretting", "io.physical", "io.files", "io.records"),
     "plot": ("plot",),
-    "workflow": ("scene", "pipeline", "summary", "cli", "__main__", ""),
+    "workflow": ("scene", "pipeline", "summary", "cli.inputs", "cli.parser", "cli.arguments",
+                 "cli.report", "cli.remedies", "cli.run", "cli", "__main__", ""),
 }
 _RANK = {name: LAYER_ORDER.index(layer) for layer, names in LAYER_MODULES.items()
          for name in names}

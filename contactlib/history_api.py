@@ -331,8 +331,8 @@ def creep_extent(model: Contact) -> float:
 
 # tested: tests/test_thin_layer_history.py (the probe-sized mesh holds the contact)
 _PROBE_N = 64  # elements of the frictionless probe that sizes a layer's mesh
-# the cylinder's mesh is sized by the probe beyond it on a smooth base or a coated body (the
-# range those had in history before: below it the mesh stays 1.2 a_max, results unchanged)
+# convention: beyond this a_max/h the cylinder's mesh on a thin layer (any base) is sized by
+# the probe (tests/test_coated_history_thin.py); below it the mesh stays 1.2 a_max, as before
 _CYLINDER_PROBE_RATIO = 20.0
 
 

@@ -947,23 +947,14 @@ _LONG_NAMES = {
 }
 
 
-def _tractions_of(solution: Any, body: str,
-                  coated: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
-    """Poisson's ratio and tractions (p, q) on the body asked for, refusing what is not
-    covered (a layer on anything but a smooth or bonded rigid base, or, with ``coated``,
-    on an elastic substrate: base "elastic")."""
-    from .validate import COATED_BASE, InputError
+def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarray]:
+    """Poisson's ratio and tractions (p, q) on the body asked for, refusing a body name
+    other than "body" or "indenter" (the layer's base is checked by :func:`_kernel_base`
+    and :func:`contactlib.stresses_layer.check_layer`)."""
+    from .validate import InputError
 
     if body not in ("body", "indenter"):
         raise InputError("body", "'body' or 'indenter'", body)
-    if float(getattr(solution, "slab_ratio", 0.0)) > 0:
-        base = getattr(solution, "base", "smooth")
-        if base not in ("smooth", "bonded") and not (coated and base == COATED_BASE):
-            raise InputError("base", "smooth or bonded (a rigid base) for the stresses in "
-                             "a layer", base,
-                             "the stresses of a history step in a layer cover a smooth or "
-                             f"bonded rigid base only: not the {base} base (a coated body; a "
-                             "solve's field covers it: subsurface_stresses)")
     p = np.asarray(solution.pressure, dtype=float)
     q = np.asarray(solution.shear, dtype=float)
     if not bool(getattr(solution, "converged", True)):  # its tractions are no data
@@ -1083,7 +1074,7 @@ def subsurface_stresses(solution: Any, x: Any, z: Any, *, body: str = "body",
     """
     import xarray as xr
 
-    nu, _, _ = _tractions_of(solution, body, coated=True)
+    nu, _, _ = _tractions_of(solution, body)
     xi, p, q = traction_samples(solution)
     q = q if body == "body" else -q
     xs, zs = check_grid(x, z)
@@ -1356,7 +1347,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     for name in ("slab_ratio", "nu", "indenter_modulus_ratio", "indenter_poisson_ratio"):
         setattr(_Step, name, getattr(result, name, math.inf if "modulus" in name else 0.0))
     _Step.base = getattr(result, "base", "smooth")
-    nu, p, q = _tractions_of(_Step, body, coated=True)
+    nu, p, q = _tractions_of(_Step, body)
     xs, zs = check_grid(x, z)
     bounds = np.asarray(result.xi_bounds, dtype=float)
     mid = np.asarray(result.xi, dtype=float)

@@ -123,3 +123,34 @@ def test_sphere_in_si_is_hertz_and_mindlin():
     assert ds.attrs["geometry"] == "sphere" and "a_max**5" in ds.attrs["scales"]
     assert float(ds["frictional_work_si"][-1]) == pytest.approx(
         r.result.dissipation[-1] * e_star * a**5 / radius**2, rel=1e-12)
+
+
+def test_command_line_sphere_in_newtons_is_the_python_door(tmp_path, capsys):
+    """``history --geometry sphere`` with forces in N runs the sphere's fretting solver (it
+    was refused as "cylinder only") and writes the dataset the Python door gives; the
+    stick radius in metres is Cattaneo-Mindlin's a (1 - Q/kP)^(1/3) within its estimate
+    (equal bodies, beta = 0)."""
+    out = tmp_path / "s.nc"
+    rc = cli.main(["history", "--geometry", "sphere", "--radius", "10mm",
+                   "--indenter", "200GPa,0", "--body", "200GPa,0", "--friction", "0.3",
+                   "--load-path", "0N,100N,100N", "--tangential-path", "0N,0N,15N",
+                   "--n", "32", "--steps", "4", "--output", str(out)])
+    assert rc == 0, capsys.readouterr().err
+    assert "sphere R = 10 mm" in capsys.readouterr().out
+    ds = cio.read_dataset(out)
+    assert ds.attrs["geometry"] == "sphere" and ds["tangential_force"].attrs["units"] == "N"
+    ref = physical_fretting(0.01, None, [0, 100, 100], [0, 0, 15], (200e9, 0.0),
+                            (200e9, 0.0), 0.3, geometry="sphere", n=32, steps=4)
+    assert float(ds["frictional_work_si"][-1]) == pytest.approx(
+        ref.result.dissipation[-1] * ref.work_unit, rel=1e-9)
+    row = ref.points()[-1]
+    c = row["stick radius [m]"] / row["contact radius [m]"]
+    assert abs(c - 0.5 ** (1 / 3)) <= ref.result.stick_ratio_error[-1]
+
+
+def test_command_line_sphere_refuses_a_length(tmp_path, capsys):
+    rc = cli.main(["history", "--geometry", "sphere", "--radius", "10mm", "--length", "5mm",
+                   "--body", "steel", "--friction", "0.3", "--load-path", "0N,100N,100N",
+                   "--tangential-path", "0N,0N,15N", "--output", str(tmp_path / "s.nc")])
+    err = capsys.readouterr().err
+    assert rc == 2 and "--length" in err and len(err.strip().splitlines()) == 1, err

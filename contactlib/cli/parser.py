@@ -292,10 +292,12 @@ def build_parser() -> argparse.ArgumentParser:
                       help="with --relaxation: duration of the load path (segments equally "
                            "long), or one a segment, in the unit of tau")
     hist.add_argument("--tangential-path", metavar="LIST", default=None,
-                      help="fretting (cylinder; sphere for Dundurs beta = 0 pairs): "
-                           "comma-separated tangential loads "
+                      help="fretting (cylinder; sphere, coupled pairs in the verified "
+                           "range of docs/fretting.md): comma-separated tangential loads "
                            "Q/(k P_max) at the points of --load-path (same length, starting "
-                           "at 0, |Q| < k P at every point); switches to the fretting solver "
+                           "at 0, |Q| < k P at every point), or forces with units (0N,0N,10N) "
+                           "with the physical options (--radius, --body; the cylinder also "
+                           "--length); switches to the fretting solver "
                            "(n counts elements over 1.2 a_max each side of the axis, a "
                            "multiple of 4; steps a multiple of 4, default 40; the sphere: "
                            "n cells a side, default 64, steps default 8)")

@@ -41,17 +41,19 @@ def run_physical_fretting(args: argparse.Namespace) -> int:
         if given:
             raise UsageError(f"{option} is not used with a fretting path in newtons (--radius, "
                              f"--length, --indenter, --body give the problem), got {option}")
-    if args.geometry != "cylinder":
-        raise UsageError(f"--tangential-path is solved for the cylinder only, got --geometry "
-                         f"{args.geometry}")
+    cylinder = args.geometry == "cylinder"
+    if not cylinder and args.length is not None:
+        raise UsageError(f"--length is for a cylinder only, got --length {args.length!r} "
+                         "with --geometry sphere")
     kwargs: dict[str, Any] = {
         "radius": required_value(args.radius, "--radius"),
-        "length": required_value(args.length, "--length"),
+        "length": required_value(args.length, "--length") if cylinder else None,
         "load_path": args.load_path, "tangential_path": args.tangential_path,
         "indenter": "rigid" if args.indenter is None else args.indenter,
         "body": required_value(args.body, "--body"),
         "friction": parse_friction(args.friction),
-        "steps": 40 if args.steps is None else parse_steps(args.steps),
+        "geometry": args.geometry,
+        "steps": None if args.steps is None else parse_steps(args.steps),
         "max_error": parse_max_error(args.max_error)}
     if args.n is not None:
         kwargs["n"] = to_int(args.n)

@@ -95,7 +95,7 @@ _GAUSS = np.polynomial.legendre.leggauss(8)
 def check_tractions(xi: Any, pressure: Any,
                     shear: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The tabulated tractions as float arrays, checked (nodes increasing in [0, inf))."""
-    from .validate import InputError
+    from ..validate import InputError
 
     r = np.asarray(xi, dtype=float)
     p = np.asarray(pressure, dtype=float)
@@ -112,7 +112,7 @@ def check_tractions(xi: Any, pressure: Any,
 
 def check_grid(x: Any, z: Any) -> tuple[np.ndarray, np.ndarray]:
     """The output grid's coordinates: 1-d, finite, z >= 0."""
-    from .validate import InputError
+    from ..validate import InputError
 
     xs = np.atleast_1d(np.asarray(x, dtype=float))
     zs = np.atleast_1d(np.asarray(z, dtype=float))
@@ -198,7 +198,7 @@ def halfplane_stresses_line(s: Any, pressure: Any, shear: Any, x: Any, z: Any,
     dict of str to ndarray, shape (len(z), len(x))
         As :func:`halfplane_stresses`.
     """
-    from .validate import InputError
+    from ..validate import InputError
 
     t = np.asarray(s, dtype=float)
     p = np.asarray(pressure, dtype=float)
@@ -733,8 +733,8 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
         or elastic, ``base="elastic"`` without a substrate (or a substrate without it),
         or what :func:`halfspace_stresses` refuses.
     """
-    from .stresses_layer import check_layer
-    from .validate import InputError
+    from ..stresses_layer import check_layer
+    from ..validate import InputError
 
     kernel_base = _kernel_base(base, substrate)
     nu, h, kernel_base = check_layer(nu, thickness, kernel_base)
@@ -767,7 +767,7 @@ def _layer_field(geometry: str, nu: float, pieces: tuple[np.ndarray, ...], xs: n
     """A layer's field (``kernel_base`` a rigid base's name: NaN below the layer; or a
     Substrate: the substrate's field there) of linear traction pieces (as
     :func:`_pieces_field`), checked arguments: :func:`layer_stresses`' method."""
-    from .stresses_layer import PANEL_T, T_CUTOFF, add_correction, coated_nodes, \
+    from ..stresses_layer import PANEL_T, T_CUTOFF, add_correction, coated_nodes, \
         fourier_pieces, substrate_field
 
     coated = not isinstance(kernel_base, str)  # a Substrate
@@ -804,8 +804,8 @@ def _layer_field(geometry: str, nu: float, pieces: tuple[np.ndarray, ...], xs: n
 
 def _kernel_base(base: str, substrate: Any) -> Any:
     """The rigid base's name, or a coated body's Substrate (base "elastic"), checked."""
-    from .kernels.layer_transfer import Substrate
-    from .validate import COATED_BASE, InputError
+    from ..kernels.layer_transfer import Substrate
+    from ..validate import COATED_BASE, InputError
 
     if base != COATED_BASE:
         if substrate is not None:
@@ -852,7 +852,7 @@ def stress_field(geometry: str, nu: float, xi: Any, pressure: Any, shear: Any, x
         return halfspace_stresses(xi, pressure, shear, x, z, nu)
     if geometry == "cylinder":
         return halfplane_stresses(xi, pressure, shear, x, z, nu)
-    from .validate import InputError
+    from ..validate import InputError
     raise InputError("geometry", "sphere or cylinder", geometry)
 
 
@@ -951,7 +951,7 @@ def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarr
     """Poisson's ratio and tractions (p, q) on the body asked for, refusing a body name
     other than "body" or "indenter" (the layer's base is checked by :func:`_kernel_base`
     and :func:`contactlib.stresses_layer.check_layer`)."""
-    from .validate import InputError
+    from ..validate import InputError
 
     if body not in ("body", "indenter"):
         raise InputError("body", "'body' or 'indenter'", body)
@@ -976,7 +976,7 @@ def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarr
 
 def _substrate_of(solution: Any) -> tuple[float, float] | None:
     """(E2/E1, nu2) of a coated body's solution (base "elastic"), None otherwise."""
-    from .validate import COATED_BASE
+    from ..validate import COATED_BASE
 
     if getattr(solution, "base", "smooth") != COATED_BASE:
         return None
@@ -1183,7 +1183,7 @@ def default_grid() -> tuple[np.ndarray, np.ndarray]:
     -------
     x, z : ndarray
     """
-    from .validate import SUBSURFACE_GRID
+    from ..validate import SUBSURFACE_GRID
 
     (x0, x1, nx), (z0, z1, nz) = SUBSURFACE_GRID
     return np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
@@ -1200,7 +1200,7 @@ def check_subsurface_request(output: Any, slab_ratio: float, base: str = "smooth
     contactlib.validate.InputError
         Without an output file.
     """
-    from .validate import InputError
+    from ..validate import InputError
 
     if output is None:
         raise InputError("subsurface", "given with an output file", True,
@@ -1324,9 +1324,9 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
     """
     import xarray as xr
 
-    from .validate import InputError
+    from ..validate import InputError
 
-    from .profiles import takes
+    from ..profiles import takes
 
     if not takes(getattr(result, "profile", "paraboloid"), "stresses"):
         raise InputError("result", "a history of a power-law profile", "profile 'flat'",
@@ -1358,7 +1358,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
               else (sa, sb, p, p, q, q))
     slab = float(getattr(result, "slab_ratio", 0.0))
     if slab > 0 and body == "body":  # the layer (h = a_max/slab_ratio) holds the body's field
-        from .stresses_layer import check_layer
+        from ..stresses_layer import check_layer
 
         kernel_base = _kernel_base(_Step.base, _substrate_of(result))
         nu, h, kernel_base = check_layer(nu, 1.0 / slab, kernel_base)
@@ -1418,7 +1418,7 @@ def scene_subsurface(dataset: Any, scene: Any, profiles: Sequence[dict[str, np.n
         :func:`subsurface_stresses` with ``body="indenter"``); attribute
         ``subsurface_body``.
     """
-    from .validate import COATED_BASE
+    from ..validate import COATED_BASE
 
     (x0, x1, nx), (z0, z1, nz) = scene.subsurface_grid
     xs, zs = np.linspace(x0, x1, nx), np.linspace(z0, z1, nz)
@@ -1498,8 +1498,8 @@ def field_error_estimate(solution: Any, x: Any, z: Any, *, body: str = "body") -
         For another method, an n too small to halve, or what
         :func:`subsurface_stresses` refuses.
     """
-    from . import api
-    from .validate import MIN_N_DEFAULT_METHOD, InputError
+    from .. import api
+    from ..validate import MIN_N_DEFAULT_METHOD, InputError
 
     if solution.method != "default":
         raise InputError("method", "default for a field error estimate", solution.method)
@@ -1598,7 +1598,7 @@ def cylinder_fretting_stresses(result: Any, step: int, x: Any, z: Any, *,
     """
     import xarray as xr
 
-    from . import validate
+    from .. import validate
 
     if getattr(result, "geometry", None) != "cylinder":
         raise validate.InputError("result", "a cylinder's FrettingResult (contactlib.fretting("
@@ -1631,7 +1631,7 @@ def cylinder_fretting_stresses(result: Any, step: int, x: Any, z: Any, *,
     fields = _strip_field(np.asarray(result.x, dtype=float), p, q, sigma, xs, zs, body, nu)
     coarse: list[dict[str, np.ndarray]] = []
     if error_estimate:
-        from .fretting_api import run_path
+        from ..fretting_api import run_path
 
         if step % 4:
             raise validate.InputError(

@@ -75,7 +75,7 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable, Sequence
 
 import numpy as np
@@ -83,6 +83,7 @@ import numpy as np
 from . import history_solver as hs
 from . import load_paths, profiles, validate
 from .kernels import layer
+from .body import ElasticBody
 from .model import Contact, accepts_model, contact
 from .result import history_repr
 from .threads import blas_single_threaded
@@ -355,8 +356,10 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
 
     There a frictionless one-step probe on ``_PROBE_N`` elements over ``MESH_EXTENT``
     times the bound (at most the kernels' reach) finds the radius a_p, and the mesh
-    keeps ``MESH_EXTENT (a_p + one probe element)``. A viscoelastic layer keeps the
-    creep extent (:func:`creep_extent`, the half-space's, which bounds the layer's).
+    keeps ``MESH_EXTENT (a_p + one probe element)``. A viscoelastic layer creeps: its
+    probe is the elastic layer at E(inf), load 1/g_inf in units of E(0) (the fully crept
+    contact; the layer relaxes as a whole), bounded by the half-space's crept radius; a
+    viscoelastic layer that is not thin keeps that bound (:func:`creep_extent`).
     Elsewhere the mesh is ``MESH_EXTENT`` (the contact stays within a_max).
 
     Raises
@@ -372,7 +375,7 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
         sub = body.kernel_base
         m = (1.0 - sub.nu ** 2) / ((1.0 - body.nu ** 2) * float(body.substrate_modulus))
     # the farthest mesh point over h the kernels reach (the sphere's rings: the thin
-    # sums' r/h <= 1200; the cylinder's coated strip tables |x +- s|/h <= 48)
+    # sums' r/h <= 1200; the cylinder's coated strips: its a/h limit times the mesh's 1.2)
     if geometry == "sphere":
         reach = layer.THIN_RATIO_MAX
         thin = slab * hs.MESH_EXTENT > layer.RATIO_MAX
@@ -385,7 +388,8 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
         # (benchmarks/report_coated_history_thin.py, tests/test_coated_history_thin.py)
         thin = slab > _CYLINDER_PROBE_RATIO and getattr(body, "base", None) in (
             "smooth", "bonded", validate.COATED_BASE)
-    if getattr(body, "relaxed_ratio", 1.0) != 1.0:
+    relaxed = getattr(body, "relaxed_ratio", 1.0)
+    if relaxed != 1.0 and not thin:
         extent = creep_extent(model)
         if extent * slab > reach:
             raise validate.InputError(
@@ -396,9 +400,13 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
         return extent
     if m <= 1.0 and not thin:
         return hs.MESH_EXTENT
-    bound = model.frictionless_radius(m) if m > 1.0 else 1.0
+    level = 1.0 / relaxed  # a creeping layer's contact at E(inf): the load 1/g_inf at E(0)
+    bound = model.frictionless_radius(max(m, level)) if max(m, level) > 1.0 else 1.0
     probe = min(hs.MESH_EXTENT * bound, reach / slab)
-    raw = hs.run_history(hs.build_operators(model, _PROBE_N, probe), 0.0, np.array([0.0, 1.0]))
+    elastic = model if relaxed == 1.0 else replace(
+        model, body=ElasticBody(body.nu, body.slab_ratio, body.base))
+    raw = hs.run_history(hs.build_operators(elastic, _PROBE_N, probe), 0.0,
+                         np.array([0.0, level]))
     extent = hs.MESH_EXTENT * (float(raw.contact_radius[-1]) + probe / _PROBE_N)
     if np.any(raw.state[-1, -2:] > 0) or extent * slab > reach:
         grows = (f"beyond {probe:.3g} a_max ({probe * slab:.3g} h)"
@@ -407,8 +415,9 @@ def layer_extent(model: Contact, geometry: str, slab: float) -> float:
                  f"times that would reach {extent * slab:.3g} h")
         raise validate.InputError(
             "slab_ratio", "small enough that the contact stays within the kernels' range",
-            slab, f"slab_ratio = {slab:g} is too large for this soft substrate (E1*/E2* = "
-            f"{m:.3g}): the contact grows {grows}, beyond the {reach:g} h the layer's "
+            slab, f"slab_ratio = {slab:g} is too large for this "
+            + (f"soft substrate (E1*/E2* = {m:.3g})" if relaxed == 1.0 else "relaxation")
+            + f": the contact grows {grows}, beyond the {reach:g} h the layer's "
             f"kernels cover; use a thicker coating (smaller slab_ratio)")
     return extent if thin else max(extent, hs.MESH_EXTENT)
 

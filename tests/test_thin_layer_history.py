@@ -85,3 +85,28 @@ def test_a_contact_beyond_the_kernels_reach_is_refused_with_its_range():
 def test_beyond_1000_is_refused_with_the_supported_range():
     with pytest.raises(validate.InputError, match="<= 1000"):
         history("sphere", NU, 0.2, [0, 1], 4, n=32, slab_ratio=1001.0, base="bonded")
+
+
+@pytest.mark.parametrize("slab", [100.0, 1000.0])
+def test_a_creeping_thin_layer_meshes_its_crept_contact(slab):
+    """A viscoelastic layer (E(inf)/E(0) = 0.5, bonded base), loaded fast and held for
+    1000 tau: the frictionless contact creeps to the elastic layer's at E(inf), the root of
+    L(a/h) a^3 = 1/g_inf (the self-similar solve, an independent solver), within one
+    element. The mesh is sized by a probe at E(inf) (about 1.2 times that contact), no
+    longer by the half-space's crept radius 1.51 a_max, which left a quarter of the
+    elements on the contact at a_max/h = 100 and refused a_max/h = 1000 (1510 h > 1200 h).
+    Measured: 0.40714 against 0.40682 (a_max/h = 100, mesh 0.512 a_max), 0.22905 against
+    0.22934 (1000, mesh 0.292 a_max); elements 0.0043 and 0.0024 a_max."""
+    res = history("sphere", NU, 0.0, [0, 1, 1], 10, n=N, slab_ratio=slab, base="bonded",
+                  relaxation=[(0.5, 1.0)], duration=[1e-6, 1e3], error_estimate=False)
+
+    def gap(a):
+        sol = contactlib.solve("sphere", NU, friction=0.0, n=64, slab_ratio=a * slab,
+                               base="bonded", energy=False)
+        return sol.load_ratio * a ** 3 - 2.0
+
+    root = brentq(gap, 0.2, 0.6, xtol=1e-5)
+    assert res.converged.all() and "end of the mesh" not in res.message
+    assert res.mesh_extent < 1.3 * root + 2.0 * res.xi_bounds[0, 1]
+    assert abs(res.contact_radius[-1] - root) <= res.xi_bounds[0, 1]
+    assert res.contact_radius[10] < 0.9 * root  # the fast loading's contact, before creep

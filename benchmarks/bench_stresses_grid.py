@@ -8,7 +8,7 @@ The run: a sphere on a body of the same material (nu = 0.3: Dundurs beta = 0), f
 (:func:`contactlib.fretting_sphere.run_sphere_fretting`, n x n cells over [-1.2, 1.2]^2
 a_max). One step's solve is the median wall time of the 8 tangential steps (timed
 through the run's progress callback). Then, in the same process, the field of the last
-step (:func:`contactlib.stresses_grid.fretting_step_stresses`, the stresses and the
+step (:func:`contactlib.stresses.grid.fretting_step_stresses`, the stresses and the
 derived measures, no estimate; the median of 3):
 
 * a 100 x 100 (x, z) plane at y = 0 (x in [-1.5, 1.5], z in [0.015, 1.5] a_max), by the
@@ -23,7 +23,7 @@ field allocates (``tracemalloc``).
 
 ``--accuracy`` prints instead (about 2 min of CPU): the largest error of the field of a
 Hertz pressure on n x n cells against Huber's axis, and of Cattaneo-Mindlin tractions
-against the Hankel field of :mod:`contactlib.stresses_tangential` (x in {-0.8, 0, 0.5},
+against the Hankel field of :mod:`contactlib.stresses.tangential` (x in {-0.8, 0, 0.5},
 y in {0, 0.3}, z in {0.3, 0.5, 0.8}), each with the measured order; the maxima of the
 fretting field of equal nu = 0 bodies (where Cattaneo-Mindlin is exact) at n = 16 ... 128
 with their estimates, the change to 2n and the error against the exact field, and where
@@ -45,8 +45,8 @@ import numpy as np
 from contactlib.fretting_sphere import grid_operators, run_sphere_fretting
 from contactlib.history_api import load_levels
 from contactlib.model import contact
-from contactlib.stresses_grid import fretting_step_stresses, grid_stresses
-from contactlib.stresses_tangential import (CARTESIAN, cartesian_stresses,
+from contactlib.stresses.grid import fretting_step_stresses, grid_stresses
+from contactlib.stresses.tangential import (CARTESIAN, cartesian_stresses,
                                             mindlin_deresiewicz_tractions,
                                             mindlin_sphere_stresses)
 

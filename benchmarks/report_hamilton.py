@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from contactlib.stresses_tangential import CARTESIAN, mindlin_sphere_stresses
+from contactlib.stresses.tangential import CARTESIAN, mindlin_sphere_stresses
 
 NU, MU = 0.3, 0.4
 

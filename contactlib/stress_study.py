@@ -9,7 +9,7 @@ Three groups of :mod:`xarray` Datasets, each in units of p0 (docs/stresses.md):
   and at c/a = 0.5;
 * ``tangential``: the sphere pressed and then pushed along x, sliding at mu = 0, 0.2 and
   0.4 and in partial slip (Cattaneo-Mindlin, mu = 0.4, Q/(mu P) = 0.5), in the plane
-  y = 0 (:func:`contactlib.stresses_tangential.mindlin_sphere_stresses`).
+  y = 0 (:func:`contactlib.stresses.tangential.mindlin_sphere_stresses`).
 
 Numerics only: the workflow's script writes the datasets, the figures and the table.
 """
@@ -23,7 +23,7 @@ import numpy as np
 
 from .api import solve
 from .stresses import default_grid, field_maximum, subsurface_stresses
-from .stresses_tangential import mindlin_sphere_stresses
+from .stresses.tangential import mindlin_sphere_stresses
 
 __all__ = ["STICK_RATIOS", "TANGENTIAL_CASES", "partial_slip_fields", "edge_fields",
            "tangential_fields", "maxima_rows", "study"]

@@ -27,7 +27,7 @@ from contactlib.stresses import (
     layer_stresses,
     subsurface_stresses,
 )
-from contactlib.stresses_layer import surface_transfer
+from contactlib.stresses.layer import surface_transfer
 from contactlib.validate import InputError
 
 NU = 0.3

@@ -1,8 +1,8 @@
-"""The half-space field of cell-wise constant tractions (contactlib.stresses_grid, issue 38).
+"""The half-space field of cell-wise constant tractions (contactlib.stresses.grid, issue 38).
 
 Each check is against an independent truth: Love's closed form under a uniformly loaded
 rectangle, Cerruti's point force, Huber's axis, the Hankel route of
-contactlib.stresses_tangential for the Cattaneo-Mindlin tractions, the force balance on a
+contactlib.stresses.tangential for the Cattaneo-Mindlin tractions, the force balance on a
 plane, the symmetry of a rotation by 90 degrees, and the refinement of a fretting run.
 """
 
@@ -15,10 +15,10 @@ from contactlib import fretting
 from contactlib.fretting_sphere import grid_operators, run_sphere_fretting
 from contactlib.history_api import load_levels
 from contactlib.model import contact
-from contactlib.stresses_grid import (corner_weights, fretting_step_stresses,
+from contactlib.stresses.grid import (corner_weights, fretting_step_stresses,
                                       fretting_stresses, grid_stresses, lattice_stresses,
                                       stresses_at)
-from contactlib.stresses_tangential import (CARTESIAN, cartesian_stresses,
+from contactlib.stresses.tangential import (CARTESIAN, cartesian_stresses,
                                             mindlin_deresiewicz_tractions,
                                             mindlin_sphere_stresses)
 from contactlib.validate import InputError

@@ -1,5 +1,5 @@
 """Stresses inside a layer on a rigid base (stresses.layer_stresses and
-contactlib.stresses_layer, issue 38 item 1).
+contactlib.stresses.layer, issue 38 item 1).
 
 Independent truths: the layer's surface transfer functions (contactlib.kernels.layer_transfer,
 checked there against a numerical boundary-value solution), Huber's closed forms on the
@@ -25,7 +25,7 @@ from contactlib.stresses import (
     layer_stresses,
     subsurface_stresses,
 )
-from contactlib.stresses_layer import surface_transfer
+from contactlib.stresses.layer import surface_transfer
 from contactlib.validate import InputError
 
 NU = 0.3

@@ -1,4 +1,4 @@
-"""The field of a shear along x (contactlib.stresses_tangential) against independent truths.
+"""The field of a shear along x (contactlib.stresses.tangential) against independent truths.
 
 Hamilton's closed form on the axis, Cerruti's point force in the far field, the force
 balance on a plane, the equations of equilibrium and compatibility, and the surface limit.
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from contactlib.stresses import halfspace_stresses
-from contactlib.stresses_tangential import (CARTESIAN, cartesian_measures, cartesian_stresses,
+from contactlib.stresses.tangential import (CARTESIAN, cartesian_measures, cartesian_stresses,
                                             mindlin_sphere_stresses, mindlin_tractions,
                                             shear_x_stresses)
 

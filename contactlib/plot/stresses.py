@@ -239,7 +239,7 @@ def fig_tangential_stresses(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figu
     ----------
     datasets : xarray.Dataset or sequence of them
         Fields on (z, x) in the plane y = 0 of
-        :func:`contactlib.stresses_tangential.mindlin_sphere_stresses` (``.isel(y=0)``),
+        :func:`contactlib.stresses.tangential.mindlin_sphere_stresses` (``.isel(y=0)``),
         x along the tangential load, with a surface row (z = 0); their
         ``friction_coefficient``, ``load_ratio`` and ``stick_ratio`` attributes title the
         columns.

@@ -43,7 +43,7 @@ bench_stresses.py).
 
 A layer of thickness h on a smooth or bonded rigid base (sphere and cylinder):
 :func:`layer_stresses`, the half-space's field plus the correction of
-:mod:`contactlib.stresses_layer` (its notes give the method).
+:mod:`contactlib.stresses.layer` (its notes give the method).
 
 Memory is bounded by working in chunks of about ``CHUNK`` numbers an array (a few arrays
 of 8 * CHUNK bytes at once).
@@ -83,7 +83,7 @@ CHUNK = 250_000
 # cut at 64000 for the axisymmetric surface, which is now in closed form)
 XI_SURFACE = 4000.0
 """Upper end of the xi integral of the tangential field's surface (z = 0) stresses
-(:mod:`contactlib.stresses_tangential`); the axisymmetric surface row is in closed form."""
+(:mod:`contactlib.stresses.tangential`); the axisymmetric surface row is in closed form."""
 
 # exact: e^-36 = 2.3e-16, below the double precision of the integrand's scale
 DEPTH_CUTOFF = 36.0
@@ -693,7 +693,7 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
     """Stresses in a layer on a rigid base, or in a coated body, under tabulated p and q.
 
     The half-space's (half-plane's) field (:func:`stress_field`) plus the layer's
-    correction (:mod:`contactlib.stresses_layer`); in a coated body's substrate (z > h)
+    correction (:mod:`contactlib.stresses.layer`); in a coated body's substrate (z > h)
     the substrate's own field.
 
     Parameters
@@ -733,7 +733,7 @@ def layer_stresses(xi: Any, pressure: Any, shear: Any, x: Any, z: Any, nu: float
         or elastic, ``base="elastic"`` without a substrate (or a substrate without it),
         or what :func:`halfspace_stresses` refuses.
     """
-    from ..stresses_layer import check_layer
+    from .layer import check_layer
     from ..validate import InputError
 
     kernel_base = _kernel_base(base, substrate)
@@ -767,7 +767,7 @@ def _layer_field(geometry: str, nu: float, pieces: tuple[np.ndarray, ...], xs: n
     """A layer's field (``kernel_base`` a rigid base's name: NaN below the layer; or a
     Substrate: the substrate's field there) of linear traction pieces (as
     :func:`_pieces_field`), checked arguments: :func:`layer_stresses`' method."""
-    from ..stresses_layer import PANEL_T, T_CUTOFF, add_correction, coated_nodes, \
+    from .layer import PANEL_T, T_CUTOFF, add_correction, coated_nodes, \
         fourier_pieces, substrate_field
 
     coated = not isinstance(kernel_base, str)  # a Substrate
@@ -950,7 +950,7 @@ _LONG_NAMES = {
 def _tractions_of(solution: Any, body: str) -> tuple[float, np.ndarray, np.ndarray]:
     """Poisson's ratio and tractions (p, q) on the body asked for, refusing a body name
     other than "body" or "indenter" (the layer's base is checked by :func:`_kernel_base`
-    and :func:`contactlib.stresses_layer.check_layer`)."""
+    and :func:`contactlib.stresses.layer.check_layer`)."""
     from ..validate import InputError
 
     if body not in ("body", "indenter"):
@@ -1358,7 +1358,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
               else (sa, sb, p, p, q, q))
     slab = float(getattr(result, "slab_ratio", 0.0))
     if slab > 0 and body == "body":  # the layer (h = a_max/slab_ratio) holds the body's field
-        from ..stresses_layer import check_layer
+        from .layer import check_layer
 
         kernel_base = _kernel_base(_Step.base, _substrate_of(result))
         nu, h, kernel_base = check_layer(nu, 1.0 / slab, kernel_base)
@@ -1602,7 +1602,7 @@ def cylinder_fretting_stresses(result: Any, step: int, x: Any, z: Any, *,
 
     if getattr(result, "geometry", None) != "cylinder":
         raise validate.InputError("result", "a cylinder's FrettingResult (contactlib.fretting("
-                                  "'cylinder', ...); the sphere's: contactlib.stresses_grid."
+                                  "'cylinder', ...); the sphere's: contactlib.stresses.grid."
                                   "fretting_stresses)", getattr(result, "geometry", result))
     if body not in ("body", "indenter"):
         raise validate.InputError("body", "'body' or 'indenter'", body)

@@ -3,7 +3,7 @@
 The sphere's fretting solver (:mod:`contactlib.fretting_sphere`) carries a pressure p and a
 shear (q_x, q_y), each constant on the cells of a uniform square grid; the shear is a
 2-D vector field, which neither the axisymmetric field of :mod:`contactlib.stresses` nor
-the fixed-direction shear of :mod:`contactlib.stresses_tangential` covers. This module
+the fixed-direction shear of :mod:`contactlib.stresses.tangential` covers. This module
 gives the full Cartesian field of such tractions, and of one step of a fretting run.
 
 Signs and units are those of :mod:`contactlib.stresses`: tension positive, z > 0 the
@@ -50,8 +50,8 @@ from typing import Any
 
 import numpy as np
 
-from .stresses import CHUNK
-from .stresses_tangential import CARTESIAN, cartesian_measures
+from .halfspace import CHUNK
+from .tangential import CARTESIAN, cartesian_measures
 
 __all__ = ["grid_stresses", "stresses_at", "lattice_stresses", "corner_weights",
            "fretting_step_stresses", "fretting_stresses", "field_maxima"]
@@ -164,7 +164,7 @@ def corner_weights(p: Any, q: Any = None) -> np.ndarray:
 
 
 def _check_tractions(p: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
-    from .validate import InputError
+    from ..validate import InputError
 
     p = np.asarray(p, dtype=float)
     if p.ndim != 2 or min(p.shape) < 1:
@@ -178,7 +178,7 @@ def _check_tractions(p: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _check_origin(origin: Any) -> tuple[float, float]:
-    from .validate import InputError
+    from ..validate import InputError
 
     o = np.asarray(origin, dtype=float)
     if o.shape != (2,) or not np.all(np.isfinite(o)):
@@ -188,7 +188,7 @@ def _check_origin(origin: Any) -> tuple[float, float]:
 
 
 def _check_axes(x: Any, y: Any, z: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    from .validate import InputError
+    from ..validate import InputError
 
     out = []
     for name, v in (("x", x), ("y", y), ("z", z)):
@@ -217,10 +217,10 @@ def stresses_at(p: Any, q: Any, h: float, origin: tuple[float, float], points: A
     Returns
     -------
     dict of str to ndarray, shape (M,)
-        :data:`~contactlib.stresses_tangential.CARTESIAN` components in the unit of the
+        :data:`~contactlib.stresses.tangential.CARTESIAN` components in the unit of the
         tractions.
     """
-    from . import validate
+    from .. import validate
 
     p, q = _check_tractions(p, q)
     if not (isinstance(h, (int, float, np.floating)) and math.isfinite(h) and h > 0):
@@ -281,7 +281,7 @@ def grid_stresses(p: Any, q: Any, h: float, origin: tuple[float, float], x: Any,
     Returns
     -------
     dict of str to ndarray, shape (len(z), len(y), len(x))
-        :data:`~contactlib.stresses_tangential.CARTESIAN` components in the unit of the
+        :data:`~contactlib.stresses.tangential.CARTESIAN` components in the unit of the
         tractions, tension positive. Exact for the piecewise-constant tractions up to
         round-off (1e-14 of the traction against Love's closed form).
 
@@ -292,7 +292,7 @@ def grid_stresses(p: Any, q: Any, h: float, origin: tuple[float, float], x: Any,
 
     Examples
     --------
-    >>> from contactlib.stresses_grid import grid_stresses
+    >>> from contactlib.stresses.grid import grid_stresses
     >>> s = grid_stresses([[1.0]], None, 2.0, (-1.0, -1.0), [0.0], [0.0], [1.0], 0.3)
     >>> round(float(s["sigma_zz"][0, 0, 0]), 6)  # Love: -(2/pi)(pi/6 + 1/sqrt(3))
     -0.700886
@@ -326,11 +326,11 @@ def lattice_stresses(p: Any, q: Any, h: float, origin: tuple[float, float], z: A
     Returns
     -------
     dict of str to ndarray, shape (len(z), refine m + 1, refine n + 1)
-        :data:`~contactlib.stresses_tangential.CARTESIAN` on (z, y, x), as
+        :data:`~contactlib.stresses.tangential.CARTESIAN` on (z, y, x), as
         :func:`grid_stresses` on ``x = x0 + i h/refine``, ``y = y0 + j h/refine``
         (agrees with it to 1e-14 of the tractions, tests/test_stresses_grid.py).
     """
-    from . import validate
+    from .. import validate
 
     p, q = _check_tractions(p, q)
     if not (isinstance(h, (int, float, np.floating)) and math.isfinite(h) and h > 0):
@@ -430,7 +430,7 @@ def _step_fields(ops: Any, raw: Any, step: int, xs: np.ndarray, ys: np.ndarray,
 
 
 def _check_step(raw: Any, step: Any) -> int:
-    from .validate import InputError
+    from ..validate import InputError
 
     steps = len(raw.load)
     if not isinstance(step, (int, np.integer)) or not -steps <= int(step) < steps:
@@ -480,8 +480,8 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
     Returns
     -------
     xarray.Dataset
-        On (z, y, x): :data:`~contactlib.stresses_tangential.CARTESIAN` and
-        :func:`~contactlib.stresses_tangential.cartesian_measures`, in units of
+        On (z, y, x): :data:`~contactlib.stresses.tangential.CARTESIAN` and
+        :func:`~contactlib.stresses.tangential.cartesian_measures`, in units of
         p0(a_max), the Hertz peak pressure at a_max (CF units "1"). With ``coarse``,
         each variable's estimated error ``<name>_error`` = |fine - coarse| (no
         Richardson division; see ``coarser``) and the attributes ``<name>_coarse_max``.
@@ -499,7 +499,7 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
     """
     import xarray as xr
 
-    from . import validate
+    from .. import validate
 
     nu = validate.nu(nu)
     lattice = x is None and y is None
@@ -574,9 +574,9 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
 
 def _model_of(result: Any, indenter_modulus: float, indenter_nu: float | None) -> Any:
     """The contact of a sphere's FrettingResult, with the indenter's material given."""
-    from . import validate
-    from .model import contact
-    from .profiles import profile as make_profile
+    from .. import validate
+    from ..model import contact
+    from ..profiles import profile as make_profile
 
     e1, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
     prof = make_profile(result.profile,
@@ -594,8 +594,8 @@ def _model_of(result: Any, indenter_modulus: float, indenter_nu: float | None) -
 
 
 def _replay(model: Any, result: Any, n: int, steps: int) -> tuple[Any, Any]:
-    from .fretting_sphere import grid_operators, run_sphere_fretting
-    from .history_api import load_levels
+    from ..fretting_sphere import grid_operators, run_sphere_fretting
+    from ..history_api import load_levels
 
     ops = grid_operators(model, n)
     big_p = load_levels(result.load_path, steps)[0][1:] * ops.p_max
@@ -650,7 +650,7 @@ def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
     contactlib.validate.SolverLimit
         The step did not converge (in the run or the coarse run).
     """
-    from . import validate
+    from .. import validate
 
     if getattr(result, "geometry", None) != "sphere":
         raise validate.InputError("result", "a sphere's FrettingResult (contactlib.fretting("
@@ -661,7 +661,7 @@ def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,
     if not isinstance(step, (int, np.integer)) or not -total <= int(step) < total:
         raise validate.InputError("step", f"an integer in [-{total}, {total - 1}]", step)
     step = int(step) % total
-    from .fretting_api import SPHERE_N_MIN
+    from ..fretting_api import SPHERE_N_MIN
 
     third = result.n // 4 >= SPHERE_N_MIN
     if error_estimate and step % (4 if third else 2):

@@ -41,8 +41,8 @@ from typing import Any
 import numpy as np
 import scipy.special as sp
 
-from .stresses import (CHUNK, DEPTH_CUTOFF, XI_SURFACE, TractionPieces, check_grid,
-                       check_tractions, halfspace_stresses, xi_nodes)
+from .halfspace import (CHUNK, DEPTH_CUTOFF, XI_SURFACE, TractionPieces, check_grid,
+                        check_tractions, halfspace_stresses, xi_nodes)
 
 __all__ = ["CARTESIAN", "shear_x_stresses", "cartesian_stresses", "cartesian_measures",
            "mindlin_tractions", "mindlin_deresiewicz_tractions", "mindlin_sphere_stresses"]
@@ -254,7 +254,7 @@ def mindlin_tractions(friction: float, load_ratio: float,
     "The sphere"); an approximation otherwise. Between the samples the tractions are
     linear; the field's error from that is measured in docs/stresses.md.
     """
-    from .validate import InputError
+    from ..validate import InputError
     if not (np.isfinite(friction) and friction >= 0):
         raise InputError("friction", "a finite friction coefficient >= 0", friction)
     if not (np.isfinite(load_ratio) and 0.0 <= load_ratio <= 1.0):
@@ -303,7 +303,7 @@ def mindlin_deresiewicz_tractions(friction: float, peak_ratio: float, load_ratio
     Exact for bodies with Dundurs' beta = 0 and gamma = 0, as :func:`mindlin_tractions`;
     at Q = Q* it is Cattaneo-Mindlin's shear, at Q = -Q* its opposite.
     """
-    from .validate import InputError
+    from ..validate import InputError
     if not (np.isfinite(friction) and friction >= 0):
         raise InputError("friction", "a finite friction coefficient >= 0", friction)
     if not (np.isfinite(peak_ratio) and 0.0 <= peak_ratio < 1.0):
@@ -351,14 +351,14 @@ def mindlin_sphere_stresses(friction: float, load_ratio: float, x: Any, y: Any, 
 
     Examples
     --------
-    >>> from contactlib.stresses_tangential import mindlin_sphere_stresses
+    >>> from contactlib.stresses.tangential import mindlin_sphere_stresses
     >>> ds = mindlin_sphere_stresses(0.3, 1.0, [0.0], [0.0], [0.0, 0.5], 0.3)
     >>> round(float(ds.sigma_xz[0, 0, 0]), 6)  # -q0 = -mu p0 on the surface centre
     -0.3
     """
     import xarray as xr
 
-    from . import validate
+    from .. import validate
     nu = validate.nu(nu)
     xi, p, q, c = mindlin_tractions(friction, load_ratio, points)
     xs, ys, zs = _axes(x, y, z)

@@ -61,7 +61,7 @@ from typing import Any
 import numpy as np
 import scipy.special as sp
 
-from .kernels.layer_transfer import BASES, FINE_PANELS, FINE_T, Substrate, fine_panel
+from ..kernels.layer_transfer import BASES, FINE_PANELS, FINE_T, Substrate, fine_panel
 
 __all__ = [
     "CHUNK",
@@ -102,7 +102,7 @@ def check_layer(nu: float, thickness: float,
                 base: str | Substrate) -> tuple[float, float, str | Substrate]:
     """(nu, h, base) checked: -1 < nu <= 0.5, 0 < h < inf, base smooth, bonded or a
     :class:`~contactlib.kernels.layer_transfer.Substrate` (a coated body)."""
-    from .validate import InputError
+    from ..validate import InputError
 
     nu = float(nu)
     if not -1.0 < nu <= 0.5:

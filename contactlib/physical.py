@@ -60,13 +60,14 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from . import validate
+from . import profiles, validate
+from .profiles import PARABOLOID, Profile
 
 __all__ = ["physical_solve", "physical_history", "PhysicalSolution", "PhysicalHistory",
            "Material", "material", "composite_modulus", "parse_quantity", "parse_force_path",
            "hertz_peak_pressure", "hertz_load", "hertz_radius", "contact_radius_of_load",
            "work_scale", "check_history", "SMALL_STRAIN_LIMIT", "SmallStrainWarning",
-           "UNITS", "format_si"]
+           "UNITS", "format_si", "PHYSICAL_PROFILES", "HALF_ANGLE_RANGE", "parse_half_angle"]
 
 # convention: the usual bound of the small-strain Hertz theory, a/R <= 0.1 (a warning, not a
 # refusal)
@@ -78,6 +79,14 @@ SMALL_STRAIN_LIMIT = 0.1
 PLANE_STRAIN_LIMIT = 0.1
 """Largest a/length of a cylinder reported without a warning (plane strain needs a long
 contact: the strip's half-width small against its length)."""
+
+PHYSICAL_PROFILES = ("paraboloid", "cone")
+"""The profiles :func:`physical_solve` takes: Hertz's paraboloid (``radius`` R) and the
+cone or wedge (``half_angle``)."""
+
+# convention: open bounds of the cone's half-angle in degrees (0: a needle; 90: a flat face)
+HALF_ANGLE_RANGE = (0.0, 90.0)
+"""The cone's half-angle alpha [degrees], exclusive bounds."""
 
 DEFAULT_HISTORY_STEPS = validate.HISTORY_DEFAULT_STEPS
 """Load steps a segment of a physical history when none are given (the default n = 240
@@ -325,6 +334,9 @@ class _Problem:
     thickness: float  # m; inf on the half-space / half-plane
     base: str
     substrate: Material | None = None  # a coated body's substrate (base "elastic")
+    shape: Profile = PARABOLOID  # the indenter's profile (paraboloid: z = r^2/(2R))
+    slope: float = math.nan  # A d of z = A r^d [m^(1-d)]: 1/R, or cot(alpha) for the cone
+    half_angle: float = math.nan  # the cone's (wedge's) half-angle alpha [degrees]
 
     @property
     def per_length(self) -> float:
@@ -342,16 +354,80 @@ class _Problem:
         if self.substrate is not None:  # E2/E1 over the coating's E, nu2
             kwargs["substrate_modulus"] = self.substrate.E / self.body.E
             kwargs["substrate_nu"] = self.substrate.nu
+        if not self.shape.is_paraboloid:
+            kwargs["profile"] = self.shape.name
         return kwargs
+
+    # the scales at a contact radius a [m]; the paraboloid's are Hertz's functions (below),
+    # a profile z = A r^d scales lengths normal to the surface by A d a^d (a^2/R)
+    def displacement_unit(self, a: float) -> float:
+        """The unit of the approach and the tangential displacements [m]: a^2/R, A d a^d."""
+        if self.shape.is_paraboloid:
+            return a ** 2 / self.radius
+        return self.slope * a ** self.shape.exponent
+
+    def load_unit(self, a: float) -> float:
+        """The profile's frictionless load at contact radius a [N, N/m for the cylinder]:
+        P_Hertz(a) for the paraboloid (:func:`hertz_load`)."""
+        if self.shape.is_paraboloid:
+            return hertz_load(self.geometry, self.e_star, self.radius, a)
+        axi = self.geometry == "sphere"
+        return (self.shape.frictionless_load(axi) * self.e_star
+                * self.displacement_unit(a) * (a if axi else 1.0))
+
+    def pressure_unit(self, a: float) -> float:
+        """The pressure unit at contact radius a [Pa]: Hertz's p0 for the paraboloid, else
+        the peak pressure of the paraboloid carrying the same frictionless load."""
+        if self.shape.is_paraboloid:
+            return hertz_peak_pressure(self.geometry, self.e_star, self.radius, a)
+        axi = self.geometry == "sphere"
+        return self.shape.reference_pressure(axi) * self.e_star * self.displacement_unit(a) / a
+
+    def radius_of_load(self, load: float, load_ratio: float = 1.0) -> float:
+        """a [m] at which ``load`` [N, N/m] is ``load_ratio`` times the frictionless load."""
+        if self.shape.is_paraboloid:
+            return contact_radius_of_load(self.geometry, self.e_star, self.radius, load,
+                                          load_ratio)
+        axi = self.geometry == "sphere"
+        d = self.shape.exponent
+        unit = self.shape.frictionless_load(axi) * self.e_star * self.slope * load_ratio
+        return (load / unit) ** (1.0 / (d + 1.0 if axi else d))
+
+    def work_unit(self, a: float) -> float:
+        """The work unit at contact radius a [J, J/m]: E* a^5/R^2 (sphere) or E* a^4/R^2,
+        E* (A d a^d)^2 a or E* (A d a^d)^2."""
+        if self.shape.is_paraboloid:
+            return work_scale(self.geometry, self.e_star, self.radius, a)
+        return (self.e_star * self.displacement_unit(a) ** 2
+                * (a if self.geometry == "sphere" else 1.0))
+
+    def edge_slope(self, a: float) -> float:
+        """The profile's slope at the contact edge, the strain's order: a/R, A d a^(d-1)."""
+        return self.displacement_unit(a) / a
 
 
 def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
-             thickness: Any, base: Any, substrate: Any = None) -> _Problem:
+             thickness: Any, base: Any, substrate: Any = None,
+             profile: str = "paraboloid", half_angle: Any = None) -> _Problem:
     """The checked problem; ``substrate`` (a material) only with ``base="elastic"`` (a
     coated body: ``body`` the coating, of ``thickness`` h), E2/E1 in
-    :data:`contactlib.validate.SUBSTRATE_MODULUS_RANGE`."""
+    :data:`contactlib.validate.SUBSTRATE_MODULUS_RANGE`. ``profile`` is ``"paraboloid"``
+    (z = r^2/(2R), ``radius`` R) or ``"cone"`` (a wedge for the cylinder: z = r cot(alpha),
+    ``half_angle`` alpha in degrees, no ``radius``)."""
     geometry = validate.geometry(geometry)
-    r = parse_quantity(radius, "length", "radius")
+    shape = profiles.profile(validate.choice("profile", profile, PHYSICAL_PROFILES))
+    if shape.is_paraboloid:
+        if half_angle is not None:
+            raise validate.InputError("half_angle", "given only for the cone (profile "
+                                      "'cone')", half_angle)
+        r = parse_quantity(radius, "length", "radius")
+        slope, alpha = 1.0 / r, math.nan
+    else:
+        if radius is not None:
+            raise validate.InputError("radius", "omitted for the cone (its half_angle gives "
+                                      "the profile)", radius)
+        alpha = parse_half_angle(half_angle)
+        r, slope = math.nan, 1.0 / math.tan(math.radians(alpha))
     ind = material(indenter, "indenter")
     bod = material(body, "body")
     if geometry == "cylinder":
@@ -366,7 +442,26 @@ def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, lengt
     h = math.inf if thickness is None else parse_quantity(thickness, "length", "thickness")
     base = validate.base(base, coated=True)
     sub = _substrate(base, substrate, bod, h)
-    return _Problem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base, sub)
+    return _Problem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base, sub,
+                    shape, slope, alpha)
+
+
+def parse_half_angle(value: Any) -> float:
+    """The cone's half-angle alpha in degrees, in :data:`HALF_ANGLE_RANGE` (open)."""
+    lo, hi = HALF_ANGLE_RANGE
+    req = f"the cone's half-angle in degrees, {lo:g} < alpha < {hi:g}"
+    if value is None:
+        raise validate.InputError("half_angle", req, value, "half_angle is required for "
+                                  "the cone: its half-angle alpha in degrees (70.3 for the "
+                                  "cone of a Berkovich tip's area)")
+    text = value.strip().removesuffix("deg").strip() if isinstance(value, str) else value
+    try:
+        alpha = float(text)
+    except (TypeError, ValueError):
+        raise validate.InputError("half_angle", req, value) from None
+    if not (math.isfinite(alpha) and lo < alpha < hi):
+        raise validate.InputError("half_angle", req, value)
+    return alpha
 
 
 def _shown(value: Any) -> str:
@@ -406,10 +501,15 @@ def _substrate(base: str, substrate: Any, body: Material, thickness: float) -> M
 def validity_notes(problem: _Problem, a: float) -> list[str]:
     """Warnings (issued, and returned as lines) where the contact leaves the theory."""
     notes = []
-    if a / problem.radius > SMALL_STRAIN_LIMIT:
+    if problem.shape.is_paraboloid and a / problem.radius > SMALL_STRAIN_LIMIT:
         notes.append(f"a/R = {a / problem.radius:.3g} exceeds the small-strain limit "
                      f"{SMALL_STRAIN_LIMIT:g} (parabolic profile, linear elasticity): the "
                      f"results are outside the theory's validity")
+    elif not problem.shape.is_paraboloid and problem.edge_slope(a) > SMALL_STRAIN_LIMIT:
+        notes.append(f"cot(alpha) = {problem.edge_slope(a):.3g} exceeds the small-strain "
+                     f"limit {SMALL_STRAIN_LIMIT:g} (linear elasticity; Sneddon's cone "
+                     f"neglects the surface's radial displacement, an error of this order): "
+                     f"the results are outside the theory's validity at that order")
     if problem.geometry == "cylinder" and a / problem.length > PLANE_STRAIN_LIMIT:
         notes.append(f"a/length = {a / problem.length:.3g} exceeds {PLANE_STRAIN_LIMIT:g}: "
                      "plane strain needs a contact long against its width")
@@ -435,9 +535,14 @@ class _Setup:
 
     def _head(self) -> str:
         """``sphere R = 5 mm: indenter ..., body ...`` (and the layer)."""
-        shape = (f"sphere R = {format_si(self.radius, 'm')}" if self.geometry == "sphere" else
-                 f"cylinder R = {format_si(self.radius, 'm')}, length "
-                 f"{format_si(self.length, 'm')}")
+        if getattr(self, "profile", "paraboloid") == "cone":
+            shape = (f"cone, half-angle {self.half_angle:g} deg" if self.geometry == "sphere"
+                     else f"wedge, half-angle {self.half_angle:g} deg, length "
+                     f"{format_si(self.length, 'm')}")
+        else:
+            shape = (f"sphere R = {format_si(self.radius, 'm')}" if self.geometry == "sphere"
+                     else f"cylinder R = {format_si(self.radius, 'm')}, length "
+                     f"{format_si(self.length, 'm')}")
         layer = "" if self.thickness == math.inf else \
             f", layer h = {format_si(self.thickness, 'm')} ({self.base} base)"
         if self.substrate is not None:
@@ -475,9 +580,18 @@ class PhysicalSolution(_Setup):
     hertz_contact_radius : float
         The frictionless a of the same force on the half-space [m].
     p0, hertz_load : float
-        Hertz peak pressure [Pa] and Hertz load [N] at the computed a.
+        Hertz peak pressure [Pa] and Hertz load [N] at the computed a; for the cone, the
+        pressure unit (the peak pressure of the paraboloid carrying the same frictionless
+        load) and the cone's frictionless load (Love).
     slab_ratio : float
         a/h of the layer (0: half-space).
+    profile : str
+        ``"paraboloid"`` or ``"cone"`` (the wedge for the cylinder).
+    half_angle : float
+        The cone's half-angle alpha [degrees] (NaN for the paraboloid; ``radius`` is NaN
+        for the cone).
+    displacement_scale : float
+        The unit of the approach and tangential displacements at a [m]: a^2/R, a cot(alpha).
     errors : dict
         Estimated relative error of each quantity above, by name (see
         :func:`physical_solve`); 0 where exact, NaN where not estimated.
@@ -504,6 +618,9 @@ class PhysicalSolution(_Setup):
     errors: dict[str, float]
     notes: list[str]
     solution: Any
+    profile: str = "paraboloid"
+    half_angle: float = math.nan
+    displacement_scale: float = math.nan
 
     @property
     def resolved(self) -> bool:
@@ -521,11 +638,11 @@ class PhysicalSolution(_Setup):
         """
         sol = self.solution
         a = self.contact_radius
+        unit = a ** 2 / self.radius if self.profile == "paraboloid" else self.displacement_scale
         return {"r": np.asarray(sol.xi) * a,
                 "pressure": np.asarray(sol.pressure) * self.p0,
                 "shear": np.asarray(sol.shear) * self.p0,
-                "tangential_displacement":
-                    np.asarray(sol.tangential_displacement) * a ** 2 / self.radius}
+                "tangential_displacement": np.asarray(sol.tangential_displacement) * unit}
 
     def summary(self) -> str:
         """The answer with units and the estimated relative error of each number."""
@@ -548,15 +665,22 @@ class PhysicalSolution(_Setup):
             row("contact radius a", format_si(self.contact_radius, "m"), "contact_radius"),
             row("stick radius c", format_si(self.stick_radius, "m") +
                 f" (c/a = {c_over_a:.6g})", "stick_radius"),
-            row("peak pressure", format_si(self.peak_pressure, "Pa"), "peak_pressure"),
+            row("peak pressure", format_si(self.peak_pressure, "Pa")
+                if math.isfinite(self.peak_pressure) else "infinite at the tip (logarithmic)",
+                "peak_pressure"),
             row("mean pressure", format_si(self.mean_pressure, "Pa"), "mean_pressure"),
             row("approach", format_si(self.approach, "m") if math.isfinite(self.approach)
                 else "undefined on a half-plane", "approach"),
-            row("P/P_Hertz(a)", f"{self.load_ratio:.6g}", "load_ratio"),
+            row("P/P_Hertz(a)" if self.profile == "paraboloid" else "P/P_frictionless(a)",
+                f"{self.load_ratio:.6g}", "load_ratio"),
             row("frictional energy", format_si(self.frictional_energy, "J") +
                 " (loading 0 -> P)", "frictional_energy"),
-            f"  Hertz (frictionless) a = {format_si(self.hertz_contact_radius, 'm')}, p0(a) = "
-            f"{format_si(self.p0, 'Pa')}; resolved: {'yes' if self.resolved else 'no'} "
+            f"  {'Hertz (frictionless)' if self.profile == 'paraboloid' else 'frictionless'} "
+            f"a = {format_si(self.hertz_contact_radius, 'm')}, p0(a) = "
+            f"{format_si(self.p0, 'Pa')}"
+            + ("" if self.profile == "paraboloid" else
+               " (the paraboloid's peak pressure at this load)")
+            + f"; resolved: {'yes' if self.resolved else 'no'} "
             f"(max error {self.solution.max_error:g})",
         ]
         lines += [f"  warning: {note}" for note in self.notes]
@@ -583,8 +707,9 @@ def _stick_ratio_error(sol: Any, model: Any, friction_given: bool) -> float:
     return err_k / slope if slope > 0 else math.nan
 
 
-def physical_solve(geometry: str, radius: float | str, load: float | str,
-                   indenter: Any, body: Any, *, friction: float | None = None,
+def physical_solve(geometry: str, radius: float | str | None, load: float | str,
+                   indenter: Any, body: Any, *, profile: str = "paraboloid",
+                   half_angle: float | str | None = None, friction: float | None = None,
                    stick_ratio: float | None = None, length: float | str | None = None,
                    thickness: float | str | None = None, base: str = "smooth",
                    substrate: Any = None,
@@ -597,11 +722,21 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     Parameters
     ----------
     geometry : {"sphere", "cylinder"}
+        Axisymmetric, or plane strain (the cone is then a wedge).
     radius : float or str
-        R, in m or with a unit (``"5mm"``).
+        R, in m or with a unit (``"5mm"``); None for the cone.
     load : float or str
         The normal force P, in N or with a unit (``"100N"``); a cylinder's
         over its whole ``length``.
+    profile : {"paraboloid", "cone"}
+        The indenter's profile: z = r^2/(2R) (Hertz; default) or z = r cot(alpha)
+        (Love's cone, Sneddon). The pressure unit is then the peak pressure of the
+        paraboloid carrying the same frictionless load, ``p0`` and ``hertz_load`` are
+        the cone's frictionless closed forms at a (P = (pi/2) E* a^2 cot(alpha), per unit
+        length of the wedge E* a cot(alpha)), displacements are in units of a cot(alpha).
+    half_angle : float or str, optional
+        The cone's half-angle alpha in degrees (``70.3`` or ``"70.3deg"``), in
+        :data:`HALF_ANGLE_RANGE`; only for the cone.
     indenter : str or (E, nu)
         A material name (:mod:`contactlib.materials`), ``"rigid"``, or (E [Pa], nu).
     body : str or (E, nu)
@@ -649,7 +784,8 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     """
     from . import api
 
-    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate)
+    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate,
+                            profile, half_angle)
     force = parse_quantity(load, "force", "load")
     per_length = force / prob.per_length
     kwargs = dict(prob.dimensionless(), n=n, method=method, max_error=max_error,
@@ -661,12 +797,11 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     if stick_ratio is not None:
         kwargs["stick_ratio"] = stick_ratio
     nu = prob.body.nu
-    a_hertz = contact_radius_of_load(prob.geometry, prob.e_star, prob.radius, per_length)
+    a_hertz = prob.radius_of_load(per_length)
 
     def run(slab: float) -> tuple[Any, float]:
         sol = api.solve(prob.geometry, nu, slab_ratio=slab, **kwargs)
-        return sol, contact_radius_of_load(prob.geometry, prob.e_star, prob.radius,
-                                           per_length, sol.load_ratio)
+        return sol, prob.radius_of_load(per_length, sol.load_ratio)
 
     if prob.thickness == math.inf:
         slab = 0.0
@@ -674,25 +809,27 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
     else:
         slab, sol, a = _layer_radius(prob, a_hertz, run)
     g = prob.geometry
-    p0 = hertz_peak_pressure(g, prob.e_star, prob.radius, a)
+    p0 = prob.pressure_unit(a)
     eps_l = float(sol.load_error_estimate)
-    err_a = eps_l / (3.0 if g == "sphere" else 2.0)
+    d = prob.shape.exponent  # a ~ P^(1/(d + 1)) (sphere) or P^(1/d); units ~ a^d, a^(d - 1)
+    err_a = eps_l / (d + 1.0 if g == "sphere" else d)
     err_gamma = _stick_ratio_error(sol, sol.model, friction is not None)
     gamma = float(sol.stick_ratio)
     delta = float(sol.extra.get("indentation", math.nan))
-    approach = delta * a ** 2 / prob.radius if (g == "sphere" or slab > 0) else math.nan
+    approach = delta * prob.displacement_unit(a) if (g == "sphere" or slab > 0) else math.nan
     mean = force / (math.pi * a ** 2) if g == "sphere" else force / (2.0 * a * prob.length)
-    work = float(sol.frictional_work) * work_scale(g, prob.e_star, prob.radius, a) * \
-        prob.per_length
+    work = float(sol.frictional_work) * prob.work_unit(a) * prob.per_length
+    # the cone's pressure is logarithmically infinite at the tip: no finite peak
+    peak = float(np.max(sol.pressure)) * p0 if d > 1.0 else math.inf
     errors = {
         "contact_radius": err_a,
         "stick_radius": err_a + (err_gamma / gamma if gamma > 0 else 0.0),
-        "peak_pressure": err_a + eps_l,
+        "peak_pressure": err_a * (d - 1.0) + eps_l if d > 1.0 else math.nan,
         "mean_pressure": err_a * (2.0 if g == "sphere" else 1.0),
-        "approach": 2.0 * err_a + eps_l if math.isfinite(approach) else math.nan,
+        "approach": d * err_a + eps_l if math.isfinite(approach) else math.nan,
         "load_ratio": eps_l,
         "frictional_energy": (float(sol.work_error_estimate)
-                              + err_a * (5.0 if g == "sphere" else 4.0)),
+                              + err_a * (2.0 * d + (1.0 if g == "sphere" else 0.0))),
         "friction": float(sol.error_estimate) if friction is None else 0.0,
     }
     return PhysicalSolution(
@@ -700,11 +837,13 @@ def physical_solve(geometry: str, radius: float | str, load: float | str,
         base=prob.base, indenter=prob.indenter, body=prob.body, substrate=prob.substrate,
         composite_modulus=prob.e_star, load=force, friction=float(sol.friction_coefficient),
         contact_radius=a, stick_radius=gamma * a,
-        peak_pressure=float(np.max(sol.pressure)) * p0, mean_pressure=mean,
+        peak_pressure=peak, mean_pressure=mean,
         approach=approach, load_ratio=float(sol.load_ratio), frictional_energy=work,
         hertz_contact_radius=a_hertz, p0=p0,
-        hertz_load=hertz_load(g, prob.e_star, prob.radius, a) * prob.per_length,
-        slab_ratio=slab, errors=errors, notes=validity_notes(prob, a), solution=sol)
+        hertz_load=prob.load_unit(a) * prob.per_length,
+        slab_ratio=slab, errors=errors, notes=validity_notes(prob, a), solution=sol,
+        profile=prob.shape.name, half_angle=prob.half_angle,
+        displacement_scale=prob.displacement_unit(a))
 
 
 def _layer_radius(prob: _Problem, a_hertz: float,

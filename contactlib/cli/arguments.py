@@ -210,14 +210,25 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
                           ("--substrate-modulus",
                            getattr(args, "substrate_modulus", None) is not None),
                           ("--substrate-nu", getattr(args, "substrate_nu", None) is not None),
-                          ("--profile", getattr(args, "profile", "paraboloid") != "paraboloid"
-                           or getattr(args, "exponent", None) is not None)):
+                          ("--exponent", getattr(args, "exponent", None) is not None)):
         if given:
             raise UsageError(f"{option} is not used with physical units (--radius, --body, "
                              f"--indenter, --thickness give the problem), got {option} with "
                              "them")
-    radius = _physical_check(physical.parse_quantity, required_value(args.radius, "--radius"),
-                             "length", "radius")
+    profile = getattr(args, "profile", "paraboloid")
+    cone = args.command == "solve" and profile == "cone"
+    if profile != "paraboloid" and not cone:
+        raise UsageError(f"--profile {profile} is not available with physical units: `solve` "
+                         "takes the paraboloid (--radius) or the cone (--profile cone "
+                         "--half-angle DEG); give the dimensionless problem (--nu) instead")
+    if getattr(args, "half_angle", None) is not None and not cone:
+        raise UsageError(f"--half-angle is for --profile cone, got --half-angle "
+                         f"{args.half_angle!r} with --profile {profile}")
+    if cone and args.radius is not None:
+        raise UsageError(f"--radius is not used with --profile cone (--half-angle gives the "
+                         f"cone), got --radius {args.radius!r}")
+    radius = None if cone else _physical_check(
+        physical.parse_quantity, required_value(args.radius, "--radius"), "length", "radius")
     body = _physical_check(physical.material, required_value(args.body, "--body"), "body")
     indenter = _physical_check(physical.material,
                                "rigid" if args.indenter is None else args.indenter, "indenter")
@@ -239,6 +250,9 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     if args.command == "solve":
         kwargs["load"] = _physical_check(physical.parse_quantity,
                                          required_value(args.load, "--load"), "force", "load")
+        if cone:
+            kwargs.update(profile="cone", half_angle=_physical_check(
+                physical.parse_half_angle, required_value(args.half_angle, "--half-angle")))
         method = checked(validate.method, args.method, args.method)
         kwargs.update(method=method, n=None if args.n is None else parse_n(args.n, method),
                       energy=not args.no_energy)

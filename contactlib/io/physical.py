@@ -47,6 +47,14 @@ def _scale_attrs(res: Any, a: float, a_label: str) -> dict[str, Any]:
         "body_poisson_ratio": float(res.body.nu),
         "small_strain_limit": float(SMALL_STRAIN_LIMIT),
     }
+    if getattr(res, "profile", "paraboloid") == "cone":  # no R: the half-angle gives the cone
+        del attrs["indenter_radius_m"]
+        attrs["indenter_half_angle_deg"] = float(res.half_angle)
+        attrs["profile_scales"] = ("cone (wedge) z = r cot(alpha): hertz_load_N is its "
+                                   "frictionless load at the contact radius, "
+                                   "hertz_peak_pressure_Pa the pressure unit (the peak "
+                                   "pressure of the paraboloid carrying that load); "
+                                   "displacements in units of a cot(alpha)")
     if not res.indenter.rigid:
         attrs["indenter_youngs_modulus_Pa"] = float(res.indenter.E)
     if res.geometry == "cylinder":

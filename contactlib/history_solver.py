@@ -95,7 +95,8 @@ __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS"
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
            "stick_radius", "MESH_EXTENT", "RawHistory", "run_history",
            "MIN_SLIP_ELEMENTS", "prony_step", "path_interpolate", "error_estimates",
-           "annulus_resolved", "straddle", "measured_order", "ORDER_MIN", "ORDER_MAX"]
+           "annulus_resolved", "straddle", "measured_order", "ORDER_MIN", "ORDER_MAX",
+           "smooth_deviation", "EDGE_COARSE_RATIO"]
 
 # convention: the element states the datasets store (meanings in STATE_MEANINGS)
 SEPARATED, STICK, SLIP_INWARD, SLIP_OUTWARD = 0, 1, 2, 3
@@ -816,10 +817,11 @@ def annulus_resolved(k: float, state: np.ndarray) -> np.ndarray:
 _WINDOW = 2
 
 
-def _window_max(values: np.ndarray, segment: np.ndarray) -> np.ndarray:
-    """Largest value within ``_WINDOW`` steps either side, in the same path segment."""
+def _window_max(values: np.ndarray, segment: np.ndarray, half_width: int = _WINDOW
+                ) -> np.ndarray:
+    """Largest value within ``half_width`` steps either side, in the same path segment."""
     out = values.copy()
-    for shift in range(1, _WINDOW + 1):
+    for shift in range(1, half_width + 1):
         same = segment[shift:] == segment[:-shift]
         out[shift:] = np.where(same, np.maximum(out[shift:], values[:-shift]), out[shift:])
         out[:-shift] = np.where(same, np.maximum(out[:-shift], values[shift:]), out[:-shift])
@@ -870,6 +872,66 @@ def straddle(diff: np.ndarray, a: np.ndarray, segment: np.ndarray, touching: np.
     jump = (centre > 2.0 * h) & (centre > 2.0 * (before + after))
     j = i[jump]
     out[j] = np.minimum(diff[j], np.maximum(diff[j - 1], diff[j + 1]))
+    return out
+
+
+# measured: benchmarks/report_history_estimates.py. The located stick edge's error is
+# about proportional to the element size and changes sign from step to step as the edge
+# crosses the elements, so run A's (elements twice as large) is about twice the run's and
+# |run - A| lies between 1 and 3 times the run's error: the estimate takes half of it
+EDGE_COARSE_RATIO = 2.0
+# measured: benchmarks/report_history_estimates.py (steps either side of the local
+# quadratic fit whose deviation measures the run's own edge quantization, smooth_deviation)
+_SMOOTH_HALF_WIDTH = 6
+
+
+def smooth_deviation(values: np.ndarray, segment: np.ndarray, fitted: np.ndarray,
+                     half_width: int = _SMOOTH_HALF_WIDTH) -> np.ndarray:
+    """Each step's deviation from a quadratic fitted to its neighbours (leave one out).
+
+    The stick radius along a path is smooth in the load, while its located value
+    carries a quantization error that changes sign from step to step as the edge
+    crosses the elements; a step's distance from the least-squares quadratic
+    through the other ``fitted`` steps within ``half_width`` steps either side
+    (same path segment, at least two on each side: no extrapolation across a
+    turning point) measures that error in the run itself.
+
+    Parameters
+    ----------
+    values : ndarray, shape (S+1,)
+        The quantity at every step (units a_max).
+    segment : ndarray of int, shape (S+1,)
+        Path segment of every step.
+    fitted : ndarray of bool, shape (S+1,)
+        Steps whose value takes part (a stick radius located below the element
+        size); the others get 0.
+    half_width : int
+        Steps either side.
+
+    Returns
+    -------
+    ndarray, shape (S+1,)
+        ``|value - fit|`` (units of ``values``); 0 where the step is not
+        ``fitted`` or has fewer than two fitted neighbours on a side.
+    """
+    size = values.size
+    offsets = np.concatenate([np.arange(-half_width, 0), np.arange(1, half_width + 1)])
+    idx = np.arange(size)[:, None] + offsets[None, :]
+    inside = (idx >= 0) & (idx < size)
+    idx = np.clip(idx, 0, size - 1)
+    use = inside & fitted[idx] & (segment[idx] == segment[:, None]) & fitted[:, None]
+    enough = (np.sum(use & (offsets < 0), axis=1) >= 2) & (np.sum(use & (offsets > 0), axis=1)
+                                                           >= 2)
+    t = offsets[None, :] / float(half_width)  # scaled abscissa: a well-conditioned system
+    w = use.astype(float)
+    moments = np.stack([np.sum(w * t**m, axis=1) for m in range(5)], axis=1)
+    normal = moments[:, [[0, 1, 2], [1, 2, 3], [2, 3, 4]]]  # (S+1, 3, 3)
+    rhs = np.stack([np.sum(w * t**m * values[idx], axis=1) for m in range(3)], axis=1)
+    out = np.zeros(size)
+    rows = np.flatnonzero(enough)
+    if rows.size:
+        coef = np.linalg.solve(normal[rows], rhs[rows][:, :, None])[:, 0, 0]
+        out[rows] = np.abs(values[rows] - coef)
     return out
 
 
@@ -944,9 +1006,20 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     floored trapezoid rule, :func:`contactlib.energy.step_work`); assuming
     first order had overstated its error 3-4 fold. Without C (fewer than
     40 steps a segment, :func:`contactlib.history`) the order is taken as 1 and the
-    estimate is ``|F - A|``. The stick radius takes ``|F - A|``
-    (order 1: where it is an element edge its error is a fraction of the
-    element). Where A's stick radius jumps
+    estimate is ``|F - A|``. The stick radius takes ``|F - A| /``
+    :data:`EDGE_COARSE_RATIO` where its edge crosses an element within
+    ``_SMOOTH_HALF_WIDTH`` steps either side (or is an element edge), and at
+    least the run's own deviation from a smooth path there
+    (:func:`smooth_deviation`: a quadratic through the neighbouring steps,
+    kept below half an element). The located edge's error is about
+    proportional to the element size and changes sign from step to step as
+    the edge crosses the elements; A's is about twice the run's, so ``|F -
+    A|`` is 1 ... 3 times the run's error (taken in full it was 1.7 ... 9.9
+    times a segment's largest error at n = 120; now 0.97 ... 4.6, 9.9 on a
+    stick zone whose edge crosses no element, and at least 0.50 of the error
+    at every step, ``benchmarks/report_history_estimates.py``). Where the
+    edge crosses no element (a stick zone over a few elements) ``|F - A|``
+    is a bias and is taken in full (order 1). Where A's stick radius jumps
     between two of its steps (the stick zone collapsing near the top of a
     reloading) the fine steps in between take at most their neighbours'
     difference (:func:`straddle`): the interpolated coarse value there is
@@ -960,7 +1033,8 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
     fit does not apply (see :func:`stick_radius`): there its error is up to
     half an element whatever the differences say (the coarse edges are fine
     edges too, so they vanish by coincidence), and its difference counts as
-    at least ``h / 2`` (h = element size), also in its neighbours' windows
+    at least ``h / 2`` (h = element size, after the division by
+    :data:`EDGE_COARSE_RATIO`), also in its neighbours' windows
     (a fit next to two edges that coincide with the coarse run's had an
     estimate of 2e-16 against an error of 0.29 of an element). A fit kept at
     the midpoint of the first element not stuck is not such a fallback: its
@@ -1010,12 +1084,22 @@ def error_estimates(fine: RawHistory, ops: Operators, steps: int, segment: np.nd
         a = coarse_values(coarse, steps_coarse, segment_coarse, name)
         diff = np.abs(f - a)
         if name == "stick_radius":  # an edge's difference may vanish by coincidence
+            # the edge crosses an element within the fit's window: A's error is its
+            # quantization, twice the run's; else (a stick zone over a few elements, its
+            # edge standing) the difference is a bias, the run's in full (order 1)
+            span = (_window_max(f, segment, _SMOOTH_HALF_WIDTH)
+                    + _window_max(-f, segment, _SMOOTH_HALF_WIDTH))
+            diff = np.where(on_edge | (span >= h), diff / EDGE_COARSE_RATIO, diff)
             diff = np.where(on_edge, np.maximum(diff, 0.5 * h), diff)
             if steps == 2 * steps_coarse:
                 diff = straddle(diff, a, segment, fine.contact_radius > 0, h)
             diff = _lead_from_first(diff, x, segment, np.arange(segment_coarse.size)
                                     / steps_coarse, segment_coarse)
-            return _window_max(diff, segment), 1.0
+            located = ~on_edge & (f > 0.0) & (f < fine.contact_radius)
+            # at most half an element: a larger deviation is the path's own kink (the stick
+            # zone collapsing near the end of an unloading), which |F - A| measures
+            own = np.minimum(smooth_deviation(f, segment, located), 0.5 * h)
+            return np.maximum(_window_max(diff, segment), _window_max(own, segment)), 1.0
         if coarser is None:
             return _window_max(diff, segment), 1.0
         common = (np.arange(segment.size) * steps_coarser) % steps == 0  # C's own steps

@@ -30,13 +30,15 @@ def stick_radius(res) -> np.ndarray:
 @pytest.mark.parametrize("k", [0.1, 0.2, 0.3])
 @pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
 def test_estimates_cover_the_error_of_a_fourfold_refinement(geometry, k, path):
-    """Estimate / true error >= 1/3 at every loaded step; segment maxima within 10x.
+    """Estimate / true error >= 1/3 at every loaded step; segment maxima within 5x (stick
+    radius) and 10x (work).
 
     The work's error is relative to the path's total work (the estimate's scale).
 
     Measured at n = 60, 20 steps (truth n = 240, 80 steps): the smallest
-    estimate / error is 0.75 (stick radius) and 0.44 (work), the largest
-    segment inflation 9 (stick radius, cylinder k = 0.1 fretting) and 6.8 (work).
+    estimate / error is 0.48 (stick radius) and 0.44 (work), the largest
+    segment inflation 3.7 (stick radius, sphere k = 0.1 fretting) and 6.8 (work).
+    (When the stick radius's estimate was |run - A| in full: 0.75 and 9.)
     """
     n, steps = 60, 20
     res = history(geometry, NU, k, PATHS[path], steps, n=n)
@@ -55,7 +57,8 @@ def test_estimates_cover_the_error_of_a_fourfold_refinement(geometry, k, path):
         for g in range(1, len(PATHS[path])):
             s = loaded & (res.segment == g)
             if t[s].max() > 0:
-                assert e[s].max() <= 10 * t[s].max(), (name, g, e[s].max() / t[s].max())
+                bound = 5 if name == "stick radius" else 10
+                assert e[s].max() <= bound * t[s].max(), (name, g, e[s].max() / t[s].max())
 
 
 def test_dataset_carries_estimates_flags_and_max_error():
@@ -156,16 +159,64 @@ def test_coarse_jump_between_two_coarse_steps_is_not_an_error():
     np.testing.assert_array_equal(hs.straddle(d, smooth, segment, touching, h), d)
 
 
-def _work_flags_against_a_fourfold_refinement(geometry, nu, k, path, kwargs, max_error):
-    """(cycle work estimate / true error, true errors of the steps flagged for the work, of
-    those not flagged), the work relative to the refined path's total work."""
+def test_smooth_deviation_measures_a_step_off_a_smooth_path():
+    """A quadratic in each segment (the segments' values unrelated): zero deviation; one
+    step moved by delta deviates by exactly delta (its neighbours' fit leaves it out);
+    steps not located (garbage values) take no part and get 0; segment ends without two
+    fitted neighbours on a side get 0."""
+    segment = np.repeat([0, 1, 2], [1, 30, 30])
+    i = np.arange(segment.size, dtype=float)
+    values = np.where(segment == 1, 0.3 + 0.01 * i - 1e-4 * i**2, 0.9 - 0.02 * (i - 31) ** 2)
+    fitted = segment > 0
+    dev = hs.smooth_deviation(values, segment, fitted)
+    np.testing.assert_allclose(dev, 0.0, atol=1e-12)
+    moved = values.copy()
+    moved[15] += 0.004
+    moved[40:43] = [7.0, -3.0, 11.0]  # not located: an element edge, say
+    fitted[40:43] = False
+    dev = hs.smooth_deviation(moved, segment, fitted)
+    assert dev[15] == pytest.approx(0.004, rel=1e-9)
+    assert np.all(dev[40:43] == 0.0) and np.all(dev[43:] < 1e-9)
+    assert dev[1] == dev[2] == dev[30] == dev[31] == 0.0  # one neighbour on a side
+
+
+def _window_max(values, segment, half=2):
+    """Largest value within ``half`` steps either side, in the same path segment."""
+    return np.array([np.max(values[max(i - half, 0):i + half + 1]
+                            [segment[max(i - half, 0):i + half + 1] == segment[i]])
+                     for i in range(values.size)])
+
+
+def _against_a_fourfold_refinement(geometry, nu, k, path, kwargs, max_error):
+    """Estimates of n = 120, 50 steps against the run with 480 elements, 200 steps.
+
+    Returns a dict: the cycle work's estimate / true error, the true errors of the steps
+    flagged for the work and of those not flagged (relative to the refined path's total
+    work); for the stick radius over the steps that move the contact edge by at most an
+    element (those the verdict judges): the smallest estimate / true error ("cover"), the
+    largest over path segments of the segment's largest estimate over its largest error
+    ("inflation"), and the median of the estimate over the largest true error within two
+    steps either side ("typical": one step's error may pass near 0 as the edge crosses the
+    elements)."""
     n, steps = 120, 50
     res = history(geometry, nu, k, path, steps, n=n, max_error=max_error, **kwargs)
     ref = history(geometry, nu, k, path, 4 * steps, n=4 * n, error_estimate=False, **kwargs)
     assert res.converged.all() and ref.converged.all()
     true = np.abs(res.frictional_work - ref.frictional_work[::4]) / ref.frictional_work[-1]
     flagged = res.work_error_estimate > max_error
-    return res.work_error_estimate[-1] / true[-1], true[flagged], true[~flagged]
+    c_true = np.abs(stick_radius(res) - stick_radius(ref)[::4])
+    c_est = res.stick_radius_error_estimate
+    regular = np.concatenate([[False], np.abs(np.diff(res.contact_radius))
+                              <= res.xi_bounds[0, 1]]) & (res.load_ratio > 0)
+    m = regular & (c_true > 0)
+    segments = [regular & (res.segment == g) for g in range(1, len(path))]
+    window = _window_max(c_true, res.segment)
+    w = regular & (window > 0)
+    return {"work": res.work_error_estimate[-1] / true[-1], "flagged": true[flagged],
+            "unflagged": true[~flagged], "cover": np.min(c_est[m] / c_true[m]),
+            "inflation": max(np.max(c_est[s]) / np.max(c_true[s]) for s in segments
+                             if np.any(c_true[s] > 0)),
+            "typical": np.median(c_est[w] / window[w])}
 
 
 WORK_CASES = {  # label: geometry, nu, k, path, keyword arguments
@@ -186,16 +237,26 @@ def test_cycle_work_estimate_is_tight_and_its_flags_mean_an_error(case):
     step is flagged for the work only if its error, relative to the path's total work, is
     above max_error / 3; an unflagged step's error is below 3 max_error.
 
+    The stick radius's estimate covers its error at every judged step (measured at least
+    0.67 of it), a segment's largest estimate is at most 5 times its largest error (measured
+    0.97 ... 3.5; 1.7 ... 6.9 when the estimate was |run - A| in full), 10 times on the
+    half-plane at nu = 0, whose loading keeps a stick zone of four elements with an edge
+    that crosses none (there |run - A| is a bias and is taken in full: 9.9, as before), and
+    typically within a factor 2 of the largest error within two steps (median 0.84 ... 1.53;
+    in full it was 1.7 ... 2.5).
+
     (Before the estimate measured its order of convergence it assumed first order and was
     3-4 times the error; relative to the work done so far every step was flagged.)
     """
     geometry, nu, k, path, kwargs = WORK_CASES[case]
     max_error = 1e-2
-    ratio, flagged, unflagged = _work_flags_against_a_fourfold_refinement(
-        geometry, nu, k, path, kwargs, max_error)
-    assert 1 / 3 <= ratio <= 3
-    assert np.all(flagged > max_error / 3)
-    assert np.all(unflagged <= 3 * max_error)
+    out = _against_a_fourfold_refinement(geometry, nu, k, path, kwargs, max_error)
+    assert 1 / 3 <= out["work"] <= 3
+    assert np.all(out["flagged"] > max_error / 3)
+    assert np.all(out["unflagged"] <= 3 * max_error)
+    assert out["cover"] >= 1 / 3
+    assert out["inflation"] <= (10 if case == "cylinder fretting nu=0" else 5)
+    assert 1 / 2 <= out["typical"] <= 2
 
 
 def test_a_value_that_is_not_finite_is_never_resolved(monkeypatch):
@@ -237,9 +298,9 @@ def test_advice_names_a_run_the_tool_accepts(steps):
 
 def test_advised_run_resolves_what_it_was_advised_for():
     """The measured convergence's prediction holds: sphere k = 0.2, 0 -> 1 -> 0 at n = 60 and
-    40 steps with max_error 2e-2 advises a run; that run resolves the frictional work and the
-    stick radius to 2e-2 (its own estimates)."""
-    max_error = 2e-2
+    40 steps with max_error 1e-2 advises a run (work and stick radius not resolved); that run
+    resolves the frictional work and the stick radius to 1e-2 (its own estimates)."""
+    max_error = 1e-2
     res = history("sphere", NU, 0.2, [0, 1, 0], 40, n=60, max_error=max_error)
     m = re.search(r"n = (\d+) with (\d+) steps a segment "
                   r"(?:\(the largest the tool accepts\) )?is predicted to resolve", res.message)
@@ -254,12 +315,14 @@ def test_advised_run_resolves_what_it_was_advised_for():
 def test_cycle_work_estimate_covers_a_thin_annulus_on_a_layer():
     """Sphere on a layer, a_max/h = 1 (slip annulus under 12 elements at n = 120): the runs
     are not in the asymptotic range (the measured order falls to the bound 1/2), and the
-    estimate then errs high (measured 16 times the error), never low; the path is not
-    resolved."""
+    work's estimate then errs high (measured 16 times the error), never low; the path is not
+    resolved. The stick radius's estimate stays tight there."""
     kwargs = {"slab_ratio": 1.0}
-    ratio, _, _ = _work_flags_against_a_fourfold_refinement("sphere", NU, 0.2, (0, 1, 0), kwargs,
-                                                            1e-2)
-    assert ratio >= 1 / 3
+    out = _against_a_fourfold_refinement("sphere", NU, 0.2, (0, 1, 0), kwargs, 1e-2)
+    assert out["work"] >= 1 / 3
+    # the stick radius's estimate: measured 0.50 of the error at least, a segment's largest
+    # 1.2 times its largest error (4.1 times at n = 240 when it was |run - A| in full)
+    assert out["cover"] >= 1 / 3 and out["inflation"] <= 3
     res = history("sphere", NU, 0.2, [0, 1, 0], 50, n=120, max_error=1e-2, **kwargs)
     assert not res.resolved_quantities["frictional_work"]
 

@@ -73,21 +73,21 @@ def method_error(n: int) -> None:
     xi, p, q = st.traction_samples(sol)
     x = z = np.linspace(0.0, 2.0, 100)
     base = st.halfspace_stresses(xi, p, q, x, z[1:], NU)
-    panel = st.halfspace.PANEL
+    panel = st.quadrature.PANEL
     try:
-        st.halfspace.PANEL = panel / 2
+        st.quadrature.PANEL = panel / 2
         fine = st.halfspace_stresses(xi, p, q, x, z[1:], NU)
     finally:
-        st.halfspace.PANEL = panel
+        st.quadrature.PANEL = panel
     print(f"sphere z > 0: xi quadrature against halved panels {_largest(base, fine):.1e} p0")
     xs = np.linspace(0.0, 2.0, 2001)
     base = st.halfspace_stresses(xi, p, q, xs, [0.0], NU)
-    rules = st.halfspace.RING_TANH_SINH, st.halfspace.RING_GAUSS
+    rules = st.surface.RING_TANH_SINH, st.surface.RING_GAUSS
     try:
-        st.halfspace.RING_TANH_SINH, st.halfspace.RING_GAUSS = (1.0 / 12.0, 4.0), 20
+        st.surface.RING_TANH_SINH, st.surface.RING_GAUSS = (1.0 / 12.0, 4.0), 20
         fine = st.halfspace_stresses(xi, p, q, xs, [0.0], NU)
     finally:
-        st.halfspace.RING_TANH_SINH, st.halfspace.RING_GAUSS = rules
+        st.surface.RING_TANH_SINH, st.surface.RING_GAUSS = rules
     print(f"sphere z = 0: ring integrals against rules of twice the density "
           f"{_largest(base, fine):.1e} p0")
     t = np.linspace(0.0, 1.0, 41)

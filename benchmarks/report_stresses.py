@@ -106,22 +106,22 @@ def method_errors() -> None:
     x = z = np.linspace(0.0, 2.0, 100)
     args = (sol.xi, sol.pressure, sol.shear)
     base = st.halfspace_stresses(*args, x, z, NU)
-    panel = st.halfspace.PANEL
+    panel = st.quadrature.PANEL
     try:
-        st.halfspace.PANEL = panel / 2
+        st.quadrature.PANEL = panel / 2
         half = st.halfspace_stresses(*args, x, z, NU)
     finally:
-        st.halfspace.PANEL = panel
+        st.quadrature.PANEL = panel
     e = max(np.max(np.abs(base[k][1:] - half[k][1:])) for k in base)
     print(f"xi quadrature (panels halved), z > 0: {e:.1e}")
     xs = np.linspace(0.0, 2.0, 2001)  # through every node of the tractions
     base = st.halfspace_stresses(*args, xs, [0.0], NU)
-    rules = st.halfspace.RING_TANH_SINH, st.halfspace.RING_GAUSS
+    rules = st.surface.RING_TANH_SINH, st.surface.RING_GAUSS
     try:
-        st.halfspace.RING_TANH_SINH, st.halfspace.RING_GAUSS = (1.0 / 12.0, 4.0), 20
+        st.surface.RING_TANH_SINH, st.surface.RING_GAUSS = (1.0 / 12.0, 4.0), 20
         fine = st.halfspace_stresses(*args, xs, [0.0], NU)
     finally:
-        st.halfspace.RING_TANH_SINH, st.halfspace.RING_GAUSS = rules
+        st.surface.RING_TANH_SINH, st.surface.RING_GAUSS = rules
     e = max(np.max(np.abs(base[k] - fine[k])) for k in base)
     print(f"surface row z = 0 (ring integrals against rules of twice the density): {e:.1e}")
 

@@ -20,7 +20,11 @@ NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "
             "checks", "energy", "result", "api", "history_api", "convergence",
             "discrete", "kernels/layer", "kernels/thin_layer", "kernels/layer_transfer",
             "layer_study", "fretting_solver",
-            "fretting_api", "estimates", "coating_study", "stresses/grid", "stresses/layer")
+            "fretting_api", "estimates", "coating_study", "stresses/__init__", "stresses/inputs",
+            "stresses/halfplane", "stresses/quadrature", "stresses/pieces", "stresses/surface",
+            "stresses/halfspace", "stresses/layer", "stresses/dispatch", "stresses/measures",
+            "stresses/solution", "stresses/datasets", "stresses/estimate", "stresses/history",
+            "stresses/fretting", "stresses/tangential", "stresses/grid")
 # what the numerics never import: files and conventions (io), figures, workflow
 FORBIDDEN_IN_NUMERICS = ("contactlib.io", "contactlib.plot", "matplotlib", "snakemake",
                          "contactlib.pipeline", "contactlib.scene", "contactlib.cli")
@@ -136,7 +140,11 @@ LAYER_MODULES = {
                "result", "solver_fused"),
     "entry points": ("api", "history_api", "history_plan", "fretting_api", "convergence",
                      "layer_study", "coating_study", "physical", "physical_fretting",
-                     "stress_study", "stresses", "stresses.halfspace", "stresses.layer",
+                     "stress_study", "stresses", "stresses.inputs", "stresses.halfplane",
+                     "stresses.quadrature", "stresses.pieces", "stresses.surface",
+                     "stresses.halfspace", "stresses.layer", "stresses.dispatch",
+                     "stresses.measures", "stresses.solution", "stresses.datasets",
+                     "stresses.estimate", "stresses.history", "stresses.fretting",
                      "stresses.tangential", "stresses.grid"),
     "io": ("io", "io.conventions", "io.checksums", "io.atomic", "io.inputs", "io.datasets",
            "io.fretting", "io.physical", "io.files", "io.records"),

@@ -621,7 +621,7 @@ def test_integral_of_j0_in_every_supported_scipy():
     x ~ 21 on)."""
     import mpmath
 
-    from contactlib.stresses.halfspace import _integral_j0
+    from contactlib.stresses.pieces import _integral_j0
 
     x = np.array([0.5, 5.0, 14.9, 15.0, 15.1, 19.9, 20.1, 21.0, 24.0, 25.7653742, 29.9, 30.0,
                   30.1, 40.0, 100.0, 1000.0, 1800.0, 4321.0])
@@ -725,14 +725,14 @@ def test_halfspace_tail_panels_change_the_field_by_round_off(monkeypatch, partia
     """The wide tail panels of the xi quadrature (TAIL_PERIODS, 4 points a period) against 8
     points a period everywhere (TAIL_PERIODS huge), and the field against halved panels
     (convergence): 1.5e-12 and 1e-10 measured, on the benchmark's grid's first rows."""
-    from contactlib.stresses import halfspace
+    from contactlib.stresses import quadrature
 
     xi, p, q = traction_samples(partial[256])
     x, z = np.linspace(0.0, 2.0, 41), np.array([0.0202, 0.05, 0.3, 1.0])
     f = halfspace_stresses(xi, p, q, x, z, NU)
-    monkeypatch.setattr(halfspace, "TAIL_PERIODS", 10**6)
+    monkeypatch.setattr(quadrature, "TAIL_PERIODS", 10**6)
     g = halfspace_stresses(xi, p, q, x, z, NU)
-    monkeypatch.setattr(halfspace, "PANEL", halfspace.PANEL / 2)
+    monkeypatch.setattr(quadrature, "PANEL", quadrature.PANEL / 2)
     h = halfspace_stresses(xi, p, q, x, z, NU)
     assert max(np.max(np.abs(f[c] - g[c])) for c in f) < 1e-11
     assert max(np.max(np.abs(f[c] - h[c])) for c in f) < 1e-9

@@ -50,7 +50,7 @@ from typing import Any
 
 import numpy as np
 
-from .halfspace import CHUNK
+from .inputs import CHUNK
 from .tangential import CARTESIAN, cartesian_measures
 
 __all__ = ["grid_stresses", "stresses_at", "lattice_stresses", "corner_weights",

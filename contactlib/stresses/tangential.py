@@ -41,8 +41,10 @@ from typing import Any
 import numpy as np
 import scipy.special as sp
 
-from .halfspace import (CHUNK, DEPTH_CUTOFF, XI_SURFACE, TractionPieces, check_grid,
-                        check_tractions, halfspace_stresses, xi_nodes)
+from .halfspace import halfspace_stresses
+from .inputs import CHUNK, check_grid, check_tractions
+from .pieces import TractionPieces
+from .quadrature import DEPTH_CUTOFF, XI_SURFACE, xi_nodes
 
 __all__ = ["CARTESIAN", "shear_x_stresses", "cartesian_stresses", "cartesian_measures",
            "mindlin_tractions", "mindlin_deresiewicz_tractions", "mindlin_sphere_stresses"]

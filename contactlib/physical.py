@@ -533,6 +533,17 @@ class _Setup:
     composite_modulus: float
     substrate: Material | None
 
+    def scales(self) -> _Problem:
+        """The problem behind the result, whose methods give its scales at a contact radius
+        (``load_unit``, ``pressure_unit``, ``displacement_unit``, ``work_unit``)."""
+        alpha = getattr(self, "half_angle", math.nan)
+        cone = getattr(self, "profile", "paraboloid") == "cone"
+        return _Problem(self.geometry, self.radius, self.indenter, self.body,
+                        self.composite_modulus, self.length, self.thickness, self.base,
+                        self.substrate, profiles.profile("cone") if cone else PARABOLOID,
+                        1.0 / math.tan(math.radians(alpha)) if cone else 1.0 / self.radius,
+                        alpha)
+
     def _head(self) -> str:
         """``sphere R = 5 mm: indenter ..., body ...`` (and the layer)."""
         if getattr(self, "profile", "paraboloid") == "cone":
@@ -942,19 +953,22 @@ class PhysicalHistory(_Setup):
     segment_frictional_energy: np.ndarray
     notes: list[str]
     result: Any
+    profile: str = "paraboloid"
+    half_angle: float = math.nan
 
     @property
     def hertz_load(self) -> float:
-        """P_Hertz(a_max) [N] = the largest force of the path."""
+        """P_Hertz(a_max) [N] = the largest force of the path (the cone's frictionless
+        load at a_max, for the cone)."""
         return self.max_load
 
     def load_ratio_hertz(self, step: int) -> float:
-        """P / P_Hertz(a) at a step, a the computed contact radius there."""
+        """P / P_Hertz(a) at a step, a the computed contact radius there (over the cone's
+        frictionless load at a, for the cone)."""
         a = float(self.contact_radius[step])
         if a <= 0:
             return math.nan
-        return float(self.force[step]) / (hertz_load(self.geometry, self.composite_modulus,
-                                                     self.radius, a) * self.length)
+        return float(self.force[step]) / (self.scales().load_unit(a) * self.length)
 
     def profiles(self, step: int) -> dict[str, np.ndarray]:
         """Profiles at a step: ``r`` [m] (element midpoints), ``pressure``, ``shear`` [Pa],
@@ -963,20 +977,22 @@ class PhysicalHistory(_Setup):
         return {"r": np.asarray(r.xi) * self.a_max,
                 "pressure": np.asarray(r.pressure[step]) * self.p0,
                 "shear": np.asarray(r.shear[step]) * self.p0,
-                "tangential_displacement":
-                    np.asarray(r.tangential_displacement[step]) * self.a_max ** 2 / self.radius}
+                "tangential_displacement": np.asarray(r.tangential_displacement[step])
+                * self.scales().displacement_unit(self.a_max)}
 
     def summary(self) -> str:
         """The path's state at each segment end, and the energy of each cycle, with units."""
         res = self.result
         lines = [self._head(),
                  f"  E* = {format_si(self.composite_modulus, 'Pa')}, k = {self.friction:g}, "
-                 f"a_max = {format_si(self.a_max, 'm')} (Hertz at "
+                 f"a_max = {format_si(self.a_max, 'm')} "
+                 f"({'Hertz' if self.profile == 'paraboloid' else 'frictionless'} at "
                  f"{format_si(self.max_load, 'N')}), p0(a_max) = {format_si(self.p0, 'Pa')}, "
                  f"n = {res.n}, {res.steps} steps a "
                  f"{'load travel of P_max' if res.segment_steps else 'segment'}",
                  f"  {'point':>5} {'P':>10} {'a':>11} {'c':>11} {'p_max':>11} "
-                 f"{'P/P_H(a)':>9} {'E_friction':>11}"]
+                 f"{'P/P_H(a)' if self.profile == 'paraboloid' else 'P/P_f(a)':>9} "
+                 f"{'E_friction':>11}"]
         for i in range(len(self.load_path)):
             j = res.segment_end(i) if i else 0
             c = float(self.stick_radius[j])
@@ -1105,7 +1121,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
                      relaxation: Sequence[Sequence[Any]] | None = None,
                      steps: int = DEFAULT_HISTORY_STEPS, length: float | str | None = None,
                      thickness: float | str | None = None, base: str = "smooth",
-                     substrate: Any = None,
+                     substrate: Any = None, profile: str = "paraboloid",
+                     half_angle: float | str | None = None,
                      n: int | None = None, max_error: float = validate.DEFAULT_MAX_ERROR,
                      error_estimate: bool = True,
                      progress: Callable[[int, int], None] | None = None,
@@ -1114,9 +1131,10 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
 
     Parameters
     ----------
-    geometry, radius, indenter, body, length, thickness, base, substrate
+    geometry, radius, indenter, body, length, thickness, base, substrate, profile, half_angle
         As for :func:`physical_solve` (the layer's a_max/h with a_max below; a coated
-        body refuses a ``relaxation``).
+        body refuses a ``relaxation``; the cone: ``radius=None``, ``half_angle`` in
+        degrees, a_max its frictionless contact radius at P_max).
     load_path : sequence, str or mapping
         Forces [N] (numbers, or strings with units), or ``"0N,100N,0N"``;
         starting at 0. The largest is P_max, load level 1. Or a shape
@@ -1161,7 +1179,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
 
     from . import load_paths
 
-    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate)
+    prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate,
+                            profile, half_angle)
     shaped = load_paths.is_shaped(load_path)
     if shaped:
         if times is not None:
@@ -1201,7 +1220,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
             raise validate.InputError("times", f"{len(forces)} increasing times, one a path "
                                       "point", times)
         kwargs["duration"] = list(np.diff(t_points))
-    a_max = contact_radius_of_load(g, prob.e_star, prob.radius, p_max / prob.per_length)
+    a_max = prob.radius_of_load(p_max / prob.per_length)
     slab = 0.0 if prob.thickness == math.inf else a_max / prob.thickness
     if _check_only:  # the rules of contactlib.history that join several inputs, no numerics
         validate.slab_ratio(slab, g, prob.base, extent=validate.HISTORY_MESH_EXTENT)
@@ -1229,8 +1248,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         forces = tuple(float(v) * p_max for v in res.load_path)
         if res.durations:
             t_points = t_start + np.concatenate([[0.0], np.cumsum(res.durations)])
-    p0 = hertz_peak_pressure(g, prob.e_star, prob.radius, a_max)
-    w_unit = work_scale(g, prob.e_star, prob.radius, a_max) * prob.per_length
+    p0 = prob.pressure_unit(a_max)
+    w_unit = prob.work_unit(a_max) * prob.per_length
     a = np.asarray(res.contact_radius) * a_max
     with np.errstate(invalid="ignore"):
         c = np.asarray(res.stick_ratio) * a
@@ -1243,7 +1262,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     err_c = np.asarray(res.stick_radius_error_estimate
                        if res.stick_radius_error_estimate is not None
                        else np.full(wf.shape, np.nan), dtype=float) * a_max
-    approach = (np.asarray(res.indentation) * a_max ** 2 / prob.radius
+    approach = (np.asarray(res.indentation) * prob.displacement_unit(a_max)
                 if (g == "sphere" or slab > 0) else np.full(wf.shape, np.nan))
     cycles = path_cycles(forces)
     cyc_f, cyc_e, cyc_v = [], [], []
@@ -1256,15 +1275,18 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     time = None if res.time is None else np.asarray(res.time) + (t_points[0] if t_points
                                                                  is not None else 0.0)
     notes = validity_notes(prob, float(np.nanmax(a)))
+    peak = np.max(np.asarray(res.pressure), axis=1) * p0
+    if prob.shape.exponent <= 1.0:  # the cone's pressure is log-infinite at the tip
+        peak = np.where(a > 0, math.inf, peak)
     return PhysicalHistory(
         geometry=g, radius=prob.radius, length=prob.length, thickness=prob.thickness,
         base=prob.base, indenter=prob.indenter, body=prob.body, substrate=prob.substrate,
         composite_modulus=prob.e_star, friction=float(res.friction), load_path=forces, times=t_points, a_max=a_max, p0=p0,
         max_load=p_max, slab_ratio=slab, force=np.asarray(res.load_ratio) * p_max,
         contact_radius=a, stick_radius=c, stick_radius_error=err_c,
-        peak_pressure=np.max(np.asarray(res.pressure), axis=1) * p0, approach=approach,
+        peak_pressure=peak, approach=approach,
         frictional_energy=wf, energy_error=err_w, viscous_energy=wv, time=time,
         cycles=cycles, cycle_frictional_energy=np.array(cyc_f),
         cycle_energy_error=np.array(cyc_e), cycle_viscous_energy=np.array(cyc_v),
         segment_frictional_energy=np.asarray(res.segment_work()) * w_unit,
-        notes=notes, result=res)
+        notes=notes, result=res, profile=prob.shape.name, half_angle=prob.half_angle)

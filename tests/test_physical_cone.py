@@ -109,3 +109,41 @@ def test_command_line_bad_cone_input_is_one_line(capsys, extra, word):
                    "--body", "fused_silica", "--friction", "0.3"] + extra)
     err = capsys.readouterr().err
     assert rc == 2 and word in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_cone_history_in_si_balances_the_force_and_carries_the_scalings():
+    """physical_history of a cone, 0 -> 1 N -> 0: a_max is Love's frictionless radius at
+    1 N; at every loaded step the pressure integrates to the force (equilibrium, in N); the
+    energies are the dimensionless history's times E* (a_max cot alpha)^2 a_max; the peak
+    pressure is infinite where there is contact."""
+    import numpy as np
+    from contactlib.physical import physical_history
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SmallStrainWarning)
+        r = physical_history("sphere", None, "0N,1N,0N", "rigid", (E_STAR * 0.91, 0.3), 0.3,
+                             profile="cone", half_angle=ALPHA, steps=20, n=60)
+    a_max = math.sqrt(2.0 * 1.0 / (math.pi * E_STAR * COT))
+    assert r.a_max == pytest.approx(a_max, rel=1e-12)
+    res = r.result
+    xb = np.asarray(res.xi_bounds) * r.a_max
+    area = math.pi * (xb[:, 1] ** 2 - xb[:, 0] ** 2)
+    for j in np.flatnonzero(r.force > 0):
+        assert np.sum(r.profiles(j)["pressure"] * area) == pytest.approx(r.force[j], rel=1e-9)
+    unit = E_STAR * (a_max * COT) ** 2 * a_max
+    assert r.frictional_energy[-1] == pytest.approx(res.frictional_work[-1] * unit, rel=1e-12)
+    assert np.all(np.isinf(r.peak_pressure[r.contact_radius > 0]))
+    assert "cone, half-angle 80 deg" in r.summary()
+
+
+def test_command_line_cone_history_and_refusals(tmp_path, capsys):
+    out = tmp_path / "ch.nc"
+    args = ["history", "--geometry", "sphere", "--profile", "cone", "--half-angle", "80",
+            "--load-path", "0N,1N,0N", "--body", "91GPa,0.3", "--friction", "0.3"]
+    assert cli.main(args + ["--n", "40", "--steps", "10", "--output", str(out)]) == 0
+    ds = cio.read_dataset(out)
+    assert ds.attrs["profile"] == "cone" and ds.attrs["indenter_half_angle_deg"] == 80.0
+    capsys.readouterr()
+    rc = cli.main(args + ["--tangential-path", "0N,0N,0.1N"])
+    err = capsys.readouterr().err
+    assert rc == 2 and "--profile" in err and len(err.strip().splitlines()) == 1, err

@@ -216,10 +216,10 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
                              f"--indenter, --thickness give the problem), got {option} with "
                              "them")
     profile = getattr(args, "profile", "paraboloid")
-    cone = args.command == "solve" and profile == "cone"
+    cone = profile == "cone"
     if profile != "paraboloid" and not cone:
-        raise UsageError(f"--profile {profile} is not available with physical units: `solve` "
-                         "takes the paraboloid (--radius) or the cone (--profile cone "
+        raise UsageError(f"--profile {profile} is not available with physical units: they "
+                         "take the paraboloid (--radius) or the cone (--profile cone "
                          "--half-angle DEG); give the dimensionless problem (--nu) instead")
     if getattr(args, "half_angle", None) is not None and not cone:
         raise UsageError(f"--half-angle is for --profile cone, got --half-angle "
@@ -235,6 +235,9 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     kwargs: dict[str, Any] = {"geometry": geometry, "radius": radius, "indenter": indenter,
                               "body": body, "base": parse_base(args.base, coated=True),
                               "max_error": parse_max_error(args.max_error)}
+    if cone:
+        kwargs.update(profile="cone", half_angle=_physical_check(
+            physical.parse_half_angle, required_value(args.half_angle, "--half-angle")))
     if geometry == "cylinder":
         kwargs["length"] = _physical_check(physical.parse_quantity,
                                            required_value(args.length, "--length"), "length",
@@ -250,9 +253,6 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     if args.command == "solve":
         kwargs["load"] = _physical_check(physical.parse_quantity,
                                          required_value(args.load, "--load"), "force", "load")
-        if cone:
-            kwargs.update(profile="cone", half_angle=_physical_check(
-                physical.parse_half_angle, required_value(args.half_angle, "--half-angle")))
         method = checked(validate.method, args.method, args.method)
         kwargs.update(method=method, n=None if args.n is None else parse_n(args.n, method),
                       energy=not args.no_energy)

@@ -125,10 +125,10 @@ def _physical_options(sub: argparse.ArgumentParser, *, load: bool) -> None:
         group.add_argument("--load", metavar="P", default=None,
                            help=f"normal force P in N ({_UNITS_HELP}: 100N; a cylinder's over "
                                 "its --length)")
-        group.add_argument("--half-angle", metavar="DEG", default=None,
-                           help="with --profile cone: the cone's (wedge's) half-angle in "
-                                "degrees, 0 < DEG < 90 (70.3: the cone of a Berkovich tip's "
-                                "area); replaces --radius")
+    group.add_argument("--half-angle", metavar="DEG", default=None,
+                       help="with --profile cone: the cone's (wedge's) half-angle in degrees, "
+                            "0 < DEG < 90 (70.3: the cone of a Berkovich tip's area); "
+                            "replaces --radius")
     group.add_argument("--indenter", metavar="NAME|E,NU", default=None,
                        help="indenter material: a name of the package's table "
                             "(contactlib/data/materials.yaml), rigid, or E,nu (210GPa,0.3); "

@@ -37,10 +37,13 @@ def run_physical_fretting(args: argparse.Namespace) -> int:
                           ("--indenter-nu", args.indenter_nu is not None),
                           ("--slab-ratio", args.slab_ratio not in (None, "0")),
                           ("--thickness", args.thickness is not None),
-                          ("--relaxation", args.relaxation is not None)):
+                          ("--relaxation", args.relaxation is not None),
+                          ("--profile", getattr(args, "profile", "paraboloid") != "paraboloid"),
+                          ("--half-angle", getattr(args, "half_angle", None) is not None)):
         if given:
             raise UsageError(f"{option} is not used with a fretting path in newtons (--radius, "
-                             f"--length, --indenter, --body give the problem), got {option}")
+                             f"--length, --indenter, --body give the problem, a paraboloid), "
+                             f"got {option}")
     cylinder = args.geometry == "cylinder"
     if not cylinder and args.length is not None:
         raise UsageError(f"--length is for a cylinder only, got --length {args.length!r} "

@@ -172,7 +172,7 @@ def _physical_history_dataset(res: Any) -> xr.Dataset:
         "shear_si": (ed, np.asarray(r.shear) * res.p0, cf_attrs(
             "shear traction on the body", "Pa", "positive away from the axis")),
         "tangential_displacement_si": (ed, np.asarray(r.tangential_displacement)
-                                       * res.a_max ** 2 / res.radius, cf_attrs(
+                                       * res.scales().displacement_unit(res.a_max), cf_attrs(
             "tangential surface displacement", "m", "positive away from the axis")),
         "cycle_frictional_energy_si": (("cycle",), res.cycle_frictional_energy, cf_attrs(
             "frictional energy of each cycle" + per, "J",

@@ -124,7 +124,8 @@ def physical_history_figure(res: Any, title: str = "") -> Figure:
         right.set_ylabel("traction [MPa]")
         right.set_title(f"at P = {force[peak]:.4g} N", fontsize="small")
         right.legend(loc="upper right", fontsize="small")
-        fig.suptitle(f"{title + ': ' if title else ''}{res.geometry}, R = "
-                     f"{res.radius * 1e3:.4g} mm, {res.indenter} on {res.body}, "
-                     f"k = {res.friction:g}", fontsize="small")
+        shape = (f"R = {res.radius * 1e3:.4g} mm" if getattr(res, "profile", "paraboloid")
+                 == "paraboloid" else f"cone, half-angle {res.half_angle:g}°")
+        fig.suptitle(f"{title + ': ' if title else ''}{res.geometry}, {shape}, "
+                     f"{res.indenter} on {res.body}, k = {res.friction:g}", fontsize="small")
         return finish(fig)

@@ -51,22 +51,17 @@ Conditions at the cell centres
 * tangential: the slip ``v = u - s`` (``s`` the indenter's rigid shift, a
   2-vector) and its increment ``dv`` over the step; stick: ``dv = 0`` and
   ``|q| <= k p``; slip: ``q = -k p dv/|dv|``; ``sum q h^2 = (Q, 0)``
-  (force control). At a given shift ``s`` (:func:`solve_shifted`), for given
-  sets and slip directions, the stuck cells' shear solves a symmetric positive
-  definite system, by conjugate gradients. Sets and directions are then
-  updated by Kalker's rules: a stuck cell whose shear exceeds ``k p`` slips
-  along its shear; a slipping cell whose slip does not oppose its shear sticks;
-  the others take the direction opposite to the slip the other cells and the
-  shift impose on them, the fixed point accelerated by Anderson mixing. The
-  loop ends when nothing changes and the directions agree to
-  ``_DIRECTION_TOL``; a loop that does not is run again with a patient rule
-  (no cell sticks while the directions still turn by more than
-  ``_PATIENT_TURN``), which the coupled pairs need. The force is met by a safeguarded
-  secant method on ``s_x`` (:func:`solve_tangential`; ``s_y = 0`` by symmetry). Force control
-  inside the active set made the shift oscillate and grow.
+  (force control). For a given pressure these are the optimality conditions of
+  a convex problem, the minimum of ``q.(K q)/2 + q.(u_p - v_old)`` over the
+  shear fields inside the discs ``|q| <= k p`` that carry the force, ``K`` the
+  symmetric positive definite shear operator and ``s`` the force's multiplier
+  (:func:`solve_tangential`): one minimum, found by accelerated projected
+  gradients with restarts. It replaced Kalker's active set with a secant on
+  the shift, whose sets cycled at n = 64 on the coupled pairs.
 * coupling (beta != 0): the normal and tangential problems are solved in
   turn until the pressure and the shear change by less than
-  ``_COUPLING_TOL`` of their scales; at beta = 0 the normal problem is solved
+  ``_COUPLING_TOL`` of the pressure's scale, the shear to a tolerance that
+  follows the change (``_INEXACT``); at beta = 0 the normal problem is solved
   once per load level.
 
 The frictional work of a step is ``sum k p |dv| h^2`` over the cells slipping

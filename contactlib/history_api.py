@@ -621,9 +621,12 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     :func:`contactlib.history_solver.error_estimates`). The work's and the
     energies' order of convergence under this joint refinement is measured
     from the three runs, and their error is this run minus run A over
-    ``2^p - 1`` (Richardson); the stick radius error is this run minus run A
-    (not across a jump of A's stick radius), at least half an element
-    wherever the stick radius is an element edge. Measured against runs
+    ``2^p - 1`` (Richardson); the stick radius error is half of this run
+    minus run A where the stick edge crosses an element within six steps
+    (run A's quantization of the edge is twice the run's), at least the run's
+    own deviation from a local quadratic there, in full where the edge
+    crosses no element, not across a jump of A's stick radius, and at least
+    half an element wherever the stick radius is an element edge. Measured against runs
     refined fourfold (4n elements, 4x steps;
     ``benchmarks/report_history_estimates.py``, docs/accuracy.md) at n =
     120, 50 steps and n = 240, 100 steps: the cycle work's estimate is 0.48
@@ -631,11 +634,14 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     viscoelastic body, a layer at n = 240; measured orders 1.3 ... 2.1), 16
     times on a layer whose slip annulus spans under 12 elements (n = 120: the
     runs are not asymptotic there, the measured order falls to its bound
-    1/2); the stick radius's covers its error along the path (at least 0.60
-    of it) and is at most 1.3 ... 9.9 times a segment's largest error, 1.4
-    ... 36 times the error at the top load (the located edge's error changes
-    sign as the edge crosses the elements, and the coarse run's is twice as
-    large). The estimate costs about a third of the run.
+    1/2); the stick radius's covers its error along the path (at least 0.50
+    of it), its median over the largest error within two steps is 0.84 ...
+    1.67 (located edges), a segment's largest is 0.97 ... 4.6 times the
+    segment's largest error (9.9 on the half-plane at nu = 0, n = 120, whose
+    stick zone of four elements keeps its edge), and 0.72 ... 18 times the
+    error at the top load, where a step's error may be near 0 as the edge
+    crosses an element, or the stick radius is an element edge (k = 0.05).
+    The estimate costs about a third of the run.
 
     A step is flagged where a quantity is off by more than ``max_error`` at
     its own scale (above); ``resolved_quantities`` and ``message`` say which

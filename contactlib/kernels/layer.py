@@ -870,6 +870,9 @@ def remainder_grid(kind: str, r: ArrayLike, s: ArrayLike, nu: float, h: float,
     if not np.isfinite(h):
         raise ValueError("remainder_grid needs a finite layer thickness h")
     rb, sb = np.asarray(r, dtype=float).reshape(-1), np.asarray(s, dtype=float).reshape(-1)
+    if rb.size == 0 or sb.size == 0:  # (a probe: no table is built for it)
+        cols = sb.size if weights is None else int(np.max(owner, initial=-1)) + 1
+        return np.zeros((3, rb.size, cols))
     if _thin(base, rb, sb, h):
         rho, sigma, pos = _scaled_rho_sigma(rb, sb, h, THIN_RATIO_MAX)
         wts = None if weights is None else np.where(

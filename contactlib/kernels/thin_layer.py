@@ -17,10 +17,20 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
   (``PANEL_SPAN = 30``: ~5 periods a panel; 40 loses 7e-10 of the scale), so
   the number of nodes grows like ``max(rho + sigma)`` (24,000 at a/h = 1000);
 * memory: each chunk of nodes holds up to ``10 (n_s + n_r)`` values a node,
-  kept under :data:`MEMORY_BYTES` (48 MB) whatever the size.
+  kept under :data:`MEMORY_BYTES` (48 MB) whatever the size;
+* element sums (``weights``, ``owner``: the operators' Gauss rules over the disc
+  radius, 8 points on panels of h/2, ~17,000 points at a/h = 1000): a rule that
+  spans one interval ``[a, b]`` of at least :data:`WIDE_ELEMENT` h is replaced
+  by the exact integral ``int_a^b s^p J_p(s t) ds = (G(b t) - G(a t))/t^(p+1)``
+  (:func:`disc_integrals`), so the Bessel values are needed at the ~n + 1
+  element edges only, and these are the points ``rho`` of a mesh's own nodes
+  (their J0, J1 are shared). Equal to the point-by-point sums to 5e-14 of each
+  function's scale (tests/test_thin_layer_edges.py); one solve at a/h = 1000,
+  n = 256 takes ~10x less (benchmarks/bench_thin_coatings.py).
 
 Accuracy (tests/test_thin_layers.py): equal to the tables to 1e-10 of their
-scale where both apply, to an independent ``quad`` of a disc's w(0) to 1e-12, unchanged (< 1e-12) when the panels are halved at
+scale where both apply, to an independent ``quad`` of a disc's w(0) to 1e-12,
+unchanged (< 1e-12) when the panels are halved at
 ``rho + sigma = 2400``, and the thin-layer limits (Winkler's ``w = p h/M`` of a
 bonded layer, ``w = p h`` of a smooth one, in ``E* = 1``) to ~1e-15 inside a wide
 disc.
@@ -38,6 +48,8 @@ at ``rho + sigma = 2400``; zero (< 1e-13) for equal materials.
 """
 
 from __future__ import annotations
+
+from math import factorial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -62,6 +74,25 @@ MEMORY_BYTES = 48e6
 
 # tested: tests/test_thin_layers.py (the sums against the ring tables, with PANEL_SPAN)
 _GL_ORDER = 20
+
+# tested: tests/test_thin_layer_edges.py (an element of at least this width, in h, is
+# integrated in closed form; its rounding ~1e-16 x (s/h)/width stays below 1e-11)
+WIDE_ELEMENT = 0.25
+"""Narrowest element (in layer thicknesses) whose disc-radius integral is taken in closed form."""
+
+# tested: tests/test_thin_layer_edges.py (disc_integrals against mpmath): power series below
+_SERIES_X = 4.0
+# tested: tests/test_thin_layer_edges.py (disc_integrals against mpmath): Miller up to, then
+# the asymptotic series (its 11th term at x = 60 is ~1e-18 of the first)
+_ASYMPTOTIC_X = 60.0
+# tested: tests/test_thin_layer_edges.py (disc_integrals against mpmath): start order of
+# Miller's recurrence (J_140(60) ~ 1e-25)
+_MILLER_START = 140
+# tested: tests/test_thin_layer_edges.py (disc_integrals against mpmath): terms of the
+# asymptotic series used beyond _ASYMPTOTIC_X
+_TAIL_TERMS = 11
+# tested: tests/test_thin_layer_edges.py (disc_integrals against mpmath): terms of the series
+_SERIES_TERMS = 25
 
 # row: (remainder, power of sigma, sign, Bessel order in sigma, function of rho, power of t)
 _SPECS = {
@@ -113,9 +144,106 @@ def _bessel(name: str, x: Arr, j0: Arr | None = None, j1: Arr | None = None) -> 
         return special.j1(x) if j1 is None else j1
     j0 = special.j0(x) if j0 is None else j0
     j1 = special.j1(x) if j1 is None else j1
-    big = x > 2.0
-    j2 = np.where(big, 2.0 * j1 / np.where(big, x, 1.0) - j0, special.jv(2, np.where(big, 0.0, x)))
+    small = x <= 2.0
+    j2 = 2.0 * j1 / np.where(small, 1.0, x) - j0
+    j2[small] = special.jv(2, x[small])  # (jv only where the recurrence would cancel)
     return j2 if name == "J2" else 0.5 * (j0 - j2)
+
+
+def _power_series(order: int) -> Arr:
+    """Coefficients c_k of ``int_0^X x^p J_p(x) dx = X^(2p+1) sum_k c_k X^(2k)``, p = order."""
+    return np.array([(-1.0) ** k / (factorial(k) * factorial(k + order)
+                                    * 2.0 ** (2 * k + order) * (2 * k + 2 * order + 1))
+                     for k in range(_SERIES_TERMS)])
+
+
+def _horner(coef: Arr, z: Arr) -> Arr:
+    acc = np.full_like(z, coef[-1])
+    for c in coef[-2::-1]:
+        acc *= z
+        acc += c
+    return acc
+
+
+def _integral_j0(x: Arr) -> Arr:
+    """``int_0^x J0`` for ``_SERIES_X <= x <= _ASYMPTOTIC_X``: Miller's backward recurrence.
+
+    ``int_0^x J0 = 2 sum_k J_{2k+1}(x)`` and ``1 = J0 + 2 sum_k J_{2k}(x)``: the
+    unnormalized values of the recurrence from order ``_MILLER_START`` (where
+    ``J_n(60)`` is ~1e-25 of ``J_0``) give both sums and their ratio.
+    """
+    inv = 2.0 / x
+    after, f = np.zeros_like(x), np.full_like(x, 1e-30)
+    even, odd = np.zeros_like(x), np.zeros_like(x)
+    for n in range(_MILLER_START, 0, -1):
+        (even if n % 2 == 0 else odd).__iadd__(f)
+        after, f = f, (n * inv) * f - after
+    return 2.0 * odd / (f + 2.0 * even)
+
+
+def _asymptotic_tails(x: Arr) -> tuple[Arr, Arr]:
+    """``e0, e1`` with ``H0 - Y0 = (2/pi) e0`` and ``H1 - Y1 = (2/pi)(1 + e1)`` (Struve), x > 60.
+
+    The asymptotic series (Abramowitz & Stegun 12.1.31): ``e0 = 1/x - 1/x^3 +
+    9/x^5 - ...``, ``e1 = 1/x^2 - 3/x^4 + 45/x^6 - ...``.
+    """
+    z = 1.0 / (x * x)
+    return _horner(_TAIL0, z) / x, _horner(_TAIL1, z) * z
+
+
+def _tail_coefficients() -> tuple[Arr, Arr]:
+    c, d = [1.0], [1.0]
+    for k in range(_TAIL_TERMS - 1):
+        c.append(-c[-1] * (2 * k + 1) ** 2)
+        d.append(d[-1] * (2 * k + 3) * (-1 - 2 * k))
+    return np.array(c), np.array(d)
+
+
+_SERIES = {1: _power_series(1), 2: _power_series(2)}
+_TAIL0, _TAIL1 = _tail_coefficients()
+
+
+def disc_integrals(order: int, x: ArrayLike, j0: Arr | None = None,
+                   j1: Arr | None = None) -> Arr:
+    """``int_0^x y^p J_p(y) dy`` for ``p = order`` (1 or 2), to ~1e-15 of its scale.
+
+    The disc loads' Bessel factors integrated over the disc radius:
+    ``int_a^b s^p J_p(s t) ds = (G(b t) - G(a t)) / t^(p + 1)``. Power series
+    below ``x = 4``; above, ``G1 = int_0^x J0 - x J0(x)`` and ``G2 = 3 G1 - x^2
+    J1(x)``, with ``int_0^x J0`` by Miller's recurrence up to ``x = 60`` and beyond
+    as ``1 + x J1 e0 - x J0 e1`` (the Struve functions' asymptotic series, the
+    Wronskian ``J1 Y0 - J0 Y1 = 2/(pi x)``). Tested against mpmath
+    (tests/test_thin_layer_edges.py).
+
+    Parameters
+    ----------
+    order : {1, 2}
+    x : array_like
+        Arguments >= 0 (dimensionless).
+    j0, j1 : ndarray, optional
+        ``J0(x)`` and ``J1(x)`` when the caller has them.
+
+    Returns
+    -------
+    ndarray
+        The integrals, the shape of ``x``.
+    """
+    from scipy import special
+
+    x = np.asarray(x, dtype=float)
+    j0 = special.j0(x) if j0 is None else j0
+    j1 = special.j1(x) if j1 is None else j1
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        e0, e1 = _asymptotic_tails(x)  # all, then the smaller x replaced
+        g1 = 1.0 + x * (j1 * e0 - j0 * (1.0 + e1))
+    xf, g1f = x.reshape(-1), g1.reshape(-1)
+    mid = np.flatnonzero((xf >= _SERIES_X) & (xf <= _ASYMPTOTIC_X))
+    g1f[mid] = _integral_j0(xf[mid]) - xf[mid] * j0.reshape(-1)[mid]
+    out = g1 if order == 1 else 3.0 * g1 - x * x * j1
+    small = np.flatnonzero(xf < _SERIES_X)
+    xs = xf[small]
+    out.reshape(-1)[small] = _horner(_SERIES[order], xs * xs) * xs ** (2 * order + 1)
+    return out
 
 
 def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str,
@@ -153,31 +281,117 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
     sigma = np.asarray(sigma, dtype=float).reshape(-1)
     specs = _SPECS[kind]
     power = specs[0][1]
+    closed = None
     if weights is None:
         factor, starts, rows = sigma ** power, None, np.arange(sigma.size)
         m = sigma.size
     else:
         own = np.asarray(owner, dtype=np.intp).reshape(-1)
-        factor = np.asarray(weights, dtype=float).reshape(-1) * sigma ** power
+        wts = np.asarray(weights, dtype=float).reshape(-1)
         starts = np.flatnonzero(np.r_[True, np.diff(own) != 0]) if own.size else own
         rows, m = own[starts], int(own.max(initial=-1)) + 1
+        closed = _closed_elements(sigma, wts, starts)
+        direct = ~np.repeat(closed[0], np.diff(np.r_[starts, sigma.size]))
+        sigma, own = sigma[direct], own[direct]
+        factor = wts[direct] * sigma ** power
+        starts = np.flatnonzero(np.r_[True, np.diff(own) != 0]) if own.size else own
     out = np.zeros((3, rho.size, m))
-    if rho.size == 0 or sigma.size == 0:
+    if rho.size == 0 or rows.size == 0:
         return out
-    t, wt = nodes(float(rho.max() + sigma.max()), layer_transfer.fine_panel(nu, base))
-    chunk = max(64, int(MEMORY_BYTES / (8.0 * 10 * (sigma.size + rho.size))))
+    top = max(float(sigma.max(initial=0.0)),
+              0.0 if closed is None else float(closed[1].max(initial=0.0)))
+    t, wt = nodes(float(rho.max()) + top, layer_transfer.fine_panel(nu, base))
+    n_s = sigma.size + (0 if closed is None else closed[1].size)
+    chunk = max(64, int(MEMORY_BYTES / (8.0 * 10 * (n_s + rho.size))))
+    if closed is not None:
+        wide, ends, i_lo, i_hi, lam = closed
+        shared, src = _shared_points(ends, rho)
+        ends[shared] = rho[src]  # the same points, so the same Bessel values
     for lo in range(0, t.size, chunk):
         tt, ww = t[lo:lo + chunk], wt[lo:lo + chunk]
         rem = dict(zip(("ww", "wu", "uu"), layer_transfer.remainder_transfer(tt, nu, base)))
-        s_fun = _bessel("J1" if kind == "pressure" else "J2", np.multiply.outer(sigma, tt))
-        s_fun *= factor[:, None]
-        if starts is not None:
-            s_fun = np.add.reduceat(s_fun, starts, axis=0)
         rt = np.multiply.outer(rho, tt)
         j0, j1 = _bessel("J0", rt), _bessel("J1", rt)
+        if closed is None:
+            s_fun = _bessel("J1" if kind == "pressure" else "J2", np.multiply.outer(sigma, tt))
+            s_fun *= factor[:, None]
+        else:
+            s_fun = np.zeros((rows.size, tt.size))
+            if sigma.size:
+                part = _bessel("J1" if kind == "pressure" else "J2",
+                               np.multiply.outer(sigma, tt)) * factor[:, None]
+                s_fun[~wide] = np.add.reduceat(part, starts, axis=0)
+            if ends.size:
+                xe = np.multiply.outer(ends, tt)
+                ej0, ej1 = np.empty_like(xe), np.empty_like(xe)
+                ej0[shared], ej1[shared] = j0[src], j1[src]
+                ej0[~shared], ej1[~shared] = _bessel("J0", xe[~shared]), _bessel("J1", xe[~shared])
+                g = disc_integrals(power, xe, ej0, ej1)
+                s_fun[wide] = (g[i_hi] - g[i_lo]) * lam[:, None] / tt ** (power + 1)
         for i, (rname, _, _, _, rfun, tpow) in enumerate(specs):
             jr = _bessel(rfun, rt, j0, j1)
             out[i][:, rows] += (jr * (ww * rem[rname] * tt**tpow)) @ s_fun.T
     for i, (_, _, sign, _, _, _) in enumerate(specs):
         out[i] *= 2.0 * sign
     return out
+
+
+def _shared_points(ends: Arr, rho: Arr) -> tuple[NDArray[np.bool_], NDArray[np.intp]]:
+    """Which ``ends`` equal a point of ``rho`` to 1e-14 (a mesh's edges and nodes), and which."""
+    if rho.size == 0:
+        return np.zeros(ends.size, dtype=bool), np.zeros(0, dtype=np.intp)
+    order = np.argsort(rho, kind="stable")
+    ordered = rho[order]
+    k = np.clip(np.searchsorted(ordered, ends), 1, max(ordered.size - 1, 1))
+    k = np.where(np.abs(ordered[k - 1] - ends) <= np.abs(ordered[np.minimum(k, ordered.size - 1)]
+                                                        - ends), k - 1, k)
+    k = np.minimum(k, ordered.size - 1)
+    shared = np.abs(ordered[k] - ends) <= 1e-14 * np.maximum(ends, 1.0)
+    return shared, order[k[shared]]
+
+
+def _closed_elements(sigma: Arr, weights: Arr, starts: NDArray[np.intp]
+                     ) -> tuple[NDArray[np.bool_], Arr, NDArray[np.intp], NDArray[np.intp], Arr]:
+    """Which element rules are replaced by the closed form, and their intervals.
+
+    A group of points (one owner) whose weights integrate the moments about
+    their centre up to degree 6 as a rule on one interval ``[lo, hi]`` would
+    (to 1e-10: Gauss panels spanning an element), of width ``>= WIDE_ELEMENT``
+    and ``lo >= 0``, is summed as ``lam int_lo^hi s^p J_p(s t) ds``
+    (:func:`disc_integrals`), ``lam`` the weight per unit of ``sigma``.
+
+    Returns
+    -------
+    wide : bool array, one per group
+    ends : the distinct interval ends of the wide groups (ends closer than
+        1e-14 of their size merged: the elements' shared edges)
+    i_lo, i_hi : indices into ``ends`` of each wide group's interval
+    lam : weight per unit ``sigma`` of each wide group
+    """
+    counts = np.diff(np.r_[starts, sigma.size])
+    s0 = np.add.reduceat(weights, starts)
+    safe = np.where(s0 > 0.0, s0, 1.0)
+    mid = np.add.reduceat(weights * sigma, starts) / safe
+    d = sigma - np.repeat(mid, counts)
+    d2 = d * d
+    m2 = np.add.reduceat(weights * d2, starts) / safe
+    m4 = np.add.reduceat(weights * d2 * d2, starts) / safe
+    m6 = np.add.reduceat(weights * d2 * d2 * d2, starts) / safe
+    half = np.sqrt(3.0 * np.maximum(m2, 0.0))  # m2 = half^2/3 on one interval
+    reach = np.maximum.reduceat(np.abs(d), starts)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        wide = ((s0 > 0.0) & (half >= 0.5 * WIDE_ELEMENT) & (mid >= half * (1.0 - 1e-12))
+                & (np.abs(m4 / half**4 - 0.2) <= 2e-11)
+                & (np.abs(m6 / half**6 - 1.0 / 7.0) <= 2e-11)
+                & (reach <= half * (1.0 + 1e-12)))
+    lo, hi = np.maximum(mid - half, 0.0)[wide], (mid + half)[wide]
+    lam = s0[wide] / (2.0 * half[wide])
+    both = np.r_[lo, hi]
+    order = np.argsort(both, kind="stable")
+    ordered = both[order]
+    new = np.diff(ordered, prepend=-np.inf) > 1e-14 * np.maximum(ordered, 1.0)
+    group = np.cumsum(new) - 1
+    ends = ordered[new]
+    index = np.empty(both.size, dtype=np.intp)
+    index[order] = group
+    return wide, ends, index[:lo.size], index[lo.size:], lam

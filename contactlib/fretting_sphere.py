@@ -106,7 +106,7 @@ _COUPLING_TOL = 1e-9
 _MAX_COUPLING = 100
 # tested: tests/test_fretting_sphere_api.py (the shift at Q* against Mindlin's)
 _FORCE_TOL = 1e-12  # the force Q met by the projection, relative to k P
-# convention: a projection's force not met in 200 Newton-bisection steps is left as it is
+# convention: a projection's force not met in 200 Newton-bisection steps: not converged
 _PROJECT_MAX = 200
 # tested: tests/test_fretting_sphere.py (Cattaneo–Mindlin within estimates; the cycles' work)
 _QP_TOL = 1e-11  # the shear's projected-gradient step at which it stops, relative to k p
@@ -366,10 +366,11 @@ def _lipschitz(ops: GridOperators) -> float:
 
 
 def _project(z: np.ndarray, g: np.ndarray, target: float, mu: float
-             ) -> tuple[np.ndarray, float]:
+             ) -> tuple[np.ndarray, float, bool]:
     """The projection of ``z`` (shape (2, m)) on the discs ``|q_i| <= g_i`` and the force
     ``sum q_x = target``: ``q_i`` the disc's point nearest ``z_i + mu e_x``, ``mu`` found by
-    a safeguarded Newton method (the sum grows with ``mu``); ``mu`` in is the first guess."""
+    a safeguarded Newton method (the sum grows with ``mu``); ``mu`` in is the first guess.
+    Returns the projection, ``mu`` and whether the force was met to ``_FORCE_TOL``."""
     zx, zy = z
     gsum = float(g.sum())
     span = float(np.abs(zx).max(initial=0.0) + np.abs(zy).max(initial=0.0) + g.max())
@@ -384,7 +385,7 @@ def _project(z: np.ndarray, g: np.ndarray, target: float, mu: float
         q = np.stack([wx * f, zy * f])
         val = float(q[0].sum()) - target
         if abs(val) <= _FORCE_TOL * gsum:
-            break
+            return q, mu, True
         if val < 0.0:
             lo = mu
         else:
@@ -393,13 +394,13 @@ def _project(z: np.ndarray, g: np.ndarray, target: float, mu: float
         step = mu - val / der if der > 0.0 else np.nan
         if np.isfinite(lo) and np.isfinite(hi):
             if hi - lo <= 1e-15 * span:
-                break
+                break  # the force's mismatch at the bracket's resolution
             if not lo < step < hi:
                 step = 0.5 * (lo + hi)
         elif not np.isfinite(step):
             step = mu + (span if val < 0.0 else -span)
         mu = step
-    return q, mu
+    return q, mu, bool(abs(float(q[0].sum()) - target) <= _FORCE_TOL * gsum)
 
 
 def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
@@ -446,7 +447,8 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
     stick : ndarray of bool, shape (n, n)
         Cells in contact whose slip increment is below ``_SLIP_TOL`` of the slip scale.
     converged : bool
-        The iteration stopped at ``max(tol, _QP_TOL)`` within ``_QP_MAX`` iterations.
+        The iteration stopped at ``max(tol, _QP_TOL)`` within ``_QP_MAX`` iterations and
+        its last projection met the force to ``_FORCE_TOL``.
     iterations : int
     """
     n = ops.n
@@ -463,15 +465,15 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
         full[:, contact] = x
         return ops.tangential(full)[:, contact] + c
 
-    q, mu = _project(q_start[:, contact], g, force / h2, 0.0)
+    q, mu, _ = _project(q_start[:, contact], g, force / h2, 0.0)
     y = q
     theta = 1.0
     ok = False
     it = 0
     for it in range(1, _QP_MAX + 1):
-        q_new, mu = _project(y - t * grad(y), g, force / h2, mu)
+        q_new, mu, met = _project(y - t * grad(y), g, force / h2, mu)
         if float(np.abs(q_new - y).max()) <= stop:
-            q, ok = q_new, True
+            q, ok = q_new, met
             break
         if float(np.sum((y - q_new) * (q_new - q))) > 0.0:  # turned back: restart
             theta, y = 1.0, q_new

@@ -375,7 +375,8 @@ def test_sphere_fretting_scene_of_a_beta_zero_pair():
 
 
 @pytest.mark.parametrize("extra, key, text", [
-    ({"geometry": "sphere", "nu": 0.3}, "geometry", "Dundurs beta = 0 only"),
+    ({"geometry": "sphere", "nu": 0.3, "tangential_path": [0, 0, 0.95]}, "geometry",
+     "Dundurs beta = 0 only"),  # beyond the coupled pairs' 0.9 k P
     ({"tangential_path": [0, 0.5]}, "tangential_path", "has 2 points but load_path has 3"),
     ({"tangential_path": [0, 0, 1]}, "tangential_path", "gross sliding"),
     ({"tangential_path": [0.1, 0, 0.5]}, "tangential_path", "must start at 0"),

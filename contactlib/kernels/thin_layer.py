@@ -20,7 +20,7 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
   kept under :data:`MEMORY_BYTES` (48 MB) whatever the size;
 * element sums (``weights``, ``owner``: the operators' Gauss rules over the disc
   radius, 8 points on panels of h/2, ~17,000 points at a/h = 1000): a rule that
-  spans one interval ``[a, b]`` of at least :data:`WIDE_ELEMENT` h is replaced
+  spans one interval ``[a, b]``, ``b - a >= WIDE_ELEMENT max(b, 1)`` (in h), is replaced
   by the exact integral ``int_a^b s^p J_p(s t) ds = (G(b t) - G(a t))/t^(p+1)``
   (:func:`disc_integrals`), so the Bessel values are needed at the ~n + 1
   element edges only, and these are the points ``rho`` of a mesh's own nodes
@@ -75,10 +75,11 @@ MEMORY_BYTES = 48e6
 # tested: tests/test_thin_layers.py (the sums against the ring tables, with PANEL_SPAN)
 _GL_ORDER = 20
 
-# tested: tests/test_thin_layer_edges.py (an element of at least this width, in h, is
-# integrated in closed form; its rounding ~1e-16 x (s/h)/width stays below 1e-11)
-WIDE_ELEMENT = 0.25
-"""Narrowest element (in layer thicknesses) whose disc-radius integral is taken in closed form."""
+# tested: tests/test_thin_layer_edges.py (an element at least this wide relative to its outer
+# edge b, in h when b < h, is integrated in closed form: G(b t) - G(a t) loses at most
+# ~b/(b - a) x 1e-16 of the element's integral, here 2e-13)
+WIDE_ELEMENT = 1e-3
+"""Narrowest element (over max(b/h, 1)) whose disc-radius integral is taken in closed form."""
 
 # tested: tests/test_thin_layer_edges.py (disc_integrals against mpmath): power series below
 _SERIES_X = 4.0
@@ -356,8 +357,8 @@ def _closed_elements(sigma: Arr, weights: Arr, starts: NDArray[np.intp]
 
     A group of points (one owner) whose weights integrate the moments about
     their centre up to degree 6 as a rule on one interval ``[lo, hi]`` would
-    (to 1e-10: Gauss panels spanning an element), of width ``>= WIDE_ELEMENT``
-    and ``lo >= 0``, is summed as ``lam int_lo^hi s^p J_p(s t) ds``
+    (to 1e-10: Gauss panels spanning an element), of width ``>= WIDE_ELEMENT
+    max(hi, 1)`` and ``lo >= 0``, is summed as ``lam int_lo^hi s^p J_p(s t) ds``
     (:func:`disc_integrals`), ``lam`` the weight per unit of ``sigma``.
 
     Returns
@@ -380,7 +381,8 @@ def _closed_elements(sigma: Arr, weights: Arr, starts: NDArray[np.intp]
     half = np.sqrt(3.0 * np.maximum(m2, 0.0))  # m2 = half^2/3 on one interval
     reach = np.maximum.reduceat(np.abs(d), starts)
     with np.errstate(invalid="ignore", divide="ignore"):
-        wide = ((s0 > 0.0) & (half >= 0.5 * WIDE_ELEMENT) & (mid >= half * (1.0 - 1e-12))
+        wide = ((s0 > 0.0) & (half >= 0.5 * WIDE_ELEMENT * np.maximum(mid + half, 1.0))
+                & (mid >= half * (1.0 - 1e-12))
                 & (np.abs(m4 / half**4 - 0.2) <= 2e-11)
                 & (np.abs(m6 / half**6 - 1.0 / 7.0) <= 2e-11)
                 & (reach <= half * (1.0 + 1e-12)))

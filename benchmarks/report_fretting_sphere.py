@@ -4,6 +4,7 @@ cycles against a fourfold refined run, and the cost as a ratio to a normal-load 
 ``history`` timed in the same run.
 
     python benchmarks/report_fretting_sphere.py            # about 10 min on 2 cores
+    python benchmarks/report_fretting_sphere.py --n128     # the coupled cycle to n = 128 only
 
 Cases: two equal bodies with nu = 0 (beta = 0, gamma = 0: Cattaneo–Mindlin exact), k = 0.3,
 P: 0 -> P_max, then Q: 0 -> Q* -> -Q* -> Q*, 4 steps a segment (at beta = 0 and constant P
@@ -23,6 +24,7 @@ G = 200 N/mm^2, nu = 0.42, a = 1 mm, Fn = 9.1954 N, k = 0.4, Fx = -0.875 k Fn; 4
 
 from __future__ import annotations
 
+import sys
 import time
 
 import numpy as np
@@ -189,6 +191,19 @@ def coupled_fourfold(t_hist: float) -> None:
                   f"{dt / t_hist:.1f}{flag} |")
 
 
+def coupled_to_n128() -> None:
+    """Rigid sphere on nu = 0 (beta = 0.5), Q*/kP = 0.9, 4 steps a segment: every step
+    converged and the cycle's work at n = 16, 32, 64 and 128 (about 5 min)."""
+    model = contact("sphere", 0.0)
+    print("rigid on nu = 0 (beta = 0.5), k = 0.3, Q: 0 -> 0.9 -> -0.9 -> 0.9 k P, 4 steps a "
+          "segment")
+    for n in (16, 32, 64, 128):
+        ops, raw, dt = cycle(model, n, 0.9)
+        work = raw.dissipation[-1] - raw.dissipation[2 * STEPS]
+        print(f"n = {n}: cycle work {work:.5e}, converged {bool(raw.converged.all())}, "
+              f"{dt:.1f} s", flush=True)
+
+
 def against_mindlin_exact(big_p: float, x: float, c_mind: float) -> float:
     """Mindlin–Deresiewicz's cycle work (a = R = 1, compliance ``c_mind`` in 1/E*)."""
     bracket = 1 - (1 - x) ** (5 / 3) - 5 * x / 6 * (1 + (1 - x) ** (2 / 3))
@@ -196,4 +211,7 @@ def against_mindlin_exact(big_p: float, x: float, c_mind: float) -> float:
 
 
 if __name__ == "__main__":
-    main()
+    if "--n128" in sys.argv[1:]:
+        coupled_to_n128()
+    else:
+        main()

@@ -9,7 +9,7 @@ Scales: E* from the two materials; a_max = (4 P_max R/(pi E* L))^(1/2), the
 frictionless half-width at the largest normal force P_max of the path; p0 =
 E* a_max/(2R); lengths in units of a_max, work in E* a_max^4/R^2 per unit length
 times L. The sphere (``geometry="sphere"``; a coupled pair, Dundurs beta != 0, with
-``|beta| <= 0.3`` under ``|Q| <= 0.5 k P`` with ``n <= 32`` only): a_max = (3 P_max
+``|beta| <= 0.5`` under ``|Q| <= 0.9 k P`` with ``n <= 64`` only): a_max = (3 P_max
 R/(4 E*))^(1/3), p0 = 2 E* a_max/(pi R), work in E* a_max^5/R^2.
 """
 
@@ -180,8 +180,8 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
     friction : float
         k > 0.
     geometry : {"cylinder", "sphere"}
-        The sphere: a coupled pair (Dundurs beta != 0) with ``|beta| <= 0.3`` under
-        ``|Q| <= 0.5 k P`` with ``n <= 32`` only, as for :func:`contactlib.fretting`.
+        The sphere: a coupled pair (Dundurs beta != 0) with ``|beta| <= 0.5`` under
+        ``|Q| <= 0.9 k P`` with ``n <= 64`` only, as for :func:`contactlib.fretting`.
     steps, n, max_error, progress
         As for :func:`contactlib.fretting` (defaults per geometry).
     bulk_stress : sequence or str, optional

@@ -792,6 +792,10 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     if error_estimate:
         err_w = _relative(diffs["work"], work_scale)
         err_e = np.max([_relative(diffs[name], energy_scale) for name in energies], axis=0)
+    if k == 0.0:  # no friction, no stick zone (|q| < k p cannot hold): c = 0 exactly, as in
+        # solve; elements of nil slip (nu = 0.5, a thin bonded layer's centre) read as stuck
+        raw.stick_radius[:] = 0.0
+        err_c = np.zeros(levels.size)
     annulus = hs.annulus_resolved(k, raw.state)
     finite = _finite_steps(raw, energies)
     with np.errstate(invalid="ignore"):  # a NaN estimate: not estimated

@@ -347,3 +347,19 @@ def test_cli_history_bad_input_one_line(capsys, tmp_path, args, option):
     assert code == 2
     assert err.count("\n") == 1 and err.startswith("contactlib: error: ") and option in err
     assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("nu, kw", [(0.5, {}), (0.3, {}), (0.3, {"slab_ratio": 5.0,
+                                                                  "base": "bonded"})])
+def test_no_friction_has_no_stick_zone_and_says_so_exactly(nu, kw):
+    """k = 0: |q| < k p cannot hold, so c = 0 at every step, as the self-similar solve says
+    (c/a = 0 at friction 0), with estimate 0; before, nu = 0.5 (no slip: the surfaces do
+    not move apart tangentially) read as full stick, and c = 0 was flagged at half an
+    element (0.01 a_max) at every step, a flag that always fired."""
+    import contactlib as cl
+
+    res = cl.history("sphere", nu, 0.0, [0, 1, 0], 20, n=60, **kw)
+    assert np.all(np.nan_to_num(res.stick_ratio) == 0.0)
+    assert np.all(res.stick_radius_error_estimate == 0.0)
+    assert res.resolved_quantities["stick_radius"]
+    assert cl.solve("sphere", nu, friction=0.0, n=64, **kw).stick_ratio == 0.0

@@ -4,7 +4,7 @@ Gauss-Legendre on panels of width ``PANEL/(1 + max r)`` = 2 pi/(1 + max r) (8 po
 beyond the first few, panels of ``TAIL_PERIODS`` such widths with 32 points) up to
 ``DEPTH_CUTOFF``/z_min = 36/z_min (e^{-36} < 3e-16), where z_min is the smallest positive
 depth asked for; near xi = 0 the panels are graded for the deepest point (``DEPTH_PANEL``).
-Halving the panels changes the field by 1e-10 p0 (benchmarks/bench_stresses.py).
+Halving the panels changes the field by 9.5e-15 p0 (benchmarks/bench_stresses.py).
 :func:`xi_nodes` gives the plain panels (the layer's correction and the tangential field
 use them), :func:`halfspace_nodes` the graded ones and the tail.
 """

@@ -4,7 +4,8 @@ two fused steps of building the nodal operators and the fused set-up of Newton's
 Everything else is in pyproject.toml. The extensions are optional: where they cannot be
 built (no C compiler), contactlib uses the numpy routes of :mod:`contactlib.kernels.disc`,
 :mod:`contactlib.kernels.strip`, :func:`contactlib.influence.apply_difference` and
-:func:`contactlib.operators.restrict_nested` and :func:`contactlib.default_method.newton_on_k`,
+:func:`contactlib.operators.restrict_nested` and
+:func:`contactlib.solvers.default_method.newton_on_k`,
 which give the same bits, more slowly.
 """
 

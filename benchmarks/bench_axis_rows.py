@@ -1,6 +1,6 @@
 """Cost of the difference rows of the extremes, as a ratio in one run.
 
-``contactlib.default_method`` writes the normal rows of a tiny stick zone as
+``contactlib.solvers.default_method`` writes the normal rows of a tiny stick zone as
 w(r_i) - w(0) when c/a <= AXIS_ROWS_BELOW (1e-4), and the normal and stick rows
 of a thin slip annulus relative to a node a few widths inside when 1 - c/a <=
 EDGE_ROWS_BELOW (5e-4), and at high n (the elements next to c below
@@ -20,7 +20,7 @@ import time
 
 from scipy import special
 
-from contactlib import default_method
+from contactlib.solvers import default_method
 from contactlib.model import contact
 from contactlib.theory import beta_of_nu
 

@@ -60,12 +60,13 @@ import numpy as np
 from scipy import linalg
 
 import contactlib
-from contactlib import default_method, stages
+from contactlib import stages
+from contactlib.solvers import default_method
 from contactlib.accuracy import predicted_error
-from contactlib.default_method import REFINED_FINAL_STEP, difference_rows, solve_default
+from contactlib.solvers.default_method import REFINED_FINAL_STEP, difference_rows, solve_default
 from contactlib.elements import graded_mesh
-from contactlib.extrapolated_method import (BAND_FROM_N, log_noise, quadrature_noise,
-                                          solve_extrapolated)
+from contactlib.solvers.extrapolated_method import (BAND_FROM_N, log_noise, quadrature_noise,
+                                                    solve_extrapolated)
 from contactlib.model import contact
 from contactlib.operators import nodal_operator_part, nodal_operators
 
@@ -193,7 +194,7 @@ def part_b() -> None:
 
 CHILD = """
 import resource, sys
-from contactlib.extrapolated_method import solve_extrapolated
+from contactlib.solvers.extrapolated_method import solve_extrapolated
 from contactlib.model import contact
 from contactlib.theory import uncoupled_friction
 c = float(sys.argv[2])
@@ -251,8 +252,7 @@ def part_d() -> None:
 
 def part_e() -> None:
     """A lead, not a method of the package: three nested levels (n/4, n/2, n) at n = 64."""
-    from contactlib import extrapolated_method
-
+    from contactlib.solvers import extrapolated_method
     print("e. lead: the extrapolated method with three levels at n = 64 (module constants "
           "LEVELS = 3, N_MULTIPLE = 64 set here only), nu = 0.3, c/a = 0.1 ... 0.9")
     for geometry, model, ref, ratios in reference_cases():

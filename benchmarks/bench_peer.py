@@ -53,7 +53,7 @@ import time
 import numpy as np
 
 import contactlib
-from contactlib.default_method import solve_default
+from contactlib.solvers.default_method import solve_default
 from contactlib.geometry import Geometry
 
 NU = 0.3

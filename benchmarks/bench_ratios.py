@@ -48,7 +48,7 @@ import numpy as np
 from scipy import linalg, special
 
 import contactlib
-from contactlib.default_method import operator_part, solve_default
+from contactlib.solvers.default_method import operator_part, solve_default
 from contactlib.elements import graded_mesh
 from contactlib.geometry import Geometry
 from contactlib.kernels import disc, strip

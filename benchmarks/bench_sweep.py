@@ -10,7 +10,7 @@ as on a busy 2-core machine extra threads only add CPU time):
   default resolution): every output (k, load, checks, work, the stress profiles; the
   displacement profile is computed when a caller first reads it), after
   a warm-up solve that pays for imports; three repeats, the first with a
-  cold cache of stick-zone blocks (:func:`contactlib.default_method.
+  cold cache of stick-zone blocks (:func:`contactlib.solvers.default_method.
   nodal_operator_part`), and the ratio to one LU factorization of the
   partial-slip system (size about 1.6 n);
 * where the time goes (cProfile of one sweep, cumulative, by stage);

@@ -32,7 +32,7 @@ import sys
 
 import numpy as np
 
-from contactlib.extrapolated_method import log_noise, solve_extrapolated, truncation_factor
+from contactlib.solvers.extrapolated_method import log_noise, solve_extrapolated, truncation_factor
 from contactlib.model import contact
 from contactlib.theory import uncoupled_friction
 

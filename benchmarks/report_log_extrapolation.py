@@ -37,7 +37,8 @@ import sys
 
 import numpy as np
 
-from contactlib.extrapolated_method import extrapolate, extrapolate_with_log, solve_extrapolated
+from contactlib.solvers.extrapolated_method import (extrapolate, extrapolate_with_log,
+                                                   solve_extrapolated)
 from contactlib.model import contact
 from contactlib.theory import uncoupled_friction
 

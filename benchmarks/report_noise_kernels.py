@@ -58,7 +58,7 @@ def _worker(group: str, draws: int) -> None:
 
     import contactlib
     from contactlib.accuracy import default_noise, estimate
-    from contactlib.extrapolated_method import quadrature_noise, solve_extrapolated
+    from contactlib.solvers.extrapolated_method import quadrature_noise, solve_extrapolated
     from contactlib.model import contact
     from contactlib.theory import uncoupled_friction
 

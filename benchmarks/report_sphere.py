@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from contactlib import solve
-from contactlib.default_method import solve_default
+from contactlib.solvers.default_method import solve_default
 from contactlib.geometry import Geometry
 from contactlib.theory import hertz_pressure
 

@@ -33,7 +33,7 @@ import sys
 
 import numpy as np
 
-from contactlib.default_method import solve_default
+from contactlib.solvers.default_method import solve_default
 from contactlib.model import contact
 
 

@@ -6,7 +6,7 @@ k instead of a resolution. Two steps:
 1. **Plan** (:func:`plan`, before anything is solved): the cheapest method
    and n that the *measured* convergence says will meet the tolerance at
    every requested stick ratio (the default method, or the extrapolated one
-   of :mod:`contactlib.extrapolated_method` with its own error model,
+   of :mod:`contactlib.solvers.extrapolated_method` with its own error model,
    :func:`predicted_method_error`). The measurements are the convergence study
    (``snakemake convergence``, :mod:`contactlib.convergence`): the default
    method's k error at n = 256 against Richardson extrapolation, over c/a
@@ -143,9 +143,9 @@ def _five_level_estimate(half_space: bool, stick_ratios: np.ndarray, n: int) -> 
     (:data:`LOG_ESTIMATE_AT_1024`, n^-4) plus the noise bound at each stick ratio; inf
     where the method does not extrapolate from five levels (below n = 1024, n not a multiple
     of 512, a layer, c/a <= 1e-4 or >= 1 - 5e-4)."""
-    from .default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW
+    from .solvers.default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW
     from .elements import graded_mesh
-    from .extrapolated_method import LOG_LEVEL_FROM_N, log_noise
+    from .solvers.extrapolated_method import LOG_LEVEL_FROM_N, log_noise
 
     if (n < LOG_LEVEL_FROM_N or n % LOG_N_MULTIPLE or not half_space
             or stick_ratios.size == 0 or stick_ratios.min() <= AXIS_ROWS_BELOW
@@ -165,7 +165,7 @@ def _extrapolated_truncation(stick_ratios: np.ndarray, n: int) -> float:
 def _extrapolated_noise(stick_ratio: float, n: int) -> float:
     """The quadrature-noise part of the extrapolated method's model at one stick ratio."""
     from .elements import graded_mesh
-    from .extrapolated_method import BAND_FROM_N, quadrature_noise
+    from .solvers.extrapolated_method import BAND_FROM_N, quadrature_noise
 
     return float(quadrature_noise(graded_mesh(n, stick_ratio), band=n >= BAND_FROM_N))
 
@@ -173,20 +173,20 @@ def _extrapolated_noise(stick_ratio: float, n: int) -> float:
 def default_noise(geometry: Contact, stick_ratio: float, n: int) -> float:
     """The quadrature-noise bound added to the default method's k estimate (relative).
 
-    From n = :data:`~contactlib.default_method.NEAR_ROWS_FROM_N` (512) on, the
+    From n = :data:`~contactlib.solvers.default_method.NEAR_ROWS_FROM_N` (512) on, the
     default method's mesh and rows at n are those of the extrapolated method's
     finest level, whose noise bound
-    (:func:`~contactlib.extrapolated_method.quadrature_noise`) was measured on the
+    (:func:`~contactlib.solvers.extrapolated_method.quadrature_noise`) was measured on the
     half-space and half-plane; there it is added to the estimate from the nested
     levels, which do not see a noise that grows with n. It matters at the extremes:
     nu = 0.49999 against the closed form, c/a = 1e-6, n = 1024, the sphere's k error
     was 1.9e-5 against an estimate of 5.3e-6 from the levels (3.6x short), the
     half-plane's 4.5e-5 against 2.9e-5 at n = 2048; the bound there is 5.1e-5 and 6.8e-5
     (2.5e-5 and 3.4e-5 before its margin for other CPUs, see
-    :data:`~contactlib.extrapolated_method.DIFFERENCE_NOISE`).
+    :data:`~contactlib.solvers.extrapolated_method.DIFFERENCE_NOISE`).
     At c/a = 0.02 ... 0.98 it is at most 1.2e-8 (n = 2048), below the method's error.
     Below n = 512 it is the bound of the axis or edge difference rows
-    (:data:`~contactlib.extrapolated_method.DIFFERENCE_NOISE`) where those rows apply
+    (:data:`~contactlib.solvers.extrapolated_method.DIFFERENCE_NOISE`) where those rows apply
     (c/a <= 1e-4, 1 - c/a <= 5e-4), and 0 elsewhere (the levels' estimate was measured to
     cover the error there, docs/accuracy.md). At the extremes the levels did not cover
     it (nu = 0.4999999 against the closed form; issue 42): sphere, c/a = 1e-8, n = 384,
@@ -196,9 +196,9 @@ def default_noise(geometry: Contact, stick_ratio: float, n: int) -> float:
     (an n-independent floor: 4.6e-7 at n = 128). 0 at c/a = 0 and 1 (k exact) and on a
     layer (not measured).
     """
-    from .default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N
+    from .solvers.default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N
     from .elements import graded_mesh
-    from .extrapolated_method import quadrature_noise
+    from .solvers.extrapolated_method import quadrature_noise
 
     c = float(stick_ratio)
     if not 0.0 < c < 1.0 or not geometry.body.is_half_space:

@@ -17,7 +17,7 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from . import profiles, stages, validate
-from .default_method import DiscreteSolution, solve_default
+from .solvers.default_method import DiscreteSolution, solve_default
 from .discrete import SelfSimilarSolution
 from .geometry import Geometry
 from .model import accepts_model
@@ -312,7 +312,7 @@ def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
     tolerance, amplified by the Richardson weights; measured on c steps of 2e-10), so
     the secant stops at ``rtol`` or after 8 steps and returns the converged iterate
     whose k is nearest ``friction``: further steps only chase that noise."""
-    from .extrapolated_method import solve_extrapolated
+    from .solvers.extrapolated_method import solve_extrapolated
 
     c0, d0 = stick_ratio_for_friction(geometry, friction, n)
     blocks = StickBlocks()

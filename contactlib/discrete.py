@@ -6,13 +6,13 @@ status, and the displacements at the nodes where the solver knows them) and
 names what each discretization answers in its own way: the tractions between
 the nodes, the displacements anywhere, the slip-zone samples of the checks and
 the work, the stick-zone points the checks look at, and the load. The default
-method's :class:`~contactlib.default_method.DiscreteSolution` (nodal,
+method's :class:`~contactlib.solvers.default_method.DiscreteSolution` (nodal,
 piecewise-linear tractions) and the paper's
-:class:`~contactlib.paper_method.PaperSolution` (steps on rings or strips)
+:class:`~contactlib.solvers.paper_method.PaperSolution` (steps on rings or strips)
 are its two kinds, so :mod:`contactlib.stages` and the checks and energy
 never ask which solver made a solution.
 
-Units: E* = a = R = 1 (see :mod:`contactlib.default_method`).
+Units: E* = a = R = 1 (see :mod:`contactlib.solvers.default_method`).
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Error estimates from nested refinements: the a posteriori check of a solver's value.
 
 A leaf of the numerics (numpy only): :mod:`contactlib.accuracy` checks the default
-method's k with it, and :mod:`contactlib.extrapolated_method` its levels' work.
+method's k with it, and :mod:`contactlib.solvers.extrapolated_method` its levels' work.
 """
 
 from __future__ import annotations

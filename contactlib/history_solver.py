@@ -533,7 +533,7 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
     * an advancing edge (the stick zone growing with the contact, as under
       increasing or held load) carries no stress-intensity factor (the
       physical condition of continued loading, see
-      :mod:`contactlib.default_method`), so ``d ~ (c - r)^(3/2)`` and
+      :mod:`contactlib.solvers.default_method`), so ``d ~ (c - r)^(3/2)`` and
       ``d^(2/3)`` is linear;
     * a receding edge (``receding``: the load decreases, and the stick zone
       shrinks as a slip zone of the other sign spreads inward) or a standing

@@ -87,7 +87,7 @@ c/a = 0.98 (cylinder, nu = 0.4999999, extrapolated method at n = 2048, against t
 form, through its band rows). ``"fine"``: 16, 12, 10, 8, 6 and 4 Gauss points from
 2, 3, 5, 12, 40 and 100 element lengths on (the near pieces as before): round-off against a
 40-point rule, and that k error is 1.1e-10 with the band rows integrated so
-(:data:`contactlib.extrapolated_method.FINE_QUADRATURE_FROM_N`). It costs about 1.35-1.4x
+(:data:`contactlib.solvers.extrapolated_method.FINE_QUADRATURE_FROM_N`). It costs about 1.35-1.4x
 the kernel time of the standard rules."""
 # convention: scratch size, the results do not depend on it (the solve's speed:
 # benchmarks/bench_solve.py)

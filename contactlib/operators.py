@@ -436,7 +436,7 @@ def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
     Near the axis w(x) - w(0) is O(x^2) while w is O(1): rows formed by
     subtracting the operator's rows keep an absolute round-off of ~1e-16,
     which is all of the signal of a stick zone of c/a = 1e-8 (the default
-    method's normal rows there, see :func:`contactlib.default_method.assemble`).
+    method's normal rows there, see :func:`contactlib.solvers.default_method.assemble`).
     A node ``ref`` > 0 gives the rows relative to it (a thin slip annulus).
     Units as :func:`operator_part` (a^2/R per unit traction). ``quadrature``: the
     element rules (:data:`contactlib.influence.QUADRATURES`).
@@ -463,7 +463,7 @@ def u_difference_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: st
     interval's length from it (the singularity of du/dx at s is then far
     enough for a relative error below 1e-16), else the plain difference of
     u (both points then within a few interval lengths of s). The rows of a
-    thin slip annulus's stick condition (:func:`contactlib.default_method.assemble`):
+    thin slip annulus's stick condition (:func:`contactlib.solvers.default_method.assemble`):
     there u is O(beta) while its variation across the annulus is O(width).
     Units as :func:`operator_part`; ``quadrature`` as :func:`axis_w_rows`.
     """

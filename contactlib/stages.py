@@ -19,7 +19,7 @@ one process: both give the same numbers.
   flags, the frictional work, and the profiles on the output grid.
 * :func:`to_solution` -- a :class:`~contactlib.result.Solution` from the pieces.
 
-Units inside: E* = a = R = 1 (see :mod:`contactlib.default_method`).
+Units inside: E* = a = R = 1 (see :mod:`contactlib.solvers.default_method`).
 """
 
 from __future__ import annotations
@@ -31,18 +31,17 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 
 from . import checks, energy, validate
-from .default_method import DiscreteSolution, nodal_operator_part, solve_default
+from .solvers.default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
 from .operators import (PARTS, StickBlocks, nodal_operators, parts_needed,
                         restrict_with_slip_samples, slip_zone_samples)
 from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
-from .paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
+from .solvers.paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import CaseRecord, Solution
 from .accuracy import (MAX_N, SAFETY, default_noise, estimate, planned_body, predicted_error,
                        resolving_n)
-from . import extrapolated_method
-
+from .solvers import extrapolated_method
 __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter_cases",
            "check_case", "work_case", "profiles", "to_solution", "decoupled_message", "solve_one",
            "case_record", "estimate_case", "QUADRATURE_FLOOR_H"]
@@ -52,7 +51,7 @@ __all__ = ["PARTS", "OUTPUTS", "parts_needed", "influence", "solve_cases", "iter
 # displacements amplified in the stick-edge condition, not the element quadrature: a
 # tiny stick zone's normal rows are now relative to the axis (c/a <= 1e-4), a thin slip
 # annulus's normal and stick rows relative to a node a few widths inside (1 - c/a <=
-# 5e-4) (contactlib.default_method.AXIS_ROWS_BELOW, EDGE_ROWS_BELOW). nu = 0.499 against
+# 5e-4) (contactlib.solvers.default_method.AXIS_ROWS_BELOW, EDGE_ROWS_BELOW). nu = 0.499 against
 # the closed form, sphere, c/a = 1e-8: -1.24e-3, -3.1e-4, -6.0e-5, +4.5e-5 at n = 64 ...
 # 512 (before -1.2e-3, -2.2e-4, -2.7e-4, and erratic); c/a = 1 - 1e-5: 4.4e-5, 1.5e-5,
 # 4.0e-6, 6.1e-6 (before 6.4e-5, 2.1e-4, -2.9e-4, 5.7e-3); half-plane within 1.4e-5 at
@@ -112,7 +111,7 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
         part instead of the 166 MB of a (K, 3, N+1, N+1) block, written
         and read again by the workflow).
         Paper methods: ``nodes`` (n+1,) and ``ops`` (3, n+2, n) at
-        :func:`~contactlib.paper_method.collocation_points`. Memory:
+        :func:`~contactlib.solvers.paper_method.collocation_points`. Memory:
         24 (N_i+1)^2 bytes a mesh and part (1.6 MB at N_i = 256, 25 MB at 1024).
     """
     if part not in PARTS:

@@ -276,11 +276,11 @@ MAX_TOLERANCE = 0.1
 MIN_PLANNED_TOLERANCE = 1e-9
 """Smallest ``tolerance`` of solve/sweep (library and command line): the extrapolated
 method's measured reach with five levels from n = 1024
-(:data:`~contactlib.extrapolated_method.LOG_LEVEL_FROM_N`; nu = 0.4999999 against the
+(:data:`~contactlib.solvers.extrapolated_method.LOG_LEVEL_FROM_N`; nu = 0.4999999 against the
 closed form, c/a = 0.003 ... 0.98: k to 4e-10 and better at n = 1024, its estimate 2.6e-10
 ... 1.3e-9). 1e-9 is planned where the estimate model meets it (c/a = 0.005 ... 0.98 at
 n = 1024 ... 2048) and refused elsewhere (c/a nearer 0 and 1, where the noise bound of
-:func:`~contactlib.extrapolated_method.log_noise` stays above it, and on layers)."""
+:func:`~contactlib.solvers.extrapolated_method.log_noise` stays above it, and on layers)."""
 
 
 class InputError(ValueError):

@@ -104,8 +104,7 @@ def nothing_to_do(workdir: Path) -> bool:
 def factorizations(monkeypatch):
     """A counter (a one-item list) of the solvers' LU factorizations, one per Newton
     iteration and level, counted from the test's start."""
-    from contactlib import default_method
-
+    from contactlib.solvers import default_method
     count = [0]
     lu_factor = default_method.linalg.lu_factor
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from contactlib import solve
-from contactlib.default_method import solve_default
+from contactlib.solvers.default_method import solve_default
 from contactlib.geometry import Geometry
 from contactlib.theory import hertz_pressure, uncoupled_friction
 

@@ -155,7 +155,7 @@ def test_non_asymptotic_levels(geometry, c, n, fine):
     by 11x, 8x and 280x when p was clipped at 2 and |d2|/3 taken) and not exceed it 10x.
     Truth: the same case at ``fine`` (fourfold at least), Richardson-extrapolated with the
     case at fine/2 where that is asymptotic, else taken as it is."""
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
     from contactlib.geometry import Geometry
 
     sol = solve(geometry, 0.3, stick_ratio=c, n=n, energy=False)

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from contactlib import api, validate
-from contactlib.extrapolated_method import extrapolate, solve_extrapolated
+from contactlib.solvers.extrapolated_method import extrapolate, solve_extrapolated
 from contactlib.model import contact
 from contactlib.theory import uncoupled_friction
 
@@ -167,7 +167,7 @@ def test_levels_are_the_default_discretization():
     """Each level's k is the default method's root on that mesh (to Newton's tolerance)."""
     model = contact("sphere", 0.3)
     s = solve_extrapolated(model, 0.3, 128)
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
 
     for n, k in zip(s.levels, s.level_k):
         d = solve_default(model, 0.3, n)
@@ -373,7 +373,7 @@ def test_fine_rules_act_on_the_difference_rows_only(monkeypatch):
     the levels' k move (sphere, nu = 0.3, c/a = 0.5, n = 128, band rows asked for) by
     round-off and quadrature bias only (< 1e-9), and a solve given the standard operators
     gives the bits of one that builds them."""
-    from contactlib import extrapolated_method as em
+    from contactlib.solvers import extrapolated_method as em
     from contactlib.elements import graded_mesh
     from contactlib.operators import nodal_operators
 
@@ -396,8 +396,7 @@ def test_at_the_extremes_the_finest_level_is_reported(monkeypatch):
     or edge difference rows apply, k is the finest level's own root with the default
     method's estimate from the levels n/4, n/2, n; elsewhere it is extrapolated."""
     from contactlib import accuracy
-    from contactlib import extrapolated_method as em
-
+    from contactlib.solvers import extrapolated_method as em
     monkeypatch.setattr(em, "EXTREMES_FINEST_FROM_N", 256)
     model = contact("sphere", 0.3)
     s = solve_extrapolated(model, 1e-6, 256, work=False)
@@ -431,8 +430,7 @@ def test_level_from_the_trend_takes_one_factorization(monkeypatch, nu):
     Newton from the coarser level's k took two plain steps and a refined one: the same
     roots (within the refined solutions' noise, measured <= 5e-12 on every level; the
     closed form at nu = 0.49999 within 3e-9), two factorizations fewer each."""
-    from contactlib import extrapolated_method as em
-
+    from contactlib.solvers import extrapolated_method as em
     model = contact("sphere", nu)
     new = solve_extrapolated(model, 0.5, 2048, work=False)
     monkeypatch.setattr(em, "PREDICTED_FROM_N", 10**6)  # the old paths: plain Newton, copies
@@ -477,9 +475,9 @@ def test_restriction_in_row_blocks_is_bit_for_bit(monkeypatch):
 def test_band_rows_from_n512_only():
     """The band rows are written on every level from n = 512 on; below, the plain rows
     (n = 256: bit for bit the default discretization's, as before)."""
-    from contactlib.default_method import difference_rows
+    from contactlib.solvers.default_method import difference_rows
     from contactlib.elements import graded_mesh
-    from contactlib.extrapolated_method import BAND_FROM_N
+    from contactlib.solvers.extrapolated_method import BAND_FROM_N
 
     model = contact("sphere", 0.3)
     mesh = graded_mesh(64, 0.5)
@@ -498,7 +496,7 @@ def test_band_rows_from_n512_only():
 def test_noise_model_follows_the_rows():
     """Difference rows (c/a <= 1e-4, 1 - c/a <= 5e-4) get their own, smaller noise bound."""
     from contactlib.elements import graded_mesh
-    from contactlib.extrapolated_method import quadrature_noise
+    from contactlib.solvers.extrapolated_method import quadrature_noise
 
     tiny, thin, mid = (graded_mesh(256, c) for c in (1e-6, 1.0 - 1e-5, 0.5))
     # (the difference rows' constants carry a factor 2 for other BLAS kernels, so do these
@@ -652,8 +650,7 @@ def test_fifth_level_removes_the_n3_log_term(geometry, c):
     2.1e-9 ... 8.5e-9). The five-level estimate covers the error and is under 1e-9 where the
     four-level one was 3.5e-9 ... 9.3e-9 (both cover the four-level value's error). Below,
     k is the four levels'."""
-    from contactlib import extrapolated_method as em
-
+    from contactlib.solvers import extrapolated_method as em
     model = contact(geometry, 0.4999999)
     exact = float(uncoupled_friction(geometry, 0.4999999, c))
     s = solve_extrapolated(model, c, em.LOG_LEVEL_FROM_N, work=False)
@@ -671,7 +668,7 @@ def test_log_noise_depends_on_the_stick_ratio_not_on_n():
     """The five-level noise bound is LOG_NOISE (1/(c/a) + (1 - c/a)^-1.5): with the band rows
     relative to the cascade of references the spread no longer grows with n. 7e-12 at
     c/a = 0.5, growing toward both ends; under 1e-9 up to c/a = 0.98, above it at 0.99."""
-    from contactlib import extrapolated_method as em
+    from contactlib.solvers import extrapolated_method as em
     from contactlib.elements import graded_mesh
 
     mid = em.log_noise(graded_mesh(1024, 0.5))
@@ -720,9 +717,9 @@ def test_band_rows_do_not_amplify_the_round_off_of_a_position():
     n = 1024, one refined Newton step from the same k): the rows' round-off, eps times
     width x slope, amplified by the stick-edge condition. Relative to the cascade of
     references it moves by about 1e-12."""
-    from contactlib.default_method import assemble, newton_on_k
+    from contactlib.solvers.default_method import assemble, newton_on_k
     from contactlib.elements import Mesh, graded_mesh
-    from contactlib.extrapolated_method import _rows
+    from contactlib.solvers.extrapolated_method import _rows
     from contactlib.operators import nodal_operators
 
     model, c, n = contact("cylinder", 0.4999999), 0.9, 1024
@@ -747,7 +744,7 @@ def test_five_level_estimate_covers_the_round_off_of_a_last_digit(geometry, c, n
     the band's edge. These two were beyond the bound of that time (5.3e-10 against an
     estimate of 4.1e-10, 2.0e-10 against 1.2e-10), at nu = 0.4999999 against the closed
     form; the estimate covers them with the cascade's rows and its bound (log_noise)."""
-    from contactlib.extrapolated_method import log_noise
+    from contactlib.solvers.extrapolated_method import log_noise
 
     nu = 0.4999999
     s = solve_extrapolated(contact(geometry, nu), c, n, work=False)
@@ -759,7 +756,7 @@ def test_five_level_estimate_covers_the_round_off_of_a_last_digit(geometry, c, n
 def test_five_level_extrapolation_is_exact_on_its_expansion():
     """extrapolate_with_log recovers k from values k + A n^-2 + B n^-3 ln n + C n^-3 + D n^-4
     on n/16 ... n (to round-off)."""
-    from contactlib.extrapolated_method import extrapolate_with_log
+    from contactlib.solvers.extrapolated_method import extrapolate_with_log
 
     ns = 1024.0 / 2.0 ** np.arange(4, -1, -1)
     values = 0.3 + 0.8 * ns**-2 - 5.0 * ns**-3 * np.log(ns) + 2.0 * ns**-3 + 7.0 * ns**-4
@@ -772,7 +769,7 @@ def test_a_level_handed_to_the_default_method_keeps_its_own_mesh():
     n = 2048: 4096 elements, not 2 x 2176), the level n/2 is that mesh halved, not the
     graded mesh of its n, and the hand-over raised a bare ValueError (sphere, nu = -0.5,
     c/a = 0.995, n = 2048). Here on a small case: n = 64 with the mesh of n = 128."""
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
     from contactlib.elements import graded_mesh
 
     model = contact("sphere", 0.3)
@@ -817,8 +814,7 @@ def test_tolerance_1e9_sweep_plans_each_stick_ratio_where_one_n_cannot(monkeypat
     each n. A stick ratio that cannot be met alone is still refused before anything is
     solved."""
     from contactlib import accuracy, io
-    from contactlib import extrapolated_method as em
-
+    from contactlib.solvers import extrapolated_method as em
     def grown(mesh):
         c = float(mesh.nodes[mesh.stick_index])
         return 5e-16 * max(c, 0.1) / float(np.min(np.diff(mesh.nodes)))

@@ -30,7 +30,7 @@ from scipy import special
 
 from contactlib import api, io, solve, stages
 from contactlib.validate import SolverLimit
-from contactlib.default_method import operator_part
+from contactlib.solvers.default_method import operator_part
 from contactlib.geometry import Geometry
 from contactlib.kernels import disc, strip
 from contactlib.theory import beta_of_nu, hertz_pressure
@@ -401,7 +401,7 @@ def test_tiny_stick_zone_converges_to_the_closed_form(geometry):
     """c/a = 1e-8, nu = 0.499: k approaches the closed form under refinement.
 
     Before the stick zone's normal rows were written relative to the axis
-    (contactlib.default_method.AXIS_ROWS_BELOW), the round-off of the O(1)
+    (contactlib.solvers.default_method.AXIS_ROWS_BELOW), the round-off of the O(1)
     normal displacements left the sphere at -1.2e-3, -2.2e-4, -2.7e-4 at
     n = 64, 128, 256 and the half-plane at -8.6e-4 at n = 256; now the
     sphere falls like n^-2 (-1.24e-3, -3.1e-4, -6.0e-5) and the half-plane
@@ -448,8 +448,8 @@ def test_band_rows_relative_to_a_cascade_are_the_same_equations(geometry):
     of the next wider band (or the band's edge i0) and closer to c the closer its rows lie,
     down to a few elements next to c; the system solves to the same p and phi as with the
     plain rows (to the plain rows' round-off) at a fixed k."""
-    from contactlib.default_method import (BAND_REF_INNER, BAND_REF_RATIO, assemble,
-                                           band_references, difference_rows)
+    from contactlib.solvers.default_method import (BAND_REF_INNER, BAND_REF_RATIO, assemble,
+                                                   band_references, difference_rows)
     from contactlib.elements import graded_mesh
     from contactlib.model import contact
     from contactlib.operators import nodal_operators

@@ -222,7 +222,7 @@ def test_flag_names_are_written_once():
     """The consistency flags and their measures are named in contactlib.checks alone: the
     check stage, the datasets and checks.flags agree on them."""
     from contactlib import checks, pipeline
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
     from contactlib.geometry import Geometry
 
     fl = checks.flags(np.array([0.1]), np.array([1.0]), 0.2, np.array([0.2]), np.array([-1.0]))

@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contactlib import default_method, influence, operators
+from contactlib import influence, operators
+from contactlib.solvers import default_method
 from contactlib.elements import graded_mesh
 from contactlib.kernels import disc, strip
 from contactlib.model import contact

@@ -96,7 +96,7 @@ def test_extrapolated_estimate_on_a_layer_covers_the_levels_noise():
     The gap is round-off and changes with the BLAS kernel (OPENBLAS_CORETYPE): 2.5e-7
     (SkylakeX), 1.5e-7 (Sandybridge), 9.3e-8 (Haswell); so the test checks that the floor
     is in the estimates and that they cover the gap, not the gap's size (issue 42)."""
-    from contactlib.extrapolated_method import _finest_level_error, solve_extrapolated
+    from contactlib.solvers.extrapolated_method import _finest_level_error, solve_extrapolated
 
     layer_model = contact("sphere", 0.3, 1.0, base="bonded")
     a, b = (solve_extrapolated(layer_model, 0.1, n, work=False) for n in (512, 1024))
@@ -302,7 +302,7 @@ def test_tiny_stick_zone_at_n_512_against_quadrature_rows(monkeypatch):
     solve's own estimate (the levels n/4, n/2, n, which see the noise of the level n:
     1.2e-5, 2.4e-5, 1.35e-5 on the three kernels; difference / estimate 0.47 and 0.72 on
     the first two)."""
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
     from contactlib.model import contact
 
     table = contactlib.solve("sphere", 0.3, n=512, stick_ratio=1e-6, slab_ratio=1.0,

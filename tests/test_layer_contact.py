@@ -329,7 +329,7 @@ def test_reversed_slip_on_a_layer_starts_newton_on_its_own_side():
     """On a layer whose slip runs outward (against sign(beta)) the finer levels start
     from the coarse levels' signed k: the fine Newton then needs the steps a half-space
     needs (it took 4-5 from +k), and the root is the same as from a cold start."""
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
 
     layer = contact("sphere", NU, slab_ratio=20.0)
     coarse = solve_default(layer, 0.5, 64)
@@ -360,8 +360,8 @@ def test_a_sweep_on_a_layer_with_outward_slip_continues_on_its_side(base, nu, fa
     cases take 2 Newton iterations (4-9 from the reported k >= 0) and the extrapolated
     method's cases at most 13 factorizations for all four levels (33-79 before)."""
     from contactlib import stages
-    from contactlib.default_method import solve_default
-    from contactlib.extrapolated_method import solve_extrapolated
+    from contactlib.solvers.default_method import solve_default
+    from contactlib.solvers.extrapolated_method import solve_extrapolated
 
     layer = contact("sphere", nu, slab_ratio=20.0, base=base)
     assert solve_default(layer, SWEEP[0], 64).oriented_k < 0.0  # outward on this layer
@@ -392,8 +392,8 @@ def test_extrapolated_levels_start_on_the_side_of_the_first(base, nu, factorizat
     The result is the same k as the default method's levels extrapolated independently
     (Richardson with the orders 2, 3, 4 of the default method's own n/8 ... n solves),
     to the Newton tolerance of the levels (2.43 x 2e-6)."""
-    from contactlib.default_method import solve_default
-    from contactlib.extrapolated_method import extrapolate, solve_extrapolated
+    from contactlib.solvers.default_method import solve_default
+    from contactlib.solvers.extrapolated_method import extrapolate, solve_extrapolated
 
     layer = contact("sphere", nu, slab_ratio=20.0, base=base)
     count = factorizations
@@ -411,7 +411,7 @@ def test_the_inverse_problem_estimate_starts_its_coarse_solves_on_the_roots_side
     (n/2, n/4) start from the case's signed k: 4 factorizations for both levels, 12 from
     the reported k >= 0 (10 Newton steps at n = 64), the same roots either way."""
     from contactlib import stages
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
 
     layer = contact("sphere", 0.45, slab_ratio=20.0)
     d = solve_default(layer, 0.45, 128)

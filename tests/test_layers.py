@@ -16,7 +16,8 @@ PACKAGE = Path(contactlib.__file__).resolve().parent
 
 # model, operators, solver, checks/energy, result: they return data
 NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "influence",
-            "default_method", "paper_method", "history_solver", "stages", "accuracy",
+            "solvers/__init__", "solvers/default_method", "solvers/extrapolated_method",
+            "solvers/paper_method", "history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
             "discrete", "kernels/layer", "kernels/thin_layer", "kernels/layer_transfer",
             "layer_study", "fretting_solver",
@@ -135,9 +136,9 @@ LAYER_MODULES = {
               "load_paths", "kernels"),
     "operators": ("elements", "influence", "operators", "operators_fused"),
     "leaf numerics": ("checks", "energy", "estimates"),
-    "solver": ("discrete", "default_method", "extrapolated_method", "paper_method",
-               "history_solver", "stages", "accuracy", "fretting_solver", "fretting_sphere",
-               "result", "solver_fused"),
+    "solver": ("discrete", "solvers", "solvers.default_method", "solvers.extrapolated_method",
+               "solvers.paper_method", "history_solver", "stages", "accuracy", "fretting_solver",
+               "fretting_sphere", "result", "solver_fused"),
     "entry points": ("api", "history_api", "history_plan", "fretting_api", "convergence",
                      "layer_study", "coating_study", "physical", "physical_fretting",
                      "stress_study", "stresses", "stresses.inputs", "stresses.halfplane",

@@ -18,7 +18,7 @@ import pytest
 from scipy import integrate
 
 from contactlib import api, validate
-from contactlib.default_method import solve_default
+from contactlib.solvers.default_method import solve_default
 from contactlib.model import contact
 from contactlib.profiles import PARABOLOID, profile
 from contactlib.theory import uncoupled_friction

@@ -172,7 +172,7 @@ def test_workflow_schema_names_a_bad_history_key(tmp_path):
 # ----------------------------------------------------------------------------- tolerance
 def _reference_k(geometry: str, slab: float, c: float, n: int) -> float:
     """Richardson extrapolation of the default method at n and n/2 (order 2, measured)."""
-    from contactlib.default_method import solve_default
+    from contactlib.solvers.default_method import solve_default
     from contactlib.geometry import Geometry
 
     g = Geometry(geometry, 0.3, slab)

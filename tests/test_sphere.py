@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from contactlib import solve, sweep
-from contactlib.default_method import DiscreteSolution, solve_default
+from contactlib.solvers.default_method import DiscreteSolution, solve_default
 from contactlib.energy import slip_points
 from contactlib.geometry import Geometry
 from contactlib.theory import hertz_pressure, small_k_work_sphere, uncoupled_friction
@@ -182,8 +182,8 @@ def test_high_n_one_refined_step_lands_on_the_full_newton_root():
     Newton step within REFINED_FINAL_STEP is final: the same root as Newton run to its
     ordinary stopping rule on the same system (to 1e-9: the refined roots' round-off is
     ~1e-10 here; measured 2.8e-10), one factorization."""
-    from contactlib.default_method import (assemble, difference_rows, newton_on_k,
-                                           solve_default)
+    from contactlib.solvers.default_method import (assemble, difference_rows, newton_on_k,
+                                                   solve_default)
     from contactlib.elements import graded_mesh
     from contactlib.model import contact
     from contactlib.operators import nodal_operator_part
@@ -206,7 +206,7 @@ def test_newton_in_place_equilibration_is_the_copy_one(geometry, c):
     right-hand side is rounded differently (R a1 x from the scaled block), so the Newton
     paths differ in the last bits of each step and the roots by up to Newton's own final
     error (a last step below 1e-6 leaves ~1e3 step^2 = 1e-9; measured 7.5e-13 here)."""
-    from contactlib.default_method import assemble, difference_rows, newton_on_k
+    from contactlib.solvers.default_method import assemble, difference_rows, newton_on_k
     from contactlib.elements import graded_mesh
     from contactlib.model import contact
     from contactlib.operators import nodal_operators
@@ -241,7 +241,7 @@ def test_assembled_system_and_scales_as_the_whole_matrix_formulas(geometry, c, n
     """assemble writes the tied shear columns and the slip block in place: the same bits as
     the columns of the tied operator (phi_0 = phi_1 on rings) taken whole; Newton's row and
     column scales, formed a block of rows at a time, are those of the whole A(k)."""
-    from contactlib import default_method as dm
+    from contactlib.solvers import default_method as dm
     from contactlib.elements import graded_mesh
     from contactlib.model import contact
     from contactlib.operators import nodal_operators
@@ -301,7 +301,7 @@ def test_band_rows_keep_the_n2_trend_at_n2048():
     default method's (k(n) - k_inf) n^2 / k_inf is 0.89 ... 1.01 at n = 256 ... 1280 (plain
     rows); at n = 2048 the band of difference rows around c (NEAR_ROWS_WIDTH = 0.001) gives
     1.00, on the trend (the band of width 0.1 gave 0.77: k 5.4e-8 off it)."""
-    from contactlib.default_method import NEAR_ROWS_WIDTH
+    from contactlib.solvers.default_method import NEAR_ROWS_WIDTH
     from contactlib.model import contact
 
     model = contact("sphere", 0.49999)

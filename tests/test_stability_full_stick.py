@@ -23,7 +23,7 @@ import pytest
 
 from contactlib import history, solve
 from contactlib.cli import main
-from contactlib.default_method import solve_default
+from contactlib.solvers.default_method import solve_default
 from contactlib.model import contact
 from contactlib.validate import SolverLimit
 

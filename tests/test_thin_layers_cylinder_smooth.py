@@ -23,7 +23,8 @@ import pytest
 from scipy import integrate
 
 import contactlib
-from contactlib import default_method, validate
+from contactlib import validate
+from contactlib.solvers import default_method
 from contactlib.kernels import strip
 
 NU = 0.3

@@ -245,6 +245,6 @@ def test_workflow_check_and_energy_stages_need_no_solver_imports():
             "pipeline.check(records)\n"
             "assert np.array_equal(work, want) and min(want) > 0, (work, want)\n"
             "loaded = sorted(m for m in sys.modules if m.startswith('scipy')\n"
-            "                or m in ('contactlib.stages', 'contactlib.default_method'))\n"
+            "                or m in ('contactlib.stages', 'contactlib.solvers.default_method'))\n"
             "assert not loaded, loaded\n")
     _run_python(code)

@@ -29,7 +29,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from contactlib.default_method import solve_default  # noqa: E402
+from contactlib.solvers.default_method import solve_default  # noqa: E402
 from contactlib.model import contact  # noqa: E402
 
 NS = (256, 384, 512, 768, 1024, 1536, 2048)

@@ -34,10 +34,10 @@ from __future__ import annotations
 import numpy as np
 from scipy import linalg
 
-from .discrete import SelfSimilarSolution
-from .elements import uniform_mesh
-from .model import Contact
-from .operators import step_operator
+from ..discrete import SelfSimilarSolution
+from ..elements import uniform_mesh
+from ..model import Contact
+from ..operators import step_operator
 
 __all__ = ["PaperSolution", "solve_paper", "ring_operator", "collocation_points"]
 

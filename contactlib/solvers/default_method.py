@@ -55,12 +55,12 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import linalg
 
-from . import checks
-from .discrete import SelfSimilarSolution
-from .elements import Mesh, graded_mesh
-from .energy import slip_points
-from .model import Contact
-from .operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators,
+from .. import checks
+from ..discrete import SelfSimilarSolution
+from ..elements import Mesh, graded_mesh
+from ..energy import slip_points
+from ..model import Contact
+from ..operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators,
                         operator_part, operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "band_references",
@@ -69,7 +69,7 @@ __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "
            "operators", "operator_part", "nodal_operator_part"]
 
 try:  # Newton's set-up on large systems compiled (setup.py; optional): the same bits
-    from . import solver_fused as _fused
+    from .. import solver_fused as _fused
 except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 FUSED = _fused is not None
@@ -146,7 +146,7 @@ elements next to c. A row relative to one node at the band's edge keeps a round-
 about width / h_min: moving the last stick node by 1e-16 c moved the root of a level by
 8.5e-11 (cylinder, nu = 0.4999999, c/a = 0.9, n = 1024, one refined Newton step from a
 fixed k), and it is the round-off noise of the extrapolated method's k
-(:data:`~contactlib.extrapolated_method.LOG_NOISE`); relative to the cascade, by 1e-12."""
+(:data:`~contactlib.solvers.extrapolated_method.LOG_NOISE`); relative to the cascade, by 1e-12."""
 # tested: tests/test_error_estimate.py (near full stick at n >= 512)
 NEAR_ROWS_FROM_N = 512
 """From this n on the band of difference rows around c is written at every c/a (as well
@@ -161,7 +161,7 @@ short of these). With the band from n = 512: 1.7e-6, 7.6e-7, 4.3e-7, 2.0e-7 and 
 most 6.4e-6 at n = 512 and 7.0e-7 at n = 1536). At nu = 0.3 and c/a = 0.02 ... 0.95 the
 band moves k by at most 1.7e-7 at n <= 1536 (the plain rows' round-off). The
 extrapolated method writes it on every level from the same n
-(:data:`~contactlib.extrapolated_method.BAND_FROM_N`). Below n = 512 the plain rows
+(:data:`~contactlib.solvers.extrapolated_method.BAND_FROM_N`). Below n = 512 the plain rows
 are kept: the default n = 256 is bit for bit as before."""
 
 

@@ -45,7 +45,7 @@ difference between levels. The load is extrapolated and estimated the same
 way; the frictional work is the finest level's, with the default method's
 three-level estimate.
 
-Units: E* = a = R = 1 (see :mod:`contactlib.default_method`).
+Units: E* = a = R = 1 (see :mod:`contactlib.solvers.default_method`).
 """
 
 from __future__ import annotations
@@ -55,14 +55,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import energy, validate
-from .estimates import estimate
+from .. import energy, validate
+from ..estimates import estimate
 from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
                              NEAR_ROWS_WIDTH, REFINED_FINAL_STEP, DiscreteSolution, assemble,
                              difference_rows, newton_on_k, solve_default)
-from .elements import Mesh, graded_mesh
-from .model import Contact
-from .operators import (StickBlocks, nodal_operators, restrict_nested,
+from ..elements import Mesh, graded_mesh
+from ..model import Contact
+from ..operators import (StickBlocks, nodal_operators, restrict_nested,
                         restrict_with_slip_samples, slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
@@ -90,7 +90,7 @@ N_MULTIPLE = validate.EXTRAPOLATED_N_MULTIPLE
 
 ONE_STEP = REFINED_FINAL_STEP
 """A first Newton step on the finest mesh below this (relative) is final (the default
-method's :data:`~contactlib.default_method.REFINED_FINAL_STEP`: the error after a refined
+method's :data:`~contactlib.solvers.default_method.REFINED_FINAL_STEP`: the error after a refined
 step is about 0.4 step^2, under 4e-10 here)."""
 
 # tested: tests/test_layer_accuracy.py (the layer's levels' noise, measured below)
@@ -197,7 +197,7 @@ LOG_NOISE = 1.5e-12
 (:func:`log_noise`, relative): the round-off the levels' roots keep, measured as the spread
 of k over stick ratios 1e-15 apart, which leaves the discretization alone and moves the
 round-off (``python benchmarks/report_estimate_coverage.py``). With the band's rows
-relative to a cascade of reference nodes (:data:`~contactlib.default_method.BAND_REF_RATIO`)
+relative to a cascade of reference nodes (:data:`~contactlib.solvers.default_method.BAND_REF_RATIO`)
 it no longer grows with n: sphere and cylinder, nu = 0.4999999, three draws a case, the
 standard deviation at n = 1536 and 2048 was 1e-13 (c/a = 0.5), 7e-13 (0.1), 3.6e-12
 (0.02), 9e-12 (0.9), 4.5e-11 (0.97) and 8.4e-11 (0.98), the same at n = 1024 (1.05e-10 at
@@ -273,9 +273,9 @@ DIFFERENCE_NOISE_POWER = 0.5
 
 BAND_FROM_N = NEAR_ROWS_FROM_N  # 512, the default method's (one place)
 """From this finest n on, every level writes the band of rows around c as differences
-(:func:`~contactlib.default_method.difference_rows` with ``band=True``, half-width
+(:func:`~contactlib.solvers.default_method.difference_rows` with ``band=True``, half-width
 :data:`BAND_WIDTH`), the coarse levels below n = 512 included (the default method
-writes the band from the same n, :data:`~contactlib.default_method.NEAR_ROWS_FROM_N`;
+writes the band from the same n, :data:`~contactlib.solvers.default_method.NEAR_ROWS_FROM_N`;
 it used to start near n = 1500, where the elements next to c became small). Mixed
 rows broke the levels' expansion in n at the band's 1e-8-level change of k: at
 nu = 0.49999 against the closed form (c/a = 0.02 ... 0.98), the largest errors were
@@ -287,7 +287,7 @@ n = 1024 and 1.3e-10 ... 1.4e-9 at n = 2048 for c/a <= 0.95 (up to 4.7e-9 at 0.9
 bit as before)."""
 BAND_WIDTH = NEAR_ROWS_WIDTH  # 0.001, the default method's (one place)
 """Half-width of the band, in units of min(c, a - c) (the default method's
-:data:`~contactlib.default_method.NEAR_ROWS_WIDTH` was 0.1, now the same). Rows are
+:data:`~contactlib.solvers.default_method.NEAR_ROWS_WIDTH` was 0.1, now the same). Rows are
 equivalent in exact arithmetic whatever the width; in floating point the narrow band was
 better at n = 2048
 (nu = 0.49999 against the closed form, c/a = 0.02 ... 0.98, largest error): sphere 8.7e-8
@@ -468,7 +468,7 @@ def quadrature_noise(mesh: Mesh, difference: bool | None = None, band: bool = Fa
     :data:`DIFFERENCE_NOISE`, :data:`BAND_NOISE`): negligible (< 2e-9) at c/a = 0.02
     ... 0.98 up to n = 256, 2.3e-9 ... 1.2e-8 at n = 2048, the dominant error at c/a <= 1e-4
     and >= 0.999. ``difference``: whether the rows were the axis or edge differences
-    (default: where :func:`~contactlib.default_method.difference_rows` writes them on a
+    (default: where :func:`~contactlib.solvers.default_method.difference_rows` writes them on a
     half-space, by c/a); ``band``: whether every level wrote the band around c (a solve at
     n >= :data:`BAND_FROM_N`; it applies where neither the axis nor the edge rows do).
     """
@@ -497,7 +497,7 @@ FINE_QUADRATURE_FROM_N = 1024
 """From this finest n on, the band of difference rows around c of every level is
 integrated with :mod:`contactlib.influence`'s ``"fine"`` rules (:func:`quadrature_for`);
 the operators and the axis and edge rows (c/a <= 1e-4, 1 - c/a <= 5e-4) keep the standard
-ones (:func:`~contactlib.default_method.difference_rows`). A difference row is small
+ones (:func:`~contactlib.solvers.default_method.difference_rows`). A difference row is small
 (w(x) - w(ref) is O(|x - ref|)) while the standard classes' bias is a fraction of the
 kernels' own scale (up to 1e-10 of a row's largest entry on elements beyond 100 lengths),
 so relative to the row it is larger, and near full stick k amplifies it: against the
@@ -509,7 +509,7 @@ largest error at n = 2048 fell from 4.8e-9 to 1.1e-9; the sphere moved by at mos
 up to c/a = 0.99 (0.995: 3.0e-9 -> 9.2e-10). The estimate is unchanged: at n = 3072 and
 4096 the errors at c/a = 0.98 were 1.2e-9 ... 5.5e-9 with either rule (the band rows'
 round-off then, see :data:`LOG_NOISE`). It was 2048 until that round-off was removed
-(:func:`~contactlib.default_method.band_references`); the standard rules' bias then
+(:func:`~contactlib.solvers.default_method.band_references`); the standard rules' bias then
 showed at n = 1536: sphere, nu = 0.4999999, c/a = 0.1 and 0.02, -6.9e-11 and -6.4e-11
 against the closed form (the five-level truncation part 2.5e-11 and 2.9e-12), with the
 fine rules -2.2e-11 and -1.8e-11. Below n = 1024 the standard rules, where the four-level
@@ -560,7 +560,7 @@ def _level(geometry: Contact, c: float, n: int, mesh: Mesh, pw: np.ndarray, qw: 
     Otherwise Newton runs plainly (refining only where it stagnates) and one
     refined step follows (``refine``; without it the round-off of a coarse
     level reached 2.7e-6 in k at nu = -0.5, c/a = 0.98, n = 256, k = 13.6). ``rows``:
-    the difference rows of :func:`~contactlib.default_method.difference_rows` on ``mesh``
+    the difference rows of :func:`~contactlib.solvers.default_method.difference_rows` on ``mesh``
     (the default method's own; (None, None): the plain rows). The ordinary case (a root
     with the slip against the shear, converged) is finished here; anything else is
     handed to :func:`solve_default` on the same operators, which says what went wrong.

@@ -1,6 +1,6 @@
 """Cost of a viscoelastic history step: independent of the step count, and against an elastic step.
 
-The hereditary integral is updated recursively (contactlib.history_solver,
+The hereditary integral is updated recursively (contactlib.solvers.history_solver,
 ``run_history``): a step keeps 2 (N + 1) traction-sized arrays for N Prony
 terms, whatever the number of steps before it. This script measures that.
 
@@ -39,7 +39,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import numpy as np
 
-from contactlib import history_solver as hs
+from contactlib.solvers import history_solver as hs
 from contactlib.history_api import creep_extent, load_levels, step_times
 from contactlib.model import contact
 

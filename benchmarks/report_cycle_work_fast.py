@@ -59,7 +59,7 @@ import numpy as np  # noqa: E402
 
 import contactlib  # noqa: E402
 from contactlib import history  # noqa: E402
-from contactlib import history_solver as hs  # noqa: E402
+from contactlib.solvers import history_solver as hs  # noqa: E402
 from contactlib.history_api import load_levels  # noqa: E402
 from contactlib.history_plan import peak_step  # noqa: E402
 from contactlib.model import contact  # noqa: E402

@@ -25,7 +25,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import numpy as np  # noqa: E402
 
-from contactlib import history_solver as hs  # noqa: E402
+from contactlib.solvers import history_solver as hs  # noqa: E402
 from contactlib import solve  # noqa: E402
 from contactlib.geometry import Geometry  # noqa: E402
 from contactlib import history  # noqa: E402

@@ -37,7 +37,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from contactlib import history  # noqa: E402
-from contactlib import history_solver as hs  # noqa: E402
+from contactlib.solvers import history_solver as hs  # noqa: E402
 
 NU = 0.3
 SLS = [(0.5, 1.0)]  # standard linear solid, g = 0.5, tau = 1

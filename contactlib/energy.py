@@ -15,7 +15,7 @@ from differences of nodal displacements. The factor and the power are the
 indenter's (:attr:`contactlib.indenter.Indenter.work_factor`,
 :attr:`~contactlib.indenter.Indenter.work_weight_power`).
 
-Incremental steps (:mod:`contactlib.history_solver`)
+Incremental steps (:mod:`contactlib.solvers.history_solver`)
 ----------------------------------------------------
 A load step moves element j by ``du_j`` against a traction that changes
 from ``q_j^old`` to ``q_j^new``; its work is taken by the trapezoid rule in

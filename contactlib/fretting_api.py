@@ -35,7 +35,7 @@ from . import fretting_solver as fr
 from . import fretting_sphere as fsph
 from . import validate
 from .history_api import load_levels
-from .history_solver import ORDER_MAX, measured_order
+from .solvers.history_solver import ORDER_MAX, measured_order
 from .model import contact
 from .profiles import takes
 from .profiles import profile as make_profile

@@ -6,7 +6,7 @@ incremental solver. It never touches the disk.
 
 Units and scalings
 ------------------
-As for :mod:`contactlib.history_solver`: E* = R = 1 and lengths in units of
+As for :mod:`contactlib.solvers.history_solver`: E* = R = 1 and lengths in units of
 ``a_max``, the frictionless contact half-width at the reference load ``P_max``
 (the profile's frictionless load at ``a = 1``: ``pi/4`` per unit length for the
 paraboloid, Hertz's cylinder). The pressure unit is ``p0`` (1/2 for the
@@ -54,7 +54,7 @@ Conditions at the midpoints
   ``sum q_j dx = Q`` given (force control), which fixes ``s``.
 
 Each step is solved by the same primal-dual active-set iteration as
-:mod:`contactlib.history_solver` (Kalker's switching rules): for given sets
+:mod:`contactlib.solvers.history_solver` (Kalker's switching rules): for given sets
 the conditions are one linear system, solved by LU; an element moves between
 sets where its condition fails; a repeated set switches to one change at a
 time. The frictional dissipation of a step is ``sum k p_i |dv_i| dx`` over

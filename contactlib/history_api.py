@@ -42,8 +42,8 @@ Definitions and scalings (docs/conventions.md, with ``a_max`` for ``a``)
   the stick-traction deficit, whose law differs where the stick edge
   advances (loading) and where it recedes (unloading); where neither law
   fits, c is an element edge, good to half an element (see
-  :func:`contactlib.history_solver.contact_radius` and
-  :func:`~contactlib.history_solver.stick_radius`). ``stick_ratio`` is NaN
+  :func:`contactlib.solvers.history_solver.contact_radius` and
+  :func:`~contactlib.solvers.history_solver.stick_radius`). ``stick_ratio`` is NaN
   without contact.
 
 Frictional work of a step: ``-sum_j (q_j^old + q_j^new)/2 du_j A_j`` over
@@ -59,7 +59,7 @@ spanning few elements (c/a close to 1, large k) also needs a finer mesh, and
 ``message`` says so when the slip zone at the top load spans fewer than 12
 elements.
 
-The numerics live in :mod:`contactlib.history_solver`; writing a dataset is
+The numerics live in :mod:`contactlib.solvers.history_solver`; writing a dataset is
 ``contactlib.io.write_dataset(contactlib.io.history_to_dataset(result), path)``.
 This module is ``contactlib.history_api`` so that the package's public
 function ``contactlib.history`` does not hide it.
@@ -80,7 +80,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from . import history_solver as hs
+from .solvers import history_solver as hs
 from . import load_paths, profiles, validate
 from .kernels import layer
 from .body import ElasticBody
@@ -444,7 +444,7 @@ def _advice(n: int, steps: int, needs: dict[str, tuple[float, float]],
 
     ``needs`` maps a quantity to (its largest estimate / ``max_error``, the
     order p of its error under joint refinement of n and steps, measured
-    by :func:`contactlib.history_solver.error_estimates`; 1 for the stick
+    by :func:`contactlib.solvers.history_solver.error_estimates`; 1 for the stick
     radius), and ``slip_zone`` to (12 / the slip zone's elements at the top
     load, 1). The run aims at estimates of ``max_error / 2``: an estimate
     moves by about a factor 2 between neighbouring runs (the stick radius's
@@ -618,7 +618,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     elements with ``steps // 2`` steps a segment (run A) and, from 40 steps a
     segment, on ``n // 4`` elements with ``steps // 4`` (run C); their
     values are interpolated to the same point of the path (see
-    :func:`contactlib.history_solver.error_estimates`). The work's and the
+    :func:`contactlib.solvers.history_solver.error_estimates`). The work's and the
     energies' order of convergence under this joint refinement is measured
     from the three runs, and their error is this run minus run A over
     ``2^p - 1`` (Richardson); the stick radius error is half of this run

@@ -29,7 +29,7 @@ Three stages:
    least 0.50 of the error at every judged step, 0.72 ... 18 times at the top of a
    loading), every
    step converged and the slip zone at the peak spans at least 12 elements
-   (``contactlib.history_solver.MIN_SLIP_ELEMENTS``) or is absent.
+   (``contactlib.solvers.history_solver.MIN_SLIP_ELEMENTS``) or is absent.
 3. **Refine**: where it does not, n and steps grow by the factor the estimates
    predict (the work's estimate over ``T / (SAFETY WORK_CHECK)`` to the power
    ``1 / WORK_ORDER``,
@@ -57,7 +57,7 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
-from . import history_solver as hs
+from .solvers import history_solver as hs
 from . import validate
 
 __all__ = ["plan", "history_to_tolerance", "STEPS_PER_ELEMENT", "WORK_ERROR_AT_240",

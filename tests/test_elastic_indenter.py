@@ -25,7 +25,7 @@ from scipy import integrate
 from contactlib import solve, sweep
 from contactlib import history
 from contactlib.io import history_to_dataset
-from contactlib.history_solver import SLIP_INWARD, SLIP_OUTWARD
+from contactlib.solvers.history_solver import SLIP_INWARD, SLIP_OUTWARD
 from contactlib.solvers.default_method import solve_default
 from contactlib.geometry import Geometry
 from contactlib.model import contact

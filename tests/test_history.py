@@ -16,7 +16,7 @@ import pytest
 
 from conftest import trapezoid_work
 from contactlib import cli, io, solve
-from contactlib import history_solver as hs
+from contactlib.solvers import history_solver as hs
 from contactlib.energy import monotone_work
 from contactlib.geometry import Geometry
 from contactlib.history_api import DEFAULT_N, HistoryResult, history, load_levels

@@ -13,7 +13,7 @@ import re
 import numpy as np
 import pytest
 
-from contactlib import history_solver as hs
+from contactlib.solvers import history_solver as hs
 from contactlib.history_api import DEFAULT_MAX_ERROR, MAX_N, MAX_STEPS, MIN_N, history
 from contactlib.io import history_to_dataset, stack_histories
 

@@ -202,7 +202,7 @@ def test_viscoelastic_shape_in_seconds_is_the_one_in_units_of_tau() -> None:
     w = es * a_max ** 5 / radius ** 2
     assert res.result.segment_steps == dim.segment_steps
     assert np.allclose(res.time, dim.time * 0.2, rtol=1e-12, atol=0)
-    # the solver rounds each step's duration to 10 digits (contactlib.history_solver.
+    # the solver rounds each step's duration to 10 digits (contactlib.solvers.history_solver.
     # run_history, so that equal steps share their operators): in s and in units of tau
     # the roundings differ, by up to 5e-11 of a step (measured: 3.8e-10 of the energies)
     assert np.allclose(res.frictional_energy, dim.frictional_work * w, rtol=2e-9, atol=0)

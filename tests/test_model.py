@@ -14,7 +14,7 @@ import pytest
 
 import contactlib
 
-from contactlib import history_solver as hs
+from contactlib.solvers import history_solver as hs
 from contactlib import validate
 from contactlib.body import ElasticBody
 from contactlib.elements import MeshStore, graded_mesh

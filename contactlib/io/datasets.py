@@ -310,7 +310,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
     """
     import xarray as xr
 
-    from contactlib import history_solver as hs
+    from contactlib.solvers import history_solver as hs
 
     r = result
     ind = indenter(r.geometry)

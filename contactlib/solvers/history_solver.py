@@ -85,11 +85,11 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy import linalg
 
-from .energy import (decay_integrals, dot, mean_traction, monotone_work, step_external_work,
+from ..energy import (decay_integrals, dot, mean_traction, monotone_work, step_external_work,
                      step_work, stored_energy, viscous_step_work)
-from .model import Contact
-from .validate import HISTORY_MESH_EXTENT
-from .operators import step_operator
+from ..model import Contact
+from ..validate import HISTORY_MESH_EXTENT
+from ..operators import step_operator
 
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",

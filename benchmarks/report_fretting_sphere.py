@@ -5,6 +5,7 @@ cycles against a fourfold refined run, and the cost as a ratio to a normal-load 
 
     python benchmarks/report_fretting_sphere.py            # about 10 min on 2 cores
     python benchmarks/report_fretting_sphere.py --n128     # the coupled cycle to n = 128 only
+    python benchmarks/report_fretting_sphere.py --edge     # the stick edge inside its cell
 
 Cases: two equal bodies with nu = 0 (beta = 0, gamma = 0: Cattaneo–Mindlin exact), k = 0.3,
 P: 0 -> P_max, then Q: 0 -> Q* -> -Q* -> Q*, 4 steps a segment (at beta = 0 and constant P
@@ -204,6 +205,46 @@ def coupled_to_n128() -> None:
               f"{dt:.1f} s", flush=True)
 
 
+def edge_along_x() -> None:
+    """Where the stick edge lies inside its cell, along +x (the row next to the axis): the
+    last stick cell's centre plus the zero of d^e extrapolated from the last two stick cells
+    (d = 1 - |q|/(k p), the traction deficit), e = 2/3 (an advancing edge: d ~ (c - r)^(3/2))
+    and e = 2 (a receding one: d ~ (c - r)^(1/2)), against the area-equivalent radius and the
+    independent truth (units a_max): Spence's problem (rigid on nu = 0.3, Q = 0; history at
+    960 rings, 160 steps: c = 0.8960 a, a = 0.9857) and Cattaneo (equal bodies nu = 0,
+    Q*/kP = 0.5: c = (1 - x)^(1/3)). About 1 min."""
+    spence = history("sphere", 0.3, K, [0, 1], 160, n=960)
+    cases = [("Spence, beta = 0.286, Q = 0", contact("sphere", 0.3), 0.0,
+              float(spence.stick_ratio[-1] * spence.contact_radius[-1])),
+             ("Cattaneo, beta = 0, Q*/kP = 0.5",
+              contact("sphere", 0.0, indenter_modulus=1.0, indenter_nu=0.0), 0.5,
+              0.5 ** (1 / 3))]
+    print("| case | n | truth c | area c | edge e = 2/3 | edge e = 2 | h |")
+    print("|---|---|---|---|---|---|---|")
+    for name, model, x, truth in cases:
+        for n in (32, 64):
+            ops = fs.grid_operators(model, n)
+            # Spence: n/4 load steps (as tests/test_fretting_sphere_coupled.py); Cattaneo: 4
+            # steps of P, then 4 of Q (the edge recedes as Q grows)
+            steps = n // 4 if x == 0 else STEPS
+            t = np.arange(1, steps + 1) / steps
+            big_p = ops.p_max * (t if x == 0 else np.concatenate([t, np.ones(steps)]))
+            big_q = np.zeros(steps) if x == 0 else K * ops.p_max * x * np.concatenate(
+                [0 * t, t])
+            raw = fs.run_sphere_fretting(ops, K, big_p, big_q, keep_fields=True)
+            p, q, stick = raw.p[-1], raw.q[-1], raw.stick[-1]
+            deficit = 1 - np.hypot(*q) / (K * np.where(p > 0, p, np.inf))
+            row = n // 2
+            i = int(np.nonzero(stick[:, row] & (ops.x > 0))[0].max())
+            edges = []
+            for e in (2 / 3, 2.0):
+                f1, f0 = deficit[i, row] ** e, deficit[i - 1, row] ** e
+                edges.append(ops.x[i] + f1 / (f0 - f1) * ops.h)
+            print(f"| {name} | {n} | {truth:.4f} | "
+                  f"{raw.stick_radius[-1]:.4f} | {edges[0]:.4f} | "
+                  f"{edges[1]:.4f} | {ops.h:.4f} |", flush=True)
+
+
 def against_mindlin_exact(big_p: float, x: float, c_mind: float) -> float:
     """Mindlin–Deresiewicz's cycle work (a = R = 1, compliance ``c_mind`` in 1/E*)."""
     bracket = 1 - (1 - x) ** (5 / 3) - 5 * x / 6 * (1 + (1 - x) ** (2 / 3))
@@ -213,5 +254,7 @@ def against_mindlin_exact(big_p: float, x: float, c_mind: float) -> float:
 if __name__ == "__main__":
     if "--n128" in sys.argv[1:]:
         coupled_to_n128()
+    elif "--edge" in sys.argv[1:]:
+        edge_along_x()
     else:
         main()

@@ -85,6 +85,7 @@ __all__ = [
     "GridOperators",
     "RawSphereFretting",
     "SphereStep",
+    "edge_radius",
     "grid_operators",
     "mindlin_compliance",
     "run_sphere_fretting",
@@ -512,7 +513,9 @@ class RawSphereFretting:
 
     ``contact_radius`` and ``stick_radius`` are the mean radii (units a_max)
     from :func:`zone_radius`, ``stick_offset`` the stick zone's centre minus
-    the contact's along x; ``p`` (n, n) and ``q`` (2, n, n) per step are kept only
+    the contact's along x, ``contact_edge_radius`` and ``stick_edge_radius`` the
+    radii from :func:`edge_radius` (a second measure of the same zones); ``p``
+    (n, n) and ``q`` (2, n, n) per step are kept only
     when asked for.
     """
 
@@ -525,6 +528,8 @@ class RawSphereFretting:
     stick_offset: np.ndarray
     stick_area: np.ndarray
     contact_area: np.ndarray
+    contact_edge_radius: np.ndarray
+    stick_edge_radius: np.ndarray
     dissipation: np.ndarray
     external_work: np.ndarray
     stored_energy: np.ndarray
@@ -566,6 +571,53 @@ def zone_radius(ops: GridOperators, inside: np.ndarray) -> tuple[float, float]:
     area = float(inside.sum()) * ops.h * ops.h
     xx = np.broadcast_to(ops.x[:, None], inside.shape)
     return float(np.sqrt(area / np.pi)), float(xx[inside].mean())
+
+
+# exact: d ~ (c - r)^(3/2) inside an advancing stick edge, (c - r)^(1/2) inside a receding
+# one (Spence; Cattaneo)
+EDGE_EXPONENTS = (2.0 / 3.0, 2.0)
+
+
+def edge_radius(ops: GridOperators, field: np.ndarray, inside: np.ndarray) -> float:
+    """A zone's radius from its edge located inside the cells, along the axes.
+
+    On the rows of cells next to the x and y axes, the edge on each side lies
+    past the zone's outermost cell's centre where ``field`` (linear in the
+    distance to the edge there) vanishes, extrapolated from that cell and its
+    inner neighbour and kept within one cell (the next cell is outside). The
+    radius is the mean of the zone's half-widths along x and along y: a second
+    measure of the zone next to :func:`zone_radius`'s.
+
+    Parameters
+    ----------
+    ops : GridOperators
+    field : ndarray, shape (n, n)
+        Vanishes linearly at the edge: ``p^2`` at a contact's edge, the traction
+        deficit ``d = 1 - |q|/(k p)`` raised to ``EDGE_EXPONENTS`` at a stick
+        zone's (dimensionless or units E*^2).
+    inside : ndarray of bool, shape (n, n)
+        The zone's cells.
+
+    Returns
+    -------
+    float
+        Radius (units a_max); NaN when a row holds fewer than two of the
+        zone's cells or the field does not fall towards an edge.
+    """
+    row = ops.n // 2  # the cells at +h/2 from the axis
+    half = []
+    for line, st in ((field[:, row], inside[:, row]), (field[row, :], inside[row, :])):
+        cells = np.flatnonzero(st)
+        if cells.size < 2:
+            return float("nan")
+        width = float(ops.x[cells[-1]] - ops.x[cells[0]])
+        for i, inner in ((cells[-1], -1), (cells[0], 1)):
+            f1, f0 = line[i], line[i + inner]
+            if not (st[i + inner] and f0 > f1):
+                return float("nan")
+            width += ops.h * min(f1 / (f0 - f1), 1.0)
+        half.append(0.5 * width)
+    return float(0.5 * (half[0] + half[1]))
 
 
 def _step(ops: GridOperators, k: float, load: float, force: float, v_old: np.ndarray,
@@ -647,6 +699,7 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
                                                 "stored_energy", "stick_area",
                                                 "contact_area")}
     radii = np.full((m + 1, 3), np.nan)
+    edge = np.full((m + 1, 2), np.nan)
     shifts = np.zeros((m + 1, 2))
     conv = np.ones(m + 1, dtype=bool)
     iters = np.zeros(m + 1, dtype=np.int32)
@@ -678,6 +731,12 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
             c, cc = zone_radius(ops, st.stick & contact)
             radii[j] = (a, c if st.stick.any() else 0.0,
                         cc - ca if st.stick.any() else np.nan)
+            grew = out["stick_area"][j] > out["stick_area"][j - 1]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                deficit = np.clip(1.0 - np.hypot(*st.q) / (k * st.p), 0.0, 1.0)
+            edge[j] = (edge_radius(ops, st.p ** 2, contact),
+                       edge_radius(ops, deficit ** EDGE_EXPONENTS[0 if grew else 1],
+                                   st.stick & contact))
         conv[j] = st.converged
         iters[j] = st.iterations
         if keep_fields:
@@ -693,7 +752,9 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
         load=np.concatenate(([0.0], load)), force=np.concatenate(([0.0], force)),
         delta=out["delta"], shift=shifts, contact_radius=radii[:, 0],
         stick_radius=radii[:, 1], stick_offset=radii[:, 2], stick_area=out["stick_area"],
-        contact_area=out["contact_area"], dissipation=out["dissipation"],
+        contact_area=out["contact_area"], contact_edge_radius=edge[:, 0],
+        stick_edge_radius=edge[:, 1],
+        dissipation=out["dissipation"],
         external_work=out["external_work"], stored_energy=out["stored_energy"],
         converged=conv, iterations=iters, p=fields_p, q=fields_q, stick=fields_s,
         v=fields_v)

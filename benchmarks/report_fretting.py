@@ -27,7 +27,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from contactlib import fretting, history  # noqa: E402
-from contactlib.fretting_solver import EDGE_FIT, EDGE_SKIP  # noqa: E402
+from contactlib.solvers.fretting_solver import EDGE_FIT, EDGE_SKIP  # noqa: E402
 from contactlib.theory import cylinder_cycle_work  # noqa: E402
 
 K = 0.3

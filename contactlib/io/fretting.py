@@ -42,7 +42,7 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
     """
     import xarray as xr
 
-    from contactlib import fretting_solver as fs
+    from contactlib.solvers import fretting_solver as fs
     from contactlib import profiles
 
     r = result

@@ -72,8 +72,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import linalg
 
-from .model import Contact
-from .profiles import Profile
+from ..model import Contact
+from ..profiles import Profile
 
 __all__ = ["SEPARATED", "STICK", "SLIP_POSITIVE", "SLIP_NEGATIVE", "STATE_MEANINGS",
            "MESH_EXTENT", "StripOperators", "strip_operators", "FrettingStep",

@@ -5,7 +5,7 @@ Run: python benchmarks/bench_stresses_grid.py [n]   (default n = 64)
 
 The run: a sphere on a body of the same material (nu = 0.3: Dundurs beta = 0), friction
 0.3, pressed to P_max in 8 steps and then pushed to Q = 0.5 mu P_max in 8 more
-(:func:`contactlib.fretting_sphere.run_sphere_fretting`, n x n cells over [-1.2, 1.2]^2
+(:func:`contactlib.solvers.fretting_sphere.run_sphere_fretting`, n x n cells over [-1.2, 1.2]^2
 a_max). One step's solve is the median wall time of the 8 tangential steps (timed
 through the run's progress callback). Then, in the same process, the field of the last
 step (:func:`contactlib.stresses.grid.fretting_step_stresses`, the stresses and the
@@ -42,7 +42,7 @@ import tracemalloc
 
 import numpy as np
 
-from contactlib.fretting_sphere import grid_operators, run_sphere_fretting
+from contactlib.solvers.fretting_sphere import grid_operators, run_sphere_fretting
 from contactlib.history_api import load_levels
 from contactlib.model import contact
 from contactlib.stresses.grid import fretting_step_stresses, grid_stresses

@@ -30,7 +30,7 @@ import time
 
 import numpy as np
 
-from contactlib import fretting_sphere as fs
+from contactlib.solvers import fretting_sphere as fs
 from contactlib import fretting, history, solve
 from contactlib.model import contact
 

@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from .solvers import fretting_solver as fr
-from . import fretting_sphere as fsph
+from .solvers import fretting_sphere as fsph
 from . import validate
 from .history_api import load_levels
 from .solvers.history_solver import ORDER_MAX, measured_order

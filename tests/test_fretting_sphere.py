@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contactlib import fretting_sphere as fs
+from contactlib.solvers import fretting_sphere as fs
 from contactlib import history, solve
 from contactlib.model import contact
 

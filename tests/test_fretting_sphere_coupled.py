@@ -12,7 +12,7 @@ import pytest
 
 from contactlib import fretting, history, validate
 from contactlib import fretting_api as fa
-from contactlib import fretting_sphere as fs
+from contactlib.solvers import fretting_sphere as fs
 from contactlib.model import contact
 
 K = 0.3

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from contactlib import fretting
-from contactlib.fretting_sphere import grid_operators, run_sphere_fretting
+from contactlib.solvers.fretting_sphere import grid_operators, run_sphere_fretting
 from contactlib.history_api import load_levels
 from contactlib.model import contact
 from contactlib.stresses.grid import (corner_weights, fretting_step_stresses,

@@ -1,6 +1,6 @@
 """Stresses in the half-space under cell-wise constant tractions on a square grid (issue 38).
 
-The sphere's fretting solver (:mod:`contactlib.fretting_sphere`) carries a pressure p and a
+The sphere's fretting solver (:mod:`contactlib.solvers.fretting_sphere`) carries a pressure p and a
 shear (q_x, q_y), each constant on the cells of a uniform square grid; the shear is a
 2-D vector field, which neither the axisymmetric field of :mod:`contactlib.stresses` nor
 the fixed-direction shear of :mod:`contactlib.stresses.tangential` covers. This module
@@ -449,9 +449,9 @@ def fretting_step_stresses(ops: Any, raw: Any, step: int, x: Any, y: Any, z: Any
 
     Parameters
     ----------
-    ops : contactlib.fretting_sphere.GridOperators
+    ops : contactlib.solvers.fretting_sphere.GridOperators
         The run's grid (n x n cells of side h over [-1.2, 1.2]^2 a_max).
-    raw : contactlib.fretting_sphere.RawSphereFretting
+    raw : contactlib.solvers.fretting_sphere.RawSphereFretting
         The run, with its fields kept (``run_sphere_fretting(..., keep_fields=True)``).
     step : int
         The step, 0 (unloaded) ... m; negative counts from the end.
@@ -594,7 +594,7 @@ def _model_of(result: Any, indenter_modulus: float, indenter_nu: float | None) -
 
 
 def _replay(model: Any, result: Any, n: int, steps: int) -> tuple[Any, Any]:
-    from ..fretting_sphere import grid_operators, run_sphere_fretting
+    from ..solvers.fretting_sphere import grid_operators, run_sphere_fretting
     from ..history_api import load_levels
 
     ops = grid_operators(model, n)

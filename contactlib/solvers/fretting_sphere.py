@@ -78,7 +78,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .model import Contact
+from ..model import Contact
 
 __all__ = [
     "MESH_EXTENT",

@@ -641,7 +641,9 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     stick zone of four elements keeps its edge), and 0.72 ... 18 times the
     error at the top load, where a step's error may be near 0 as the edge
     crosses an element, or the stick radius is an element edge (k = 0.05).
-    The estimate costs about a third of the run.
+    The estimate costs about a third of the run. At ``friction = 0`` there is
+    no stick zone (|q| < k p cannot hold): the stick radius is 0 with
+    estimate 0, as :func:`contactlib.solve` says at friction 0.
 
     A step is flagged where a quantity is off by more than ``max_error`` at
     its own scale (above); ``resolved_quantities`` and ``message`` say which

@@ -68,11 +68,11 @@ def test_normal_loading_against_history(nu, n, steps):
     approach within 6e-4 of history's, and within the difference to the run at
     (n/2, steps/2) but for beta = 0.5 at n = 32; the stick ratio within the grid's
     estimate plus history's. Measured, beta = 0.286: approach -1.2e-3, -4.7e-4, -1.2e-4 at
-    n = 16, 32, 64 (steps 4n/16); stick ratio -5.0e-3 (estimate 0.117) and -9.4e-3
-    (estimate 4.3e-3; history's 7.5e-3) at n = 32 and 64: at n = 64 the grid's estimate
-    alone covers 0.46 of it. beta = 0.5: approach -5.1e-4, -4.9e-4, -1.2e-4 (the runs at
-    n = 16 and 32 are 2.8e-5 apart: that difference misses n = 32's error); stick ratio
-    -2.4e-2, -8.2e-3, 1.2e-3 (estimates 0.13, 1.6e-2, 9.3e-3)."""
+    n = 16, 32, 64 (steps 4n/16); stick ratio -5.0e-3 (estimate 0.158) and -9.4e-3
+    (estimate 1.58e-2, of which the lattice term 1.15e-2; history's 3.75e-3) at n = 32 and
+    64. beta = 0.5: approach -5.1e-4, -4.9e-4, -1.2e-4 (the runs at n = 16 and 32 are
+    2.8e-5 apart: that difference misses n = 32's error); stick ratio -2.4e-2, -8.2e-3,
+    1.2e-3 (estimates 0.18, 4.1e-2, 1.8e-2)."""
     h = spence(nu)
     r = fretting("sphere", nu, K, [0, 1], [0, 0], steps, n=n)
     coarse = fretting("sphere", nu, K, [0, 1], [0, 0], steps // 2, n=n // 2,

@@ -1,7 +1,7 @@
-"""Fretting of the sphere (contactlib.fretting_sphere): accuracy against Cattaneo–Mindlin and
-Mindlin–Deresiewicz, the coupled normal loading against the self-similar solution, coupled
-cycles against a fourfold refined run, and the cost as a ratio to a normal-load cycle of
-``history`` timed in the same run.
+"""Fretting of the sphere (contactlib.solvers.fretting_sphere): accuracy against
+Cattaneo–Mindlin and Mindlin–Deresiewicz, the coupled normal loading against the
+self-similar solution, coupled cycles against a fourfold refined run, and the cost as a
+ratio to a normal-load cycle of ``history`` timed in the same run.
 
     python benchmarks/report_fretting_sphere.py            # about 10 min on 2 cores
     python benchmarks/report_fretting_sphere.py --n128     # the coupled cycle to n = 128 only

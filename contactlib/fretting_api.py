@@ -1,6 +1,6 @@
 r"""Fretting of the cylinder: :func:`fretting`, a normal and a tangential load path.
 
-The numerics are in :mod:`contactlib.fretting_solver`; this module checks the input,
+The numerics are in :mod:`contactlib.solvers.fretting_solver`; this module checks the input,
 plans the runs, estimates the errors from coarser runs and a run on a shifted mesh
 (:func:`fretting`, ``error_estimate``) and returns a :class:`FrettingResult`. Units are those of
 :mod:`contactlib.history_api`: E* = R = 1, lengths in units of ``a_max`` (the
@@ -74,7 +74,7 @@ class FrettingResult:
     half-width over the contact's, ``stick_offset`` the stick zone's centre
     minus the contact's (units a_max), ``approach`` delta and ``shift`` s (the
     indenter's rigid displacements, units a_max^2/R, up to the half-plane's
-    logarithmic datum, see :mod:`contactlib.fretting_solver`), ``dissipation``
+    logarithmic datum, see :mod:`contactlib.solvers.fretting_solver`), ``dissipation``
     (cumulative frictional work), ``external_work`` and ``stored_energy``,
     ``converged``, ``tangential_compliance`` ds/dQ over the step (units 1/E*; its
     level carries the half-plane's datum, its changes do not; NaN where Q does not
@@ -225,7 +225,7 @@ def run_path(model: Any, n: int, steps: int, k: float, load: np.ndarray, tang: n
     progress : callable, optional
         As for :func:`fretting`.
     offset : float
-        The mesh's shift in elements (:func:`contactlib.fretting_solver.strip_operators`).
+        The mesh's shift in elements (:func:`contactlib.solvers.fretting_solver.strip_operators`).
 
     Returns
     -------
@@ -252,9 +252,10 @@ def _estimate(fine: np.ndarray, coarse: np.ndarray, coarser: np.ndarray,
               max_order: float = ORDER_MAX) -> tuple[np.ndarray, float]:
     """Richardson estimate of the fine run's error at each point, and the measured order.
 
-    The order is measured over the path points (:func:`~contactlib.history_solver.measured_order`)
-    and capped at ``max_order`` (2 for the works: the discretizations are second order
-    at best, a higher measured order is pre-asymptotic luck).
+    The order is measured over the path points
+    (:func:`~contactlib.solvers.history_solver.measured_order`) and capped at
+    ``max_order`` (2 for the works: the discretizations are second order at best, a
+    higher measured order is pre-asymptotic luck).
     """
     ok = np.isfinite(fine) & np.isfinite(coarse) & np.isfinite(coarser)
     order = measured_order(fine[ok], coarse[ok], coarser[ok]) if ok.any() else 1.0
@@ -267,7 +268,7 @@ def _edge_estimate(fine: np.ndarray, shifted: np.ndarray, coarse: np.ndarray,
                    order: float) -> np.ndarray:
     """Error estimate of a zone edge measure (stick ratio, stick offset) at each point.
 
-    The sub-element edge fit (:func:`~contactlib.fretting_solver.zone_edges`) has two
+    The sub-element edge fit (:func:`~contactlib.solvers.fretting_solver.zone_edges`) has two
     errors. One depends on where the edge falls within its element and changes sign
     from element to element, so it is not smooth in the element size and a twofold
     difference can miss it or inflate it (measured: 0.015x to 11x the error against a
@@ -617,10 +618,10 @@ def _sphere_measures(raw: fsph.RawSphereFretting) -> tuple[np.ndarray, np.ndarra
 def _sphere_lattice(raw: fsph.RawSphereFretting, h: float) -> np.ndarray:
     """The stick ratio's lattice error per step where the stick zone grew over the step: the
     area-equivalent radii against the edges located inside their cells
-    (:func:`contactlib.fretting_sphere.edge_radius`), c's difference plus c/a times a's, over
-    a; a cell (h/a) where a stick zone holds fewer than two cells on an axis' row. 0 where
-    the zone shrank (a receding edge: Cattaneo's area-equivalent radius was 0.12 and 0.035
-    h off at n = 32 and 64, within the twofold difference, and the term at every step
+    (:func:`contactlib.solvers.fretting_sphere.edge_radius`), c's difference plus c/a times
+    a's, over a; a cell (h/a) where a stick zone holds fewer than two cells on an axis' row.
+    0 where the zone shrank (a receding edge: Cattaneo's area-equivalent radius was 0.12 and
+    0.035 h off at n = 32 and 64, within the twofold difference, and the term at every step
     raised the coupled cycles' estimates up to 37 times their error; docs/fretting.md) and
     in full slip."""
     a, c = raw.contact_radius, raw.stick_radius
@@ -636,7 +637,7 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
                     progress: Callable[[int, int], None] | None = None) -> FrettingResult:
     """The sphere's path for :func:`fretting` (checked input; units E* = R = a_max = 1).
 
-    The numerics are :mod:`contactlib.fretting_sphere` (``n x n`` cells over
+    The numerics are :mod:`contactlib.solvers.fretting_sphere` (``n x n`` cells over
     ``[-1.2, 1.2]^2 a_max``). In the :class:`FrettingResult`, ``stick_ratio`` is
     the stick zone's area-equivalent radius over the contact's, ``contact_edges``
     and ``stick_edges`` are ``centre -+ radius`` along x (units a_max), the
@@ -648,7 +649,7 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     (``orders`` records the order 1 this assumes: the radii's lattice error is
     not smooth in the cell size); the stick ratio's adds its lattice term, the
     area-equivalent radii against the edges located inside their cells along
-    the axes (:func:`contactlib.fretting_sphere.edge_radius`). From ``n = 64``
+    the axes (:func:`contactlib.solvers.fretting_sphere.edge_radius`). From ``n = 64``
     the frictional work's estimates
     are Richardson's from a third run with ``n/4`` cells at the measured order
     (``orders["dissipation"]``, at most 2).

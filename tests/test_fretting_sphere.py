@@ -1,4 +1,4 @@
-"""Fretting of the sphere (contactlib.fretting_sphere): against Hertz, Cattaneo–Mindlin,
+"""Fretting of the sphere (contactlib.solvers.fretting_sphere): against Hertz, Cattaneo–Mindlin,
 Mindlin–Deresiewicz, the axisymmetric history solver and the self-similar solution,
 refinement and the energy balance."""
 

@@ -30,7 +30,7 @@ displacements (body minus indenter) of a point force on two half-spaces are
 and ``u_y`` likewise (``X, Y`` from the force to the point), with
 ``w = (beta/pi) (Q_x X + Q_y Y)/r^2`` from the shear (Betti's theorem).
 ``beta`` is Dundurs' (:attr:`contactlib.model.Contact.beta`, the sign of
-the cylinder's kernels in :mod:`contactlib.fretting_solver`, to which these
+the cylinder's kernels in :mod:`contactlib.solvers.fretting_solver`, to which these
 reduce when integrated along a line), and
 
 .. math::

@@ -235,11 +235,11 @@ def stick_ratio_for_friction(geometry: Geometry, friction: float, n: int,
 
 
 def _check_planned(tolerance, n, method) -> float | None:
-    """The checked tolerance (None when not given); it excludes n and method."""
+    """The checked tolerance (None when not given); it excludes a given n and method."""
     if tolerance is None:
         return None
     tol = validate.planned_tolerance(tolerance)
-    if n is not None or method != "default":
+    if n is not None or method is not None:
         raise validate.InputError("tolerance", "given without n and method (the plan picks "
                                   "them)", tolerance)
     return tol
@@ -343,7 +343,7 @@ def _extrapolated_for_friction(geometry: Geometry, friction: float, n: int,
 @accepts_model
 @blas_single_threaded
 def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
-          friction: float | None = None, n: int | None = None, method: str = "default",
+          friction: float | None = None, n: int | None = None, method: str | None = None,
           slab_ratio: float = 0.0, energy: bool = True, indenter_modulus: float = math.inf,
           indenter_nu: float | None = None,
           max_error: float = validate.DEFAULT_MAX_ERROR, base: str = "smooth",
@@ -367,7 +367,8 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         Friction coefficient k >= 0 (``inf`` for full adhesion).
     n : int, optional
         Number of elements (default 256 for ``"default"``, 16 for the paper).
-    method : {"default", "paper", "paper-literal", "extrapolated"}
+    method : {"default", "paper", "paper-literal", "extrapolated"}, optional
+        Default ``"default"`` (ours), or planned when ``tolerance`` is given.
         ``"paper"``: the printed scheme (c/a restricted to m/n).
         ``"extrapolated"``: the default discretization at n/8, n/4, n/2 and
         n on nested meshes, k and the load extrapolated in n (orders 2, 3,
@@ -460,6 +461,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     (0.5, True)
     """
     planned = _check_planned(tolerance, n, method)
+    method = validate.DEFAULT_METHOD if method is None else method
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu, base, profile, exponent, substrate_modulus,
                                        substrate_nu, planned)
@@ -517,7 +519,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
 @accepts_model
 @blas_single_threaded
 def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all", *,
-          n: int | None = None, method: str = "default", slab_ratio: float = 0.0,
+          n: int | None = None, method: str | None = None, slab_ratio: float = 0.0,
           energy: bool = True,
           progress: Callable[[int, int], None] | None = None,
           indenter_modulus: float = math.inf,
@@ -574,6 +576,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ['1.000', '1.000']
     """
     planned = _check_planned(tolerance, n, method)
+    method = validate.DEFAULT_METHOD if method is None else method
     if planned is not None and isinstance(stick_ratios, str):
         raise validate.InputError("stick_ratios", "a list of stick ratios with a tolerance "
                                   "('all' means m/n and needs a given n)", stick_ratios)

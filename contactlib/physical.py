@@ -55,7 +55,7 @@ from __future__ import annotations
 import math
 import re
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
 import numpy as np
@@ -724,7 +724,7 @@ def physical_solve(geometry: str, radius: float | str | None, load: float | str,
                    stick_ratio: float | None = None, length: float | str | None = None,
                    thickness: float | str | None = None, base: str = "smooth",
                    substrate: Any = None,
-                   n: int | None = None, method: str = "default",
+                   n: int | None = None, method: str | None = None,
                    tolerance: float | None = None,
                    max_error: float = validate.DEFAULT_MAX_ERROR,
                    energy: bool = True) -> PhysicalSolution:

@@ -350,7 +350,7 @@ def parse_scene(name: str, raw: Mapping[str, Any]) -> "Scene | HistoryScene":
                                     "list the stick ratios")
     max_error = bad.check("max_error", validate.max_error,
                           raw.get("max_error", validate.DEFAULT_MAX_ERROR))
-    method = raw.get("method", "default")
+    method = raw.get("method", validate.DEFAULT_METHOD)
     # each key on its own first, so that every bad key is named ...
     geometry = bad.check("geometry", validate.geometry, raw.get("geometry")) \
         if "geometry" in raw else None

@@ -25,6 +25,7 @@ from typing import Any, Sequence
 import numpy as np
 import xarray as xr
 
+from . import validate
 from .indenter import indenter
 
 __all__ = ["layer_rows", "fretting_rows", "fretting_path_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
@@ -172,8 +173,8 @@ def _self_similar(ds: xr.Dataset) -> dict[str, Any]:
     c = np.atleast_1d(ds["stick_ratio"].values)
     k = _values(ds, "friction_coefficient")
     conv = np.atleast_1d(ds["converged"].values).astype(bool)
-    if "resolved" in ds and ds.attrs.get("method") in ("default", "extrapolated"):  # not
-        # resolved: a failure
+    if "resolved" in ds and validate.estimates(ds.attrs.get("method")):  # not resolved: a
+        # failure
         conv &= np.atleast_1d(ds["resolved"].values).astype(bool)
     order = np.argsort(c)
     if "consistent" in ds:

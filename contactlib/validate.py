@@ -105,6 +105,12 @@ class Method:
     plan_safety: float = 2.0
 
     @property
+    def estimates(self) -> bool:
+        """Gives each case an error estimate and a ``resolved`` flag (the paper's
+        schemes do not)."""
+        return self.nodal
+
+    @property
     def nested_estimate(self) -> bool:
         """Estimated from the same case on the nested meshes n/2 and n/4, solved by the
         caller (a nodal method without its own estimate)."""
@@ -145,6 +151,9 @@ METHOD_REGISTRY: dict[str, Method] = {m.name: m for m in (
 """Every self-similar method: ours, the paper's scheme, the paper's scheme as printed, and
 ours on three nested meshes extrapolated in n (k to about 1e-6 at its default n)."""
 
+DEFAULT_METHOD: str = "default"
+"""The method ``solve`` and ``sweep`` use when neither a method nor a tolerance is given."""
+
 METHODS: tuple[str, ...] = tuple(METHOD_REGISTRY)
 """The names of :data:`METHOD_REGISTRY`, in its order."""
 
@@ -152,6 +161,13 @@ METHODS: tuple[str, ...] = tuple(METHOD_REGISTRY)
 def method_of(name: str) -> Method:
     """The registered :class:`Method` of a checked name (:func:`method`)."""
     return METHOD_REGISTRY[name]
+
+
+def estimates(name: Any) -> bool:
+    """Whether the method ``name`` (a dataset's ``method`` attribute) estimates its error,
+    so that a case it did not resolve is a failure; False for a name not registered."""
+    known = METHOD_REGISTRY.get(str(name))
+    return known is not None and known.estimates
 
 OUTPUTS: tuple[str, ...] = ("k_curve", "stresses", "displacements", "energy", "subsurface")
 """What a self-similar scene may ask for (``outputs``), in the order the stages run them."""

@@ -596,6 +596,7 @@ def test_sweep_with_a_tolerance_meets_it_against_the_reference():
     (["--tolerance", "nan"], "--tolerance"),
     (["--tolerance", "1e-6", "--n", "256"], "--tolerance"),
     (["--tolerance", "1e-6", "--method", "extrapolated"], "--tolerance"),
+    (["--tolerance", "1e-6", "--method", "default"], "--tolerance"),  # given, though default
 ])
 def test_cli_tolerance_refusals(tmp_path, extra, word):
     out = tmp_path / "x.nc"
@@ -604,6 +605,16 @@ def test_cli_tolerance_refusals(tmp_path, extra, word):
     r = subprocess.run(cmd, capture_output=True, text=True)
     assert r.returncode == 2 and not out.exists()
     assert len(r.stderr.strip().splitlines()) == 1 and word in r.stderr
+
+
+@pytest.mark.parametrize("given", [{"n": 256}, {"method": "default"},
+                                   {"method": "extrapolated"}])
+def test_a_tolerance_with_a_given_n_or_method_is_refused_by_name(given):
+    # the plan picks both; a method given by name is refused even when it is the default's
+    with pytest.raises(validate.InputError, match="tolerance"):
+        api.solve("sphere", 0.3, stick_ratio=0.5, tolerance=1e-3, **given)
+    with pytest.raises(validate.InputError, match="tolerance"):
+        api.sweep("sphere", 0.3, [0.5], tolerance=1e-3, **given)
 
 
 def test_cli_tolerance_unreachable_is_refused_by_name(tmp_path):

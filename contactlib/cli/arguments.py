@@ -29,29 +29,31 @@ from contactlib.cli.inputs import (SolverLimitError, UsageError, checked, parse_
 def validate_solve(args: argparse.Namespace) -> dict[str, Any]:
     """Turn raw option strings into checked keyword arguments of solve/sweep."""
     geometry = checked(validate.geometry, args.geometry, args.geometry)
-    method = checked(validate.method, args.method, args.method)
-    n = None if args.n is None else parse_n(args.n, method)
+    method = None if args.method is None else checked(validate.method, args.method, args.method)
+    chosen = method or validate.DEFAULT_METHOD  # the method that runs without a tolerance
+    n = None if args.n is None else parse_n(args.n, chosen)
     base = parse_base(args.base, coated=True)
     kwargs: dict[str, Any] = {
         "geometry": geometry,
         "nu": parse_nu(required_value(args.nu, "--nu")),
         "n": n,
-        "method": method,
+        "method": chosen,
         "slab_ratio": parse_slab_ratio(args.slab_ratio, geometry, base),
         "energy": not args.no_energy,
         "max_error": parse_max_error(args.max_error),
     }
     if args.tolerance is not None:
         kwargs["tolerance"] = parse_tolerance(args.tolerance)
-        if args.n is not None or args.method != "default":
+        if args.n is not None or args.method is not None:
             raise UsageError("--tolerance must be given without --n and --method (the plan "
                              f"picks them), got --tolerance {args.tolerance!r} with them")
+        kwargs["method"] = None  # planned
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):  # the rigid default is the library's: keywords only when elastic
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
     if base != "smooth":  # likewise: the keyword only when not the default
         kwargs["base"] = base
-    kwargs.update(parse_substrate(args, base, geometry, method))
+    kwargs.update(parse_substrate(args, base, geometry, chosen))
     kwargs.update(profile_kwargs(args))  # likewise
     if args.command == "solve":
         if args.stick_ratio is not None:
@@ -60,7 +62,7 @@ def validate_solve(args: argparse.Namespace) -> dict[str, Any]:
             kwargs["friction"] = parse_friction(args.friction)
     else:
         kwargs["stick_ratios"] = parse_stick_ratios(args.stick_ratios,
-                                                    validate.n(n, method))
+                                                    validate.n(n, chosen))
     return kwargs
 
 
@@ -253,8 +255,10 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     if args.command == "solve":
         kwargs["load"] = _physical_check(physical.parse_quantity,
                                          required_value(args.load, "--load"), "force", "load")
-        method = checked(validate.method, args.method, args.method)
-        kwargs.update(method=method, n=None if args.n is None else parse_n(args.n, method),
+        method = None if args.method is None else checked(validate.method, args.method,
+                                                          args.method)
+        kwargs.update(method=method, n=None if args.n is None
+                      else parse_n(args.n, method or validate.DEFAULT_METHOD),
                       energy=not args.no_energy)
         if args.tolerance is not None:
             kwargs["tolerance"] = parse_tolerance(args.tolerance)

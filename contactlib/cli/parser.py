@@ -97,7 +97,7 @@ _METHOD_HELP = ("discretization: 'default' (ours), 'extrapolated' (ours on the n
                 "meshes n/8 ... n, k extrapolated in n: about 1e-6 at n = 256; n a multiple "
                 "of 128), 'paper' (the paper's scheme as printed, "
                 "Coulomb's law on each ring's resultant) or 'paper-literal' (the printed "
-                "q_i = k p_i); default: %(default)s")
+                "q_i = k p_i); default: 'default', or planned with --tolerance")
 
 
 def _indenter_options(sub: argparse.ArgumentParser) -> None:
@@ -163,7 +163,7 @@ def _common(sub: argparse.ArgumentParser, *, output_required: bool) -> None:
     sub.add_argument("--n", metavar="N", default=None,
                      help="number of elements across the half-contact "
                           "(integer >= 2; library default if omitted)")
-    sub.add_argument("--method", metavar="NAME", default="default", help=_METHOD_HELP)
+    sub.add_argument("--method", metavar="NAME", default=None, help=_METHOD_HELP)
     _profile_options(sub)
     _layer_options(sub, "a", coated=True)
     _indenter_options(sub)

@@ -77,7 +77,7 @@ from contactlib.plot.base import (
 )
 from contactlib.indenter import indenter
 from contactlib.theory import hertz_pressure, uncoupled_friction
-from contactlib.validate import GEOMETRIES
+from contactlib.validate import GEOMETRIES, estimates
 
 __all__ = [
     "fig2_friction",
@@ -132,7 +132,7 @@ class _Case:
 
     def flag(self, name: str, default: bool | None = None) -> np.ndarray:
         if name == "converged" and "resolved" in self.ds and \
-                self.ds.attrs.get("method") == "default":  # not resolved: a failure too
+                estimates(self.ds.attrs.get("method")):  # not resolved: a failure too
             return (np.asarray(self.ds["converged"].values).astype(bool)
                     & np.asarray(self.ds["resolved"].values).astype(bool))
         if name not in self.ds:

@@ -45,9 +45,9 @@ def field_error_estimate(solution: Any, x: Any, z: Any, *, body: str = "body") -
         :func:`subsurface_stresses` refuses.
     """
     from .. import api
-    from ..validate import MIN_N_DEFAULT_METHOD, InputError
+    from ..validate import MIN_N_DEFAULT_METHOD, InputError, method_of
 
-    if solution.method != "default":
+    if not method_of(solution.method).nested_estimate:  # the default method: n/2 nested
         raise InputError("method", "default for a field error estimate", solution.method)
     half = int(solution.n) // 2
     if half < MIN_N_DEFAULT_METHOD:

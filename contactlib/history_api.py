@@ -795,7 +795,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         err_w = _relative(diffs["work"], work_scale)
         err_e = np.max([_relative(diffs[name], energy_scale) for name in energies], axis=0)
     if k == 0.0:  # no friction, no stick zone (|q| < k p cannot hold): c = 0 exactly, as in
-        # solve; elements of nil slip (nu = 0.5, a thin bonded layer's centre) read as stuck
+        # solve (the solver labels no element stuck), and its estimate 0 (not the element
+        # edge's floor)
         raw.stick_radius[:] = 0.0
         err_c = np.zeros(levels.size)
     annulus = hs.annulus_resolved(k, raw.state)

@@ -360,6 +360,8 @@ def test_no_friction_has_no_stick_zone_and_says_so_exactly(nu, kw):
 
     res = cl.history("sphere", nu, 0.0, [0, 1, 0], 20, n=60, **kw)
     assert np.all(np.nan_to_num(res.stick_ratio) == 0.0)
+    assert not np.any(res.state == hs.STICK)  # nil slip is not stick: every contact slips
+    assert np.any(res.state == hs.SLIP_INWARD)
     assert np.all(res.stick_radius_error_estimate == 0.0)
     assert res.resolved_quantities["stick_radius"]
     assert cl.solve("sphere", nu, friction=0.0, n=64, **kw).stick_ratio == 0.0

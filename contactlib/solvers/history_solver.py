@@ -482,13 +482,14 @@ def solve_step(ops: Operators, k: float, load: float, u_old: np.ndarray,
 
 
 def _label(k: float, state: np.ndarray, du: np.ndarray) -> np.ndarray:
-    """Final state labels; frictionless contact elements are labelled by their slip."""
+    """Final state labels. Without friction nothing sticks (|q| < k p cannot hold): every
+    contact element slips, labelled by its slip's sign; nil slip (within round-off: nu =
+    0.5, a thin bonded layer's centre) reads slip_inward."""
     out = state.copy()
     if k == 0.0:
         contact = state > 0
         tol = _REL_TOL * max(float(np.max(np.abs(du))), 1e-300)
-        out[contact] = STICK
-        out[contact & (du < -tol)] = SLIP_INWARD
+        out[contact] = SLIP_INWARD
         out[contact & (du > tol)] = SLIP_OUTWARD
     return out
 

@@ -601,8 +601,6 @@ class PhysicalSolution(_Setup):
     half_angle : float
         The cone's half-angle alpha [degrees] (NaN for the paraboloid; ``radius`` is NaN
         for the cone).
-    displacement_scale : float
-        The unit of the approach and tangential displacements at a [m]: a^2/R, a cot(alpha).
     errors : dict
         Estimated relative error of each quantity above, by name (see
         :func:`physical_solve`); 0 where exact, NaN where not estimated.
@@ -631,7 +629,6 @@ class PhysicalSolution(_Setup):
     solution: Any
     profile: str = "paraboloid"
     half_angle: float = math.nan
-    displacement_scale: float = math.nan
 
     @property
     def resolved(self) -> bool:
@@ -649,7 +646,7 @@ class PhysicalSolution(_Setup):
         """
         sol = self.solution
         a = self.contact_radius
-        unit = a ** 2 / self.radius if self.profile == "paraboloid" else self.displacement_scale
+        unit = self.scales().displacement_unit(a)  # a^2/R, a cot(alpha)
         return {"r": np.asarray(sol.xi) * a,
                 "pressure": np.asarray(sol.pressure) * self.p0,
                 "shear": np.asarray(sol.shear) * self.p0,
@@ -853,8 +850,7 @@ def physical_solve(geometry: str, radius: float | str | None, load: float | str,
         hertz_contact_radius=a_hertz, p0=p0,
         hertz_load=prob.load_unit(a) * prob.per_length,
         slab_ratio=slab, errors=errors, notes=validity_notes(prob, a), solution=sol,
-        profile=prob.shape.name, half_angle=prob.half_angle,
-        displacement_scale=prob.displacement_unit(a))
+        profile=prob.shape.name, half_angle=prob.half_angle)
 
 
 def _layer_radius(prob: _Problem, a_hertz: float,

@@ -14,9 +14,14 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
   ``t^2 exp(-2t)``: the integrals stop at ``t = 18`` (``R < 1e-13``);
 * the Bessel product oscillates with frequency up to ``rho + sigma``: composite
   20-point Gauss-Legendre panels of width ``min(0.25, PANEL_SPAN/(rho + sigma))``
-  (``PANEL_SPAN = 30``: ~5 periods a panel; 40 loses 7e-10 of the scale), so
-  the number of nodes grows like ``max(rho + sigma)`` (24,000 at a/h = 1000);
-* memory: each chunk of nodes holds up to ``10 (n_s + n_r)`` values a node,
+  (``PANEL_SPAN = 30``: ~5 periods a panel; 40 loses 7e-10 of the scale), or
+  where they need fewer nodes (``rho + sigma > 120``) 64-point panels five
+  times as wide (4.2 nodes a period become 2.7; six times as wide loses 5e-12),
+  so the number of nodes grows like ``max(rho + sigma)`` (15,360 at a/h = 1000,
+  24,000 with 20-point panels);
+* the pressure's and the shear's element sums in one pass (shared Bessel
+  values, transfer functions and ``int_0^x J0``), the second kept for its call;
+* memory: each chunk of nodes holds up to ``12 (n_s + n_r)`` values a node,
   kept under :data:`MEMORY_BYTES` (48 MB) whatever the size;
 * element sums (``weights``, ``owner``: the operators' Gauss rules over the disc
   radius, 8 points on panels of h/2, ~17,000 points at a/h = 1000): a rule that
@@ -28,7 +33,9 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
   function's scale (tests/test_thin_layer_edges.py); one solve at a/h = 1000,
   n = 256 takes ~10x less (benchmarks/bench_thin_coatings.py).
 
-Accuracy (tests/test_thin_layers.py): equal to the tables to 1e-10 of their
+Accuracy (tests/test_thin_layers.py): the 64-point panels equal to the 20-point
+ones at half their width to 2e-13 of each function's scale
+(tests/test_thin_layer_panels.py); equal to the tables to 1e-10 of their
 scale where both apply, to an independent ``quad`` of a disc's w(0) to 1e-12,
 unchanged (< 1e-12) when the panels are halved at
 ``rho + sigma = 2400``, and the thin-layer limits (Winkler's ``w = p h/M`` of a
@@ -49,6 +56,7 @@ at ``rho + sigma = 2400``; zero (< 1e-13) for equal materials.
 
 from __future__ import annotations
 
+import threading
 from math import factorial
 
 import numpy as np
@@ -74,6 +82,16 @@ MEMORY_BYTES = 48e6
 
 # tested: tests/test_thin_layers.py (the sums against the ring tables, with PANEL_SPAN)
 _GL_ORDER = 20
+
+# tested: tests/test_thin_layer_panels.py (the sums with these panels against the 20-point
+# ones of half their width, measured <= 2e-13 of each function's scale; 64 nodes on panels
+# of 6 PANEL_SPAN/span lose 5e-12)
+HIGH_ORDER = 64
+"""Nodes of the wide panels used where they need fewer nodes (span > 120)."""
+
+# tested: tests/test_thin_layer_panels.py (with HIGH_ORDER; 6.5 fails it)
+HIGH_WIDER = 5.0
+"""Width of the HIGH_ORDER panels over the 20-point ones' (PANEL_SPAN/span)."""
 
 # tested: tests/test_thin_layer_edges.py (an element at least this wide relative to its outer
 # edge b, in h when b < h, is integrated in closed form: G(b t) - G(a t) loses at most
@@ -120,19 +138,31 @@ def nodes(span: float, fine: float | None = None) -> tuple[Arr, Arr]:
     Returns
     -------
     t, weights : ndarray
-        Panels of width ``min(0.25, PANEL_SPAN/span)`` (and ``2 f/32`` below
-        ``2 f``), 20 nodes each.
+        On each range (below ``2 f``, above) the rule with fewer nodes of:
+        20 nodes on panels of width ``min(0.25, PANEL_SPAN/span)``, or
+        :data:`HIGH_ORDER` (64) nodes on panels :data:`HIGH_WIDER` (5) times as
+        wide for the oscillation (``min(0.8, 5 PANEL_SPAN/span)``: 36% fewer
+        nodes from ``span = 120``); below ``2 f`` also at most ``2 f/32`` wide.
     """
-    width = min(0.25, PANEL_SPAN / max(float(span), 1.0))
-    edges = np.linspace(0.0, T_MAX, int(np.ceil(T_MAX / width)) + 1)
-    if fine is not None:
-        t_fine = layer_transfer.FINE_T * fine  # as the tables' quadrature
-        step = min(width, t_fine / layer_transfer.FINE_PANELS)
-        low = np.linspace(0.0, t_fine, int(np.ceil(t_fine / step)) + 1)
-        edges = np.concatenate([low, edges[edges > t_fine]])
-    g, w = np.polynomial.legendre.leggauss(_GL_ORDER)
-    lo, hi = edges[:-1, None], edges[1:, None]
-    return (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel(), (0.5 * (hi - lo) * w).ravel()
+    span = max(float(span), 1.0)
+    low = (0.0, layer_transfer.FINE_T * fine if fine is not None else 0.0)  # as the tables
+    t, w = [], []
+    for lo, hi, fine_step in (low + (low[1] / layer_transfer.FINE_PANELS,),
+                              (low[1], T_MAX, np.inf)):
+        if hi <= lo:
+            continue
+        rules = [(order, min(cap, wider * PANEL_SPAN / span, fine_step))
+                 for order, cap, wider in ((_GL_ORDER, 0.25, 1.0),
+                                           (HIGH_ORDER, 0.25 * HIGH_ORDER / _GL_ORDER,
+                                            HIGH_WIDER))]
+        count = [int(np.ceil((hi - lo) / width)) for _, width in rules]
+        pick = int(np.argmin([c * r[0] for c, r in zip(count, rules)]))  # (a tie: 20 nodes)
+        order, edges = rules[pick][0], np.linspace(lo, hi, count[pick] + 1)
+        g, gw = np.polynomial.legendre.leggauss(order)
+        a, b = edges[:-1, None], edges[1:, None]
+        t.append((0.5 * (b - a) * g + 0.5 * (a + b)).ravel())
+        w.append((0.5 * (b - a) * gw).ravel())
+    return np.concatenate(t), np.concatenate(w)
 
 
 def _bessel(name: str, x: Arr, j0: Arr | None = None, j1: Arr | None = None) -> Arr:
@@ -229,9 +259,13 @@ def disc_integrals(order: int, x: ArrayLike, j0: Arr | None = None,
     ndarray
         The integrals, the shape of ``x``.
     """
+    return _disc_pair(np.asarray(x, dtype=float), j0, j1)[order]
+
+
+def _disc_pair(x: Arr, j0: Arr | None = None, j1: Arr | None = None) -> dict[int, Arr]:
+    """:func:`disc_integrals` of order 1 and 2 together (they share ``int_0^x J0``)."""
     from scipy import special
 
-    x = np.asarray(x, dtype=float)
     j0 = special.j0(x) if j0 is None else j0
     j1 = special.j1(x) if j1 is None else j1
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -240,16 +274,25 @@ def disc_integrals(order: int, x: ArrayLike, j0: Arr | None = None,
     xf, g1f = x.reshape(-1), g1.reshape(-1)
     mid = np.flatnonzero((xf >= _SERIES_X) & (xf <= _ASYMPTOTIC_X))
     g1f[mid] = _integral_j0(xf[mid]) - xf[mid] * j0.reshape(-1)[mid]
-    out = g1 if order == 1 else 3.0 * g1 - x * x * j1
+    out = {1: g1, 2: 3.0 * g1 - x * x * j1}
     small = np.flatnonzero(xf < _SERIES_X)
     xs = xf[small]
-    out.reshape(-1)[small] = _horner(_SERIES[order], xs * xs) * xs ** (2 * order + 1)
+    for order, g in out.items():
+        g.reshape(-1)[small] = _horner(_SERIES[order], xs * xs) * xs ** (2 * order + 1)
     return out
 
 
 def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str,
                weights: ArrayLike | None = None, owner: ArrayLike | None = None) -> Arr:
     """The remainder functions of a layer (rigid base or coated), on the grid rho x sigma.
+
+    Element sums (``weights`` given) of both kinds are summed in one pass over
+    the nodes ``t`` (they share the Bessel values of ``rho t`` and of the
+    element edges, the transfer functions and ``int_0^x J0``); the other
+    kind's sums are kept for the next call with the same arguments (the
+    operators ask for both, pressure then shear) and handed out once. Each
+    kind's sums equal those of its own pass bit for bit
+    (tests/test_thin_layer_panels.py).
 
     Parameters
     ----------
@@ -278,14 +321,53 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
         raise ValueError(f"kind must be 'pressure' or 'shear', got {kind!r}")
     if not isinstance(base, layer_transfer.Substrate) and base not in layer_transfer.BASES:
         raise ValueError(f"base must be 'smooth', 'bonded' or a Substrate, got {base!r}")
+    if weights is None:  # (a grid of points: asked for one kind)
+        return _sums((kind,), rho, sigma, nu, base)[kind]
+    key = _key(rho, sigma, nu, base, weights, owner)
+    kept = getattr(_KEPT, "sums", None)
+    _KEPT.sums = None
+    if kept is not None and kept[0] == kind and _same(kept[1], key):
+        return kept[2]
+    both = _sums(tuple(_SPECS), rho, sigma, nu, base, weights, owner)
+    other = "shear" if kind == "pressure" else "pressure"
+    _KEPT.sums = (other, key, both[other])
+    return both[kind]
+
+
+_KEPT = threading.local()  # the other kind's sums of the last call, with its arguments
+
+
+def _key(rho: ArrayLike, sigma: ArrayLike, nu: float, base: str | layer_transfer.Substrate,
+         weights: ArrayLike | None, owner: ArrayLike | None) -> tuple:
+    """A call's arguments and the constants its sums depend on (copied: compared exactly)."""
+    arrays = tuple(None if a is None else np.array(a, dtype=float).reshape(-1)
+                   for a in (rho, sigma, weights, owner))
+    return arrays + (float(nu), base, T_MAX, PANEL_SPAN, WIDE_ELEMENT,
+                     layer_transfer.FINE_T, layer_transfer.FINE_PANELS)
+
+
+def _same(a: tuple, b: tuple) -> bool:
+    """Whether two keys of :func:`_key` are equal (arrays element by element)."""
+    for x, y in zip(a, b):
+        if isinstance(x, np.ndarray) or isinstance(y, np.ndarray):
+            if x is None or y is None or x.shape != y.shape or not np.array_equal(x, y):
+                return False
+        elif x != y:
+            return False
+    return True
+
+
+def _sums(kinds: tuple[str, ...], rho: ArrayLike, sigma: ArrayLike, nu: float, base: str,
+          weights: ArrayLike | None = None, owner: ArrayLike | None = None) -> dict[str, Arr]:
+    """:func:`remainders` of each of ``kinds``, in one pass over the nodes ``t``."""
     rho = np.abs(np.asarray(rho, dtype=float).reshape(-1))
     sigma = np.asarray(sigma, dtype=float).reshape(-1)
-    specs = _SPECS[kind]
-    power = specs[0][1]
+    powers = {kind: _SPECS[kind][0][1] for kind in kinds}
     closed = None
     if weights is None:
-        factor, starts, rows = sigma ** power, None, np.arange(sigma.size)
+        starts, rows = None, np.arange(sigma.size)
         m = sigma.size
+        wts = np.ones(sigma.size)
     else:
         own = np.asarray(owner, dtype=np.intp).reshape(-1)
         wts = np.asarray(weights, dtype=float).reshape(-1)
@@ -293,17 +375,18 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
         rows, m = own[starts], int(own.max(initial=-1)) + 1
         closed = _closed_elements(sigma, wts, starts)
         direct = ~np.repeat(closed[0], np.diff(np.r_[starts, sigma.size]))
-        sigma, own = sigma[direct], own[direct]
-        factor = wts[direct] * sigma ** power
+        sigma, own, wts = sigma[direct], own[direct], wts[direct]
         starts = np.flatnonzero(np.r_[True, np.diff(own) != 0]) if own.size else own
-    out = np.zeros((3, rho.size, m))
+    factors = {kind: (sigma ** p if weights is None else wts * sigma ** p)
+               for kind, p in powers.items()}
+    out = {kind: np.zeros((3, rho.size, m)) for kind in kinds}
     if rho.size == 0 or rows.size == 0:
         return out
     top = max(float(sigma.max(initial=0.0)),
               0.0 if closed is None else float(closed[1].max(initial=0.0)))
     t, wt = nodes(float(rho.max()) + top, layer_transfer.fine_panel(nu, base))
     n_s = sigma.size + (0 if closed is None else closed[1].size)
-    chunk = max(64, int(MEMORY_BYTES / (8.0 * 10 * (n_s + rho.size))))
+    chunk = max(64, int(MEMORY_BYTES / (8.0 * 12 * (n_s + rho.size))))
     if closed is not None:
         wide, ends, i_lo, i_hi, lam = closed
         shared, src = _shared_points(ends, rho)
@@ -313,27 +396,33 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
         rem = dict(zip(("ww", "wu", "uu"), layer_transfer.remainder_transfer(tt, nu, base)))
         rt = np.multiply.outer(rho, tt)
         j0, j1 = _bessel("J0", rt), _bessel("J1", rt)
-        if closed is None:
-            s_fun = _bessel("J1" if kind == "pressure" else "J2", np.multiply.outer(sigma, tt))
-            s_fun *= factor[:, None]
-        else:
-            s_fun = np.zeros((rows.size, tt.size))
-            if sigma.size:
-                part = _bessel("J1" if kind == "pressure" else "J2",
-                               np.multiply.outer(sigma, tt)) * factor[:, None]
-                s_fun[~wide] = np.add.reduceat(part, starts, axis=0)
-            if ends.size:
-                xe = np.multiply.outer(ends, tt)
-                ej0, ej1 = np.empty_like(xe), np.empty_like(xe)
-                ej0[shared], ej1[shared] = j0[src], j1[src]
-                ej0[~shared], ej1[~shared] = _bessel("J0", xe[~shared]), _bessel("J1", xe[~shared])
-                g = disc_integrals(power, xe, ej0, ej1)
-                s_fun[wide] = (g[i_hi] - g[i_lo]) * lam[:, None] / tt ** (power + 1)
-        for i, (rname, _, _, _, rfun, tpow) in enumerate(specs):
-            jr = _bessel(rfun, rt, j0, j1)
-            out[i][:, rows] += (jr * (ww * rem[rname] * tt**tpow)) @ s_fun.T
-    for i, (_, _, sign, _, _, _) in enumerate(specs):
-        out[i] *= 2.0 * sign
+        jr = {"J0": j0, "J1": j1, "dJ1": _bessel("dJ1", rt, j0, j1)}
+        if sigma.size:
+            st = np.multiply.outer(sigma, tt)
+            sj0, sj1 = _bessel("J0", st), _bessel("J1", st)
+        if closed is not None and ends.size:
+            xe = np.multiply.outer(ends, tt)
+            ej0, ej1 = np.empty_like(xe), np.empty_like(xe)
+            ej0[shared], ej1[shared] = j0[src], j1[src]
+            ej0[~shared], ej1[~shared] = _bessel("J0", xe[~shared]), _bessel("J1", xe[~shared])
+            g = _disc_pair(xe, ej0, ej1)
+        for kind in kinds:
+            p, specs = powers[kind], _SPECS[kind]
+            s_fun = (_bessel("J1" if kind == "pressure" else "J2", st, sj0, sj1)
+                     * factors[kind][:, None]) if sigma.size else np.zeros((0, tt.size))
+            if closed is not None:
+                part = s_fun
+                s_fun = np.zeros((rows.size, tt.size))
+                if sigma.size:
+                    s_fun[~wide] = np.add.reduceat(part, starts, axis=0)
+                if ends.size:
+                    gp = g[p]
+                    s_fun[wide] = (gp[i_hi] - gp[i_lo]) * lam[:, None] / tt ** (p + 1)
+            for i, (rname, _, _, _, rfun, tpow) in enumerate(specs):
+                out[kind][i][:, rows] += (jr[rfun] * (ww * rem[rname] * tt**tpow)) @ s_fun.T
+    for kind in kinds:
+        for i, (_, _, sign, _, _, _) in enumerate(_SPECS[kind]):
+            out[kind][i] *= 2.0 * sign
     return out
 
 

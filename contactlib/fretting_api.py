@@ -20,6 +20,11 @@ of ``p0``, at the same points (the fretting-fatigue specimen under tension).
 Gross sliding (|Q| = k P) has no stick zone and no equilibrium under a force
 control, so every point with P > 0 must have |Q| < k P (|tangential_path| <
 load_path), and Q = 0 where P = 0.
+
+The sphere also follows a prescribed rigid shift (``tangential_displacement=True``:
+``tangential_path`` gives s R/a_max^2, 0 where P = 0): Q is then the answer, and gross
+sliding (Q = k P, no stick zone) is reached like any other state. The cylinder refuses it:
+a half-plane's rigid shift is defined only up to its logarithmic datum.
 """
 
 from __future__ import annotations
@@ -61,6 +66,12 @@ SPHERE_N_MAX = 256
 SPHERE_N_MIN = 16  # the coarsest grid the sphere's estimates use for a Richardson order
 # convention: the distance kept from gross sliding, relative to k P
 _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
+# tested: tests/test_fretting_sphere_displacement.py (the answered Q/(k P_max) to round-off:
+# 2e-16 in gross sliding, 4e-13 at Q = 0; the solver stops at 1e-11 of k p)
+_FORCE_FLOOR = 1e-10  # the least estimate of Q/(k P_max) under a prescribed shift
+# convention: under a prescribed shift, a change of Q below this of k P_max over a step
+# (gross sliding) gives no compliance ds/dQ (NaN)
+_STILL_FORCE = 1e-9
 
 
 @dataclass(frozen=True)
@@ -96,6 +107,11 @@ class FrettingResult:
 
     ``model`` is the :class:`contactlib.model.Contact` that was solved (None for a
     result rebuilt elsewhere): ask it rather than rebuilding it from the fields.
+
+    ``tangential_displacement``: the path prescribed the rigid shift (the sphere):
+    ``tangential_path`` holds s R/a_max^2 at the path points, ``force_ratio`` is the
+    answer, and ``force_ratio_error`` its estimate per path point (absolute, in Q/(k P_max);
+    None under force control, where Q is prescribed).
     """
 
     geometry: str
@@ -140,6 +156,8 @@ class FrettingResult:
     profile: str = "paraboloid"  # the indenter's profile (contactlib.profiles)
     exponent: float = 2.0
     flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
+    tangential_displacement: bool = False  # the path prescribed the shift (the sphere)
+    force_ratio_error: np.ndarray | None = None  # per point, displacement control only
     model: Any = field(default=None, repr=False, compare=False)  # the Contact solved
 
     @property
@@ -173,19 +191,34 @@ def _path(name: str, values: Sequence[float] | None, size: int | None) -> np.nda
     return arr
 
 
+CYLINDER_SHIFT_REFUSAL = (
+    "tangential_displacement: a displacement-controlled path is solved for the sphere only: "
+    "a half-plane's rigid shift is defined only up to its logarithmic datum, so a prescribed "
+    "shift would fix the answer to a datum rather than to the specimen; prescribe the "
+    "tangential force on the cylinder, or use geometry 'sphere'")
+
+
 def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
-           n: int, steps: int, max_error: float) -> None:
+           n: int, steps: int, max_error: float, displacement: bool = False) -> None:
     if geometry not in ("cylinder", "sphere"):
         raise ValueError(f"fretting: geometry {geometry!r} is not covered; the tangential load "
                          "is solved for the cylinder (plane strain) and the sphere")
+    if displacement and geometry != "sphere":
+        raise ValueError(CYLINDER_SHIFT_REFUSAL)
     if not (isinstance(friction, (int, float)) and math.isfinite(friction) and friction > 0):
         raise ValueError(f"friction: a tangential load needs a finite friction coefficient "
                          f"k > 0, got {friction!r}")
     if np.any(load < 0.0) or np.any(load > 1.0):
         raise ValueError("load_path: P/P_max must lie in [0, 1] (load level 1 is the "
                          f"reference load), got {load.tolist()}")
+    if displacement:
+        loose = (load == 0.0) & (tang != 0.0)
+        if loose.any():
+            i = int(np.flatnonzero(loose)[0])
+            raise ValueError(f"tangential_path: the shift is {tang[i]:g} at point {i}, where "
+                             "P = 0: a detached indenter has no shift; give 0 where P = 0")
     over = np.abs(tang) > (1.0 - _GROSS_SLIP_MARGIN) * load
-    if over.any():
+    if over.any() and not displacement:
         i = int(np.flatnonzero(over)[0])
         raise ValueError(
             f"tangential_path: |Q|/(k P_max) = {abs(tang[i]):g} at point {i} reaches the "
@@ -320,11 +353,12 @@ def _work_estimate(fine: np.ndarray, shifted: np.ndarray, mesh_2: np.ndarray,
     return mesh + step, o_mesh, o_step
 
 
-def _compliance(shift: np.ndarray, force: np.ndarray) -> np.ndarray:
-    """ds/dQ over each step (NaN at the start and where Q does not change)."""
+def _compliance(shift: np.ndarray, force: np.ndarray, tol: float = 0.0) -> np.ndarray:
+    """ds/dQ over each step (NaN at the start and where Q changes by ``tol`` or less)."""
     dq = np.diff(force)
+    moved = np.abs(dq) > tol
     with np.errstate(invalid="ignore", divide="ignore"):
-        out = np.where(dq != 0.0, np.diff(shift) / np.where(dq != 0.0, dq, 1.0), np.nan)
+        out = np.where(moved, np.diff(shift) / np.where(moved, dq, 1.0), np.nan)
     return np.concatenate(([np.nan], out))
 
 
@@ -357,14 +391,16 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
                 tangential_path: Sequence[float], steps: int | None = None,
                 n: int | None = None, bulk_stress: Sequence[float] | None = None,
                 max_error: float = DEFAULT_MAX_ERROR, *, nu: float | None = None,
-                indenter_modulus: float = math.inf, indenter_nu: float | None = None) -> None:
+                indenter_modulus: float = math.inf, indenter_nu: float | None = None,
+                tangential_displacement: bool = False) -> None:
     """Raise ValueError (naming the argument) on input :func:`fretting` refuses; no numerics.
 
     The sphere needs ``nu`` (and the indenter's material): a tangential load on a
     coupled pair (Dundurs beta != 0) is solved for ``|beta| <= SPHERE_COUPLED_BETA_MAX``,
     ``|Q| <= SPHERE_COUPLED_FORCE_MAX k P`` and ``n <= SPHERE_COUPLED_N_MAX`` only
-    (``validate.SolverLimit`` otherwise).
-    Without ``nu`` the sphere is refused.
+    (``validate.SolverLimit`` otherwise; under ``tangential_displacement`` the force is
+    checked after the run).
+    Without ``nu`` the sphere is refused; the cylinder refuses ``tangential_displacement``.
     """
     load = _path("load_path", load_path, None)
     tang = _path("tangential_path", tangential_path, load.size)
@@ -375,15 +411,19 @@ def check_input(geometry: str, friction: float, load_path: Sequence[float],
                          "load on the sphere depends on the pair's Dundurs beta, "
                          "which needs the materials (pass nu to check_input)")
     n0, steps0 = defaults(geometry)
+    if not isinstance(tangential_displacement, (bool, np.bool_)):
+        raise ValueError(f"tangential_displacement: True or False, got "
+                         f"{tangential_displacement!r}")
     _check(geometry, friction, load, tang, n0 if n is None else n,
-           steps0 if steps is None else steps, max_error)
+           steps0 if steps is None else steps, max_error, bool(tangential_displacement))
     if geometry == "sphere":
         if bulk_stress is not None and any(float(v) for v in bulk_stress):
             raise ValueError("bulk_stress: the sphere takes no bulk stress (it is solved for "
                              "the cylinder only); give none")
         e1, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
         model = contact("sphere", validate.nu(nu), indenter_modulus=e1, indenter_nu=nu1)
-        _refuse_coupled(model, load, tang, n0 if n is None else n)
+        _refuse_coupled(model, load, tang, n0 if n is None else n,
+                        bool(tangential_displacement))
 
 
 @blas_single_threaded
@@ -393,7 +433,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
              indenter_modulus: float = math.inf, indenter_nu: float | None = None,
              profile: str = "paraboloid", exponent: float | None = None,
              flat_ratio: float | None = None, max_error: float = DEFAULT_MAX_ERROR,
-             error_estimate: bool = True,
+             error_estimate: bool = True, tangential_displacement: bool = False,
              progress: Callable[[int, int], None] | None = None) -> FrettingResult:
     """Follow a normal and a tangential load path of a cylinder or sphere with Coulomb friction.
 
@@ -411,7 +451,9 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         P/P_max at the path's points, in [0, 1], starting at 0.
     tangential_path : sequence of float
         Q/(k P_max) at the same points, starting at 0, with
-        ``|Q/(k P_max)| < P/P_max`` wherever P > 0 (no gross sliding).
+        ``|Q/(k P_max)| < P/P_max`` wherever P > 0 (no gross sliding). With
+        ``tangential_displacement``: the indenter's rigid shift s R/a_max^2 (the units of
+        the result's ``shift``), 0 where P = 0.
     steps : int, optional
         Equal steps a segment (multiple of 4; default 40, the sphere 8).
     n : int, optional
@@ -440,6 +482,12 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         about 1.3 times the main run. The sphere runs (n/2, steps/2) and, from
         n = 64, (n/4, steps/4). If False the estimates are NaN and nothing is
         ``resolved``.
+    tangential_displacement : bool
+        The sphere only: ``tangential_path`` prescribes the rigid shift (a displacement-
+        controlled test); Q is the answer (``force_ratio``, its estimate
+        ``force_ratio_error``) and may reach k P (gross sliding: no stick zone). A coupled
+        pair (beta != 0) is refused when |Q| passed ``0.9 k P`` (checked after the run).
+        The cylinder refuses it (its shift has a logarithmic datum).
     progress : callable, optional
         ``progress(i, total)`` after each step of the main run.
 
@@ -467,7 +515,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     n = n0 if n is None else n
     steps = steps0 if steps is None else steps
     check_input(geometry, friction, load, tang, steps, n, bulk_stress, max_error, nu=nu,
-                indenter_modulus=indenter_modulus, indenter_nu=indenter_nu)
+                indenter_modulus=indenter_modulus, indenter_nu=indenter_nu,
+                tangential_displacement=tangential_displacement)
     nu = validate.nu(nu)
     indenter_modulus, indenter_nu = validate.indenter_material(indenter_modulus, indenter_nu)
     if not takes(profile, "fretting"):
@@ -482,7 +531,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
     k = float(friction)
     if geometry == "sphere":
         res = sphere_fretting(model, k, load, tang, steps, n, max_error, error_estimate,
-                              progress)
+                              progress, bool(tangential_displacement))
         return replace(res, profile=prof.name, exponent=float(prof.exponent),
                        flat_ratio=float(prof.flat), model=model)
     ops, raw = run_path(model, n, steps, k, load, tang, sigma, progress)
@@ -566,14 +615,27 @@ SPHERE_COUPLED_REFUSAL = (
     "{beta:.4g}, |Q|/(k P) = {x:.4g} and n = {n}, beyond the range whose coupled steps were "
     "verified to converge. Keep |Q| <= {fmax:g} k P and pass n <= {nmax}, or use the "
     "cylinder, or a pair with |beta| <= {bmax:g}")
+SPHERE_COUPLED_SHIFT_REFUSAL = (
+    "fretting: a prescribed shift on the sphere is solved for Dundurs beta = 0, or for a "
+    "coupled pair with |beta| <= {bmax:g} and n <= {nmax} while |Q| stays <= {fmax:g} k P: "
+    "got beta = {beta:.4g}, n = {n}{reached}, beyond the range whose coupled steps were "
+    "verified. Keep the shift smaller, pass n <= {nmax}, or use a pair with beta = 0")
 
 
-def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int) -> float:
+def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int,
+                    displacement: bool = False) -> float:
     """The pair's Dundurs beta; SolverLimit for a coupled tangential load beyond the
     verified range (|beta| <= SPHERE_COUPLED_BETA_MAX, |Q|/(k P) <= SPHERE_COUPLED_FORCE_MAX,
-    n <= SPHERE_COUPLED_N_MAX)."""
+    n <= SPHERE_COUPLED_N_MAX). A prescribed shift (``displacement``): beta and n only; the
+    force is checked after the run (:func:`_refuse_coupled_force`)."""
     beta = float(model.beta) if not model.decoupled else 0.0
     if beta == 0.0 or not np.any(tang != 0.0):
+        return beta
+    if displacement:
+        if n > SPHERE_COUPLED_N_MAX or abs(beta) > SPHERE_COUPLED_BETA_MAX:
+            raise validate.SolverLimit(SPHERE_COUPLED_SHIFT_REFUSAL.format(
+                beta=beta, bmax=SPHERE_COUPLED_BETA_MAX, fmax=SPHERE_COUPLED_FORCE_MAX,
+                nmax=SPHERE_COUPLED_N_MAX, n=n, reached=""))
         return beta
     with np.errstate(invalid="ignore", divide="ignore"):
         x = float(np.max(np.where(load > 0, np.abs(tang) / np.where(load > 0, load, 1.0),
@@ -586,25 +648,51 @@ def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int) -> float:
     return beta
 
 
+def _refuse_coupled_force(raw: fsph.RawSphereFretting, k: float, n: int, beta: float,
+                          steps: int) -> None:
+    """SolverLimit when a prescribed shift drove a coupled pair's |Q| beyond
+    ``SPHERE_COUPLED_FORCE_MAX k P`` at a loaded step (the coupled steps are verified up to
+    it only): its number is not reported."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x = np.where(raw.load > 0, np.abs(raw.force) / (k * raw.load), 0.0)
+    over = x > SPHERE_COUPLED_FORCE_MAX * (1.0 + 1e-12)
+    if over.any():
+        j = int(np.flatnonzero(over)[0])
+        raise validate.SolverLimit(SPHERE_COUPLED_SHIFT_REFUSAL.format(
+            beta=beta, bmax=SPHERE_COUPLED_BETA_MAX, fmax=SPHERE_COUPLED_FORCE_MAX,
+            nmax=SPHERE_COUPLED_N_MAX, n=n,
+            reached=f" and |Q| = {x[j]:.4g} k P reached in segment {(j - 1) // steps + 1}"))
+
+
 def _sphere_run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
-                keep: bool, progress=None) -> tuple[fsph.GridOperators, fsph.RawSphereFretting]:
+                keep: bool, progress=None, displacement: bool = False
+                ) -> tuple[fsph.GridOperators, fsph.RawSphereFretting]:
     ops = fsph.grid_operators(model, n)
     big_p = load_levels(load, steps)[0][1:] * ops.p_max
-    big_q = load_levels(tang, steps)[0][1:] * k * ops.p_max
-    return ops, _sphere_masked(fsph.run_sphere_fretting(ops, k, big_p, big_q,
-                                                        keep_fields=keep, progress=progress))
+    path = load_levels(tang, steps)[0][1:]
+    if displacement:  # the shift, in a_max^2/R already
+        raw = fsph.run_sphere_fretting(ops, k, big_p, None, keep_fields=keep,
+                                       progress=progress, shift=path)
+    else:
+        raw = fsph.run_sphere_fretting(ops, k, big_p, path * k * ops.p_max, keep_fields=keep,
+                                       progress=progress)
+    return ops, _sphere_masked(raw, displacement)
 
 
-def _sphere_masked(raw: fsph.RawSphereFretting) -> fsph.RawSphereFretting:
+def _sphere_masked(raw: fsph.RawSphereFretting, displacement: bool = False
+                   ) -> fsph.RawSphereFretting:
     """The run with its per-step numbers NaN from the first step that did not converge on
-    (a later step starts from that step's state): never reported as data."""
+    (a later step starts from that step's state): never reported as data. The prescribed
+    one of the force and the shift is kept, the answered one masked."""
     bad = np.maximum.accumulate(~raw.converged)
     if not bad.any():
         return raw
     nan = {name: np.where(bad, np.nan, getattr(raw, name)) for name in (
         "delta", "contact_radius", "stick_radius", "stick_offset", "stick_area",
-        "contact_area", "dissipation", "external_work", "stored_energy")}
-    return replace(raw, shift=np.where(bad[:, None], np.nan, raw.shift), **nan)
+        "contact_area", "dissipation", "external_work", "stored_energy")
+        + (("force",) if displacement else ())}
+    shift = raw.shift if displacement else np.where(bad[:, None], np.nan, raw.shift)
+    return replace(raw, shift=shift, **nan)
 
 
 def _sphere_measures(raw: fsph.RawSphereFretting) -> tuple[np.ndarray, np.ndarray]:
@@ -634,7 +722,8 @@ def _sphere_lattice(raw: fsph.RawSphereFretting, h: float) -> np.ndarray:
 
 def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: int, n: int,
                     max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
-                    progress: Callable[[int, int], None] | None = None) -> FrettingResult:
+                    progress: Callable[[int, int], None] | None = None,
+                    displacement: bool = False) -> FrettingResult:
     """The sphere's path for :func:`fretting` (checked input; units E* = R = a_max = 1).
 
     The numerics are :mod:`contactlib.solvers.fretting_sphere` (``n x n`` cells over
@@ -652,7 +741,10 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     the axes (:func:`contactlib.solvers.fretting_sphere.edge_radius`). From ``n = 64``
     the frictional work's estimates
     are Richardson's from a third run with ``n/4`` cells at the measured order
-    (``orders["dissipation"]``, at most 2).
+    (``orders["dissipation"]``, at most 2). Under a prescribed shift
+    (``displacement``) the force's estimate is its difference to the ``n/2`` run and, from
+    ``n = 64``, at least half the ``n/2`` run's difference to the ``n/4`` one (its lattice
+    error is not monotonic in n), and at least ``_FORCE_FLOOR`` (round-off).
 
     Parameters
     ----------
@@ -663,11 +755,15 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     k : float
         Coulomb coefficient.
     load, tang : ndarray
-        P/P_max and Q/(k P_max) at the path's points (checked by :func:`check_input`).
+        P/P_max and Q/(k P_max) at the path's points (checked by :func:`check_input`);
+        with ``displacement`` the shift s R/a_max^2 instead of Q.
     steps, n : int
         Steps a segment and cells a side.
     max_error, error_estimate, progress
         As for :func:`fretting`.
+    displacement : bool
+        ``tangential_path`` prescribes the shift (:func:`fretting`'s
+        ``tangential_displacement``).
 
     Returns
     -------
@@ -676,17 +772,25 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     Raises
     ------
     contactlib.validate.SolverLimit
-        (a ValueError) A coupled pair's tangential load beyond the verified range.
+        (a ValueError) A coupled pair's tangential load beyond the verified range (under
+        a prescribed shift, after the main run).
     """
-    beta = _refuse_coupled(model, load, tang, n)
-    ops, raw = _sphere_run(model, n, steps, k, load, tang, True, progress)
+    beta = _refuse_coupled(model, load, tang, n, displacement)
+    ops, raw = _sphere_run(model, n, steps, k, load, tang, True, progress, displacement)
+    if displacement and beta != 0.0:
+        _refuse_coupled_force(raw, k, n, beta, steps)
     ratio, offset = _sphere_measures(raw)
     points = np.arange(load.size) * steps
     sigma = np.zeros(load.size)
     closed = _closed(load, tang, sigma)
+    force_err = None
     if error_estimate:
-        _, coarse = _sphere_run(model, n // 2, steps // 2, k, load, tang, False)
+        _, coarse = _sphere_run(model, n // 2, steps // 2, k, load, tang, False,
+                                displacement=displacement)
         cpts = np.arange(load.size) * (steps // 2)
+        if displacement:
+            force_err = np.maximum(np.abs(raw.force[points] - coarse.force[cpts])
+                                   / (k * ops.p_max), _FORCE_FLOOR)
         c_ratio, c_offset = _sphere_measures(coarse)
         # the twofold difference does not see the radii's lattice error (the stick cells
         # end about a cell inside an advancing edge): the two add
@@ -700,9 +804,17 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
             # Richardson from three runs at the order they show, capped at 2 as the
             # cylinder's (a twofold difference inflated the cycle work's error 20-fold
             # at n = 64)
-            _, coarser = _sphere_run(model, n // 4, steps // 4, k, load, tang, False)
+            _, coarser = _sphere_run(model, n // 4, steps // 4, k, load, tang, False,
+                                     displacement=displacement)
             diss.append(coarser.dissipation[np.arange(load.size) * (steps // 4)])
             ok = ok and bool(coarser.converged.all())
+            if displacement:
+                # Q's lattice error is not monotonic in n (Q/kP at s = 0.9 s*: 1.1e-4,
+                # 1.9e-5, 2.4e-5 off at n = 16, 32, 64): the coarser pair's difference at
+                # order 1 as well
+                c_force = coarser.force[np.arange(load.size) * (steps // 4)]
+                force_err = np.maximum(force_err, 0.5 * np.abs(coarse.force[cpts] - c_force)
+                                       / (k * ops.p_max))
             diss_err, o3 = _estimate(*diss, 2.0)
         else:  # no third run on a useful grid: the twofold difference (order 1)
             diss_err, o3 = np.abs(diss[0] - diss[1]), 1.0
@@ -717,11 +829,15 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         scale = max(float(raw.dissipation[-1]), 1e-300)
         resolved = (_ratio_resolved(ratio[points], ratio_err, raw.load[points], max_error)
                     & (diss_err <= max_error * scale) & raw.converged[points] & ok)
+        if force_err is not None:  # the answered force within max_error (of k P_max)
+            with np.errstate(invalid="ignore"):
+                resolved &= force_err <= max_error
     else:
         ratio_err = off_err = diss_err = np.full(load.size, np.nan)
         cycle_err = np.full(len(closed), np.nan)
         orders = {}
         resolved = np.zeros(load.size, dtype=bool)
+        force_err = np.full(load.size, np.nan) if displacement else None
     a, c = raw.contact_radius, raw.stick_radius
     centre = np.where(c > 0, raw.stick_offset, np.nan)
     contact_edges = np.stack([-a, a], axis=1)
@@ -750,11 +866,13 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         approach=raw.delta, shift=raw.shift[:, 0], dissipation=raw.dissipation,
         external_work=raw.external_work, stored_energy=raw.stored_energy,
         converged=raw.converged, pressure=p_row, shear=q_row, slip=slip,
-        tangential_compliance=_compliance(raw.shift[:, 0], force), state=state.astype(np.int8),
+        tangential_compliance=_compliance(raw.shift[:, 0], force,
+                                          _STILL_FORCE * k * ops.p_max if displacement else 0.0),
+        state=state.astype(np.int8),
         point_step=points, stick_ratio_error=ratio_err, stick_offset_error=off_err,
         dissipation_error=diss_err, resolved=resolved,
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders,
-        model=model)
+        model=model, tangential_displacement=displacement, force_ratio_error=force_err)
 
 
 # convention: the amplitudes of amplitude_study, Q*/(k P)

@@ -68,6 +68,8 @@ class PhysicalFretting:
         normal force, and that force [N].
     work_unit : float
         The work unit E* a_max^4/R^2 L [J].
+    shift_unit : float
+        The displacement unit a_max^2/R [m].
     notes : list of str
         Where the contact leaves the theory's validity (a/R, a/L).
     """
@@ -82,6 +84,7 @@ class PhysicalFretting:
     work_unit: float
     heading: str
     notes: list[str]
+    shift_unit: float = 0.0
 
     @property
     def size_name(self) -> str:
@@ -92,7 +95,9 @@ class PhysicalFretting:
         """The state at every path point in SI, with the estimates (m, N, J).
 
         The zones' sizes are ``"contact half-width [m]"`` and ``"stick half-width [m]"``
-        (cylinder) or ``"contact radius [m]"`` and ``"stick radius [m]"`` (sphere).
+        (cylinder) or ``"contact radius [m]"`` and ``"stick radius [m]"`` (sphere). Under a
+        prescribed shift also ``"tangential shift [m]"`` and ``"tangential force error
+        [N]"`` (the answered force's estimate).
         """
         r = self.result
         size = self.size_name
@@ -112,6 +117,10 @@ class PhysicalFretting:
                 "frictional work [J]": float(r.dissipation[j] * self.work_unit),
                 "frictional work error [J]": float(r.dissipation_error[i] * self.work_unit),
                 "resolved": bool(r.resolved[i])})
+            if r.tangential_displacement:
+                rows[-1]["tangential shift [m]"] = float(r.shift[j] * self.shift_unit)
+                rows[-1]["tangential force error [N]"] = float(
+                    r.force_ratio_error[i] * r.friction * self.load_max)
         return rows
 
     def cycles(self) -> list[tuple[int, int, float, float]]:
@@ -126,7 +135,9 @@ class PhysicalFretting:
                  f"E* = {format_si(self.composite_modulus, 'Pa')}, beta = {r.beta:.4g}, "
                  f"k = {r.friction:g}; at {format_si(self.load_max, 'N')}: a = "
                  f"{format_si(self.a_max, 'm')}, p0 = {format_si(self.p0, 'Pa')}",
-                 "point  P         Q          a          c (estimate)           "
+                 "point  P         Q          " + ("(estimate) at shift s  " if
+                                                     r.tangential_displacement else "")
+                 + "a          c (estimate)           "
                  "offset      frictional work (estimate)  resolved"]
         for i, row in enumerate(self.points()):
             size = self.size_name
@@ -135,9 +146,12 @@ class PhysicalFretting:
                 lines.append(f"{i:5d}  {format_si(row['normal force [N]'], 'N'):9s} "
                              f"{format_si(row['tangential force [N]'], 'N'):10s} no contact")
                 continue
+            shift = (f"({row['tangential force error [N]']:.1e} N) at s = "
+                     f"{format_si(row['tangential shift [m]'], 'm')}  "
+                     if "tangential shift [m]" in row else "")
             lines.append(
                 f"{i:5d}  {format_si(row['normal force [N]'], 'N'):9s} "
-                f"{format_si(row['tangential force [N]'], 'N'):10s} "
+                f"{format_si(row['tangential force [N]'], 'N'):10s} {shift}"
                 f"{format_si(row[f'contact {size} [m]'], 'm'):10s} "
                 f"{format_si(c, 'm') if math.isfinite(c) else 'none':10s} "
                 f"({row[f'stick {size} error [m]']:.1e} m)  "
@@ -160,8 +174,8 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
                       geometry: str = "cylinder", steps: int | None = None,
                       n: int | None = None,
                       bulk_stress: Any = None, max_error: float = DEFAULT_MAX_ERROR,
-                      progress: Callable[[int, int], None] | None = None
-                      ) -> PhysicalFretting:
+                      progress: Callable[[int, int], None] | None = None,
+                      tangential_displacement: bool = False) -> PhysicalFretting:
     """A cylinder or sphere pressed by forces in N, then loaded tangentially; answer in SI.
 
     Parameters
@@ -173,7 +187,9 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
         Normal forces [N] (or with units: "0N,500N,500N"), starting at 0; P_max is the
         largest.
     tangential_path : sequence or str
-        Tangential forces [N] at the same points, signed, starting at 0, with |Q| < k P.
+        Tangential forces [N] at the same points, signed, starting at 0, with |Q| < k P;
+        with ``tangential_displacement`` the indenter's rigid shifts [m] (or with units:
+        "0um,0um,2um,-2um"), 0 where the normal force is 0.
     indenter, body : str or (E, nu)
         Named materials of the package's table (``contactlib.materials``), or moduli in
         Pa (or with units) with Poisson's ratios; the indenter may be ``"rigid"``.
@@ -186,6 +202,10 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
         As for :func:`contactlib.fretting` (defaults per geometry).
     bulk_stress : sequence or str, optional
         The body's bulk stress along x [Pa] (or with units) at the same points.
+    tangential_displacement : bool
+        The sphere: ``tangential_path`` prescribes the shift (a displacement-controlled
+        test) and the tangential force is the answer, as for :func:`contactlib.fretting`;
+        the cylinder refuses it.
 
     Returns
     -------
@@ -199,7 +219,9 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
     """
     prob = physical_problem(geometry, radius, indenter, body, length, None, "smooth")
     forces = parse_force_path(load_path, "load_path")
-    tangential = parse_signed_path(tangential_path, "force", "tangential_path")
+    tangential = parse_signed_path(tangential_path,
+                                   "length" if tangential_displacement else "force",
+                                   "tangential_path")
     if len(tangential) != len(forces):
         raise validate.InputError("tangential_path", f"as long as load_path ({len(forces)} "
                                   "points)", tangential_path)
@@ -218,9 +240,12 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
     if not (math.isfinite(k) and k > 0):
         raise validate.InputError("friction", "a finite coefficient k > 0", friction)
     kwargs.update(prob.dimensionless())
+    shift_unit = a_max * a_max / prob.radius
     res = fretting(prob.geometry, prob.body.nu, k, [f / load_max for f in forces],
-                   [q / (k * load_max) for q in tangential], steps, n=n,
-                   max_error=max_error, progress=progress, **kwargs)
+                   [t / shift_unit for t in tangential] if tangential_displacement
+                   else [q / (k * load_max) for q in tangential], steps, n=n,
+                   max_error=max_error, progress=progress,
+                   tangential_displacement=tangential_displacement, **kwargs)
     notes = validity_notes(prob, a_max)
     heading = (f"cylinder R = {format_si(prob.radius, 'm')}, length "
                f"{format_si(prob.length, 'm')}: indenter {prob.indenter}, body {prob.body}"
@@ -231,5 +256,6 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
                             composite_modulus=prob.e_star, a_max=a_max, p0=p0,
                             load_max=load_max,
                             work_unit=work_scale(prob.geometry, prob.e_star, prob.radius, a_max)
-                            * prob.length, heading=heading, notes=notes)
+                            * prob.length, heading=heading, notes=notes,
+                            shift_unit=shift_unit)
 

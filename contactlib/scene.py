@@ -58,7 +58,7 @@ _KEYS = ("kind", "geometry", "nu", "method", "n", "tolerance", "max_error", "sti
 _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n",
                  "slab_ratio", "base", "max_error", "indenter", "body", "relaxation",
                  "duration", "profile", "exponent", "tangential_path", "bulk_stress",
-                 "substrate_modulus", "substrate_nu", "flat_ratio")
+                 "substrate_modulus", "substrate_nu", "flat_ratio", "tangential_displacement")
 # keys of a history scene that a fretting path (tangential_path) does not take: the
 # fretting solver covers the half-plane, elastic bodies only
 _NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration", "substrate_modulus",
@@ -457,6 +457,9 @@ class HistoryScene:
         :func:`contactlib.history` (one friction coefficient); empty: none.
     bulk_stress : tuple of float
         The body's bulk stress sigma/p0 at the same points (fretting only); empty: none.
+    tangential_displacement : bool
+        Key ``tangential_displacement: true`` (the sphere): ``tangential_path`` is the
+        indenter's rigid shift s R/a_max^2 and Q the answer; default false.
     base, substrate_modulus, substrate_nu
         As for :class:`Scene`: ``base`` "elastic" is a coated body, the layer
         (a_max/h ``slab_ratio``) bonded to a substrate of E2/E1 ``substrate_modulus``.
@@ -487,6 +490,7 @@ class HistoryScene:
     substrate_modulus: float = float("inf")
     substrate_nu: float | None = None
     flat_ratio: float | None = None
+    tangential_displacement: bool = False
 
     @property
     def fretting(self) -> bool:
@@ -508,6 +512,8 @@ class HistoryScene:
                     "n": self.n, "max_error": self.max_error}
             if self.bulk_stress:
                 spec["bulk_stress"] = list(self.bulk_stress)
+            if self.tangential_displacement:  # (a force-controlled scene's keywords unchanged)
+                spec["tangential_displacement"] = True
             if self.indenter_modulus != float("inf"):
                 spec.update(indenter_modulus=self.indenter_modulus,
                             indenter_nu=self.indenter_nu)
@@ -528,7 +534,8 @@ class HistoryScene:
 
 def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any,
                     steps: int | None, bad: _Problems, nu: float | None = None,
-                    ind: tuple[float, float | None] = (math.inf, None)
+                    ind: tuple[float, float | None] = (math.inf, None),
+                    displacement: bool = False
                     ) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(tangential_path, bulk_stress) of a fretting scene, checked by
     :func:`contactlib.fretting_api.check_input` (the library's words, one line under the
@@ -557,7 +564,8 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     try:
         fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, steps,
                                  n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR),
-                                 nu=nu, indenter_modulus=ind[0], indenter_nu=ind[1])
+                                 nu=nu, indenter_modulus=ind[0], indenter_nu=ind[1],
+                                 tangential_displacement=displacement)
     except ValueError as exc:
         text = str(exc)
         head, _, rest = text.partition(": ")
@@ -594,6 +602,13 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
         steps = fretting_steps if fretting else validate.HISTORY_DEFAULT_STEPS
     if "bulk_stress" in raw and not fretting:
         bad.add("bulk_stress", "needs tangential_path (a fretting path)")
+    displacement = raw.get("tangential_displacement", False)
+    if not isinstance(displacement, bool):
+        bad.add("tangential_displacement", f"true or false, got {displacement!r}")
+        displacement = False
+    elif displacement and not fretting:
+        bad.add("tangential_displacement", "needs tangential_path (the shift at the points "
+                                           "of load_path)")
     if fretting:  # the fretting solver's own n (a multiple of 4) and default
         from .fretting_api import DEFAULT_N as fretting_n
 
@@ -626,7 +641,8 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                               "the substrate's kernels are elastic only; use a rigid base or "
                               "an elastic layer")
     profile, exponent, flat_ratio = _scene_profile(raw, bad)
-    tang, sigma = _fretting_paths(raw, ks, n, steps, bad, nu, ind) if fretting else ((), ())
+    tang, sigma = (_fretting_paths(raw, ks, n, steps, bad, nu, ind, displacement)
+                   if fretting else ((), ()))
     bad.raise_any()
     return HistoryScene(name=name, geometry=geometry, nu=nu, frictions=ks,
                         load_path=path, steps=steps, n=n, slab_ratio=slab,
@@ -634,7 +650,8 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
                         indenter_nu=ind[1], relaxation=prony, durations=durations,
                         base=base, profile=profile, exponent=exponent, tangential_path=tang,
                         bulk_stress=sigma, substrate_modulus=substrate[0],
-                        substrate_nu=substrate[1], flat_ratio=flat_ratio)
+                        substrate_nu=substrate[1], flat_ratio=flat_ratio,
+                        tangential_displacement=displacement)
 
 
 @dataclass(frozen=True, repr=False)

@@ -132,6 +132,10 @@ def main(argv: list[str] | None = None) -> int:
             raise UsageError("--tolerance plans a dimensionless history of a normal load path "
                              "(--nu, load levels): give it without --tangential-path and the "
                              "physical options")
+        if args.command == "history" and args.tangential_displacement \
+                and args.tangential_path is None:
+            raise UsageError("--tangential-displacement needs --tangential-path (the shift "
+                             "at the points of --load-path)")
         if args.command == "history" and (args.tangential_path is not None
                                           or args.bulk_stress is not None):
             if args.tangential_path is None:

@@ -305,6 +305,12 @@ def build_parser() -> argparse.ArgumentParser:
                            "(n counts elements over 1.2 a_max each side of the axis, a "
                            "multiple of 4; steps a multiple of 4, default 40; the sphere: "
                            "n cells a side, default 64, steps default 8)")
+    hist.add_argument("--tangential-displacement", action="store_true",
+                      help="with --tangential-path (the sphere): its values are the "
+                           "indenter's rigid shift s R/a_max^2 (or lengths with units, "
+                           "0um,2um, with the physical options) and Q is the answer; gross "
+                           "sliding is allowed. The cylinder refuses it (its shift has a "
+                           "logarithmic datum)")
     hist.add_argument("--bulk-stress", metavar="LIST", default=None,
                       help="with --tangential-path: the body's bulk stress along x over p0 "
                            "at the points of --load-path (fretting fatigue specimen)")

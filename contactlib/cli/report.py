@@ -29,13 +29,19 @@ def _indenter_text(sol: Any) -> str:
 
 def format_fretting(res: Any) -> str:
     """Summary of a fretting path: the state at every path point, and the cycles' work."""
+    shifted = getattr(res, "tangential_displacement", False)
     lines = [f"fretting of the {res.geometry}: nu = {res.nu:g}, k = {res.friction:g}, "
-             f"beta = {res.beta:.4g}, n = {res.n}, {res.steps} steps a segment",
-             "point  P/P_max  Q/(kP_max)  c/a (estimate)       e/a_max   "
-             "frictional work (estimate)  resolved"]
+             f"beta = {res.beta:.4g}, n = {res.n}, {res.steps} steps a segment"
+             + (", the shift prescribed" if shifted else ""),
+             "point  P/P_max  " + ("sR/a_max^2  Q/(kP_max) (estimate)  " if shifted
+                                   else "Q/(kP_max)  ")
+             + "c/a (estimate)       e/a_max   frictional work (estimate)  resolved"]
     for i, j in enumerate(res.point_step):
+        tangential = (f"{res.shift[j]:10.4g}  {res.force_ratio[j]:10.6f} "
+                      f"({res.force_ratio_error[i]:.1e})" if shifted
+                      else f"{res.force_ratio[j]:10.4g}")
         lines.append(
-            f"{i:5d}  {res.load_ratio[j]:7.4g}  {res.force_ratio[j]:10.4g}  "
+            f"{i:5d}  {res.load_ratio[j]:7.4g}  {tangential}  "
             f"{res.stick_ratio[j]:8.5f} ({res.stick_ratio_error[i]:.1e})  "
             f"{res.stick_offset[j]:9.2e}  {res.dissipation[j]:12.5e} "
             f"({res.dissipation_error[i]:.1e})  {'yes' if res.resolved[i] else 'NO'}")

@@ -29,7 +29,8 @@ from contactlib.cli.report import (fail, format_fretting, format_history, format
 
 
 def run_physical_fretting(args: argparse.Namespace) -> int:
-    """``history --tangential-path`` with forces in N (:mod:`contactlib.physical_fretting`)."""
+    """``history --tangential-path`` with forces in N, or with ``--tangential-displacement``
+    shifts in m (:mod:`contactlib.physical_fretting`)."""
     from contactlib import io, physical_fretting
 
     for option, given in (("--nu", args.nu is not None),
@@ -62,6 +63,8 @@ def run_physical_fretting(args: argparse.Namespace) -> int:
         kwargs["n"] = to_int(args.n)
     if args.bulk_stress is not None:
         kwargs["bulk_stress"] = args.bulk_stress
+    if args.tangential_displacement:
+        kwargs["tangential_displacement"] = True
     with _progress("fretting") as progress:
         res = physical_fretting.physical_fretting(progress=progress, **kwargs)
     if args.output is not None:

@@ -29,7 +29,10 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
     :mod:`contactlib.fretting_api`. Per step: the loads, the contact and
     stick-zone edges, ``stick_ratio``, ``stick_offset``, the rigid
     displacements, the energies and the tractions; per path point: the error
-    estimates and ``resolved``. Write it with :func:`write_dataset`.
+    estimates and ``resolved``. The attribute ``tangential_control`` is ``"force"``
+    (``tangential_path`` is Q/(k P_max)) or ``"displacement"`` (the prescribed shift
+    s R/a_max^2; then ``tangential_load_ratio_error_estimate`` holds the answered force's
+    estimate per point). Write it with :func:`write_dataset`.
 
     Parameters
     ----------
@@ -47,6 +50,7 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
 
     r = result
     sphere = r.geometry == "sphere"
+    shifted = bool(getattr(r, "tangential_displacement", False))
     work = "V R**2 / (E* a_max**5)" if sphere else "V R**2 / (E* a_max**4) per unit length"
     sd, ed, pd = ("step",), ("step", "x"), ("point",)
     side = ("step", "side")
@@ -85,8 +89,10 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
             comment="half-plane: relative to the logarithm's datum at distance a_max")),
         "tangential_shift": (sd, r.shift, cf_attrs(
             "rigid tangential displacement of the indenter (s R / a_max**2)",
-            comment="relative to the logarithm's datum at distance a_max; its changes "
-                    "enclose the Q-s loop's area independently of the datum")),
+            comment=("absolute (a half-space has no datum)" + ("; prescribed" if shifted
+                                                              else "")) if sphere else
+            "relative to the logarithm's datum at distance a_max; its changes "
+            "enclose the Q-s loop's area independently of the datum")),
         "frictional_work": (sd, r.dissipation, cf_attrs(
             "cumulative frictional work", comment=work + "; sum of k p |dv| over the "
                                                         "slipping elements, never decreasing")),
@@ -122,6 +128,10 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "resolved": (pd, r.resolved.astype(bool), cf_attrs(
             "path point resolved to max_error", **BOOL_FLAGS)),
     }
+    if shifted:  # Q is the answer: its estimate
+        data["tangential_load_ratio_error_estimate"] = (pd, r.force_ratio_error, cf_attrs(
+            "estimated absolute error of tangential_load_ratio at the path point",
+            comment="difference to a run with n/2 cells and steps/2"))
     cyc = np.asarray([c[:2] for c in r.cycles], dtype=np.int32).reshape(-1, 2)
     attrs: dict[str, Any] = {
         "title": f"contactlib fretting path ({r.geometry})",
@@ -133,6 +143,8 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "steps": int(r.steps),
         "load_path": np.asarray(r.load_path, dtype=float),
         "tangential_path": np.asarray(r.tangential_path, dtype=float),
+        # force: tangential_path is Q/(k P_max); displacement: the shift s R / a_max**2
+        "tangential_control": "displacement" if shifted else "force",
         "bulk_stress_path": np.asarray(r.bulk_stress_path, dtype=float),
         "max_error": float(r.max_error),
         "cycle_points": cyc.ravel(),

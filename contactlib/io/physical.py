@@ -212,6 +212,9 @@ def physical_fretting_to_dataset(result: Any) -> xr.Dataset:
     ds["normal_force"] = (("step",), r.load_ratio * fmax, cf_attrs("normal force", "N"))
     ds["tangential_force"] = (("step",), r.force_ratio * k * fmax,
                               cf_attrs("tangential force on the body along +x", "N"))
+    if r.tangential_displacement:
+        ds["tangential_shift_si"] = (("step",), r.shift * result.shift_unit,
+                                     cf_attrs("prescribed rigid shift of the indenter", "m"))
     ds["contact_edges_si"] = (("step", "side"), r.contact_edges * a,
                               cf_attrs("contact edges", "m"))
     ds["stick_edges_si"] = (("step", "side"), r.stick_edges * a,

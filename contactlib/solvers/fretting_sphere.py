@@ -57,7 +57,10 @@ Conditions at the cell centres
   symmetric positive definite shear operator and ``s`` the force's multiplier
   (:func:`solve_tangential`): one minimum, found by accelerated projected
   gradients with restarts. It replaced Kalker's active set with a secant on
-  the shift, whose sets cycled at n = 64 on the coupled pairs.
+  the shift, whose sets cycled at n = 64 on the coupled pairs. Displacement
+  control (``s_x`` prescribed): the minimum of
+  ``q.(K q)/2 + q.(u_p - v_old - s_x e_x)`` over the discs alone, Q the output;
+  gross sliding (``|Q| = k P``, no stuck cell) is reached like any other state.
 * coupling (beta != 0): the normal and tangential problems are solved in
   turn until the pressure and the shear change by less than
   ``_COUPLING_TOL`` of the pressure's scale, the shear to a tolerance that
@@ -366,6 +369,17 @@ def _lipschitz(ops: GridOperators) -> float:
     return float((0.5 * (kx + ky) + np.sqrt(0.25 * (kx - ky) ** 2 + kxy ** 2)).max())
 
 
+def _discs(z: np.ndarray, g: np.ndarray, mu: float
+           ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The projection of ``z + mu e_x`` (shape (2, m)) on the discs ``|q_i| <= g_i``; also
+    ``|z_i + mu e_x|`` and where it lies outside its disc."""
+    wx, zy = z[0] + mu, z[1]
+    r = np.hypot(wx, zy)
+    out = r > g
+    f = np.where(out, g / np.where(out, r, 1.0), 1.0)
+    return np.stack([wx * f, zy * f]), r, out
+
+
 def _project(z: np.ndarray, g: np.ndarray, target: float, mu: float
              ) -> tuple[np.ndarray, float, bool]:
     """The projection of ``z`` (shape (2, m)) on the discs ``|q_i| <= g_i`` and the force
@@ -378,12 +392,8 @@ def _project(z: np.ndarray, g: np.ndarray, target: float, mu: float
     lo, hi = -np.inf, np.inf
     q = z
     for _ in range(_PROJECT_MAX):
-        wx = zx + mu
-        r = np.hypot(wx, zy)
-        out = r > g
+        q, r, out = _discs(z, g, mu)
         rr = np.where(out, r, 1.0)
-        f = np.where(out, g / rr, 1.0)
-        q = np.stack([wx * f, zy * f])
         val = float(q[0].sum()) - target
         if abs(val) <= _FORCE_TOL * gsum:
             return q, mu, True
@@ -405,10 +415,10 @@ def _project(z: np.ndarray, g: np.ndarray, target: float, mu: float
 
 
 def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarray,
-                     force: float, v_old: np.ndarray, q_start: np.ndarray,
-                     tol: float = 0.0
+                     force: float | None, v_old: np.ndarray, q_start: np.ndarray,
+                     tol: float = 0.0, shift: float | None = None
                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool, int]:
-    """The shear for a given pressure and tangential force Q along x (force control).
+    """The shear for a given pressure and tangential force Q, or rigid shift s, along x.
 
     For a given pressure the step's conditions (stick: ``dv = 0``, ``|q| <= k p``;
     slip: ``q = -k p dv/|dv|``; ``sum q h^2 = (Q, 0)``) are those of the minimum of
@@ -419,6 +429,11 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
     when the step turns back; the step ``1/L``, ``L`` from :func:`_lipschitz`), the
     projection on the discs and the force by :func:`_project`. ``s_y = 0`` (symmetry).
 
+    With the shift ``s_x`` prescribed (displacement control) the minimum is that of
+    ``q.(K q)/2 + q.(u_p - v_old - s_x e_x)`` over the discs alone: no force constraint,
+    the projection on the discs only; Q is the output (``sum q_x h^2``), and gross
+    sliding (every cell slipping, ``|Q| = k P``) is a solution like any other.
+
     Parameters
     ----------
     ops : GridOperators
@@ -428,8 +443,9 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
         Pressure (cells with p > 0 are in contact).
     u_p : ndarray, shape (2, n, n)
         Tangential displacements the pressure causes (beta != 0), units a_max^2/R.
-    force : float
-        Q_x at the step's end (units E* a_max^3/R), ``|Q| < k P``.
+    force : float or None
+        Q_x at the step's end (units E* a_max^3/R), ``|Q| < k P``; ignored when
+        ``shift`` is given.
     v_old : ndarray, shape (2, n, n)
         Slip displacement at the step's start.
     q_start : ndarray, shape (2, n, n)
@@ -438,18 +454,22 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
         The projected-gradient step's size at which the iteration stops, relative to
         ``max k p``; at most ``_QP_TOL`` is used (a looser value: a coupled step's
         early alternations).
+    shift : float, optional
+        The prescribed rigid shift ``s_x`` at the step's end (units a_max^2/R):
+        displacement control.
 
     Returns
     -------
     q : ndarray, shape (2, n, n)
     shift : ndarray, shape (2,)
+        ``(s_x, 0)``: the force's multiplier, or the prescribed shift.
     v : ndarray, shape (2, n, n)
         Slip displacement at the step's end (``v_old`` on the stuck cells).
     stick : ndarray of bool, shape (n, n)
         Cells in contact whose slip increment is below ``_SLIP_TOL`` of the slip scale.
     converged : bool
         The iteration stopped at ``max(tol, _QP_TOL)`` within ``_QP_MAX`` iterations and
-        its last projection met the force to ``_FORCE_TOL``.
+        its last projection met the force to ``_FORCE_TOL`` (force control).
     iterations : int
     """
     n = ops.n
@@ -466,13 +486,22 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
         full[:, contact] = x
         return ops.tangential(full)[:, contact] + c
 
-    q, mu, _ = _project(q_start[:, contact], g, force / h2, 0.0)
+    if shift is None:
+        def project(z: np.ndarray, mu: float) -> tuple[np.ndarray, float, bool]:
+            return _project(z, g, force / h2, mu)
+
+        q, mu, _ = project(q_start[:, contact], 0.0)
+    else:  # the shift's term of the gradient, -s_x e_x, enters the projection as mu = t s_x
+        def project(z: np.ndarray, mu: float) -> tuple[np.ndarray, float, bool]:
+            return _discs(z, g, t * shift)[0], t * shift, True
+
+        q, mu = _discs(q_start[:, contact], g, 0.0)[0], t * shift
     y = q
     theta = 1.0
     ok = False
     it = 0
     for it in range(1, _QP_MAX + 1):
-        q_new, mu, met = _project(y - t * grad(y), g, force / h2, mu)
+        q_new, mu, met = project(y - t * grad(y), mu)
         if float(np.abs(q_new - y).max()) <= stop:
             q, ok = q_new, met
             break
@@ -483,14 +512,15 @@ def solve_tangential(ops: GridOperators, k: float, p: np.ndarray, u_p: np.ndarra
             y = q_new + ((theta - 1.0) / theta_new) * (q_new - q)
             theta = theta_new
         q = q_new
-    shift = np.array([mu / t, 0.0])  # the force's multiplier: K q + u_p - v_old = s, stuck
+    # the force's multiplier (or the prescribed shift): K q + u_p - v_old = s where stuck
+    s_vec = np.array([mu / t if shift is None else shift, 0.0])
     q_full = np.zeros((2, n, n))
     q_full[:, contact] = q
-    v = ops.tangential(q_full) + u_p - shift[:, None, None]
+    v = ops.tangential(q_full) + u_p - s_vec[:, None, None]
     dv = np.hypot(*(v - v_old))
     vscale = max(float(dv[contact].max(initial=0.0)), gscale * ops.self_tangential)
     stick = contact & (dv <= _SLIP_TOL * vscale)
-    return q_full, shift, np.where(stick, v_old, v), stick, ok, it
+    return q_full, s_vec, np.where(stick, v_old, v), stick, ok, it
 
 # ----------------------------------------------------------------------------- path
 @dataclass
@@ -620,9 +650,11 @@ def edge_radius(ops: GridOperators, field: np.ndarray, inside: np.ndarray) -> fl
     return float(0.5 * (half[0] + half[1]))
 
 
-def _step(ops: GridOperators, k: float, load: float, force: float, v_old: np.ndarray,
-          p_prev: np.ndarray, q_prev: np.ndarray, load_prev: float) -> SphereStep:
-    """One load step: the normal and tangential problems, in turn when coupled.
+def _step(ops: GridOperators, k: float, load: float, force: float | None, v_old: np.ndarray,
+          p_prev: np.ndarray, q_prev: np.ndarray, load_prev: float,
+          shift: float | None = None) -> SphereStep:
+    """One load step: the normal and tangential problems, in turn when coupled (the force
+    Q, or with ``shift`` the rigid shift, prescribed: :func:`solve_tangential`).
 
     A coupled step's alternations solve the shear to ``_INEXACT`` times the last
     alternation's change (between ``_QP_TOL`` and ``_QP_LOOSE``); the step is accepted
@@ -651,8 +683,8 @@ def _step(ops: GridOperators, k: float, load: float, force: float, v_old: np.nda
             p_new, delta, ok_n = solve_normal(ops, load, extra, p)
         if coupled:
             u_p = ops.tangential(np.zeros((2, n, n)), p_new)
-        q_new, shift, v, stick, ok_t, it = solve_tangential(ops, k, p_new, u_p, force, v_old,
-                                                            q, tol)
+        q_new, s_vec, v, stick, ok_t, it = solve_tangential(ops, k, p_new, u_p, force, v_old,
+                                                            q, tol, shift)
         iters += it
         change = max(float(np.abs(p_new - p).max()), float(np.abs(q_new - q).max())) \
             / float(p_new.max())
@@ -665,14 +697,14 @@ def _step(ops: GridOperators, k: float, load: float, force: float, v_old: np.nda
     if not np.isfinite(delta):
         w = ops.normal(p, q if coupled else None) + ops.gap0
         delta = float(w[p > 0].mean())
-    return SphereStep(p, q, v, stick, delta, shift, bool(ok), iters)
+    return SphereStep(p, q, v, stick, delta, s_vec, bool(ok), iters)
 
 
-def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: np.ndarray,
-                        keep_fields: bool = False,
-                        progress: Callable[[int, int], None] | None = None
-                        ) -> RawSphereFretting:
-    """Follow a path of (P, Q_x) values from the unloaded start.
+def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray,
+                        force: np.ndarray | None, keep_fields: bool = False,
+                        progress: Callable[[int, int], None] | None = None, *,
+                        shift: np.ndarray | None = None) -> RawSphereFretting:
+    """Follow a path of (P, Q_x) values, or of (P, s_x) values, from the unloaded start.
 
     Parameters
     ----------
@@ -681,11 +713,16 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
         Coulomb coefficient, ``0 < k < inf``.
     load, force : ndarray, shape (m,)
         P and Q_x (units E* a_max^3/R) at the end of each step; the start
-        (both 0) is not included. ``|Q| < k P`` wherever P > 0.
+        (both 0) is not included. ``|Q| < k P`` wherever P > 0. ``force`` is
+        ignored (None) when ``shift`` is given.
     keep_fields : bool
         Keep p, q, the stick set and the slip v of every step.
     progress : callable, optional
         ``progress(i, m)`` after each step.
+    shift : ndarray, shape (m,), optional
+        The prescribed rigid shift s_x (units a_max^2/R) at the end of each step
+        (displacement control, 0 where P = 0): Q_x is then the output, ``force`` of the
+        result, and may reach ``k P`` (gross sliding: no stuck cell).
 
     Returns
     -------
@@ -708,11 +745,17 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
     v = np.zeros((2, n, n))
     prev_load, prev_force = 0.0, 0.0
     fields_p, fields_q, fields_s, fields_v = [], [], [], []
+    forces = np.zeros(m)
     for i in range(m):
-        st = _step(ops, k, float(load[i]), float(force[i]), v, p, q, prev_load)
+        if shift is None:
+            st = _step(ops, k, float(load[i]), float(force[i]), v, p, q, prev_load)
+            forces[i] = force[i]
+        else:
+            st = _step(ops, k, float(load[i]), None, v, p, q, prev_load, float(shift[i]))
+            forces[i] = float(st.q[0].sum()) * h2
         j = i + 1
         w_ext = (0.5 * (prev_load + load[i]) * (st.delta - out["delta"][j - 1])
-                 + 0.5 * (prev_force + force[i]) * (st.shift[0] - shifts[j - 1, 0]))
+                 + 0.5 * (prev_force + forces[i]) * (st.shift[0] - shifts[j - 1, 0]))
         out["external_work"][j] = out["external_work"][j - 1] + w_ext
         slipping = (st.p > 0) & ~st.stick
         dv = np.hypot(*(st.v - v))
@@ -745,11 +788,11 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray, force: n
             fields_s.append(st.stick)
             fields_v.append(st.v)
         p, q, v = st.p, st.q, st.v
-        prev_load, prev_force = float(load[i]), float(force[i])
+        prev_load, prev_force = float(load[i]), float(forces[i])
         if progress is not None:
             progress(j, m)
     return RawSphereFretting(
-        load=np.concatenate(([0.0], load)), force=np.concatenate(([0.0], force)),
+        load=np.concatenate(([0.0], load)), force=np.concatenate(([0.0], forces)),
         delta=out["delta"], shift=shifts, contact_radius=radii[:, 0],
         stick_radius=radii[:, 1], stick_offset=radii[:, 2], stick_area=out["stick_area"],
         contact_area=out["contact_area"], contact_edge_radius=edge[:, 0],

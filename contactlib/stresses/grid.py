@@ -599,8 +599,12 @@ def _replay(model: Any, result: Any, n: int, steps: int) -> tuple[Any, Any]:
 
     ops = grid_operators(model, n)
     big_p = load_levels(result.load_path, steps)[0][1:] * ops.p_max
-    big_q = load_levels(result.tangential_path, steps)[0][1:] * result.friction * ops.p_max
-    return ops, run_sphere_fretting(ops, result.friction, big_p, big_q, keep_fields=True)
+    path = load_levels(result.tangential_path, steps)[0][1:]
+    if getattr(result, "tangential_displacement", False):  # the shift prescribed
+        return ops, run_sphere_fretting(ops, result.friction, big_p, None, keep_fields=True,
+                                        shift=path)
+    return ops, run_sphere_fretting(ops, result.friction, big_p,
+                                    path * result.friction * ops.p_max, keep_fields=True)
 
 
 def fretting_stresses(result: Any, step: int, x: Any, y: Any, z: Any, *,

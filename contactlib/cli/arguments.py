@@ -151,6 +151,8 @@ def validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
     }
     if args.bulk_stress is not None:
         kwargs["bulk_stress"] = to_list(args.bulk_stress)
+    if getattr(args, "tangential_displacement", False):
+        kwargs["tangential_displacement"] = True
     ratio, nu1 = parse_indenter(args.indenter_modulus, args.indenter_nu)
     if ratio != float("inf"):
         kwargs["indenter_modulus"], kwargs["indenter_nu"] = ratio, nu1
@@ -159,7 +161,9 @@ def validate_fretting(args: argparse.Namespace) -> dict[str, Any]:
         fretting_api.check_input(kwargs["geometry"], kwargs["friction"], kwargs["load_path"],
                                  kwargs["tangential_path"], kwargs["steps"], kwargs["n"],
                                  kwargs.get("bulk_stress"), kwargs["max_error"],
-                                 nu=kwargs["nu"], indenter_modulus=ratio, indenter_nu=nu1)
+                                 nu=kwargs["nu"], indenter_modulus=ratio, indenter_nu=nu1,
+                                 tangential_displacement=kwargs.get("tangential_displacement",
+                                                                    False))
     except validate.SolverLimit as exc:  # the sphere's coupled tangential load: status 3
         raise SolverLimitError(exc) from exc
     except ValueError as exc:

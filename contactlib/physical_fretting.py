@@ -10,7 +10,8 @@ frictionless half-width at the largest normal force P_max of the path; p0 =
 E* a_max/(2R); lengths in units of a_max, work in E* a_max^4/R^2 per unit length
 times L. The sphere (``geometry="sphere"``; a coupled pair, Dundurs beta != 0, with
 ``|beta| <= 0.5`` under ``|Q| <= 0.9 k P`` with ``n <= 64`` only): a_max = (3 P_max
-R/(4 E*))^(1/3), p0 = 2 E* a_max/(pi R), work in E* a_max^5/R^2.
+R/(4 E*))^(1/3), p0 = 2 E* a_max/(pi R), work in E* a_max^5/R^2. The sphere also takes
+a prescribed rigid shift in m (``tangential_displacement=True``), in units a_max^2/R inside.
 """
 
 from __future__ import annotations

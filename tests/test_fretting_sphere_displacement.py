@@ -283,3 +283,22 @@ def test_scene_key():
         lines = [line for line in info.value.problems
                  if line.startswith("scenes.d.tangential_displacement: ")]
         assert lines and text in lines[0], info.value.problems
+
+
+
+def test_stresses_replay_the_shift():
+    """contactlib.stresses.fretting_stresses runs a displacement-controlled result again
+    under its shift (not under its tangential_path read as Q): the same contact radius
+    (checked inside) and the step's shear integrates to the result's Q."""
+    from contactlib.stresses.grid import fretting_stresses
+
+    r = fretting("sphere", 0.5, K, [0, 1, 1], [0, 0, 0.15], 4, n=16,
+                 tangential_displacement=True)
+    ds = fretting_stresses(r, -1, [0.0], [0.0], [0.5], error_estimate=False)
+    assert np.isfinite(float(ds.attrs["max_von_mises"]))
+    # a force-controlled reading of the path (Q/(k P_max) = 0.15) would give another field
+    f = fretting("sphere", 0.5, K, [0, 1, 1], [0, 0, 0.15], 4, n=16, error_estimate=False)
+    other = fretting_stresses(f, -1, [0.0], [0.0], [0.5], error_estimate=False)
+    assert abs(r.force_ratio[-1] - 0.15) > 0.1
+    assert float(ds.attrs["max_von_mises"]) != pytest.approx(
+        float(other.attrs["max_von_mises"]), rel=1e-3)

@@ -3,7 +3,8 @@ accuracy against Mindlin's Q(s), Cattaneo's stick ratio and Mindlin–Deresiewic
 work, the gross-sliding cycle, the round trip through a force-controlled run, and the cost
 as a ratio to a normal-load cycle of ``history`` timed in the same run.
 
-    python benchmarks/report_fretting_sphere_displacement.py     # about 2 min
+    python benchmarks/report_fretting_sphere_displacement.py            # about 20 s
+    python benchmarks/report_fretting_sphere_displacement.py --coupled  # about 1 min
 
 Two equal bodies with nu = 0 (beta = gamma = 0: the closed forms are exact), k = 0.3, P to
 P_max, then the shift s: 0 -> s_a -> -s_a -> s_a, 4 steps a segment, through ``fretting``
@@ -12,11 +13,15 @@ sliding shift s* = 3 k P C/16 = 0.3 (C = 4). Q/(kP) = 1 - (1 - s/s*)^(3/2) below
 cycle's work is Mindlin–Deresiewicz's at x = Q(s_a)/(kP), and past s* the Masing loop with
 its sliding plateaus, W_MD(1) + 4 k P (s_a - s*). The round trip prescribes a
 force-controlled run's shifts at its points (Q* = 0.5 k P; the beta = 0 pair and the rigid
-sphere on nu = 0.3, beta = 0.286) and compares Q and c/a at the points.
+sphere on nu = 0.3, beta = 0.286) and compares Q and c/a at the points. ``--coupled``: the
+rigid sphere on nu = 0.3 under s: 0 -> 0.2 -> -0.2 -> 0.2 (Q* about 0.65-0.71 k P) at
+(n, steps) = (16, 4) and (32, 8) with their estimates, against the run refined fourfold
+from (16, 4), (64, 16): each estimate over the difference (want 1 to 3).
 """
 
 from __future__ import annotations
 
+import sys
 import time
 
 import numpy as np
@@ -76,5 +81,35 @@ def main() -> None:
               f"| {dc.max():.1e} | {d.stick_ratio_error[2:].min():.1e} |")
 
 
+def coupled() -> None:
+    path = [0, 0, 0.2, -0.2, 0.2]
+    runs = {}
+    for n, steps, est in ((16, 4, True), (32, 8, True), (64, 16, False)):
+        t0 = time.perf_counter()
+        runs[n] = fretting("sphere", 0.3, K, [0, 1, 1, 1, 1], path, steps, n=n,
+                           tangential_displacement=True, error_estimate=est)
+        print(f"n = {n}, {steps} steps: {time.perf_counter() - t0:.1f} s, converged "
+              f"{runs[n].converged.all()}, Q/kP at the points "
+              f"{np.round(runs[n].force_ratio[runs[n].point_step[2:]], 4).tolist()}")
+    truth = runs[64]
+    tp = truth.point_step[2:]
+    print("| n, steps | Q/kP: est./diff. (points 2, 3, 4) | c/a: est./diff. | cycle work: "
+          "est./diff. |")
+    print("|---|---|---|---|")
+    for n, steps in ((16, 4), (32, 8)):
+        r = runs[n]
+        pts = r.point_step[2:]
+        dq = np.abs(r.force_ratio[pts] - truth.force_ratio[tp])
+        dc = np.abs(r.stick_ratio[pts] - truth.stick_ratio[tp])
+        dw = abs(r.cycles[0][2] - truth.cycles[0][2])
+        fmt = ", ".join
+        print(f"| {n}, {steps} | {fmt(f'{v:.2g}' for v in r.force_ratio_error[2:] / dq)} "
+              f"| {fmt(f'{v:.2g}' for v in r.stick_ratio_error[2:] / dc)} "
+              f"| {r.cycles[0][3] / dw:.2g} |")
+
+
 if __name__ == "__main__":
-    main()
+    if "--coupled" in sys.argv[1:]:
+        coupled()
+    else:
+        main()

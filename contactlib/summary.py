@@ -454,8 +454,11 @@ def fretting_path_rows(ds: xr.Dataset) -> list[dict[str, object]]:
     c/a and the stick zone's offset e/a_max with their estimates, the cumulative
     frictional work and its estimate (units E* a_max^4/R^2 per unit length), the work of
     the cycle a point closes (blank elsewhere) with its estimate, and ``resolved``. A
-    value is blank where a step up to the point did not converge.
+    value is blank where a step up to the point did not converge. Under a prescribed shift
+    (the dataset's ``tangential_control`` "displacement") the shift s R/a_max^2 comes before
+    Q, and Q, the answer, is followed by its estimate.
     """
+    shifted = ds.attrs.get("tangential_control") == "displacement"
     steps = ds["point_step"].values
     conv = np.cumprod(ds["converged"].values.astype(bool)).astype(bool)
     closing = {int(j): (float(w), float(e)) for (_, j), w, e in zip(
@@ -469,9 +472,16 @@ def fretting_path_rows(ds: xr.Dataset) -> list[dict[str, object]]:
             return f"{value:{fmt}}" if ok and np.isfinite(value) else ""
 
         w, e = closing.get(i, (float("nan"), float("nan")))
+        q = float(ds["tangential_load_ratio"].values[step])
+        tangential: dict[str, object] = {"Q/(k P_max)": q}
+        if shifted:  # the shift prescribed, Q answered
+            tangential = {
+                "s R/a_max^2": float(ds["tangential_shift"].values[step]),
+                "Q/(k P_max)": cell(q),
+                "Q error estimate": cell(float(
+                    ds["tangential_load_ratio_error_estimate"].values[i]), ".2g")}
         rows.append({
-            "point": i, "P/P_max": float(ds["load_ratio"].values[step]),
-            "Q/(k P_max)": float(ds["tangential_load_ratio"].values[step]),
+            "point": i, "P/P_max": float(ds["load_ratio"].values[step]), **tangential,
             "sigma/p0": float(ds["bulk_stress"].values[step]),
             "c/a": cell(float(ds["stick_ratio"].values[step])),
             "c/a error estimate": cell(float(ds["stick_ratio_error_estimate"].values[i]), ".2g"),

@@ -221,6 +221,11 @@ def test_command_line(tmp_path, capsys):
         assert ds.tangential_shift.values[-1] == pytest.approx(0.1, abs=1e-15)
         assert 0 < ds.tangential_load_ratio.values[-1] < 1
         assert "tangential_load_ratio_error_estimate" in ds
+        from contactlib import summary
+
+        row = summary.fretting_path_rows(ds)[-1]  # the scene's table: the shift, Q, its estimate
+        assert row["s R/a_max^2"] == pytest.approx(0.1, abs=1e-15)
+        assert float(row["Q/(k P_max)"]) > 0 and float(row["Q error estimate"]) > 0
     for args, words in (
             (["--geometry", "cylinder", "--nu", "0.5", "--tangential-path", "0,0,0.1",
               "--tangential-displacement"], "datum"),

@@ -4,7 +4,9 @@
   oscillation) against the 20-point panels alone at half their width (the
   quadrature before the change, refined): rigid and coated bases, rho and
   sigma up to 1200, each function to its scale (measured <= 2e-13).
-* The rule choice: below ``span = 120`` the 20-point panels exactly as before.
+* Panels up to 0.8 wide (64 nodes: 2.56) where the oscillation allows, against
+  20-point panels of at most 0.125 (rho, sigma <= 60; measured <= 4e-14).
+* The rule choice: 20 points up to ``span = 37.5``, 64 from 42 on.
 * Both kinds in one pass: each equal bit for bit to its own pass, and the kept
   kind handed out only to a call with the same arguments and constants.
 """
@@ -38,19 +40,39 @@ def test_wide_panels_equal_the_refined_20_point_rule(monkeypatch, base, kind):
     assert np.all(np.abs(out - ref) < 1e-12 * scale)
 
 
-def test_narrow_spans_keep_the_20_point_panels():
-    """span <= 120 (max(r, s) <= 60 h): the nodes of panels min(0.25, 30/span) as before."""
+@pytest.mark.parametrize("base", BASES)
+@pytest.mark.parametrize("top", [21.0, 60.0])
+def test_wide_panels_at_small_spans(monkeypatch, base, top):
+    """Panels to MAX_PANEL = 0.8 (64 nodes: 2.56) against 20-point ones of at most 0.125."""
+    rho = np.r_[0.0, 0.7, 5.0, rng.uniform(0.0, top, 8), top]
+    sigma = np.r_[0.3, 0.3 * top, rng.uniform(0.0, top, 8), top]
+    out = thin_layer.remainders("pressure", rho, sigma, NU, base)
+    out_s = thin_layer.remainders("shear", rho, sigma, NU, base)
+    monkeypatch.setattr(thin_layer, "MAX_PANEL", 0.125)
+    monkeypatch.setattr(thin_layer, "HIGH_WIDER", 0.1)  # 20 points only
+    monkeypatch.setattr(thin_layer, "PANEL_SPAN", thin_layer.PANEL_SPAN / 2)
+    for got, kind in ((out, "pressure"), (out_s, "shear")):
+        ref = thin_layer.remainders(kind, rho, sigma, NU, base)
+        scale = np.abs(ref).max(axis=(1, 2))[:, None, None]
+        assert np.all(np.abs(got - ref) < 1e-12 * scale)  # measured <= 4e-14
+
+
+def test_rule_choice():
+    """20 points up to span 37.5 (panels of min(0.8, 30/span)); from 42 on 64 points."""
     g, w = np.polynomial.legendre.leggauss(20)
-    for span in (40.0, 120.0):
-        edges = np.linspace(0.0, thin_layer.T_MAX, int(np.ceil(thin_layer.T_MAX / 0.25)) + 1)
+    for span in (10.0, 37.5):
+        width = min(thin_layer.MAX_PANEL, thin_layer.PANEL_SPAN / span)
+        edges = np.linspace(0.0, thin_layer.T_MAX, int(np.ceil(thin_layer.T_MAX / width)) + 1)
         lo, hi = edges[:-1, None], edges[1:, None]
         t, wt = thin_layer.nodes(span)
         assert np.array_equal(t, (0.5 * (hi - lo) * g + 0.5 * (lo + hi)).ravel())
         assert np.array_equal(wt, (0.5 * (hi - lo) * w).ravel())
-    t, wt = thin_layer.nodes(2000.0)  # 64 nodes on panels of 150/2000
-    width = thin_layer.HIGH_WIDER * thin_layer.PANEL_SPAN / 2000.0
-    assert t.size == 64 * int(np.ceil(thin_layer.T_MAX / width))
-    assert abs(wt.sum() - thin_layer.T_MAX) < 1e-12
+    for span in (42.0, 60.0, 2000.0):  # 64 nodes on panels of min(2.56, 150/span)
+        t, wt = thin_layer.nodes(span)
+        width = min(thin_layer.MAX_PANEL * 64 / 20,
+                    thin_layer.HIGH_WIDER * thin_layer.PANEL_SPAN / span)
+        assert t.size == 64 * int(np.ceil(thin_layer.T_MAX / width))
+        assert abs(wt.sum() - thin_layer.T_MAX) < 1e-12
 
 
 @pytest.mark.parametrize("base", ["bonded", layer.Substrate(0.525, 0.3)])

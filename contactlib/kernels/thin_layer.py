@@ -13,9 +13,9 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
 * ``R(t)`` (:func:`contactlib.kernels.layer.remainder_transfer`) decays like
   ``t^2 exp(-2t)``: the integrals stop at ``t = 18`` (``R < 1e-13``);
 * the Bessel product oscillates with frequency up to ``rho + sigma``: composite
-  20-point Gauss-Legendre panels of width ``min(0.25, PANEL_SPAN/(rho + sigma))``
+  20-point Gauss-Legendre panels of width ``min(0.8, PANEL_SPAN/(rho + sigma))``
   (``PANEL_SPAN = 30``: ~5 periods a panel; 40 loses 7e-10 of the scale), or
-  where they need fewer nodes (``rho + sigma > 120``) 64-point panels five
+  where they need fewer nodes (mostly from ``rho + sigma = 42`` on) 64-point panels five
   times as wide (4.2 nodes a period become 2.7; six times as wide loses 5e-12),
   so the number of nodes grows like ``max(rho + sigma)`` (15,360 at a/h = 1000,
   24,000 with 20-point panels);
@@ -83,11 +83,16 @@ MEMORY_BYTES = 48e6
 # tested: tests/test_thin_layers.py (the sums against the ring tables, with PANEL_SPAN)
 _GL_ORDER = 20
 
+# tested: tests/test_thin_layer_panels.py (the sums at rho, sigma <= 60 against 20-point panels
+# of at most 0.125 wide, all bases: measured <= 4e-14 of each function's scale; 1.0: 4e-14)
+MAX_PANEL = 0.8
+"""Widest 20-point panel (in t = k h), where the oscillation allows it (rho + sigma < 38)."""
+
 # tested: tests/test_thin_layer_panels.py (the sums with these panels against the 20-point
 # ones of half their width, measured <= 2e-13 of each function's scale; 64 nodes on panels
 # of 6 PANEL_SPAN/span lose 5e-12)
 HIGH_ORDER = 64
-"""Nodes of the wide panels used where they need fewer nodes (span > 120)."""
+"""Nodes of the wide panels, used where they need fewer nodes (span >= 42)."""
 
 # tested: tests/test_thin_layer_panels.py (with HIGH_ORDER; 6.5 fails it)
 HIGH_WIDER = 5.0
@@ -138,11 +143,12 @@ def nodes(span: float, fine: float | None = None) -> tuple[Arr, Arr]:
     Returns
     -------
     t, weights : ndarray
-        On each range (below ``2 f``, above) the rule with fewer nodes of:
-        20 nodes on panels of width ``min(0.25, PANEL_SPAN/span)``, or
-        :data:`HIGH_ORDER` (64) nodes on panels :data:`HIGH_WIDER` (5) times as
-        wide for the oscillation (``min(0.8, 5 PANEL_SPAN/span)``: 36% fewer
-        nodes from ``span = 120``); below ``2 f`` also at most ``2 f/32`` wide.
+        On each range (below ``2 f``, above) the rule with fewer nodes (20 on
+        a tie) of: 20 nodes on panels of width ``min(MAX_PANEL,
+        PANEL_SPAN/span)`` (``MAX_PANEL = 0.8``), or :data:`HIGH_ORDER` (64)
+        nodes on panels :data:`HIGH_WIDER` (5) times as wide for the
+        oscillation (``min(2.56, 5 PANEL_SPAN/span)``: 36% fewer nodes from
+        ``span = 59``); below ``2 f`` also at most ``2 f/32`` wide.
     """
     span = max(float(span), 1.0)
     low = (0.0, layer_transfer.FINE_T * fine if fine is not None else 0.0)  # as the tables
@@ -152,8 +158,8 @@ def nodes(span: float, fine: float | None = None) -> tuple[Arr, Arr]:
         if hi <= lo:
             continue
         rules = [(order, min(cap, wider * PANEL_SPAN / span, fine_step))
-                 for order, cap, wider in ((_GL_ORDER, 0.25, 1.0),
-                                           (HIGH_ORDER, 0.25 * HIGH_ORDER / _GL_ORDER,
+                 for order, cap, wider in ((_GL_ORDER, MAX_PANEL, 1.0),
+                                           (HIGH_ORDER, MAX_PANEL * HIGH_ORDER / _GL_ORDER,
                                             HIGH_WIDER))]
         count = [int(np.ceil((hi - lo) / width)) for _, width in rules]
         pick = int(np.argmin([c * r[0] for c, r in zip(count, rules)]))  # (a tie: 20 nodes)

@@ -258,8 +258,8 @@ def reals_outside(lo, hi, lo_open=False, hi_open=False):
 BAD_ARGUMENT = {
     "geometry": st.one_of(junk_text.filter(lambda t: t not in ("sphere", "cylinder")),
                           st.none(), st.integers(), st.lists(st.text(), max_size=2)),
-    "method": st.one_of(junk_text.filter(lambda t: t not in api.METHODS), st.none(),
-                        st.integers()),
+    "method": st.one_of(junk_text.filter(lambda t: t not in api.METHODS),
+                        st.integers()),  # None: the default method (or the planned one)
     "nu": st.one_of(not_a_number, non_finite, reals_outside(-1.0, 0.5, lo_open=True)),
     "stick_ratio": st.one_of(wrong_type, non_finite,
                              reals_outside(0.0, 1.0)),
@@ -328,7 +328,7 @@ GOOD_SCENE = {"geometry": "sphere", "nu": 0.3, "method": "default", "n": 32,
               "stick_ratios": [0.0, 0.5], "outputs": ["k_curve"]}
 BAD_SCENE_VALUE = {
     "geometry": BAD_ARGUMENT["geometry"],
-    "method": BAD_ARGUMENT["method"],
+    "method": st.one_of(BAD_ARGUMENT["method"], st.none()),  # a scene's method: a name
     "nu": st.one_of(wrong_type, non_finite,
                     reals_outside(-1.0, 0.5, lo_open=True).filter(lambda v: abs(v) < 1e300)),
     "n": BAD_ARGUMENT["n"].filter(lambda v: not (isinstance(v, int) and abs(v) > 10**300)),

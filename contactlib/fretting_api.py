@@ -48,7 +48,7 @@ from .theory import cylinder_cycle_work
 from .threads import blas_single_threaded
 from .validate import DEFAULT_MAX_ERROR
 
-__all__ = ["FrettingResult", "fretting", "check_input", "amplitude_study", "STUDY_AMPLITUDES",
+__all__ = ["FrettingResult", "fretting", "finer_run", "check_input", "amplitude_study", "STUDY_AMPLITUDES",
            "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
            "sphere_fretting", "cylinder_cycle_work", "run_path"]
 
@@ -62,6 +62,8 @@ SPHERE_DEFAULT_N = 64  # the sphere: cells a side of [-1.2, 1.2]^2 a_max (cell a
 SPHERE_DEFAULT_STEPS = 8
 # convention: the largest grid accepted (memory and time of the FFT products)
 SPHERE_N_MAX = 256
+# convention: the cylinder's largest n (the strip has 2n elements; dense operators of order 2n)
+CYLINDER_N_MAX = 1024
 # convention: the coarsest grid the sphere's estimates use
 SPHERE_N_MIN = 16  # the coarsest grid the sphere's estimates use for a Richardson order
 # convention: the distance kept from gross sliding, relative to k P
@@ -229,8 +231,9 @@ def _check(geometry: str, friction: float, load: np.ndarray, tang: np.ndarray,
             raise ValueError(f"n: the sphere's cells a side of [-1.2, 1.2]^2 a_max must be a "
                              f"multiple of 4 in [16, {SPHERE_N_MAX}] (the estimate runs n/2), "
                              f"got {n!r}")
-    elif not (isinstance(n, (int, np.integer)) and 16 <= n <= 1024 and n % 4 == 0):
-        raise ValueError(f"n: elements over 1.2 a_max must be a multiple of 4 in [16, 1024] "
+    elif not (isinstance(n, (int, np.integer)) and 16 <= n <= CYLINDER_N_MAX and n % 4 == 0):
+        raise ValueError(f"n: elements over 1.2 a_max must be a multiple of 4 in [16, "
+                         f"{CYLINDER_N_MAX}] "
                          f"(the estimate runs n/2 and n/4), got {n!r}")
     if not (isinstance(steps, (int, np.integer)) and steps >= 4 and steps % 4 == 0):
         raise ValueError(f"steps: steps a segment must be a multiple of 4 and >= 4 "
@@ -620,6 +623,22 @@ SPHERE_COUPLED_SHIFT_REFUSAL = (
     "coupled pair with |beta| <= {bmax:g} and n <= {nmax} while |Q| stays <= {fmax:g} k P: "
     "got beta = {beta:.4g}, n = {n}{reached}, beyond the range whose coupled steps were "
     "verified. Keep the shift smaller, pass n <= {nmax}, or use a pair with beta = 0")
+
+
+def finer_run(res: FrettingResult) -> tuple[int, int]:
+    """The n and steps a segment of the next finer run that :func:`fretting` accepts.
+
+    Twice the steps, and twice n where the limit of the case allows it (the cylinder's
+    ``CYLINDER_N_MAX``, the sphere's ``SPHERE_N_MAX``, a coupled tangential load's
+    ``SPHERE_COUPLED_N_MAX``); at the limit n stays.
+    """
+    if res.geometry == "sphere":
+        tangential = np.nan_to_num(np.asarray(res.force_ratio, dtype=float))
+        coupled = res.beta != 0.0 and bool(np.any(tangential != 0.0))
+        n_max = SPHERE_COUPLED_N_MAX if coupled else SPHERE_N_MAX
+    else:
+        n_max = CYLINDER_N_MAX
+    return (2 * res.n if 2 * res.n <= n_max else res.n), 2 * res.steps
 
 
 def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int,

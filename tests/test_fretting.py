@@ -279,3 +279,26 @@ def test_tangential_compliance_changes_as_cattaneos_shift():
     assert np.all(np.isnan(r.tangential_compliance[1:steps + 1]))  # Q constant while loading
     assert r.slip.shape == r.shear.shape
     assert np.max(np.abs(r.slip[r.state == 1])) < 1e-12  # stuck: no slip but round-off
+
+
+@pytest.mark.parametrize("geometry, nu, beta, n, force, advised", [
+    ("cylinder", 0.3, 0.286, 512, 0.5, 1024),
+    ("cylinder", 0.3, 0.286, 1024, 0.5, 1024),  # at the cylinder's largest n
+    ("sphere", 0.5, 0.0, 64, 0.5, 128),  # beta = 0: to 256
+    ("sphere", 0.3, 0.286, 32, 0.5, 64),
+    ("sphere", 0.3, 0.286, 64, 0.5, 64),  # a coupled tangential load: n <= 64
+    ("sphere", 0.3, 0.286, 64, 0.0, 128),  # the coupled normal loading alone: any n
+])
+def test_the_advised_finer_run_is_one_the_tool_accepts(geometry, nu, beta, n, force,
+                                                       advised):
+    """The advice of an unresolved path names a run that fretting() accepts: twice the
+    steps, and twice n only within the case's limit (a coupled sphere stops at 64)."""
+    from types import SimpleNamespace
+
+    from contactlib.fretting_api import check_input, finer_run
+
+    res = SimpleNamespace(geometry=geometry, beta=beta, n=n, steps=8,
+                          force_ratio=np.array([0.0, 0.0, force, -force]))
+    n2, steps2 = finer_run(res)
+    assert (n2, steps2) == (advised, 16)
+    check_input(geometry, 0.3, [0, 1, 1, 1], [0, 0, force, -force], steps2, n2, nu=nu)

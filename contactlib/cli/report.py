@@ -55,8 +55,12 @@ def format_fretting(res: Any) -> str:
         lines.append(f"{failed} steps did not converge; their values "
                      "are not data")
     if not res.all_resolved:
+        from contactlib.fretting_api import finer_run
+
+        n, steps = finer_run(res)  # a run the command accepts
+        at_limit = "" if n > res.n else f" (n = {n} is the largest accepted for this case)"
         lines.append(f"not every point is resolved to max_error = {res.max_error:g}: refine "
-                     f"with --n {2 * res.n} --steps {2 * res.steps}")
+                     f"with --n {n} --steps {steps}{at_limit}")
     return "\n".join(lines)
 
 

@@ -48,7 +48,8 @@ from .theory import cylinder_cycle_work
 from .threads import blas_single_threaded
 from .validate import DEFAULT_MAX_ERROR
 
-__all__ = ["FrettingResult", "fretting", "finer_run", "check_input", "amplitude_study", "STUDY_AMPLITUDES",
+__all__ = ["FrettingResult", "fretting", "finer_run", "check_input", "amplitude_study",
+           "STUDY_AMPLITUDES",
            "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
            "sphere_fretting", "cylinder_cycle_work", "run_path"]
 

@@ -50,6 +50,7 @@ import numpy as np
 
 from .elements import Mesh, MeshStore, Store
 from .influence import apply_difference, element_integrals
+from .kernels import thin_layer
 from .kernels.disc import gauss_tiers
 
 if TYPE_CHECKING:
@@ -225,8 +226,9 @@ def operators(model: Contact, nodes: np.ndarray, x: np.ndarray,
     """
     rows = tuple(rows)
     if _split_kernels(model):  # a layer: each part with its smooth remainder
-        return (operator_part(model, nodes, x, "normal", with_w)[list(rows)],
-                operator_part(model, nodes, x, "shear", with_du=with_du)[list(rows)])
+        with thin_layer.both_kinds():  # (a thin layer's sums of both parts in one pass)
+            return (operator_part(model, nodes, x, "normal", with_w)[list(rows)],
+                    operator_part(model, nodes, x, "shear", with_du=with_du)[list(rows)])
     g = element_integrals(_joint_kernel(model, with_w, with_du), x, nodes,
                           outputs=rows + tuple(3 + k for k in rows))
     with np.errstate(invalid="ignore"):  # see operator_part: du/dx on a strip axis

@@ -19,6 +19,7 @@ import pytest
 from contactlib.kernels import layer, thin_layer
 
 NU = 0.25
+_sums = thin_layer._sums  # (the original, under monkeypatch)
 BASES = ["bonded", "smooth", layer.Substrate(0.525, 0.3), layer.Substrate(0.01, 0.3),
          layer.Substrate(1e3, 0.3)]
 rng = np.random.default_rng(7)
@@ -88,18 +89,46 @@ def test_both_kinds_in_one_pass_equal_their_own_passes(monkeypatch, base):
         own = thin_layer._sums((kind,), rho, s, NU, base, w, owner)[kind]
         assert np.array_equal(both[kind], own)
     # the operators' order: pressure computes both, shear gets the kept sums
-    assert np.array_equal(thin_layer.remainders("pressure", rho, s, NU, base, w, owner),
-                          both["pressure"])
-    assert np.array_equal(thin_layer.remainders("shear", rho, s, NU, base, w, owner),
-                          both["shear"])
-    # kept only for the same arguments and constants
+    calls = []
+    monkeypatch.setattr(thin_layer, "_sums", lambda kinds, *args: calls.append(kinds)
+                        or _sums(kinds, *args))
+    with thin_layer.both_kinds():
+        assert np.array_equal(thin_layer.remainders("pressure", rho, s, NU, base, w, owner),
+                              both["pressure"])
+        assert np.array_equal(thin_layer.remainders("shear", rho, s, NU, base, w, owner),
+                              both["shear"])
+        assert calls == [("pressure", "shear")]
+        # kept only for the same arguments and constants
+        thin_layer.remainders("pressure", rho, s, NU, base, w, owner)
+        other = thin_layer.remainders("shear", rho[:-1], s, NU, base, w, owner)
+        assert other.shape == (3, rho.size - 1, edges.size - 1)
+        scale = np.abs(both["shear"]).max()
+        assert np.abs(other - both["shear"][:, :-1]).max() < 1e-13 * scale
+        thin_layer.remainders("pressure", rho, s, NU, base, w, owner)
+        monkeypatch.setattr(thin_layer, "PANEL_SPAN", thin_layer.PANEL_SPAN / 2)
+        finer = thin_layer.remainders("shear", rho, s, NU, base, w, owner)
+        assert not np.array_equal(finer, both["shear"])
+        assert np.array_equal(finer, _sums(("shear",), rho, s, NU, base, w, owner)["shear"])
+    # outside: one kind a call, nothing kept
+    del calls[:]
     thin_layer.remainders("pressure", rho, s, NU, base, w, owner)
-    other = thin_layer.remainders("shear", rho[:-1], s, NU, base, w, owner)
-    assert other.shape == (3, rho.size - 1, edges.size - 1)
-    scale = np.abs(both["shear"]).max()
-    assert np.abs(other - both["shear"][:, :-1]).max() < 1e-13 * scale
-    thin_layer.remainders("pressure", rho, s, NU, base, w, owner)
-    monkeypatch.setattr(thin_layer, "PANEL_SPAN", thin_layer.PANEL_SPAN / 2)
-    finer = thin_layer.remainders("shear", rho, s, NU, base, w, owner)
-    assert not np.array_equal(finer, both["shear"])
-    assert np.array_equal(finer, thin_layer._sums(("shear",), rho, s, NU, base, w, owner)["shear"])
+    thin_layer.remainders("shear", rho, s, NU, base, w, owner)
+    assert calls == [("pressure",), ("shear",)]
+
+
+def test_operators_ask_for_both_kinds(monkeypatch):
+    """A coated sphere's operators at a/h = 100: one pass for both parts, each as alone."""
+    from contactlib import model as contact_model
+    from contactlib import operators
+
+    calls = []
+    monkeypatch.setattr(thin_layer, "_sums", lambda kinds, *args: calls.append(kinds)
+                        or _sums(kinds, *args))
+    geometry = contact_model.contact("sphere", NU, slab_ratio=100.0, base="elastic",
+                                     substrate_modulus=0.525, substrate_nu=0.3)
+    nodes = np.linspace(0.0, 1.0, 33)
+    p, q = operators.operators(geometry, nodes, nodes)
+    assert calls == [("pressure", "shear")]
+    assert np.array_equal(p, operators.operator_part(geometry, nodes, nodes, "normal"))
+    assert np.array_equal(q, operators.operator_part(geometry, nodes, nodes, "shear"))
+    assert calls[1:] == [("pressure",), ("shear",)]

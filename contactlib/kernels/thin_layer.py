@@ -19,8 +19,9 @@ integrals are summed directly, as the matrix product ``(J(rho_i t_q) w_q R(t_q))
   times as wide (4.2 nodes a period become 2.7; six times as wide loses 5e-12),
   so the number of nodes grows like ``max(rho + sigma)`` (15,360 at a/h = 1000,
   24,000 with 20-point panels);
-* the pressure's and the shear's element sums in one pass (shared Bessel
-  values, transfer functions and ``int_0^x J0``), the second kept for its call;
+* the pressure's and the shear's element sums in one pass where the caller asks
+  for both (:func:`both_kinds`: shared Bessel values, transfer functions and
+  ``int_0^x J0``), the second kept for its call;
 * memory: each chunk of nodes holds up to ``12 (n_s + n_r)`` values a node,
   kept under :data:`MEMORY_BYTES` (48 MB) whatever the size;
 * element sums (``weights``, ``owner``: the operators' Gauss rules over the disc
@@ -57,6 +58,8 @@ at ``rho + sigma = 2400``; zero (< 1e-13) for equal materials.
 from __future__ import annotations
 
 import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from math import factorial
 
 import numpy as np
@@ -292,13 +295,13 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
                weights: ArrayLike | None = None, owner: ArrayLike | None = None) -> Arr:
     """The remainder functions of a layer (rigid base or coated), on the grid rho x sigma.
 
-    Element sums (``weights`` given) of both kinds are summed in one pass over
-    the nodes ``t`` (they share the Bessel values of ``rho t`` and of the
-    element edges, the transfer functions and ``int_0^x J0``); the other
-    kind's sums are kept for the next call with the same arguments (the
-    operators ask for both, pressure then shear) and handed out once. Each
-    kind's sums equal those of its own pass bit for bit
-    (tests/test_thin_layer_panels.py).
+    Inside :func:`both_kinds` (the operators, which ask for both, pressure
+    then shear), element sums (``weights`` given) of both kinds are summed in
+    one pass over the nodes ``t`` (they share the Bessel values of ``rho t``
+    and of the element edges, the transfer functions and ``int_0^x J0``); the
+    other kind's sums are kept for the next call with the same arguments and
+    handed out once. Each kind's sums equal those of its own pass bit for bit
+    (tests/test_thin_layer_panels.py): only the cost depends on the context.
 
     Parameters
     ----------
@@ -327,11 +330,11 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
         raise ValueError(f"kind must be 'pressure' or 'shear', got {kind!r}")
     if not isinstance(base, layer_transfer.Substrate) and base not in layer_transfer.BASES:
         raise ValueError(f"base must be 'smooth', 'bonded' or a Substrate, got {base!r}")
-    if weights is None:  # (a grid of points: asked for one kind)
-        return _sums((kind,), rho, sigma, nu, base)[kind]
-    key = _key(rho, sigma, nu, base, weights, owner)
     kept = getattr(_KEPT, "sums", None)
     _KEPT.sums = None
+    if weights is None or not getattr(_KEPT, "depth", 0):  # (one kind asked for)
+        return _sums((kind,), rho, sigma, nu, base, weights, owner)[kind]
+    key = _key(rho, sigma, nu, base, weights, owner)
     if kept is not None and kept[0] == kind and _same(kept[1], key):
         return kept[2]
     both = _sums(tuple(_SPECS), rho, sigma, nu, base, weights, owner)
@@ -340,7 +343,23 @@ def remainders(kind: str, rho: ArrayLike, sigma: ArrayLike, nu: float, base: str
     return both[kind]
 
 
-_KEPT = threading.local()  # the other kind's sums of the last call, with its arguments
+_KEPT = threading.local()  # the other kind's sums of the last call, and both_kinds' depth
+
+
+@contextmanager
+def both_kinds() -> Iterator[None]:
+    """Context: the caller asks for both kinds' element sums (:func:`remainders`) in turn.
+
+    Each pressure (shear) call inside then sums the shear (pressure) too, in
+    the same pass, and keeps it for the next call; the kept sums are dropped
+    on leaving. Values do not depend on it, only the cost.
+    """
+    _KEPT.depth = getattr(_KEPT, "depth", 0) + 1
+    try:
+        yield
+    finally:
+        _KEPT.depth -= 1
+        _KEPT.sums = None
 
 
 def _key(rho: ArrayLike, sigma: ArrayLike, nu: float, base: str | layer_transfer.Substrate,

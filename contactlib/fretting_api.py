@@ -72,6 +72,13 @@ _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
 # tested: tests/test_fretting_sphere_displacement.py (the answered Q/(k P_max) to round-off:
 # 2e-16 in gross sliding, 4e-13 at Q = 0; the solver stops at 1e-11 of k p)
 _FORCE_FLOOR = 1e-10  # the least estimate of Q/(k P_max) under a prescribed shift
+# tested: tests/test_fretting_sphere_map.py (the stick radius per direction off by up to
+# 0.62, 0.56, 0.30, 0.28 cells at n = 16, 32, 64, 128, Cattaneo–Mindlin; 0.39, 0.37 at
+# n = 32, 64, Spence)
+_STICK_LATTICE = 0.5  # the least lattice term of a stick radius per direction, in cells
+# tested: tests/test_fretting_sphere_map.py (the contact radius per direction off by up to
+# 0.27, 0.15, 0.07, 0.14 cells at n = 16, 32, 64, 128, Hertz)
+_CONTACT_LATTICE = 0.25  # the lattice term of a contact radius per direction, in cells
 # convention: under a prescribed shift, a change of Q below this of k P_max over a step
 # (gross sliding) gives no compliance ds/dQ (NaN)
 _STILL_FORCE = 1e-9
@@ -115,6 +122,14 @@ class FrettingResult:
     ``tangential_path`` holds s R/a_max^2 at the path points, ``force_ratio`` is the
     answer, and ``force_ratio_error`` its estimate per path point (absolute, in Q/(k P_max);
     None under force control, where Q is prescribed).
+
+    The sphere's zones per direction (None for the cylinder): ``direction_angles`` (D
+    angles, radians from +x, the tangential load's direction), ``stick_radius_directions``
+    and ``contact_radius_directions`` per step and direction (units a_max, each from its
+    zone's centroid ``stick_centre`` and ``contact_centre``, (x, y) in units a_max; 0 in
+    full slip), and their estimates per path point and direction
+    ``stick_radius_directions_error`` and ``contact_radius_directions_error`` (units
+    a_max); see :func:`sphere_fretting`.
     """
 
     geometry: str
@@ -161,6 +176,13 @@ class FrettingResult:
     flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
     tangential_displacement: bool = False  # the path prescribed the shift (the sphere)
     force_ratio_error: np.ndarray | None = None  # per point, displacement control only
+    direction_angles: np.ndarray | None = None  # the sphere: (D,) radians from +x
+    stick_radius_directions: np.ndarray | None = None  # the sphere: (steps, D), a_max
+    contact_radius_directions: np.ndarray | None = None  # the sphere: (steps, D), a_max
+    stick_centre: np.ndarray | None = None  # the sphere: (steps, 2), a_max
+    contact_centre: np.ndarray | None = None  # the sphere: (steps, 2), a_max
+    stick_radius_directions_error: np.ndarray | None = None  # the sphere: (points, D)
+    contact_radius_directions_error: np.ndarray | None = None  # the sphere: (points, D)
     model: Any = field(default=None, repr=False, compare=False)  # the Contact solved
 
     @property
@@ -712,7 +734,11 @@ def _sphere_masked(raw: fsph.RawSphereFretting, displacement: bool = False
         "contact_area", "dissipation", "external_work", "stored_energy")
         + (("force",) if displacement else ())}
     shift = raw.shift if displacement else np.where(bad[:, None], np.nan, raw.shift)
-    return replace(raw, shift=shift, **nan)
+    rays = {name: np.where(bad[:, None, None], np.nan, getattr(raw, name))
+            for name in ("contact_directions", "stick_directions")}
+    rays.update({name: np.where(bad[:, None], np.nan, getattr(raw, name))
+                 for name in ("contact_centre", "stick_centre")})
+    return replace(raw, shift=shift, **nan, **rays)
 
 
 def _sphere_measures(raw: fsph.RawSphereFretting) -> tuple[np.ndarray, np.ndarray]:
@@ -740,6 +766,37 @@ def _sphere_lattice(raw: fsph.RawSphereFretting, h: float) -> np.ndarray:
         return np.where(grew & (c > 0), np.where(np.isfinite(term), term, h / a), 0.0)
 
 
+def _sphere_directions(raw: fsph.RawSphereFretting) -> tuple[np.ndarray, np.ndarray,
+                                                               np.ndarray]:
+    """The zones' radii per step and direction (units a_max): the contact's and the stick
+    zone's edge measures of :func:`contactlib.solvers.fretting_sphere.direction_radii`
+    (the stick zone's half-level measure where its edge measure is NaN), and the stick
+    zone's lattice term: the two measures' difference (a cell where one is NaN)."""
+    edge, half = raw.stick_directions[:, 0], raw.stick_directions[:, 1]
+    stick = np.where(np.isfinite(edge), edge, half)
+    lattice = np.abs(edge - half)
+    return raw.contact_directions[:, 0], stick, lattice
+
+
+def _direction_estimates(raw: fsph.RawSphereFretting, coarse: fsph.RawSphereFretting,
+                         points: np.ndarray, cpts: np.ndarray, h: float
+                         ) -> tuple[np.ndarray, np.ndarray]:
+    """Per path point and direction, the estimates of the stick zone's and the contact's
+    radii (units a_max): the difference to the ``n/2`` run plus a lattice term, which that
+    difference does not see (the edge located from cell values is off by an amount that
+    changes from cell to cell, not smoothly in n). The stick zone's: its edge and
+    half-level measures' difference, at least ``_STICK_LATTICE h``; 0 in full slip (no
+    stick zone at either grid). The contact's: ``_CONTACT_LATTICE h``."""
+    a, c, lattice = _sphere_directions(raw)
+    ca, cc, _ = _sphere_directions(coarse)
+    with np.errstate(invalid="ignore"):
+        full_slip = (c[points] == 0.0) & (cc[cpts] == 0.0)
+        term = np.where(np.isfinite(lattice[points]),
+                        np.maximum(lattice[points], _STICK_LATTICE * h), h)
+        stick_err = np.where(full_slip, 0.0, np.abs(c[points] - cc[cpts]) + term)
+    return stick_err, np.abs(a[points] - ca[cpts]) + _CONTACT_LATTICE * h
+
+
 def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: int, n: int,
                     max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
                     progress: Callable[[int, int], None] | None = None,
@@ -765,6 +822,14 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     (``displacement``) the force's estimate is its difference to the ``n/2`` run and, from
     ``n = 64``, at least half the ``n/2`` run's difference to the ``n/4`` one (its lattice
     error is not monotonic in n), and at least ``_FORCE_FLOOR`` (round-off).
+
+    The zones per direction (``stick_radius_directions``, ``contact_radius_directions``,
+    ``direction_angles``) are those of
+    :func:`contactlib.solvers.fretting_sphere.direction_radii` from each zone's centroid
+    (``stick_centre``, ``contact_centre``): the edge measure, the stick zone's half-level
+    measure where the edge has none. Their estimates: the difference to the ``n/2`` run
+    plus a lattice term, the stick zone's two measures' difference but at least
+    ``_STICK_LATTICE`` cells, the contact's ``_CONTACT_LATTICE`` cells.
 
     Parameters
     ----------
@@ -816,6 +881,7 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         # end about a cell inside an advancing edge): the two add
         ratio_err = (np.abs(ratio[points] - c_ratio[cpts])
                      + _sphere_lattice(raw, ops.h)[points])
+        dir_err = _direction_estimates(raw, coarse, points, cpts, ops.h)
         off_err = np.abs(offset[points] - c_offset[cpts])
         diss = [raw.dissipation[points], coarse.dissipation[cpts]]
         ok = bool(coarse.converged.all())
@@ -858,6 +924,8 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         orders = {}
         resolved = np.zeros(load.size, dtype=bool)
         force_err = np.full(load.size, np.nan) if displacement else None
+        dir_err = (np.full((load.size, raw.angles.size), np.nan),) * 2
+    dir_a, dir_c, _ = _sphere_directions(raw)
     a, c = raw.contact_radius, raw.stick_radius
     centre = np.where(c > 0, raw.stick_offset, np.nan)
     contact_edges = np.stack([-a, a], axis=1)
@@ -892,7 +960,11 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
         point_step=points, stick_ratio_error=ratio_err, stick_offset_error=off_err,
         dissipation_error=diss_err, resolved=resolved,
         cycles=_cycles(load, tang, sigma, raw.dissipation[points], cycle_err), orders=orders,
-        model=model, tangential_displacement=displacement, force_ratio_error=force_err)
+        model=model, tangential_displacement=displacement, force_ratio_error=force_err,
+        direction_angles=raw.angles, stick_radius_directions=dir_c,
+        stick_centre=raw.stick_centre, contact_centre=raw.contact_centre,
+        contact_radius_directions=dir_a, stick_radius_directions_error=dir_err[0],
+        contact_radius_directions_error=dir_err[1])
 
 
 # convention: the amplitudes of amplitude_study, Q*/(k P)

@@ -27,7 +27,8 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
 
     Every variable is dimensionless (``units`` "1") in the units of
     :mod:`contactlib.fretting_api`. Per step: the loads, the contact and
-    stick-zone edges, ``stick_ratio``, ``stick_offset``, the rigid
+    stick-zone edges, ``stick_ratio``, ``stick_offset`` (the sphere: also the zones' radii
+    per ``direction``, ``stick_radius_directions`` and ``contact_radius_directions``), the rigid
     displacements, the energies and the tractions; per path point: the error
     estimates and ``resolved``. The attribute ``tangential_control`` is ``"force"``
     (``tangential_path`` is Q/(k P_max)) or ``"displacement"`` (the prescribed shift
@@ -128,6 +129,35 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
         "resolved": (pd, r.resolved.astype(bool), cf_attrs(
             "path point resolved to max_error", **BOOL_FLAGS)),
     }
+    if sphere and getattr(r, "direction_angles", None) is not None:
+        coords["direction"] = ("direction", r.direction_angles, cf_attrs(
+            "direction from the zone's centroid", "radian",
+            comment="counterclockwise from +x, the tangential load's direction"))
+        coords["component"] = ("component", np.array(["x", "y"]), cf_attrs("component"))
+        rd, ptd = ("step", "direction"), ("point", "direction")
+        data["stick_centre"] = (("step", "component"), r.stick_centre, cf_attrs(
+            "stick zone centroid over a_max (x, y)",
+            comment="the cells' centroid, origin of stick_radius_directions; NaN in full "
+                    "slip or without contact"))
+        data["contact_centre"] = (("step", "component"), r.contact_centre, cf_attrs(
+            "contact centroid over a_max (x, y)",
+            comment="the cells' centroid, origin of contact_radius_directions"))
+        data["stick_radius_directions"] = (rd, r.stick_radius_directions, cf_attrs(
+            "stick zone radius along the direction over a_max",
+            comment="from stick_centre; the edge located inside the cells along the ray; "
+                    "0 in full slip; NaN without contact"))
+        data["contact_radius_directions"] = (rd, r.contact_radius_directions, cf_attrs(
+            "contact radius along the direction over a_max",
+            comment="from contact_centre; NaN without contact"))
+        data["stick_radius_directions_error_estimate"] = (
+            ptd, r.stick_radius_directions_error, cf_attrs(
+                "estimated absolute error of stick_radius_directions at the path point",
+                comment="difference to a run with n/2 cells and steps/2 plus the lattice "
+                        "term, at least half a cell"))
+        data["contact_radius_directions_error_estimate"] = (
+            ptd, r.contact_radius_directions_error, cf_attrs(
+                "estimated absolute error of contact_radius_directions at the path point",
+                comment="difference to a run with n/2 cells and steps/2"))
     if shifted:  # Q is the answer: its estimate
         data["tangential_load_ratio_error_estimate"] = (pd, r.force_ratio_error, cf_attrs(
             "estimated absolute error of tangential_load_ratio at the path point",

@@ -201,8 +201,10 @@ def physical_fretting_to_dataset(result: Any) -> xr.Dataset:
     with its SI variables (CF ``units`` "N", "m", "J") and scales as attributes.
 
     The dimensionless variables stay as they are; ``normal_force``, ``tangential_force``,
-    ``contact_edges_si``, ``stick_edges_si``, ``stick_offset_si`` and
-    ``frictional_work_si`` are the same quantities in SI, and the attributes
+    ``contact_edges_si``, ``stick_edges_si``, ``stick_offset_si``,
+    ``frictional_work_si`` (and the sphere's ``stick_radius_directions_si``,
+    ``contact_radius_directions_si``, ``stick_centre_si`` and ``contact_centre_si``) are
+    the same quantities in SI, and the attributes
     ``composite_modulus`` [Pa], ``radius``, ``length``, ``a_max`` [m], ``p0`` [Pa] and
     ``load_max`` [N] convert the rest.
     """
@@ -221,6 +223,14 @@ def physical_fretting_to_dataset(result: Any) -> xr.Dataset:
                             cf_attrs("stick zone edges", "m"))
     ds["stick_offset_si"] = (("step",), r.stick_offset * a,
                              cf_attrs("stick zone centre minus contact centre", "m"))
+    if "stick_radius_directions" in ds:  # the sphere's zones per direction
+        for name in ("stick", "contact"):
+            ds[f"{name}_radius_directions_si"] = (
+                ("step", "direction"), ds[f"{name}_radius_directions"].values * a,
+                cf_attrs(f"{name} radius along the direction", "m",
+                         comment=f"from {name}_centre_si"))
+            ds[f"{name}_centre_si"] = (("step", "component"), ds[f"{name}_centre"].values * a,
+                                       cf_attrs(f"{name} centroid (x, y)", "m"))
     ds["frictional_work_si"] = (("step",), r.dissipation * result.work_unit,
                                 cf_attrs("cumulative frictional work", "J",
                                          comment="over the cylinder's length"

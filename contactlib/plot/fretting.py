@@ -1,4 +1,5 @@
-"""Figure of the fretting amplitude study: Q-s loops and the work per cycle.
+"""Figures of fretting: the amplitude study (Q-s loops, work per cycle), a path, and the
+sphere's stick-zone map.
 
 Drawn from the dataset of :func:`contactlib.io.fretting_study_to_dataset`. As every figure
 of :mod:`contactlib.plot`, built with :class:`matplotlib.figure.Figure` inside the
@@ -17,7 +18,7 @@ from matplotlib.figure import Figure
 from contactlib.theory import cylinder_cycle_work
 from contactlib.plot.base import finish, palette, style_context
 
-__all__ = ["fig_fretting", "fig_fretting_path"]
+__all__ = ["fig_fretting", "fig_fretting_path", "fig_stick_zone_map"]
 
 # convention: the amplitudes the fretting figure draws loops for
 _LOOP_AMPLITUDES = (0.25, 0.5, 0.9)
@@ -128,4 +129,92 @@ def fig_fretting_path(ds: xr.Dataset, title: str = "") -> Figure:
         right.legend(loc="lower left")
         if title:
             fig.suptitle(title)
+        return finish(fig)
+
+
+def _map_steps(ds: xr.Dataset, steps) -> list[int]:
+    """The steps to draw: those asked, or the path points with a tangential load."""
+    if steps is not None:
+        return [int(j) for j in steps]
+    pts = ds["point_step"].values
+    q = ds["tangential_load_ratio"].values[pts]
+    return [int(j) for j in pts[(q != 0.0) & np.isfinite(q)]]
+
+
+def fig_stick_zone_map(datasets, steps=None, titles=None) -> Figure:
+    """The sphere's stick zone per direction at several steps: one panel per path.
+
+    Parameters
+    ----------
+    datasets : xarray.Dataset or sequence of them
+        From :func:`contactlib.io.fretting_to_dataset` of sphere paths (with the variables
+        ``stick_radius_directions``, ``contact_radius_directions`` and their centres);
+        one panel each.
+    steps : sequence of int, optional
+        The steps drawn in every panel (default: the path points with Q != 0).
+    titles : sequence of str, optional
+        One per panel (default: Dundurs' beta and n).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        In each panel, in units a_max with equal aspect: the stick zone's outline (its
+        radius per direction from its centroid, a closed polygon) at each step,
+        labelled with Q/kP; the contact's outline at the last step (grey); and, dashed,
+        Cattaneo–Mindlin's circle c = a (1 - Q/kP)^(1/3) at the same Q/kP (exact for
+        beta = gamma = 0), a the contact's mean radius. The arrow shows Q's direction.
+        Directions that have no radius (NaN) break the outline.
+    """
+    if isinstance(datasets, xr.Dataset):
+        datasets = [datasets]
+    for ds in datasets:
+        for name in ("stick_radius_directions", "contact_radius_directions", "direction",
+                     "stick_centre", "contact_centre"):
+            if name not in ds.variables:
+                raise ValueError(f"fig_stick_zone_map: the dataset has no variable {name!r} "
+                                 "(expected a sphere's contactlib.io.fretting_to_dataset)")
+    with style_context():
+        fig = Figure(figsize=(3.4 * len(datasets) + 1.4, 3.4))
+        axes = np.atleast_1d(fig.subplots(1, len(datasets), squeeze=False)[0])
+        colors = palette()
+        for idx_ds, (ax, ds) in enumerate(zip(axes, datasets)):
+            theta = ds["direction"].values
+            ring = np.append(theta, theta[0] + 2 * np.pi)
+            cos, sin = np.cos(ring), np.sin(ring)
+            ok = np.cumprod(ds["converged"].values.astype(bool)).astype(bool)
+            chosen = [j for j in _map_steps(ds, steps) if ok[j]]
+            with np.errstate(invalid="ignore", divide="ignore"):
+                x = ds["tangential_load_ratio"].values / ds["load_ratio"].values
+            circle = np.linspace(0.0, 2 * np.pi, 181)
+            for idx, j in enumerate(chosen):
+                r = ds["stick_radius_directions"].values[j]
+                r = np.append(r, r[0])
+                cx, cy = ds["stick_centre"].values[j]
+                color = colors[idx % len(colors)]
+                ax.plot(cx + r * cos, cy + r * sin, color=color, marker="o", markersize=2.5,
+                        gid="stick-outline", label=f"$Q/kP$ = {x[j]:.2g}")
+                a = float(np.nanmean(ds["contact_radius_directions"].values[j]))
+                c = a * (1.0 - abs(x[j])) ** (1.0 / 3.0)
+                ax.plot(c * np.cos(circle), c * np.sin(circle), color=color, lw=0.8,
+                        ls="--", gid="cattaneo-mindlin")
+            if chosen:
+                a_dir = ds["contact_radius_directions"].values[chosen[-1]]
+                a_dir = np.append(a_dir, a_dir[0])
+                ax_, ay_ = ds["contact_centre"].values[chosen[-1]]
+                ax.plot(ax_ + a_dir * cos, ay_ + a_dir * sin, color="0.45", lw=1.2,
+                        gid="contact-outline",
+                        label="contact")
+            ax.plot([], [], color="0.3", lw=0.8, ls="--", label="Cattaneo–Mindlin")
+            ax.annotate("", xy=(1.15, -1.12), xytext=(0.75, -1.12),
+                        arrowprops={"arrowstyle": "->", "color": "0.3"})
+            ax.text(0.95, -1.06, "$Q$", ha="center", va="bottom", color="0.3")
+            ax.set_aspect("equal")
+            ax.set_xlim(-1.2, 1.2)
+            ax.set_ylim(-1.2, 1.2)
+            ax.set_xlabel(r"$x / a_{max}$")
+            ax.set_ylabel(r"$y / a_{max}$")
+            ax.set_title(titles[idx_ds] if titles is not None else
+                         f"β = {float(ds.attrs['dundurs_beta']):.3g}, "
+                         f"n = {int(ds.attrs['elements'])}", fontsize="medium")
+        axes[-1].legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small")
         return finish(fig)

@@ -88,7 +88,10 @@ __all__ = [
     "GridOperators",
     "RawSphereFretting",
     "SphereStep",
+    "DIRECTIONS",
+    "direction_radii",
     "edge_radius",
+    "zone_centre",
     "grid_operators",
     "mindlin_compliance",
     "run_sphere_fretting",
@@ -569,6 +572,19 @@ class RawSphereFretting:
     q: list
     stick: list
     v: list
+    angles: np.ndarray | None = None  # (D,), radians from +x
+    contact_directions: np.ndarray | None = None  # (m + 1, 2, D): edge, half level
+    stick_directions: np.ndarray | None = None  # (m + 1, 2, D): edge, half level
+    contact_centre: np.ndarray | None = None  # (m + 1, 2): the contact rays' origin
+    stick_centre: np.ndarray | None = None  # (m + 1, 2): the stick rays' origin
+
+
+def zone_centre(ops: GridOperators, inside: np.ndarray) -> tuple[float, float]:
+    """The centroid ``(x, y)`` of a zone of cells (units a_max); NaN, NaN when empty."""
+    if not inside.any():
+        return float("nan"), float("nan")
+    i, j = np.nonzero(inside)
+    return float(ops.x[i].mean()), float(ops.x[j].mean())
 
 
 def zone_radius(ops: GridOperators, inside: np.ndarray) -> tuple[float, float]:
@@ -650,6 +666,93 @@ def edge_radius(ops: GridOperators, field: np.ndarray, inside: np.ndarray) -> fl
     return float(0.5 * (half[0] + half[1]))
 
 
+# convention: directions of the per-direction radii, from +x (the tangential load's) on
+DIRECTIONS = 24
+# convention: samples a cell along each ray (the bilinear interpolants' resolution)
+_RAY_SAMPLES = 4
+
+
+def direction_radii(ops: GridOperators, field: np.ndarray, inside: np.ndarray,
+                    angles: np.ndarray, centre: tuple[float, float] = (0.0, 0.0)
+                    ) -> tuple[np.ndarray, np.ndarray]:
+    """A zone's radius along each direction from a centre (the zone's centroid).
+
+    Along each ray from ``centre``, samples ``_RAY_SAMPLES`` a cell interpolate the cell
+    values bilinearly (between the four nearest cell centres). Two measures of the edge:
+
+    * the *edge*: from the last sample whose four cells are in the zone, ``field``
+      (vanishing linearly at the edge, as for :func:`edge_radius`) is extrapolated with
+      the sample one cell further in to its zero, at most ``sqrt(2) h`` on; on the axes
+      from a centre on the x axis this is :func:`edge_radius`'s fit along x (the rows at
+      y = +-h/2 are mirror images);
+    * the *half level*: where the bilinear interpolant of the zone's indicator (1 in, 0
+      out) first falls to 1/2: halfway between the last cell in and the first out along
+      an axis.
+
+    Vectorized over the rays and their samples.
+
+    Parameters
+    ----------
+    ops : GridOperators
+    field : ndarray, shape (n, n)
+        Vanishes linearly at the edge (``p^2``, or ``d^e``; see :func:`edge_radius`).
+    inside : ndarray of bool, shape (n, n)
+        The zone's cells.
+    angles : ndarray, shape (D,)
+        Directions (radians from +x).
+    centre : (float, float)
+        The rays' origin (units a_max).
+
+    Returns
+    -------
+    edge, half : ndarray, shape (D,)
+        Radii (units a_max); 0 for an empty zone; NaN where the centre is outside the zone
+        (a ray from it does not describe the zone), where the ray leaves the grid, or
+        where the field does not fall towards the edge (``edge`` only).
+    """
+    d = angles.size
+    if not inside.any():
+        return np.zeros(d), np.zeros(d)
+    n, h = ops.n, ops.h
+    step = h / _RAY_SAMPLES
+    t = step * np.arange(int(np.ceil(np.sqrt(2.0) * MESH_EXTENT / step)) + 1)
+    px = centre[0] + t[:, None] * np.cos(angles)[None, :]
+    py = centre[1] + t[:, None] * np.sin(angles)[None, :]
+    u, v = (px - ops.x[0]) / h, (py - ops.x[0]) / h
+    i0, j0 = np.floor(u).astype(int), np.floor(v).astype(int)
+    on = (i0 >= 0) & (i0 < n - 1) & (j0 >= 0) & (j0 < n - 1)
+    i0, j0 = np.clip(i0, 0, n - 2), np.clip(j0, 0, n - 2)
+    fx, fy = u - i0, v - j0
+    w = ((1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy)
+    corners = ((i0, j0), (i0 + 1, j0), (i0, j0 + 1), (i0 + 1, j0 + 1))
+    ins = inside.astype(float)
+    level = sum(wk * ins[c] for wk, c in zip(w, corners))
+    value = sum(wk * field[c] for wk, c in zip(w, corners))
+    # a corner of no weight (a sample on a line of centres) does not count
+    all_in = on & np.all([inside[c] | (wk < 1e-12) for wk, c in zip(w, corners)], axis=0)
+    cols = np.arange(d)
+    # half level: the first sample below 1/2, linear between it and the one before
+    below = ~on | (level < 0.5)
+    k1 = np.argmax(below, axis=0)
+    ok1 = below.any(axis=0) & (k1 > 0) & on[np.maximum(k1, 0), cols]
+    prev = level[np.maximum(k1 - 1, 0), cols]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        half = t[np.maximum(k1 - 1, 0)] + step * (prev - 0.5) / (prev - level[k1, cols])
+    half = np.where(ok1, half, np.nan)
+    # edge: the last sample with its four cells in, and the one a cell further in
+    out = ~all_in
+    k2 = np.argmax(out, axis=0) - 1
+    back = k2 - _RAY_SAMPLES
+    ok2 = out.any(axis=0) & (back >= 0) & on[np.minimum(k2 + 1, t.size - 1), cols]
+    f_in = value[np.maximum(k2, 0), cols]
+    f_back = value[np.maximum(back, 0), cols]
+    ok2 &= all_in[np.maximum(back, 0), cols] & (f_back > f_in)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ext = np.minimum(h * f_in / (f_back - f_in), np.sqrt(2.0) * h)
+    edge = np.where(ok2, t[np.maximum(k2, 0)] + ext, np.nan)
+    return edge, half
+
+
 def _step(ops: GridOperators, k: float, load: float, force: float | None, v_old: np.ndarray,
           p_prev: np.ndarray, q_prev: np.ndarray, load_prev: float,
           shift: float | None = None) -> SphereStep:
@@ -703,7 +806,8 @@ def _step(ops: GridOperators, k: float, load: float, force: float | None, v_old:
 def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray,
                         force: np.ndarray | None, keep_fields: bool = False,
                         progress: Callable[[int, int], None] | None = None, *,
-                        shift: np.ndarray | None = None) -> RawSphereFretting:
+                        shift: np.ndarray | None = None,
+                        directions: int = DIRECTIONS) -> RawSphereFretting:
     """Follow a path of (P, Q_x) values, or of (P, s_x) values, from the unloaded start.
 
     Parameters
@@ -723,6 +827,9 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray,
         The prescribed rigid shift s_x (units a_max^2/R) at the end of each step
         (displacement control, 0 where P = 0): Q_x is then the output, ``force`` of the
         result, and may reach ``k P`` (gross sliding: no stuck cell).
+    directions : int
+        Directions of the per-direction radii (:func:`direction_radii`), evenly spaced
+        from +x.
 
     Returns
     -------
@@ -737,6 +844,9 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray,
                                                 "contact_area")}
     radii = np.full((m + 1, 3), np.nan)
     edge = np.full((m + 1, 2), np.nan)
+    angles = 2.0 * np.pi * np.arange(directions) / directions
+    rays = np.full((2, m + 1, 2, directions), np.nan)
+    centres = np.full((2, m + 1, 2), np.nan)
     shifts = np.zeros((m + 1, 2))
     conv = np.ones(m + 1, dtype=bool)
     iters = np.zeros(m + 1, dtype=np.int32)
@@ -777,9 +887,14 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray,
             grew = out["stick_area"][j] > out["stick_area"][j - 1]
             with np.errstate(divide="ignore", invalid="ignore"):
                 deficit = np.clip(1.0 - np.hypot(*st.q) / (k * st.p), 0.0, 1.0)
+            power = deficit ** EDGE_EXPONENTS[0 if grew else 1]
             edge[j] = (edge_radius(ops, st.p ** 2, contact),
-                       edge_radius(ops, deficit ** EDGE_EXPONENTS[0 if grew else 1],
-                                   st.stick & contact))
+                       edge_radius(ops, power, st.stick & contact))
+            centres[0, j] = zone_centre(ops, contact)
+            centres[1, j] = zone_centre(ops, st.stick & contact)
+            rays[0, j] = direction_radii(ops, st.p ** 2, contact, angles, centres[0, j])
+            rays[1, j] = direction_radii(ops, power, st.stick & contact, angles,
+                                         centres[1, j])
         conv[j] = st.converged
         iters[j] = st.iterations
         if keep_fields:
@@ -800,4 +915,5 @@ def run_sphere_fretting(ops: GridOperators, k: float, load: np.ndarray,
         dissipation=out["dissipation"],
         external_work=out["external_work"], stored_energy=out["stored_energy"],
         converged=conv, iterations=iters, p=fields_p, q=fields_q, stick=fields_s,
-        v=fields_v)
+        v=fields_v, angles=angles, contact_directions=rays[0], stick_directions=rays[1],
+        contact_centre=centres[0], stick_centre=centres[1])

@@ -10,6 +10,14 @@ over the directions with its estimate; then the cost of the radii per direction 
 against the step's solve. About 1 min.
 
     python benchmarks/figure_fretting_stick_map.py [OUTPUT.png]
+
+``--accuracy`` instead: the largest error over the 24 directions, in cells, of the stick
+radius (and the contact's) against Cattaneo–Mindlin (equal bodies, nu = 0, Q/kP = 0.5 and
+0.9, 4 steps a segment) at n = 16, 32, 64, 128, and against Spence's 0.8831 a_max (rigid
+on nu = 0.3, Q = 0, 16 steps; history at 960 rings, docs/fretting.md) at n = 32, 64;
+the raw solver, no estimate runs. About 1 min.
+
+    python benchmarks/figure_fretting_stick_map.py --accuracy
 """
 
 from __future__ import annotations
@@ -27,6 +35,33 @@ from contactlib.plot.fretting import fig_stick_zone_map
 
 OUTPUT = sys.argv[1] if len(sys.argv) > 1 else "docs/img/fretting-stick-map.png"
 K = 0.3
+
+
+def _raw(model, n: int, load, tang, steps: int, keep: bool = False):
+    """The raw solver's run (no estimate runs) and its operators."""
+    ops = fs.grid_operators(model, n)
+    big_p = load_levels(np.array(load, float), steps)[0][1:] * ops.p_max
+    big_q = load_levels(np.array(tang, float), steps)[0][1:] * K * ops.p_max
+    return ops, fs.run_sphere_fretting(ops, K, big_p, big_q, keep_fields=keep)
+
+
+if OUTPUT == "--accuracy":
+    exact = contact("sphere", 0.0, indenter_modulus=1.0, indenter_nu=0.0)
+    print("Cattaneo-Mindlin: largest error over the directions, in cells")
+    for n in (16, 32, 64, 128):
+        ops, raw = _raw(exact, n, [0, 1, 1, 1], [0, 0, 0.5, 0.9], 4)
+        for j, x in ((8, 0.5), (12, 0.9)):
+            c = raw.stick_directions[j, 0]
+            a = raw.contact_directions[j, 0]
+            miss = np.max(np.abs(c - (1 - x) ** (1 / 3))) / ops.h
+            print(f"  n = {n:3d}, Q/kP = {x}: stick {miss:.2f}"
+                  f", contact {np.max(np.abs(a - 1.0)) / ops.h:.2f}")
+    print("Spence (Q = 0, beta = 0.286) against 0.8831 a_max: largest error, in cells")
+    for n in (32, 64):
+        ops, raw = _raw(contact("sphere", 0.3), n, [0, 1], [0, 0], 16)
+        c = raw.stick_directions[-1, 0]
+        print(f"  n = {n:3d}: stick {np.max(np.abs(c - 0.8831)) / ops.h:.2f}")
+    sys.exit(0)
 LOAD = [0, 1, 1, 1, 1, 1]
 TANG = [0, 0, 0.3, 0.5, 0.7, 0.9]
 N, STEPS = 64, 4
@@ -65,19 +100,15 @@ for name, kw in cases.items():
 
 # the cost of the radii per direction: their two calls a step against the step's solve
 # (the coupled pair's path above at n = 64, without the estimate runs)
-model = contact("sphere", 0.3)
-ops = fs.grid_operators(model, N)
-big_p = load_levels(np.array(LOAD, float), STEPS)[0][1:] * ops.p_max
-big_q = load_levels(np.array(TANG, float), STEPS)[0][1:] * K * ops.p_max
 t = time.perf_counter()
-raw = fs.run_sphere_fretting(ops, K, big_p, big_q, keep_fields=True)
-solve = (time.perf_counter() - t) / big_p.size
+ops, raw = _raw(contact("sphere", 0.3), N, LOAD, TANG, STEPS, keep=True)  # with the radii
+solve = (time.perf_counter() - t) / len(raw.p)
 t = time.perf_counter()
 for i, (p, q, st) in enumerate(zip(raw.p, raw.q, raw.stick), start=1):
     d = np.clip(1.0 - np.hypot(*q) / np.where(p > 0, K * p, 1.0), 0.0, 1.0)
     fs.direction_radii(ops, p**2, p > 0, raw.angles, tuple(raw.contact_centre[i]))
     fs.direction_radii(ops, d**2, st & (p > 0), raw.angles, tuple(raw.stick_centre[i]))
-rays = (time.perf_counter() - t) / big_p.size
+rays = (time.perf_counter() - t) / len(raw.p)
 print(f"cost a step at n = {N}: the radii per direction {1e3 * rays:.2f} ms, the step "
       f"{solve:.3f} s (ratio {rays / solve:.1e})")
 

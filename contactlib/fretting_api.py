@@ -72,12 +72,12 @@ _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
 # tested: tests/test_fretting_sphere_displacement.py (the answered Q/(k P_max) to round-off:
 # 2e-16 in gross sliding, 4e-13 at Q = 0; the solver stops at 1e-11 of k p)
 _FORCE_FLOOR = 1e-10  # the least estimate of Q/(k P_max) under a prescribed shift
-# tested: tests/test_fretting_sphere_map.py (the stick radius per direction off by up to
-# 0.62, 0.56, 0.30, 0.28 cells at n = 16, 32, 64, 128, Cattaneo–Mindlin; 0.39, 0.37 at
-# n = 32, 64, Spence)
+# measured: benchmarks/figure_fretting_stick_map.py --accuracy (the stick radius per
+# direction off by up to 0.62, 0.56, 0.30, 0.28 cells at n = 16, 32, 64, 128,
+# Cattaneo–Mindlin; 0.39, 0.36 at n = 32, 64, Spence); tests/test_fretting_sphere_map.py
 _STICK_LATTICE = 0.5  # the least lattice term of a stick radius per direction, in cells
-# tested: tests/test_fretting_sphere_map.py (the contact radius per direction off by up to
-# 0.27, 0.15, 0.07, 0.14 cells at n = 16, 32, 64, 128, Hertz)
+# measured: benchmarks/figure_fretting_stick_map.py --accuracy (the contact radius per
+# direction off by up to 0.27, 0.15, 0.07, 0.14 cells at n = 16, 32, 64, 128, Hertz)
 _CONTACT_LATTICE = 0.25  # the lattice term of a contact radius per direction, in cells
 # convention: under a prescribed shift, a change of Q below this of k P_max over a step
 # (gross sliding) gives no compliance ds/dQ (NaN)

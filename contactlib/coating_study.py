@@ -14,9 +14,8 @@ against a_max/h (a_max: the coating's frictionless Hertz radius at the peak
 load, h fixed while a grows).
 
 Only a/h within what the coated body supports is computed: the default grid
-reaches a/h = 100 for both geometries (their solves go on to 1000, the sphere's
-at about 135 s a sweep point there, beyond this study's budget; a/h beyond a
-geometry's limit would be NaN with ``covered`` False). The
+reaches a/h = 1000 for both geometries (a/h beyond a geometry's limit would be
+NaN with ``covered`` False). The
 history's mesh reaches 1.2 times the contact, and a soft substrate lets the
 contact outgrow a_max, so some a_max/h are refused: those cases are NaN with
 ``cycle_refused`` set. Nothing beyond is extrapolated.
@@ -43,7 +42,7 @@ import numpy as np
 
 from . import validate
 from .api import sweep
-from .history_api import history
+from .history_api import HistoryResult, history
 from .result import short_repr
 
 __all__ = [
@@ -64,7 +63,8 @@ __all__ = [
 DEFAULT_SUBSTRATE_MODULI = (0.5, 0.1, 10.0, 100.0)
 """E2/E1 of the study: hard coatings (E1/E2 = 2, 10) and soft ones (0.1, 0.01)."""
 # convention: the study's grid of a/h
-DEFAULT_RATIOS = (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0)
+DEFAULT_RATIOS = (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0,
+                  200.0, 500.0, 1000.0)
 # convention: the study's grid of a_max/h for the history's cycle work
 DEFAULT_HISTORY_RATIOS = (0.01, 0.1, 0.3, 1.0, 3.0, 10.0, 16.0)
 # convention: the study's stick ratios, as the layer study's
@@ -114,10 +114,16 @@ class CoatingStudy:
         Frictional work of the cycle 0 -> 1 -> 0 and its estimated relative
         error (NaN where refused).
     cycle_resolved : ndarray of bool, shape (G, M, H)
-        Every step converged and the work's estimate within :data:`HISTORY_MAX_ERROR`.
+        The history's verdict on the work (``resolved_quantities["frictional_work"]``):
+        every step converged, the work's estimate within :data:`HISTORY_MAX_ERROR` and
+        the slip zone at the top load absent or at least 12 elements wide.
     cycle_refused : ndarray of bool, shape (G, M, H)
         The history refused a_max/h (the contact on a soft substrate would
         outgrow the coated kernels).
+    cycle_status : ndarray of str, shape (G, M, H)
+        ``resolved``, ``refused (...)`` or ``unresolved (...)`` with the reason: a step
+        that did not converge, the work's largest estimate along the path, or a slip
+        zone under 12 elements at the top load.
     """
 
     __repr__ = short_repr
@@ -143,6 +149,7 @@ class CoatingStudy:
     cycle_work_error_estimate: np.ndarray
     cycle_resolved: np.ndarray
     cycle_refused: np.ndarray
+    cycle_status: np.ndarray
 
 
 def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
@@ -211,6 +218,7 @@ def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
     hshape = (len(geometries), len(moduli), len(history_ratios))
     work, work_err = np.full(hshape, np.nan), np.full(hshape, np.nan)
     work_ok, refused = np.zeros(hshape, dtype=bool), np.zeros(hshape, dtype=bool)
+    status = np.full(hshape, "resolved", dtype=object)
     for i, g in enumerate(geometries):
         for j, m in enumerate(moduli):
             body = {"base": validate.COATED_BASE, "substrate_modulus": m, "substrate_nu": nu}
@@ -236,10 +244,16 @@ def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
                     if exc.name != "slab_ratio":  # (a soft substrate); anything else is a bug
                         raise
                     refused[i, j, r] = True
+                    status[i, j, r] = "refused (contact beyond the coated kernels)"
                     continue
                 work[i, j, r] = res.frictional_work[-1]
                 work_err[i, j, r] = res.work_error_estimate[-1]
-                work_ok[i, j, r] = bool(np.all(res.converged) and res.resolved[-1])
+                # the work's own verdict (every step converged, the work within
+                # max_error of its total, a slip zone of 12 elements or none at the top
+                # load), not the last step's, which also judges the stick radius
+                work_ok[i, j, r] = bool(res.resolved_quantities["frictional_work"])
+                if not work_ok[i, j, r]:
+                    status[i, j, r] = _unresolved_why(res)
     return CoatingStudy(geometries=geometries, substrate_moduli=moduli, nu=nu,
                         ratios=tuple(float(r) for r in ratios), stick_ratios=cs, n=n,
                         covered=covered,
@@ -249,7 +263,18 @@ def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
                         history_friction=history_friction, history_n=history_n,
                         history_steps=history_steps, cycle_work=work,
                         cycle_work_error_estimate=work_err, cycle_resolved=work_ok,
-                        cycle_refused=refused)
+                        cycle_refused=refused, cycle_status=status)
+
+
+def _unresolved_why(res: HistoryResult) -> str:
+    """Why a history's work is not resolved: its first failing condition."""
+    loaded = np.asarray(res.load_ratio) > 0.0
+    largest = float(np.nanmax(np.where(loaded, res.work_error_estimate, np.nan)))
+    if not np.all(res.converged):
+        return "unresolved (a step did not converge)"
+    if not largest <= HISTORY_MAX_ERROR:
+        return f"unresolved (the work's estimate reaches {largest:.2g} along the path)"
+    return "unresolved (the slip zone at the top load spans under 12 elements)"
 
 
 def coating_rows(study: CoatingStudy) -> list[dict[str, object]]:
@@ -261,7 +286,7 @@ def coating_rows(study: CoatingStudy) -> list[dict[str, object]]:
     estimate, and ``status``: ``resolved``, ``unresolved: ...`` (the number is
     given with its estimate but is not data) or ``refused``. A value that is
     not resolved is blank. a/h beyond the study's grid up to the issue's
-    1000 gets one ``not covered`` row a geometry.
+    1000, where the grid stops short of it, gets one ``not covered`` row a geometry.
     """
     rows: list[dict[str, object]] = []
     cs = study.stick_ratios
@@ -294,16 +319,15 @@ def coating_rows(study: CoatingStudy) -> list[dict[str, object]]:
                 rows.append(row)
             for r, ratio in enumerate(study.history_ratios):
                 row = {**head, "kind": "load cycle", "a/h": ratio, **blank}
-                if study.cycle_refused[i, j, r]:
-                    row["status"] = "refused (contact beyond the coated kernels)"
-                else:
+                row["status"] = str(study.cycle_status[i, j, r])
+                if not study.cycle_refused[i, j, r]:
                     if study.cycle_resolved[i, j, r]:
                         row["work per cycle"] = float(study.cycle_work[i, j, r])
                     row["work estimate"] = float(study.cycle_work_error_estimate[i, j, r])
-                    row["status"] = ("resolved" if study.cycle_resolved[i, j, r]
-                                     else f"unresolved (estimate > {HISTORY_MAX_ERROR:g})")
                 rows.append(row)
         top = max((r for r, c in zip(study.ratios, study.covered[i]) if c), default=0.0)
+        if top >= ISSUE_RATIO_MAX:
+            continue
         rows.append({"geometry": g, "E1/E2": "", "E2/E1": "", "kind": "not covered",
                      "a/h": f"{top:g} < a/h <= {ISSUE_RATIO_MAX:g}", **blank,
                      "status": "not computed in this study: no extrapolation"})

@@ -109,3 +109,33 @@ def test_both_geometries_cover_thin_coatings():
     assert st.geometries == ("sphere", "cylinder")
     assert st.covered.tolist() == [[True], [True]]
     assert 1.0 < st.load_ratio[0, 0, 0] < 10.0 and 1.0 < st.load_ratio[1, 0, 0] < 10.0
+
+
+@pytest.mark.parametrize("geometry", ["sphere", "cylinder"])
+def test_a_grid_to_a_over_h_1000_covers_the_issues_range(geometry):
+    """A thin hard coating (E2/E1 = 0.1, a/h = 1000) carries the substrate's load: the
+    load ratio tends to E2*/E1* = 0.1 with a departure of order (h/a) ln(a/h) (about 1 %
+    here); the table then has no `not covered` row, and the figure shades nothing."""
+    from contactlib.plot.coatings import fig_coatings
+
+    st = _study(geometry, (0.1,), (1.0, 1000.0))
+    assert st.covered.all() and st.load_resolved.all()
+    assert 0.1 < st.load_ratio[0, 0, 1] < 0.1 * 1.02
+    assert not [r for r in coating_rows(st) if r["kind"] == "not covered"]
+    fig = fig_coatings(st)
+    texts = [t.get_text() for ax in fig.axes for t in ax.texts]
+    assert "not\ncovered" not in texts
+
+
+def test_a_cycle_counts_as_resolved_by_the_historys_verdict_on_the_work():
+    """The table's cycle status is the history's verdict on the work, with its reason: a
+    soft coating at a_max/h = 10 leaves a slip zone of about one element at the top load
+    (k = 0.2), which no estimate vouches for, while the half-space-like a_max/h = 0.01 is
+    resolved (at the study's n = 360, 150 steps a segment)."""
+    st = coating_study(geometries=("sphere",), substrate_moduli=(100.0,), ratios=(0.01,),
+                       stick_ratios=STICK, n=N, history_ratios=(0.01, 10.0))
+    assert st.cycle_resolved.tolist() == [[[True, False]]]
+    rows = [r for r in coating_rows(st) if r["kind"] == "load cycle"]
+    assert rows[0]["status"] == "resolved" and rows[0]["work per cycle"] != ""
+    assert rows[1]["status"].startswith("unresolved (") and rows[1]["work per cycle"] == ""
+    assert "12 elements" in rows[1]["status"] or "estimate reaches" in rows[1]["status"]

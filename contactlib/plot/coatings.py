@@ -111,18 +111,20 @@ def fig_coatings(study: Any, stick_ratio: float = 0.5) -> Figure:
             ax_w.set_ylabel(f"work per cycle (k = {fmt(study.history_friction)})")
             for ax, top in zip((ax_p, ax_k, ax_w), tops):
                 ax.set_xscale("log")
-                ax.axvspan(top, _ISSUE_MAX, color="0.88", lw=0, zorder=0)
                 ax.set_xlim(0.7 * min(ratios.min(), hratios.min() if hratios.size else 1.0),
-                            _ISSUE_MAX)
-                ax.text(np.sqrt(top * _ISSUE_MAX), 0.5, "not\ncovered",
-                        transform=ax.get_xaxis_transform(), ha="center", va="center",
-                        fontsize="x-small", color="0.35")
+                            1.4 * _ISSUE_MAX)
+                if top < _ISSUE_MAX:  # the rest of the issue's range: shaded, not drawn
+                    ax.axvspan(top, 1.4 * _ISSUE_MAX, color="0.88", lw=0, zorder=0)
+                    ax.text(np.sqrt(top * _ISSUE_MAX), 0.5, "not\ncovered",
+                            transform=ax.get_xaxis_transform(), ha="center", va="center",
+                            fontsize="x-small", color="0.35")
         for ax in axes[-1, :2]:
             ax.set_xlabel("a/h (held fixed)")
         axes[-1, 2].set_xlabel("$a_{max}/h$ (history 0 → 1 → 0)")
         handles_k = [Line2D([], [], ls="none", marker="x", color="black", ms=5,
-                            label="not resolved to 1e-3 (not drawn)"),
-                     Patch(color="0.88", label="a/h not covered (up to 1000)")]
+                            label="not resolved to 1e-3 (not drawn)")]
+        if not covered.all() or ratios.max() < _ISSUE_MAX:
+            handles_k.append(Patch(color="0.88", label="a/h not covered (up to 1000)"))
         handles_w = [Line2D([], [], color="black", marker="o", ms=3.5,
                             label="resolved to 1e-2 (bars: estimate)"),
                      Line2D([], [], ls="none", label="no point: unresolved or refused"),

@@ -1,8 +1,8 @@
 # The `coatings` target: a coating bonded to an elastic substrate (E1/E2 = 2, 10: hard
 # coatings; 0.1, 0.01: soft ones; nu = nu2 = 0.3), sphere and cylinder: the frictionless
-# load ratio and k(c/a) against a/h = 0.01 ... 100 (sphere; cylinder to 20) and the work
-# of a load cycle against a_max/h (a figure and a table; the rest of a/h <= 1000 is stated
-# as not covered). Not part of `all`: run `snakemake --cores 2 coatings`.
+# load ratio and k(c/a) against a/h = 0.01 ... 1000 (both geometries) and the work of a
+# load cycle against a_max/h = 0.01 ... 16 (a figure and a table; the cycle's a_max/h beyond
+# is stated as not covered). Not part of `all`: run `snakemake --cores 2 coatings`.
 
 
 rule coatings_study:
@@ -25,7 +25,7 @@ rule coatings_study:
     threads: 1
     resources:
         mem_mb=1000,
-        runtime=10,
+        runtime=20,
     script:
         "../scripts/coatings_study.py"
 

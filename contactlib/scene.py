@@ -60,7 +60,7 @@ _HISTORY_KEYS = ("kind", "geometry", "nu", "friction", "load_path", "steps", "n"
                  "duration", "profile", "exponent", "tangential_path", "bulk_stress",
                  "substrate_modulus", "substrate_nu", "flat_ratio", "tangential_displacement")
 # keys of a history scene that a fretting path (tangential_path) does not take: the
-# fretting solver covers the half-plane, elastic bodies only
+# fretting solvers cover the half-plane and the half-space, elastic bodies only
 _NOT_FRETTING = ("slab_ratio", "base", "relaxation", "duration", "substrate_modulus",
                  "substrate_nu")
 _PHYSICAL_KEYS = ("kind", "geometry", "radius", "length", "thickness", "base", "substrate",
@@ -545,8 +545,8 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
     for key in _NOT_FRETTING:
         if key in raw and not (key == "slab_ratio" and raw[key] == 0) \
                 and not (key == "base" and raw[key] == "smooth"):
-            bad.add(key, f"not with tangential_path: a fretting path covers the half-plane "
-                         f"(elastic bodies, slab_ratio 0) only")
+            bad.add(key, "not with tangential_path: a fretting path covers the half-plane "
+                         "and the half-space (elastic bodies, slab_ratio 0) only")
     if ks is not None and len(ks) != 1:
         bad.add("friction", f"a fretting scene (tangential_path) takes one friction "
                             f"coefficient (tangential_path is Q/(k P_max)), got {list(ks)!r}")

@@ -46,7 +46,7 @@ from .profiles import takes
 from .profiles import profile as make_profile
 from .theory import cylinder_cycle_work
 from .threads import blas_single_threaded
-from .validate import DEFAULT_MAX_ERROR
+from .validate import PATH_DEFAULT_MAX_ERROR as DEFAULT_MAX_ERROR
 
 __all__ = ["FrettingResult", "fretting", "finer_run", "check_input", "amplitude_study",
            "STUDY_AMPLITUDES",
@@ -498,7 +498,7 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         rounded flat punch (``flat_ratio`` = b/a_max); the flat punch is refused.
     max_error : float
         Accuracy for ``resolved``: of the stick ratio (absolute) and of the
-        cumulative frictional work relative to the path's total (default 1e-3, as
+        cumulative frictional work relative to the path's total (default 1e-2, as
         for :func:`contactlib.history`).
     error_estimate : bool
         Estimate the errors (default). The cylinder runs the path again on the mesh

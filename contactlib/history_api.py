@@ -96,7 +96,7 @@ MIN_N = validate.HISTORY_MIN_N
 MAX_N = validate.HISTORY_MAX_N
 MAX_STEPS = validate.MAX_STEPS  # steps a segment (about 3 min a segment at the default n)
 _MIN_SLIP_ELEMENTS = hs.MIN_SLIP_ELEMENTS  # fewer slipping elements: not resolved
-DEFAULT_MAX_ERROR = validate.DEFAULT_MAX_ERROR
+DEFAULT_MAX_ERROR = validate.PATH_DEFAULT_MAX_ERROR  # a load path's default accuracy
 # tested: tests/test_history_error.py (the estimates against a fourfold refined run at 20 and 50
 # steps a segment: below and above it)
 _MIN_ORDER_STEPS = 40  # fewer steps a segment: no run C, order 1 (C would be too coarse)
@@ -489,7 +489,7 @@ def _advice(n: int, steps: int, needs: dict[str, tuple[float, float]],
 def history(geometry: str, nu: float, friction: float, load_path: Sequence[float],
             steps: int | None = None, *, n: int | None = None, slab_ratio: float = 0.0,
             progress: Callable[[int, int], None] | None = None,
-            max_error: float = DEFAULT_MAX_ERROR, error_estimate: bool = True,
+            max_error: float | None = None, error_estimate: bool = True,
             indenter_modulus: float = math.inf,
             indenter_nu: float | None = None,
             relaxation: Sequence[Sequence[float]] | None = None,
@@ -550,7 +550,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         bound on the stick radius error (units of a_max), on the error of the
         cumulative frictional work relative to the path's total work, and on
         the energies' error relative to the path's largest external work.
-        Default 1e-3 (see the notes).
+        Default (None) 1e-2 (see the notes).
     error_estimate : bool
         Estimate the errors from an embedded coarser run (default). If False
         the estimates are NaN and ``resolved`` reflects only convergence and
@@ -650,12 +650,12 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     quantities the path resolves, and a flagged history's ``message`` names
     the n and steps that the measured orders predict will resolve it (aimed
     at ``max_error / 2``), or says that no run within ``MAX_N`` and
-    ``MAX_STEPS`` is predicted to. ``max_error`` defaults to 1e-3, as for
-    self-similar cases; the default n = 240 and 200 steps a segment give a
-    cycle's work to about 2e-3 (sphere, k = 0.2) and an element-edge stick
-    radius to half an element (0.0025 a_max), so a default history is
-    flagged at 1e-3 unless it asks for ``max_error=1e-2`` (as the workflow's
-    history scenes do).
+    ``MAX_STEPS`` is predicted to. ``max_error`` defaults to 1e-2
+    (``validate.PATH_DEFAULT_MAX_ERROR``), what the default n = 240 and 200
+    steps a segment deliver: a cycle's work to about 2e-3 (sphere, k = 0.2)
+    and an element-edge stick radius to half an element (0.0025 a_max); ask
+    ``max_error=1e-3`` (about 4 n and 4 x steps) or ``tolerance=1e-3``, which
+    plans them.
 
     Measured against the self-similar solver (sphere, nu = 0.3, monotonic
     loading): c/a within 0.25 % for c/a = 0.2 ... 0.9 at n = 120 ... 480 and
@@ -694,7 +694,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
                 raise validate.InputError(name, "None with tolerance", value,
                                           f"{name} must be None with tolerance (the plan "
                                           f"picks it), got {value!r}")
-        for name, value, default in (("max_error", max_error, DEFAULT_MAX_ERROR),
+        for name, value, default in (("max_error", max_error, None),
                                      ("error_estimate", error_estimate, True)):
             if value is not default and value != default:
                 raise validate.InputError(name, "not given with tolerance", value,
@@ -719,7 +719,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
     slab = validate.slab_ratio(slab_ratio, geometry, base, extent=validate.HISTORY_MESH_EXTENT)
     sub_modulus, sub_nu = validate.substrate(base, substrate_modulus, substrate_nu, geometry)
     progress = validate.callback("progress", progress)
-    max_error = validate.max_error(max_error)
+    max_error = validate.max_error(DEFAULT_MAX_ERROR if max_error is None else max_error)
     error_estimate = validate.flag("error_estimate", error_estimate)
     ratio, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
     prony = validate.relaxation(relaxation)

@@ -1119,7 +1119,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
                      thickness: float | str | None = None, base: str = "smooth",
                      substrate: Any = None, profile: str = "paraboloid",
                      half_angle: float | str | None = None,
-                     n: int | None = None, max_error: float = validate.DEFAULT_MAX_ERROR,
+                     n: int | None = None, max_error: float = validate.PATH_DEFAULT_MAX_ERROR,
                      error_estimate: bool = True,
                      progress: Callable[[int, int], None] | None = None,
                      _check_only: bool = False) -> PhysicalHistory:

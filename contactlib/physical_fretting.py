@@ -25,7 +25,7 @@ from . import validate
 from .fretting_api import FrettingResult, fretting
 from .physical import (contact_radius_of_load, format_si, physical_problem, validity_notes,
                        hertz_peak_pressure, parse_force_path, parse_quantity, work_scale)
-from .validate import DEFAULT_MAX_ERROR
+from .validate import PATH_DEFAULT_MAX_ERROR as DEFAULT_MAX_ERROR
 
 __all__ = ["PhysicalFretting", "physical_fretting", "parse_signed_path"]
 

@@ -476,7 +476,7 @@ class HistoryScene:
     n: int
     slab_ratio: float
     hash: str
-    max_error: float = validate.DEFAULT_MAX_ERROR
+    max_error: float = validate.PATH_DEFAULT_MAX_ERROR
     kind: str = "history"
     indenter_modulus: float = float("inf")
     indenter_nu: float | None = None
@@ -563,7 +563,7 @@ def _fretting_paths(raw: Mapping[str, Any], ks: tuple[float, ...] | None, n: Any
         return (), ()  # (nu's own problem is recorded; the sphere's check needs it)
     try:
         fretting_api.check_input(raw["geometry"], ks[0], raw["load_path"], tang, steps,
-                                 n, sigma, raw.get("max_error", validate.DEFAULT_MAX_ERROR),
+                                 n, sigma, raw.get("max_error", validate.PATH_DEFAULT_MAX_ERROR),
                                  nu=nu, indenter_modulus=ind[0], indenter_nu=ind[1],
                                  tangential_displacement=displacement)
     except ValueError as exc:
@@ -629,7 +629,7 @@ def _parse_history(name: str, raw: Mapping[str, Any]) -> HistoryScene:
         except validate.InputError as exc:
             bad.add(exc.name, str(exc))
     max_error = bad.check("max_error", validate.max_error,
-                          raw.get("max_error", validate.DEFAULT_MAX_ERROR))
+                          raw.get("max_error", validate.PATH_DEFAULT_MAX_ERROR))
     ind = _scene_indenter(raw, nu, bad)
     prony = bad.check("relaxation", validate.relaxation, raw.get("relaxation"))
     durations = bad.check("duration", validate.duration, raw.get("duration"),
@@ -732,7 +732,7 @@ def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
     if raw.get("n") is not None:
         spec["n"] = bad.check("n", validate.history_n, raw["n"])
     spec["max_error"] = bad.check("max_error", validate.max_error,
-                                  raw.get("max_error", validate.DEFAULT_MAX_ERROR))
+                                  raw.get("max_error", validate.PATH_DEFAULT_MAX_ERROR))
     if "relaxation" in raw:
         items = raw["relaxation"]
         if not isinstance(items, (list, tuple)) or not all(

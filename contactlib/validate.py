@@ -37,6 +37,7 @@ __all__ = [
     "EXTRAPOLATED_N_MULTIPLE", "SolverLimit", "SCENE_NAME_PATTERN", "scene_name",
     "RESULTS_DIR_PATTERN", "results_dir",
     "HISTORY_DEFAULT_N", "HISTORY_MIN_N", "HISTORY_MAX_N", "MAX_STEPS", "DEFAULT_MAX_ERROR",
+    "PATH_DEFAULT_MAX_ERROR",
     "number", "integer", "flag", "callback", "choice", "geometry", "method", "nu",
     "slab_ratio", "stick_ratio", "stick_ratios", "paper_multiple", "friction", "n",
     "history_n", "steps", "load_path", "max_error", "tolerance", "requirement",
@@ -271,6 +272,13 @@ MAX_STEPS = 100_000
 # convention: the accuracy a result is asked by default (docs/accuracy.md)
 DEFAULT_MAX_ERROR = 1e-3
 """Default accuracy asked of a result: a larger error estimate is not resolved."""
+
+# convention: the accuracy a load path (history, fretting) is asked by default, what its
+# default resolution delivers: a cycle's work to about 1.5e-3 at n = 240 and 200 steps a
+# segment, the stick radius to 2.5e-3 a_max (docs/accuracy.md; 1e-3 needs about 4 n and
+# 4 x steps, `history --tolerance 1e-3` plans it)
+PATH_DEFAULT_MAX_ERROR = 1e-2
+"""Default accuracy asked of a load path's steps (``history``, ``fretting``)."""
 
 SCENE_NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9_-]*$"
 """A workflow scene's name (a file name and a Snakemake wildcard value): a letter or

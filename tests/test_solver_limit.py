@@ -70,14 +70,13 @@ def test_remedies_our_own_rules_refuse_are_not_named(capsys, monkeypatch) -> Non
         ("solve", {"stick_ratio": 1.0}),
         ("history", {"friction": 0.5, "load_path": [0.0, 1.0]})]))
     argv = ["solve", "--geometry", "sphere", "--nu", "0.3", "--friction", "0.5", "--base",
-            "bonded", "--slab-ratio", "2", "--output", "out.nc", "--method=default",
-            "--tolerance"]
+            "bonded", "--slab-ratio", "2", "--output", "out.nc", "--tolerance"]
     assert cli.main(argv + ["1e-7"]) == 3
     lines = capsys.readouterr().err.splitlines()
     assert lines == [
         "contactlib: error: friction 0.5: the contact is most likely fully stuck",
         "contactlib: answer it with: contactlib solve --geometry sphere --nu 0.3 --base "
-        "bonded --slab-ratio 2 --method default --tolerance 1e-7 --stick-ratio 1 "
+        "bonded --slab-ratio 2 --tolerance 1e-7 --stick-ratio 1 "
         "--output out.nc"]
     assert cli.main(argv + ["1e-3"]) == 3
     lines = capsys.readouterr().err.splitlines()

@@ -111,7 +111,7 @@ def validate_planned_history(args: argparse.Namespace) -> dict[str, Any]:
     tol = checked(lambda v: validate.number("tolerance", v, MIN_TOLERANCE, MAX_TOLERANCE),
                  args.tolerance, to_float(args.tolerance))
     given = [o for o, v in (("--steps", args.steps), ("--n", args.n)) if v is not None]
-    if args.max_error != f"{validate.DEFAULT_MAX_ERROR:g}":
+    if args.max_error != f"{validate.PATH_DEFAULT_MAX_ERROR:g}":
         given.append("--max-error")
     if given:
         raise UsageError(f"--tolerance must be given without {', '.join(given)} (the plan "

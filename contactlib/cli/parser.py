@@ -318,13 +318,12 @@ def build_parser() -> argparse.ArgumentParser:
                       help=_OUTPUT_HELP + " (optional: without it the summary is printed "
                            "and nothing is written)")
     hist.add_argument("--max-error", metavar="E",
-                      default=f"{validate.DEFAULT_MAX_ERROR:g}",
+                      default=f"{validate.PATH_DEFAULT_MAX_ERROR:g}",
                       help="accuracy a step must reach, in (0, 1): a step whose estimated "
                            "error of the stick radius (in a_max) or relative error of the "
                            "frictional work exceeds it is flagged not resolved; "
-                           "default: %(default)s, as for solve and sweep (the default n and "
-                           "steps reach about 1 %%, so ask for 1e-2 or refine: 1e-3 needs "
-                           "about 4 n and 4 x steps)")
+                           "default: %(default)s, what the default n and steps reach (1e-3 "
+                           "needs about 4 n and 4 x steps: --tolerance 1e-3 plans them)")
     hist.add_argument("--tolerance", metavar="T", default=None,
                       help="accuracy to reach instead of --n/--steps/--max-error, in "
                            "[1e-5, 1e-2]: the path's frictional work relative to its total "

@@ -50,7 +50,7 @@ def _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus=math.
                      planned=None) -> tuple[Geometry, int, str]:
     """The problem's arguments, checked one by one with :mod:`contactlib.validate`."""
     geometry = validate.geometry(geometry)
-    method = validate.method(method)
+    method = validate.method(validate.DEFAULT_METHOD if method is None else method)
     nu = validate.nu(nu)
     base = validate.base(base, coated=True)
     slab = validate.slab_ratio(slab_ratio, geometry, base)
@@ -461,7 +461,6 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
     (0.5, True)
     """
     planned = _check_planned(tolerance, n, method)
-    method = validate.DEFAULT_METHOD if method is None else method
     geom, n, method = _validate_common(geometry, nu, n, method, slab_ratio, indenter_modulus,
                                        indenter_nu, base, profile, exponent, substrate_modulus,
                                        substrate_nu, planned)
@@ -576,7 +575,6 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     ['1.000', '1.000']
     """
     planned = _check_planned(tolerance, n, method)
-    method = validate.DEFAULT_METHOD if method is None else method
     if planned is not None and isinstance(stick_ratios, str):
         raise validate.InputError("stick_ratios", "a list of stick ratios with a tolerance "
                                   "('all' means m/n and needs a given n)", stick_ratios)

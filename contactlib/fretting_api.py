@@ -648,6 +648,12 @@ SPHERE_COUPLED_SHIFT_REFUSAL = (
     "verified. Keep the shift smaller, pass n <= {nmax}, or use a pair with beta = 0")
 
 
+def _coupled(beta: float, tangential: np.ndarray) -> bool:
+    """A tangential load on a coupled pair (beta != 0), which the coupled limits bound; the
+    coupled normal loading alone (Q = 0) is not bounded."""
+    return beta != 0.0 and bool(np.any(tangential != 0.0))
+
+
 def finer_run(res: FrettingResult) -> tuple[int, int]:
     """The n and steps a segment of the next finer run that :func:`fretting` accepts.
 
@@ -657,8 +663,7 @@ def finer_run(res: FrettingResult) -> tuple[int, int]:
     """
     if res.geometry == "sphere":
         tangential = np.nan_to_num(np.asarray(res.force_ratio, dtype=float))
-        coupled = res.beta != 0.0 and bool(np.any(tangential != 0.0))
-        n_max = SPHERE_COUPLED_N_MAX if coupled else SPHERE_N_MAX
+        n_max = SPHERE_COUPLED_N_MAX if _coupled(res.beta, tangential) else SPHERE_N_MAX
     else:
         n_max = CYLINDER_N_MAX
     return (2 * res.n if 2 * res.n <= n_max else res.n), 2 * res.steps
@@ -671,7 +676,7 @@ def _refuse_coupled(model, load: np.ndarray, tang: np.ndarray, n: int,
     n <= SPHERE_COUPLED_N_MAX). A prescribed shift (``displacement``): beta and n only; the
     force is checked after the run (:func:`_refuse_coupled_force`)."""
     beta = float(model.beta) if not model.decoupled else 0.0
-    if beta == 0.0 or not np.any(tang != 0.0):
+    if not _coupled(beta, tang):
         return beta
     if displacement:
         if n > SPHERE_COUPLED_N_MAX or abs(beta) > SPHERE_COUPLED_BETA_MAX:

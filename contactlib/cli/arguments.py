@@ -26,11 +26,15 @@ from contactlib.cli.inputs import (SolverLimitError, UsageError, checked, parse_
                                    to_list, usage)
 
 
+def _method(args: argparse.Namespace) -> str | None:
+    """``--method`` checked, or None when not given (the default, or planned)."""
+    return None if args.method is None else checked(validate.method, args.method, args.method)
+
+
 def validate_solve(args: argparse.Namespace) -> dict[str, Any]:
     """Turn raw option strings into checked keyword arguments of solve/sweep."""
     geometry = checked(validate.geometry, args.geometry, args.geometry)
-    method = None if args.method is None else checked(validate.method, args.method, args.method)
-    chosen = method or validate.DEFAULT_METHOD  # the method that runs without a tolerance
+    chosen = _method(args) or validate.DEFAULT_METHOD  # the method run without a tolerance
     n = None if args.n is None else parse_n(args.n, chosen)
     base = parse_base(args.base, coated=True)
     kwargs: dict[str, Any] = {
@@ -259,8 +263,7 @@ def validate_physical(args: argparse.Namespace) -> dict[str, Any]:
     if args.command == "solve":
         kwargs["load"] = _physical_check(physical.parse_quantity,
                                          required_value(args.load, "--load"), "force", "load")
-        method = None if args.method is None else checked(validate.method, args.method,
-                                                          args.method)
+        method = _method(args)
         kwargs.update(method=method, n=None if args.n is None
                       else parse_n(args.n, method or validate.DEFAULT_METHOD),
                       energy=not args.no_energy)

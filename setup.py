@@ -3,8 +3,8 @@ two fused steps of building the nodal operators and the fused set-up of Newton's
 
 Everything else is in pyproject.toml. The extensions are optional: where they cannot be
 built (no C compiler), contactlib uses the numpy routes of :mod:`contactlib.kernels.disc`,
-:mod:`contactlib.kernels.strip`, :func:`contactlib.influence.apply_difference` and
-:func:`contactlib.operators.restrict_nested` and
+:mod:`contactlib.kernels.strip`, :func:`contactlib.discretization.influence.apply_difference` and
+:func:`contactlib.discretization.operators.restrict_nested` and
 :func:`contactlib.solvers.default_method.newton_on_k`,
 which give the same bits, more slowly.
 """
@@ -19,5 +19,6 @@ setup(ext_modules=[
     Extension(name, sources=[source], extra_compile_args=FLAGS, optional=True)
     for name, source in (("contactlib.kernels.disc_fused", "contactlib/kernels/disc_fused.c"),
                          ("contactlib.kernels.strip_fused", "contactlib/kernels/strip_fused.c"),
-                         ("contactlib.operators_fused", "contactlib/operators_fused.c"),
-                         ("contactlib.solver_fused", "contactlib/solver_fused.c"))])
+                         ("contactlib.discretization.operators_fused",
+                          "contactlib/discretization/operators_fused.c"),
+                         ("contactlib.solvers.solver_fused", "contactlib/solvers/solver_fused.c"))])

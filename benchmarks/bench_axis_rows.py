@@ -22,7 +22,7 @@ from scipy import special
 
 from contactlib.solvers import default_method
 from contactlib.model import contact
-from contactlib.theory import beta_of_nu
+from contactlib.model.theory import beta_of_nu
 
 
 def closed_form(geometry: str, nu: float, c: float) -> float:

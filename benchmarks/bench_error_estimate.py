@@ -33,7 +33,7 @@ import numpy as np
 
 import contactlib
 from contactlib import stages
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 
 REPEAT = 3
 

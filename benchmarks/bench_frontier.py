@@ -64,11 +64,11 @@ from contactlib import stages
 from contactlib.solvers import default_method
 from contactlib.accuracy import predicted_error
 from contactlib.solvers.default_method import REFINED_FINAL_STEP, difference_rows, solve_default
-from contactlib.elements import graded_mesh
+from contactlib.discretization.elements import graded_mesh
 from contactlib.solvers.extrapolated_method import (BAND_FROM_N, log_noise, quadrature_noise,
                                                     solve_extrapolated)
 from contactlib.model import contact
-from contactlib.operators import nodal_operator_part, nodal_operators
+from contactlib.discretization.operators import nodal_operator_part, nodal_operators
 
 REPEAT = 3
 RATIOS = list(np.round(np.linspace(0.02, 0.98, 12), 4))
@@ -196,7 +196,7 @@ CHILD = """
 import resource, sys
 from contactlib.solvers.extrapolated_method import solve_extrapolated
 from contactlib.model import contact
-from contactlib.theory import uncoupled_friction
+from contactlib.model.theory import uncoupled_friction
 c = float(sys.argv[2])
 s = solve_extrapolated(contact("sphere", 0.4999999), c, int(sys.argv[1]), work=False)
 err = s.k / float(uncoupled_friction("sphere", 0.4999999, c)) - 1.0

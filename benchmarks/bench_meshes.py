@@ -6,8 +6,8 @@ A sweep with error estimates (:func:`contactlib.stages.solve_cases`, sphere,
 nu = 0.3, K stick ratios in [0.05, 0.95], default n = 256) asks for each
 graded mesh several times: the fine mesh for its operators and its solve,
 the nested n/2 and n/4 meshes for the estimate. The sweep's
-:class:`~contactlib.operators.StickBlocks` carries a
-:class:`~contactlib.elements.MeshStore` that builds each distinct mesh once
+:class:`~contactlib.discretization.operators.StickBlocks` carries a
+:class:`~contactlib.discretization.elements.MeshStore` that builds each distinct mesh once
 (there is no process-wide cache). This runs the same sweep R times (default
 2) each way, alternating: with the store as it is, and with a store that
 builds every requested mesh again; it prints the mesh requests, the meshes
@@ -24,9 +24,9 @@ import time
 import numpy as np
 
 from contactlib import stages
-from contactlib.elements import MeshStore, graded_mesh
+from contactlib.discretization.elements import MeshStore, graded_mesh
 from contactlib.model import contact
-from contactlib.operators import StickBlocks
+from contactlib.discretization.operators import StickBlocks
 
 
 class _Rebuild(MeshStore):

@@ -54,7 +54,7 @@ import numpy as np
 
 import contactlib
 from contactlib.solvers.default_method import solve_default
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 
 NU = 0.3
 GEOM = Geometry("sphere", NU)

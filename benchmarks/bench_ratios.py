@@ -49,8 +49,8 @@ from scipy import linalg, special
 
 import contactlib
 from contactlib.solvers.default_method import operator_part, solve_default
-from contactlib.elements import graded_mesh
-from contactlib.geometry import Geometry
+from contactlib.discretization.elements import graded_mesh
+from contactlib.model.geometry import Geometry
 from contactlib.kernels import disc, strip
 
 REPEAT = 3

@@ -18,7 +18,7 @@ import numpy as np
 from scipy import linalg
 
 from contactlib import solve
-from contactlib.elements import graded_mesh
+from contactlib.discretization.elements import graded_mesh
 
 
 def main(ns: list[int]) -> None:

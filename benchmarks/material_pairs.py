@@ -16,7 +16,7 @@ from __future__ import annotations
 import argparse
 
 from contactlib import solve
-from contactlib.materials import pair
+from contactlib.model.materials import pair
 
 PAIRS = [
     ("steel", "aluminium"), ("aluminium", "steel"),

@@ -21,7 +21,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import sys
 
 import contactlib
-from contactlib.theory import uncoupled_friction
+from contactlib.model.theory import uncoupled_friction
 
 RATIOS = [1e-8, 1e-6, 1e-4, 1e-2, 0.5, 0.99, 0.999, 0.9999, 0.99999]
 NUS = [-0.99, -0.5, 0.0, 0.3, 0.499]

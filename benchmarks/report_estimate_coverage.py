@@ -34,7 +34,7 @@ import numpy as np
 
 from contactlib.solvers.extrapolated_method import log_noise, solve_extrapolated, truncation_factor
 from contactlib.model import contact
-from contactlib.theory import uncoupled_friction
+from contactlib.model.theory import uncoupled_friction
 
 NU = 0.4999999
 RATIOS = (0.005, 0.02, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95, 0.97, 0.98, 0.99)

@@ -28,7 +28,7 @@ import numpy as np  # noqa: E402
 
 from contactlib import fretting, history  # noqa: E402
 from contactlib.solvers.fretting_solver import EDGE_FIT, EDGE_SKIP  # noqa: E402
-from contactlib.theory import cylinder_cycle_work  # noqa: E402
+from contactlib.model.theory import cylinder_cycle_work  # noqa: E402
 
 K = 0.3
 PATH = [0, 1, 1, 1, 1, 1]

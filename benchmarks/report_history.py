@@ -27,7 +27,7 @@ import numpy as np  # noqa: E402
 
 from contactlib.solvers import history_solver as hs  # noqa: E402
 from contactlib import solve  # noqa: E402
-from contactlib.geometry import Geometry  # noqa: E402
+from contactlib.model.geometry import Geometry  # noqa: E402
 from contactlib import history  # noqa: E402
 
 NU = 0.3

@@ -40,7 +40,7 @@ import numpy as np
 from contactlib.solvers.extrapolated_method import (extrapolate, extrapolate_with_log,
                                                    solve_extrapolated)
 from contactlib.model import contact
-from contactlib.theory import uncoupled_friction
+from contactlib.model.theory import uncoupled_friction
 
 # the method's own extrapolations, by the number of consecutive levels they take
 KINDS = {"2+3+4": (4, lambda v: extrapolate(v)[0]), "2+3L+3+4": (5, extrapolate_with_log)}

@@ -60,7 +60,7 @@ def _worker(group: str, draws: int) -> None:
     from contactlib.accuracy import default_noise, estimate
     from contactlib.solvers.extrapolated_method import quadrature_noise, solve_extrapolated
     from contactlib.model import contact
-    from contactlib.theory import uncoupled_friction
+    from contactlib.model.theory import uncoupled_friction
 
     arch = ",".join(str(i.get("architecture")) for i in threadpoolctl.threadpool_info())
     for geometry, c0 in CASES[group]:

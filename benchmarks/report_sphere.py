@@ -12,8 +12,8 @@ import numpy as np
 
 from contactlib import solve
 from contactlib.solvers.default_method import solve_default
-from contactlib.geometry import Geometry
-from contactlib.theory import hertz_pressure
+from contactlib.model.geometry import Geometry
+from contactlib.model.theory import hertz_pressure
 
 
 def frictionless() -> None:

@@ -144,7 +144,7 @@ def _five_level_estimate(half_space: bool, stick_ratios: np.ndarray, n: int) -> 
     where the method does not extrapolate from five levels (below n = 1024, n not a multiple
     of 512, a layer, c/a <= 1e-4 or >= 1 - 5e-4)."""
     from .solvers.default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW
-    from .elements import graded_mesh
+    from .discretization.elements import graded_mesh
     from .solvers.extrapolated_method import LOG_LEVEL_FROM_N, log_noise
 
     if (n < LOG_LEVEL_FROM_N or n % LOG_N_MULTIPLE or not half_space
@@ -164,7 +164,7 @@ def _extrapolated_truncation(stick_ratios: np.ndarray, n: int) -> float:
 
 def _extrapolated_noise(stick_ratio: float, n: int) -> float:
     """The quadrature-noise part of the extrapolated method's model at one stick ratio."""
-    from .elements import graded_mesh
+    from .discretization.elements import graded_mesh
     from .solvers.extrapolated_method import BAND_FROM_N, quadrature_noise
 
     return float(quadrature_noise(graded_mesh(n, stick_ratio), band=n >= BAND_FROM_N))
@@ -197,7 +197,7 @@ def default_noise(geometry: Contact, stick_ratio: float, n: int) -> float:
     layer (not measured).
     """
     from .solvers.default_method import AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N
-    from .elements import graded_mesh
+    from .discretization.elements import graded_mesh
     from .solvers.extrapolated_method import quadrature_noise
 
     c = float(stick_ratio)

@@ -16,12 +16,13 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from . import profiles, stages, validate
+from .model import profiles
+from . import stages, validate
 from .solvers.default_method import DiscreteSolution, solve_default
 from .discrete import SelfSimilarSolution
-from .geometry import Geometry
+from .model.geometry import Geometry
 from .model import accepts_model
-from .operators import StickBlocks
+from .discretization.operators import StickBlocks
 from .result import CaseRecord, Solution
 from .threads import blas_single_threaded
 
@@ -412,7 +413,7 @@ def solve(geometry: str, nu: float, *, stick_ratio: float | None = None,
         is predicted to meet it (e.g. 1e-6 at c/a = 0.9999); with
         stick_ratio, not friction; paraboloid only.
     profile : {"paraboloid", "cone", "power"}
-        The indenter's shape h ~ r^d (:mod:`contactlib.profiles`): ``"paraboloid"``
+        The indenter's shape h ~ r^d (:mod:`contactlib.model.profiles`): ``"paraboloid"``
         (default, Hertz, d = 2), ``"cone"`` (d = 1; a wedge for the cylinder) or
         ``"power"`` with ``exponent``. Other profiles take the default method; their
         ``load_ratio`` is P over the profile's own frictionless load, the pressure is in
@@ -568,7 +569,7 @@ def sweep(geometry: str, nu: float, stick_ratios: str | Sequence[float] = "all",
     Near incompressibility (beta -> 0) the uncoupled closed form is exact:
 
     >>> from contactlib import sweep
-    >>> from contactlib.theory import uncoupled_friction
+    >>> from contactlib.model.theory import uncoupled_friction
     >>> sols = sweep("sphere", 0.499, [0.25, 0.5], n=64)
     >>> [f"{s.friction_coefficient / uncoupled_friction('sphere', 0.499, s.stick_ratio):.3f}"
     ...  for s in sols]

@@ -27,7 +27,7 @@ import numpy as np
 import xarray as xr
 
 from . import api
-from .indenter import indenter
+from .model.indenter import indenter
 
 __all__ = ["study", "Study", "trade_table", "QUANTITIES", "richardson", "converged_richardson",
            "MIN_ORDER"]

@@ -23,7 +23,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from .elements import Mesh
+from .discretization.elements import Mesh
 from .model import Contact
 from .result import short_repr
 

@@ -12,8 +12,8 @@ when the contact radius grows by da is a (2U - xi U') da (Eq. 18), so that
 in units E* = a = R = 1 where q and s = 2u - xi du/dxi are the traction and
 slip rate at a = 1. ``du/dxi`` comes from the exact derivative kernels, not
 from differences of nodal displacements. The factor and the power are the
-indenter's (:attr:`contactlib.indenter.Indenter.work_factor`,
-:attr:`~contactlib.indenter.Indenter.work_weight_power`).
+indenter's (:attr:`contactlib.model.indenter.Indenter.work_factor`,
+:attr:`~contactlib.model.indenter.Indenter.work_weight_power`).
 
 Incremental steps (:mod:`contactlib.solvers.history_solver`)
 ----------------------------------------------------

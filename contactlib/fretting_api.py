@@ -42,9 +42,9 @@ from . import validate
 from .history_api import load_levels
 from .solvers.history_solver import ORDER_MAX, measured_order
 from .model import contact
-from .profiles import takes
-from .profiles import profile as make_profile
-from .theory import cylinder_cycle_work
+from .model.profiles import takes
+from .model.profiles import profile as make_profile
+from .model.theory import cylinder_cycle_work
 from .threads import blas_single_threaded
 from .validate import PATH_DEFAULT_MAX_ERROR as DEFAULT_MAX_ERROR
 
@@ -171,7 +171,7 @@ class FrettingResult:
     resolved: np.ndarray
     cycles: tuple[tuple[int, int, float, float], ...]
     orders: dict[str, float]
-    profile: str = "paraboloid"  # the indenter's profile (contactlib.profiles)
+    profile: str = "paraboloid"  # the indenter's profile (contactlib.model.profiles)
     exponent: float = 2.0
     flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
     tangential_displacement: bool = False  # the path prescribed the shift (the sphere)

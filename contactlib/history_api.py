@@ -81,9 +81,10 @@ from typing import Callable, Sequence
 import numpy as np
 
 from .solvers import history_solver as hs
-from . import load_paths, profiles, validate
+from .model import load_paths, profiles
+from . import validate
 from .kernels import layer
-from .body import ElasticBody
+from .model.body import ElasticBody
 from .model import Contact, accepts_model, contact
 from .result import history_repr
 from .threads import blas_single_threaded
@@ -192,7 +193,7 @@ class HistoryResult:
         The indenter's shape h ~ r^d (``"paraboloid"``, 2 by default; see
         :func:`history`).
     segment_steps : tuple of int
-        For a shape or table (:mod:`contactlib.load_paths`): the steps of each
+        For a shape or table (:mod:`contactlib.model.load_paths`): the steps of each
         segment, a monotone piece of the path (``steps`` is then the steps a
         unit of load travel); () for a list path (``steps`` each).
     load_shape : dict or None
@@ -262,11 +263,11 @@ class HistoryResult:
     work_scale: float = math.nan
     energy_scale: float = math.nan
     resolved_quantities: dict[str, bool] | None = None
-    profile: str = "paraboloid"  # the indenter's shape h ~ r^d (contactlib.profiles)
+    profile: str = "paraboloid"  # the indenter's shape h ~ r^d (contactlib.model.profiles)
     exponent: float = 2.0
     flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
     segment_steps: tuple[int, ...] = ()  # steps of each segment of a shape or table; ()
-    load_shape: dict | None = None  # the shape or table (contactlib.load_paths); None: list
+    load_shape: dict | None = None  # the shape or table (contactlib.model.load_paths); None: list
     interpolation_error: float = 0.0  # of a shape between the steps (units of P_max)
     model: Contact | None = field(default=None, repr=False, compare=False)  # what was solved
 
@@ -274,7 +275,7 @@ class HistoryResult:
         return history_repr(self)
 
     def profile_shape(self) -> profiles.Profile:
-        """The indenter's profile (:class:`contactlib.profiles.Profile`) of the run."""
+        """The indenter's profile (:class:`contactlib.model.profiles.Profile`) of the run."""
         return profiles.of_result(self)
 
     def segment_work(self) -> np.ndarray:
@@ -520,7 +521,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         "haversine", "amplitude": A, "mean": M, "frequency": f, "cycles": N}``
         (levels; f in 1 / unit of tau, needed with a relaxation only), or a
         sampled table ``{"time": [...], "load": [...]}`` (time in the unit of
-        tau); see :mod:`contactlib.load_paths`. A shape or table is cut into
+        tau); see :mod:`contactlib.model.load_paths`. A shape or table is cut into
         monotone pieces, the path segments, and its durations come from its
         times (``duration`` is then not given).
     steps : int, optional
@@ -528,7 +529,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         one-step load; default 200, :data:`contactlib.validate.HISTORY_DEFAULT_STEPS`).
         For a shape or table: steps a unit of load travel, each piece getting
         the steps its load change needs (a multiple of 4, at least
-        ``min(steps, 40)``; :func:`contactlib.load_paths.plan`).
+        ``min(steps, 40)``; :func:`contactlib.model.load_paths.plan`).
     n : int, optional
         Elements over ``[0, 1.2 a_max]`` (default 240: element size a_max/200);
         with a relaxation over ``[0, 1.2 a_inf]``, a_inf the fully crept
@@ -560,7 +561,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         ``inf``: rigid; nu1, default the body's). Scalings use the composite
         E*; slip and shear take either sign.
     relaxation : sequence of (g, tau), optional
-        A viscoelastic body (:class:`contactlib.body.ViscoelasticBody`):
+        A viscoelastic body (:class:`contactlib.model.body.ViscoelasticBody`):
         E(t)/E(0) = 1 - sum g_i (1 - exp(-t/tau_i)), g_i > 0, sum g_i < 1,
         tau_i > 0, with a constant Poisson's ratio. E* (so a_max, P_max and
         p0) is the instantaneous one, E*(0). Needs a rigid indenter.
@@ -577,7 +578,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         ``substrate_modulus`` and ``substrate_nu``, a_max/h <= 20/1.2 (elastic
         body only: a relaxation is refused on it).
     profile : {"paraboloid", "cone", "power", "flat", "rounded"}
-        The indenter's shape h ~ r^d (default the paraboloid; :mod:`contactlib.profiles`).
+        The indenter's shape h ~ r^d (default the paraboloid; :mod:`contactlib.model.profiles`).
         Then a_max is the profile's frictionless contact radius at P_max, P_max its
         frictionless load there, the pressure unit the peak pressure of the paraboloid
         with that load, and the work in units of E* (A d)^2 a_max^(2d+1) (per unit
@@ -902,7 +903,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
 
 def _shaped_plan(path: load_paths.Path, steps: int, prony: tuple, duration: object,
                  max_error: float) -> load_paths.StepPlan:
-    """The pieces and steps of a shape or table (:func:`contactlib.load_paths.plan`)."""
+    """The pieces and steps of a shape or table (:func:`contactlib.model.load_paths.plan`)."""
     if duration is not None:
         raise validate.InputError("duration", "", duration, "duration must not be given with "
                                   "a shape or table: its times give the durations")

@@ -60,8 +60,9 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from . import profiles, validate
-from .profiles import PARABOLOID, Profile
+from .model import profiles
+from . import validate
+from .model.profiles import PARABOLOID, Profile
 
 __all__ = ["physical_solve", "physical_history", "PhysicalSolution", "PhysicalHistory",
            "Material", "material", "composite_modulus", "parse_quantity", "parse_force_path",
@@ -232,7 +233,7 @@ def material(value: Any, role: str = "body") -> Material:
     Parameters
     ----------
     value : str or (E, nu)
-        A name of :func:`contactlib.materials.materials`; ``"rigid"`` for the
+        A name of :func:`contactlib.model.materials.materials`; ``"rigid"`` for the
         indenter; a pair (E, nu) with E in Pa (a number or a string with a
         unit, ``"210GPa"``), or the same as a string ``"210GPa,0.3"``.
     role : {"indenter", "body"}
@@ -243,7 +244,7 @@ def material(value: Any, role: str = "body") -> Material:
     validate.InputError
         Naming ``role``: unknown name, "rigid" for the body, bad E or nu.
     """
-    from . import materials as table_module
+    from .model import materials as table_module
 
     if isinstance(value, Material):
         if value.rigid and role != "indenter":
@@ -746,7 +747,7 @@ def physical_solve(geometry: str, radius: float | str | None, load: float | str,
         The cone's half-angle alpha in degrees (``70.3`` or ``"70.3deg"``), in
         :data:`HALF_ANGLE_RANGE`; only for the cone.
     indenter : str or (E, nu)
-        A material name (:mod:`contactlib.materials`), ``"rigid"``, or (E [Pa], nu).
+        A material name (:mod:`contactlib.model.materials`), ``"rigid"``, or (E [Pa], nu).
     body : str or (E, nu)
         The elastic body (the layer's material on a layer).
     friction, stick_ratio : float
@@ -1034,14 +1035,14 @@ def force_shape(spec: Any, name: str = "load_path") -> tuple[Any, float, float]:
     ``{"time": [s], "force": [N]}``; the levels are forces over P_max (the
     shape's mean + amplitude, the table's largest force), the times shifted
     to start at 0 (the start returned). Checked further by
-    :func:`contactlib.load_paths.load_path`.
+    :func:`contactlib.model.load_paths.load_path`.
 
     Raises
     ------
     validate.InputError
         Naming the bad key.
     """
-    from . import load_paths
+    from .model import load_paths
 
     if not isinstance(spec, dict):
         spec = dict(spec)
@@ -1138,7 +1139,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         "frequency": Hz, "cycles": number}`` (optionally ``"ramp"``, s; P_max =
         mean + amplitude), or a table ``{"time": [s, ...], "force": [N, ...]}``
         (P_max its largest force); numbers in SI or strings with units. The
-        steps and pieces are those of :mod:`contactlib.load_paths`: ``steps``
+        steps and pieces are those of :mod:`contactlib.model.load_paths`: ``steps``
         then counts steps a load travel of P_max, and a viscoelastic body's
         times are the shape's (``times`` is not given).
     friction : float
@@ -1173,7 +1174,7 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     """
     from . import history_api
 
-    from . import load_paths
+    from .model import load_paths
 
     prob = physical_problem(geometry, radius, indenter, body, length, thickness, base, substrate,
                             profile, half_angle)

@@ -192,7 +192,7 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
         with ``tangential_displacement`` the indenter's rigid shifts [m] (or with units:
         "0um,0um,2um,-2um"), 0 where the normal force is 0.
     indenter, body : str or (E, nu)
-        Named materials of the package's table (``contactlib.materials``), or moduli in
+        Named materials of the package's table (``contactlib.model.materials``), or moduli in
         Pa (or with units) with Poisson's ratios; the indenter may be ``"rigid"``.
     friction : float
         k > 0.

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from .indenter import indenter
+from .model.indenter import indenter
 
 __all__ = ["Solution", "CaseRecord", "format_fields", "short_repr", "history_repr",
            "substrate_text"]
@@ -335,7 +335,7 @@ class Solution:
         body) (irrelevant at a/h = 0).
     profile : str
         The indenter's profile: "paraboloid" (Hertz, the default), "cone" or "power"
-        (:mod:`contactlib.profiles`).
+        (:mod:`contactlib.model.profiles`).
     exponent : float
         Its exponent d, h ~ r^d (2 for the paraboloid, 1 for the cone).
     substrate_modulus, substrate_poisson_ratio : float

@@ -37,10 +37,11 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from . import accuracy, materials, profiles, validate
-from .geometry import Geometry
-from .indenter import indenter
-from .operators import parts_needed
+from . import accuracy, validate
+from .model import materials, profiles
+from .model.geometry import Geometry
+from .model.indenter import indenter
+from .discretization.operators import parts_needed
 from .result import short_repr
 from .validate import DEFAULT_OUTPUTS, OUTPUTS
 
@@ -93,7 +94,7 @@ def _profile_spec(profile: str, exponent: float | None,
 def _scene_profile(raw: Mapping[str, Any],
                    bad: "_Problems") -> tuple[str, float | None, float | None]:
     """(name, exponent, flat_ratio) of a scene's ``profile``/``exponent``/``flat_ratio``
-    keys, checked by :func:`contactlib.profiles.profile` (the spelling of ``--profile``,
+    keys, checked by :func:`contactlib.model.profiles.profile` (the spelling of ``--profile``,
     ``--exponent``, ``--flat-ratio``); exponent None unless ``power``, flat_ratio None
     unless ``rounded``. A problem is recorded under the key it concerns."""
     if not {"profile", "exponent", "flat_ratio"} & set(raw):
@@ -684,7 +685,8 @@ class PhysicalScene:
 def _parse_physical(name: str, raw: Mapping[str, Any]) -> PhysicalScene:
     """A ``physical`` scene: the keys of :func:`contactlib.physical.physical_history`, each
     checked by the physical door's own rules (units, materials, the force path)."""
-    from . import load_paths, physical
+    from .model import load_paths
+    from . import physical
 
     bad = _Problems(name)
     for key in ("profile", "exponent"):

@@ -33,9 +33,8 @@ import numpy as np
 from . import checks, energy, validate
 from .solvers.default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
-from .operators import (PARTS, StickBlocks, nodal_operators, parts_needed,
-                        restrict_with_slip_samples, slip_zone_samples)
-from .elements import Mesh, MeshStore, graded_mesh, uniform_mesh
+from .discretization.operators import (PARTS, StickBlocks, nodal_operators, parts_needed, restrict_with_slip_samples, slip_zone_samples)
+from .discretization.elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .solvers.paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import CaseRecord, Solution
@@ -103,7 +102,7 @@ def influence(geometry: Contact, method: str, n: int, stick_ratios: Sequence[flo
     dict
         Default method: ``stick_ratios`` (K,), ``sizes`` (K,) the element
         count N_i of each case's mesh (it grows toward c/a = 0 and 1, see
-        :func:`~contactlib.elements.graded_mesh`), ``nodes`` (K, N+1),
+        :func:`~contactlib.discretization.elements.graded_mesh`), ``nodes`` (K, N+1),
         N = max N_i, NaN-padded beyond N_i + 1, and ``ops``, the meshes'
         operators (3, N_i+1, N_i+1) (the w, u, du/dx at the nodes of nodal
         tractions) raveled and concatenated in the order of ``sizes``
@@ -440,7 +439,7 @@ def _coarse_solves(geometry: Contact, n: int, c: float, guess: float | None,
     """The same case on the nested meshes n/2 and n/4 (those with at least 8 elements).
 
     With the fine operators ``ops`` given, the coarse ones are restricted
-    from them (:func:`~contactlib.operators.restrict_nested`) where the meshes are nested, which costs
+    from them (:func:`~contactlib.discretization.operators.restrict_nested`) where the meshes are nested, which costs
     no kernel evaluations.
     """
     out: dict[int, DiscreteSolution] = {}

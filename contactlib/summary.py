@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 
 from . import validate
-from .indenter import indenter
+from .model.indenter import indenter
 
 __all__ = ["layer_rows", "fretting_rows", "fretting_path_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
            "REPORT_COLUMNS", "WORK_AT_HALF", "LARGEST_WORK", "CYCLE_WORK"]

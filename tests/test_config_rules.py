@@ -16,7 +16,8 @@ import pytest
 import yaml
 
 from conftest import REPO, make_workdir, needs_snakemake, snakemake
-from contactlib import profiles, validate
+from contactlib.model import profiles
+from contactlib import validate
 from contactlib.cli import check_config
 from contactlib.scene import KINDS
 

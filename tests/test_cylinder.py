@@ -5,8 +5,8 @@ import pytest
 
 from contactlib import solve
 from contactlib.solvers.default_method import solve_default
-from contactlib.geometry import Geometry
-from contactlib.theory import hertz_pressure, uncoupled_friction
+from contactlib.model.geometry import Geometry
+from contactlib.model.theory import hertz_pressure, uncoupled_friction
 
 
 def test_frictionless_half_plane_is_hertz():

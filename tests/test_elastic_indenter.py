@@ -27,7 +27,7 @@ from contactlib import history
 from contactlib.io import history_to_dataset
 from contactlib.solvers.history_solver import SLIP_INWARD, SLIP_OUTWARD
 from contactlib.solvers.default_method import solve_default
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 from contactlib.model import contact
 
 REPO = Path(__file__).resolve().parents[1]
@@ -306,7 +306,7 @@ def test_history_cli_bad_indenter(tmp_path):
 
 
 def test_scene_indenter_key():
-    from contactlib.materials import materials, pair
+    from contactlib.model.materials import materials, pair
     from contactlib.scene import ConfigError, parse_scene
     table = materials()
     assert all(entry["source"] for entry in table.values())
@@ -423,7 +423,7 @@ def test_merged_half_space_kernels_equal_the_explicit_sum(geometry):
 def test_elastic_indenter_costs_no_more_kernel_calls_on_a_half_space(geometry, monkeypatch):
     """The cost of an elastic indenter on a half-space is that of a rigid one (measured in
     benchmarks/bench_elastic.py; here counted: the same number of kernel evaluations)."""
-    from contactlib.body import ElasticBody
+    from contactlib.model.body import ElasticBody
 
     calls = {"n": 0}
     for name in ("ring_pressure", "ring_shear", "strip_pressure", "strip_shear"):

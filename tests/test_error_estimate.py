@@ -22,8 +22,8 @@ import pytest
 
 from contactlib import solve, sweep
 from contactlib.cli import main
-from contactlib.elements import graded_mesh
-from contactlib.theory import uncoupled_friction
+from contactlib.discretization.elements import graded_mesh
+from contactlib.model.theory import uncoupled_friction
 
 BETA2 = ((1 - 2 * 0.499) / (2 * (1 - 0.499))) ** 2  # 4.0e-6 at nu = 0.499
 
@@ -156,7 +156,7 @@ def test_non_asymptotic_levels(geometry, c, n, fine):
     Truth: the same case at ``fine`` (fourfold at least), Richardson-extrapolated with the
     case at fine/2 where that is asymptotic, else taken as it is."""
     from contactlib.solvers.default_method import solve_default
-    from contactlib.geometry import Geometry
+    from contactlib.model.geometry import Geometry
 
     sol = solve(geometry, 0.3, stick_ratio=c, n=n, energy=False)
     g = Geometry(geometry, 0.3)

@@ -13,7 +13,7 @@ from __future__ import annotations
 import pytest
 
 import contactlib
-from contactlib.theory import uncoupled_friction
+from contactlib.model.theory import uncoupled_friction
 
 NU = 0.4999999
 

@@ -24,7 +24,7 @@ import pytest
 from contactlib import api, validate
 from contactlib.solvers.extrapolated_method import extrapolate, solve_extrapolated
 from contactlib.model import contact
-from contactlib.theory import uncoupled_friction
+from contactlib.model.theory import uncoupled_friction
 
 REFERENCE = json.loads((Path(__file__).parent / "data" / "frontier_reference.json").read_text())
 CASES = [(c["geometry"], c["nu"], c["stick_ratio"], c["k"], c["uncertainty"])
@@ -374,8 +374,8 @@ def test_fine_rules_act_on_the_difference_rows_only(monkeypatch):
     round-off and quadrature bias only (< 1e-9), and a solve given the standard operators
     gives the bits of one that builds them."""
     from contactlib.solvers import extrapolated_method as em
-    from contactlib.elements import graded_mesh
-    from contactlib.operators import nodal_operators
+    from contactlib.discretization.elements import graded_mesh
+    from contactlib.discretization.operators import nodal_operators
 
     model, c, n = contact("sphere", 0.3), 0.5, 128
     monkeypatch.setattr(em, "BAND_FROM_N", 128)
@@ -447,8 +447,8 @@ def test_level_from_the_trend_takes_one_factorization(monkeypatch, nu):
 def test_restriction_in_row_blocks_is_bit_for_bit(monkeypatch):
     """restrict_nested works in small row blocks (no temporaries of the operator's size):
     the same bits as the whole-array formula, also across block boundaries."""
-    from contactlib import operators
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization import operators
+    from contactlib.discretization.elements import graded_mesh
 
     mesh = graded_mesh(64, 0.5)
     ops = operators.nodal_operators(contact("cylinder", 0.3), mesh)  # NaN du/dx on its axis
@@ -476,7 +476,7 @@ def test_band_rows_from_n512_only():
     """The band rows are written on every level from n = 512 on; below, the plain rows
     (n = 256: bit for bit the default discretization's, as before)."""
     from contactlib.solvers.default_method import difference_rows
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.solvers.extrapolated_method import BAND_FROM_N
 
     model = contact("sphere", 0.3)
@@ -495,7 +495,7 @@ def test_band_rows_from_n512_only():
 
 def test_noise_model_follows_the_rows():
     """Difference rows (c/a <= 1e-4, 1 - c/a <= 5e-4) get their own, smaller noise bound."""
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.solvers.extrapolated_method import quadrature_noise
 
     tiny, thin, mid = (graded_mesh(256, c) for c in (1e-6, 1.0 - 1e-5, 0.5))
@@ -680,7 +680,7 @@ def test_log_noise_depends_on_the_stick_ratio_not_on_n():
     relative to the cascade of references the spread no longer grows with n. 7e-12 at
     c/a = 0.5, growing toward both ends; under 1e-9 up to c/a = 0.98, above it at 0.99."""
     from contactlib.solvers import extrapolated_method as em
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
 
     mid = em.log_noise(graded_mesh(1024, 0.5))
     assert mid == pytest.approx(em.LOG_NOISE * (2.0 + 0.5 ** -1.5), rel=1e-12)
@@ -729,9 +729,9 @@ def test_band_rows_do_not_amplify_the_round_off_of_a_position():
     width x slope, amplified by the stick-edge condition. Relative to the cascade of
     references it moves by about 1e-12."""
     from contactlib.solvers.default_method import assemble, newton_on_k
-    from contactlib.elements import Mesh, graded_mesh
+    from contactlib.discretization.elements import Mesh, graded_mesh
     from contactlib.solvers.extrapolated_method import _rows
-    from contactlib.operators import nodal_operators
+    from contactlib.discretization.operators import nodal_operators
 
     model, c, n = contact("cylinder", 0.4999999), 0.9, 1024
     mesh = graded_mesh(n, c)
@@ -781,7 +781,7 @@ def test_a_level_handed_to_the_default_method_keeps_its_own_mesh():
     graded mesh of its n, and the hand-over raised a bare ValueError (sphere, nu = -0.5,
     c/a = 0.995, n = 2048). Here on a small case: n = 64 with the mesh of n = 128."""
     from contactlib.solvers.default_method import solve_default
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
 
     model = contact("sphere", 0.3)
     mesh = graded_mesh(128, 0.995)

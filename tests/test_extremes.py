@@ -31,9 +31,9 @@ from scipy import special
 from contactlib import api, io, solve, stages
 from contactlib.validate import SolverLimit
 from contactlib.solvers.default_method import operator_part
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 from contactlib.kernels import disc, strip
-from contactlib.theory import beta_of_nu, hertz_pressure
+from contactlib.model.theory import beta_of_nu, hertz_pressure
 
 
 def uncoupled(geometry: str, nu: float, c: float) -> float:
@@ -425,9 +425,9 @@ def test_difference_rows_are_the_plain_row_differences(geometry, part):
     row differences: equal to the plain rows' own round-off, which their cancellation
     raises to ~1e-12 of the row scale (the accuracy of the differences themselves is
     tested against mpmath in the kernel tests)."""
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.model import contact
-    from contactlib.operators import axis_w_rows, u_difference_rows
+    from contactlib.discretization.operators import axis_w_rows, u_difference_rows
 
     model = contact(geometry, 0.3)
     nodes = graded_mesh(32, 1 - 1e-3).nodes
@@ -450,9 +450,9 @@ def test_band_rows_relative_to_a_cascade_are_the_same_equations(geometry):
     plain rows (to the plain rows' round-off) at a fixed k."""
     from contactlib.solvers.default_method import (BAND_REF_INNER, BAND_REF_RATIO, assemble,
                                                    band_references, difference_rows)
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.model import contact
-    from contactlib.operators import nodal_operators
+    from contactlib.discretization.operators import nodal_operators
 
     model = contact(geometry, 0.3)
     mesh = graded_mesh(512, 0.6)

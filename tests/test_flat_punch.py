@@ -39,7 +39,7 @@ import pytest
 
 from contactlib import fretting, history, solve, validate
 from contactlib.cli import main
-from contactlib.profiles import FLAT, profile
+from contactlib.model.profiles import FLAT, profile
 from contactlib.scene import parse_scene
 from contactlib.stresses import history_stresses
 

@@ -11,7 +11,7 @@ from scipy import integrate
 
 from contactlib import cli, fretting, history, solve
 from contactlib import io as cio
-from contactlib.theory import cylinder_cycle_work
+from contactlib.model.theory import cylinder_cycle_work
 
 K = 0.3
 CYCLE = [0, 1, 1, 1, 1, 1]

@@ -18,7 +18,7 @@ from conftest import trapezoid_work
 from contactlib import cli, io, solve
 from contactlib.solvers import history_solver as hs
 from contactlib.energy import monotone_work
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 from contactlib.history_api import DEFAULT_N, HistoryResult, history, load_levels
 from contactlib.io import history_to_dataset
 

@@ -2,7 +2,7 @@
 
 ``contactlib.kernels.disc`` (polynomial-logarithmic fits instead of
 ``scipy.special.ellipk``/``ellipe`` and power series) and
-``contactlib.influence`` (one rule per element, grouped kernel calls) were
+``contactlib.discretization.influence`` (one rule per element, grouped kernel calls) were
 rewritten for speed. Two checks keep them honest, neither using git history
 or the package's own kernels as the reference:
 
@@ -23,10 +23,10 @@ import numpy as np
 import pytest
 from scipy import special
 
-from contactlib import influence
-from contactlib.elements import graded_mesh
+from contactlib.discretization import influence
+from contactlib.discretization.elements import graded_mesh
 from contactlib.energy import slip_points
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 from contactlib.kernels import disc
 
 GATE = 1e-10
@@ -254,7 +254,7 @@ def test_both_parts_in_one_pass_equal_each_alone_bit_for_bit(kind):
     """operators.nodal_operators / operators (the two parts' kernels integrated on one
     classification of the element pairs) give each part exactly the bits of its own
     call; with a shared store of stick blocks, in either order of filling it."""
-    from contactlib import operators as ops
+    from contactlib.discretization import operators as ops
     from contactlib.model import contact
 
     geometry = kind.split()[0]

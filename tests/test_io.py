@@ -223,7 +223,7 @@ def test_flag_names_are_written_once():
     check stage, the datasets and checks.flags agree on them."""
     from contactlib import checks, pipeline
     from contactlib.solvers.default_method import solve_default
-    from contactlib.geometry import Geometry
+    from contactlib.model.geometry import Geometry
 
     fl = checks.flags(np.array([0.1]), np.array([1.0]), 0.2, np.array([0.2]), np.array([-1.0]))
     assert set(fl) == set(checks.FLAG_NAMES) | set(checks.VIOLATION_NAMES)

@@ -1,5 +1,5 @@
 """The compiled parts (``contactlib/kernels/disc_fused.c``, ``strip_fused.c``,
-``contactlib/operators_fused.c``) against the numpy routes they replace.
+``contactlib/discretization/operators_fused.c``) against the numpy routes they replace.
 
 The compiled route promises the same bits as the numpy chunk functions of
 :mod:`contactlib.kernels.disc` (the same IEEE operations in the same order, no fused
@@ -12,12 +12,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from contactlib import influence, operators
+from contactlib.discretization import influence, operators
 from contactlib.solvers import default_method
-from contactlib.elements import graded_mesh
+from contactlib.discretization.elements import graded_mesh
 from contactlib.kernels import disc, strip
 from contactlib.model import contact
-from contactlib.operators import nodal_operators
+from contactlib.discretization.operators import nodal_operators
 
 needs_fused = pytest.mark.skipif(not (disc.FUSED and strip.FUSED and influence.FUSED
                                       and operators.FUSED and default_method.FUSED),
@@ -124,7 +124,7 @@ def test_compiled_difference_gives_the_numpy_bits(numpy_route):
     influence.apply_difference(both[:, :, :40], nodes, out=both)
     assert np.array_equal(both, want)
     with pytest.raises(ValueError, match="difference needs"):
-        from contactlib import operators_fused
+        from contactlib.discretization import operators_fused
         operators_fused.difference(np.ones((2, 3)), np.ones(2), np.empty((2, 4)))
 
 

@@ -15,7 +15,7 @@ from scipy.integrate import IntegrationWarning, quad
 
 from contactlib.kernels import strip
 from contactlib.kernels.strip import pressure_strip, shear_strip
-from contactlib.theory import beta_of_nu
+from contactlib.model.theory import beta_of_nu
 
 NUS = [0.0, 0.3, 0.45]
 

@@ -23,7 +23,7 @@ import pytest
 import contactlib
 from contactlib import io, validate
 from contactlib.model import contact
-from contactlib.operators import step_operator
+from contactlib.discretization.operators import step_operator
 
 NU = 0.3
 M_OVER_ESTAR = (1.0 - NU) ** 2 / (1.0 - 2.0 * NU)  # constrained modulus / E*
@@ -219,7 +219,7 @@ def test_cli_sphere_on_a_bonded_layer(tmp_path, capsys):
 # ----------------------------------------------------------------------------- operators
 def _brute_element_integrals(model, part, x, nodes, panels=400, points=8):
     """Element integrals of the whole layer kernel by a fine composite Gauss rule split at x."""
-    from contactlib.operators import PARTS
+    from contactlib.discretization.operators import PARTS
 
     kernel = model.pressure_kernel if part == PARTS[0] else model.shear_kernel
     t, w = np.polynomial.legendre.leggauss(points)
@@ -244,8 +244,8 @@ def test_layer_element_integrals_against_brute_force(base, a_over_h):
     singularity-aware rules, smooth remainder by Gauss on panels <= h/2) against a
     400-panel rule on the whole kernel (itself converged to ~1e-11): w and u to 2e-10
     of the half-space part."""
-    from contactlib.influence import element_integrals
-    from contactlib.operators import smooth_integrals
+    from contactlib.discretization.influence import element_integrals
+    from contactlib.discretization.operators import smooth_integrals
 
     model = contact("sphere", NU, a_over_h, base=base)
     nodes = np.array([0.0, 0.125, 0.25, 0.5, 0.503, 0.625, 0.875, 1.0])

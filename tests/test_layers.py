@@ -15,7 +15,10 @@ import contactlib
 PACKAGE = Path(contactlib.__file__).resolve().parent
 
 # model, operators, solver, checks/energy, result: they return data
-NUMERICS = ("geometry", "theory", "kernels/disc", "kernels/strip", "elements", "influence",
+NUMERICS = ("model/__init__", "model/geometry", "model/theory", "model/problem",
+            "model/profiles", "model/indenter", "model/body", "model/materials",
+            "model/load_paths", "kernels/disc", "kernels/strip", "discretization/__init__",
+            "discretization/elements", "discretization/influence", "discretization/operators",
             "solvers/__init__", "solvers/default_method", "solvers/extrapolated_method",
             "solvers/paper_method", "solvers/history_solver", "stages", "accuracy",
             "checks", "energy", "result", "api", "history_api", "convergence",
@@ -132,13 +135,13 @@ LAYER_ORDER = ("validation", "model", "operators", "leaf numerics", "solver", "e
                "io", "plot", "workflow")
 LAYER_MODULES = {
     "validation": ("validate", "threads"),
-    "model": ("indenter", "body", "model", "geometry", "theory", "profiles", "materials",
-              "load_paths", "kernels"),
-    "operators": ("elements", "influence", "operators", "operators_fused"),
+    "model": ("model", "kernels"),
+    "operators": ("discretization",),
     "leaf numerics": ("checks", "energy", "estimates"),
     "solver": ("discrete", "solvers", "solvers.default_method", "solvers.extrapolated_method",
                "solvers.paper_method", "solvers.history_solver", "stages", "accuracy",
-               "solvers.fretting_solver", "solvers.fretting_sphere", "result", "solver_fused"),
+               "solvers.fretting_solver", "solvers.fretting_sphere", "solvers.solver_fused",
+               "result"),
     "entry points": ("api", "history_api", "history_plan", "fretting_api", "convergence",
                      "layer_study", "coating_study", "physical", "physical_fretting",
                      "stress_study", "stresses", "stresses.inputs", "stresses.halfplane",

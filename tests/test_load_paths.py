@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 
 import contactlib
-from contactlib import cli, load_paths
+from contactlib import cli
+from contactlib.model import load_paths
 from contactlib.io import read_dataset, read_load_table
 from contactlib.physical import physical_history
 

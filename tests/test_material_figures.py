@@ -9,7 +9,7 @@ import xarray as xr
 import contactlib
 from conftest import job_counts, make_workdir, needs_snakemake
 from contactlib.io import history_to_dataset, stack_histories, to_dataset, write_figure
-from contactlib.materials import pair
+from contactlib.model.materials import pair
 from contactlib.plot import style_path
 from contactlib.plot.materials import cycle_work, fig_material_pairs, pair_label
 from contactlib.scene import HistoryScene, Scene, material_pair_scenes, parse_scene, \

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import yaml
 
-from contactlib.materials import MATERIALS_FILE, materials
+from contactlib.model.materials import MATERIALS_FILE, materials
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -41,7 +41,7 @@ def test_installed_package_finds_the_table(tmp_path):
                     f"'--egg-base', {str(egg)!r}, 'build_py', '--build-lib', {str(build)!r}]; "
                     "setuptools.setup()"], cwd=REPO, check=True, capture_output=True)
     assert (build / "contactlib" / "data" / "materials.yaml").is_file()
-    code = ("import contactlib.materials as m; t = m.materials(); "
+    code = ("import contactlib.model.materials as m; t = m.materials(); "
             "print(m.pair('steel', 'aluminium')[0], str(m.MATERIALS_FILE))")
     out = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, check=True,
                          capture_output=True, text=True, env={"PYTHONPATH": str(build)})

@@ -1,8 +1,8 @@
 """The model layer: indenter measures, body kernels, the contact and its operators.
 
-Every formula of :mod:`contactlib.indenter` is checked against an independent
+Every formula of :mod:`contactlib.model.indenter` is checked against an independent
 evaluation (quadrature of its definition, the Hertz relations), and the two
-operator kinds of :mod:`contactlib.operators` against each other.
+operator kinds of :mod:`contactlib.discretization.operators` against each other.
 """
 
 from __future__ import annotations
@@ -16,15 +16,15 @@ import contactlib
 
 from contactlib.solvers import history_solver as hs
 from contactlib import validate
-from contactlib.body import ElasticBody
-from contactlib.elements import MeshStore, graded_mesh
-from contactlib.geometry import Geometry
-from contactlib.indenter import GEOMETRIES, Cylinder, Sphere, indenter
+from contactlib.model.body import ElasticBody
+from contactlib.discretization.elements import MeshStore, graded_mesh
+from contactlib.model.geometry import Geometry
+from contactlib.model.indenter import GEOMETRIES, Cylinder, Sphere, indenter
 from contactlib.kernels import disc, layer, strip
 from contactlib.model import Contact, contact
-from contactlib.profiles import profile
-from contactlib.operators import StickBlocks, nodal_operator_part, operator_part, step_operator
-from contactlib.theory import beta_of_nu, hertz_pressure
+from contactlib.model.profiles import profile
+from contactlib.discretization.operators import (StickBlocks, nodal_operator_part, operator_part, step_operator)
+from contactlib.model.theory import beta_of_nu, hertz_pressure
 
 EDGES = np.array([0.0, 0.1, 0.35, 0.6, 0.95, 1.2])
 
@@ -212,7 +212,7 @@ def test_history_mesh_extent_is_the_one_validate_bounds_the_layer_with():
 def test_graded_mesh_nodes_are_those_of_all_110_bisection_steps():
     """elements._invert drops a point once a halving leaves its bracket unchanged: the
     nodes must be bit for bit those of the plain 110-step bisection (written out here)."""
-    from contactlib import elements
+    from contactlib.discretization import elements
 
     def plain(count, targets, span):
         lo, hi = np.zeros_like(targets), np.full_like(targets, np.sqrt(span))

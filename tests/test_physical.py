@@ -16,7 +16,8 @@ import pytest
 import yaml
 
 import contactlib
-from contactlib import cli, materials
+from contactlib import cli
+from contactlib.model import materials
 from contactlib.io import physical_to_dataset, read_dataset, write_dataset
 from contactlib.physical import (SmallStrainWarning, composite_modulus, material,
                                  parse_quantity, physical_history, physical_solve)

@@ -20,8 +20,8 @@ from scipy import integrate
 from contactlib import api, validate
 from contactlib.solvers.default_method import solve_default
 from contactlib.model import contact
-from contactlib.profiles import PARABOLOID, profile
-from contactlib.theory import uncoupled_friction
+from contactlib.model.profiles import PARABOLOID, profile
+from contactlib.model.theory import uncoupled_friction
 
 
 @pytest.mark.parametrize("axisymmetric", [True, False])

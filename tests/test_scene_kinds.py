@@ -173,7 +173,7 @@ def test_workflow_schema_names_a_bad_history_key(tmp_path):
 def _reference_k(geometry: str, slab: float, c: float, n: int) -> float:
     """Richardson extrapolation of the default method at n and n/2 (order 2, measured)."""
     from contactlib.solvers.default_method import solve_default
-    from contactlib.geometry import Geometry
+    from contactlib.model.geometry import Geometry
 
     g = Geometry(geometry, 0.3, slab)
     k_half, k_full = solve_default(g, c, n // 2).k, solve_default(g, c, n).k
@@ -338,7 +338,8 @@ def test_a_coated_history_scene_runs_the_coated_history():
 def test_a_cone_scene_carries_love_s_frictionless_load():
     """The cone's frictionless load at a = 1 (E* = 1, cot alpha = 1) is Love's pi/2: the
     dataset's load_ratio (P over the profile's own load) is 1 within its estimate."""
-    from contactlib import pipeline, profiles
+    from contactlib import pipeline
+    from contactlib.model import profiles
 
     s = parse_scene("cone", dict(SELF, profile="cone"))
     assert profiles.profile("cone").frictionless_load(True) == pytest.approx(math.pi / 2,

@@ -6,8 +6,8 @@ import pytest
 from contactlib import solve, sweep
 from contactlib.solvers.default_method import DiscreteSolution, solve_default
 from contactlib.energy import slip_points
-from contactlib.geometry import Geometry
-from contactlib.theory import hertz_pressure, small_k_work_sphere, uncoupled_friction
+from contactlib.model.geometry import Geometry
+from contactlib.model.theory import hertz_pressure, small_k_work_sphere, uncoupled_friction
 
 
 @pytest.mark.parametrize("nu", [0.0, 0.3, 0.499])
@@ -184,9 +184,9 @@ def test_high_n_one_refined_step_lands_on_the_full_newton_root():
     ~1e-10 here; measured 2.8e-10), one factorization."""
     from contactlib.solvers.default_method import (assemble, difference_rows, newton_on_k,
                                                    solve_default)
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.model import contact
-    from contactlib.operators import nodal_operator_part
+    from contactlib.discretization.operators import nodal_operator_part
 
     model, c, n = contact("sphere", 0.3), 0.4, 1024
     mesh = graded_mesh(n, c)
@@ -207,9 +207,9 @@ def test_newton_in_place_equilibration_is_the_copy_one(geometry, c):
     paths differ in the last bits of each step and the roots by up to Newton's own final
     error (a last step below 1e-6 leaves ~1e3 step^2 = 1e-9; measured 7.5e-13 here)."""
     from contactlib.solvers.default_method import assemble, difference_rows, newton_on_k
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.model import contact
-    from contactlib.operators import nodal_operators
+    from contactlib.discretization.operators import nodal_operators
 
     model, n = contact(geometry, 0.3), 128
     mesh = graded_mesh(n, c)
@@ -242,9 +242,9 @@ def test_assembled_system_and_scales_as_the_whole_matrix_formulas(geometry, c, n
     the columns of the tied operator (phi_0 = phi_1 on rings) taken whole; Newton's row and
     column scales, formed a block of rows at a time, are those of the whole A(k)."""
     from contactlib.solvers import default_method as dm
-    from contactlib.elements import graded_mesh
+    from contactlib.discretization.elements import graded_mesh
     from contactlib.model import contact
-    from contactlib.operators import nodal_operators
+    from contactlib.discretization.operators import nodal_operators
 
     model = contact(geometry, 0.3)
     mesh = graded_mesh(n, c)

@@ -15,7 +15,7 @@ import pytest
 
 import contactlib
 from contactlib import io, pipeline, stages, validate
-from contactlib.geometry import Geometry
+from contactlib.model.geometry import Geometry
 from contactlib.discrete import SelfSimilarSolution
 from contactlib.result import CaseRecord
 from contactlib.scene import config_hash, parse_scene, parse_scenes

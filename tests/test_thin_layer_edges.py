@@ -46,7 +46,7 @@ def test_disc_integrals_against_mpmath(order):
 
 
 def _mesh_rule(edges: np.ndarray, h: float = 1.0):
-    """As contactlib.operators.smooth_integrals: 8 Gauss points on panels of at most h/2."""
+    """As contactlib.discretization.operators.smooth_integrals: 8 Gauss points on panels of at most h/2."""
     lo, length = edges[:-1], np.diff(edges)
     panels = np.maximum(1, np.ceil(length / (0.5 * h))).astype(np.intp)
     owner = np.repeat(np.arange(lo.size), panels)

@@ -119,7 +119,7 @@ def test_both_kinds_in_one_pass_equal_their_own_passes(monkeypatch, base):
 def test_operators_ask_for_both_kinds(monkeypatch):
     """A coated sphere's operators at a/h = 100: one pass for both parts, each as alone."""
     from contactlib import model as contact_model
-    from contactlib import operators
+    from contactlib.discretization import operators
 
     calls = []
     monkeypatch.setattr(thin_layer, "_sums", lambda kinds, *args: calls.append(kinds)

@@ -26,7 +26,7 @@ from scipy import integrate, optimize
 
 from conftest import job_counts, make_workdir, needs_snakemake, trapezoid_work
 from contactlib import history, io, solve, validate
-from contactlib.body import ViscoelasticBody
+from contactlib.model.body import ViscoelasticBody
 from contactlib.energy import decay_integrals, one_minus_b_over_x
 from contactlib.history_api import step_times
 

@@ -161,7 +161,7 @@ def profile_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """``profile`` (and ``exponent``) keywords, only when not the paraboloid (the default)."""
     if args.profile == "paraboloid" and args.exponent is None and args.flat_ratio is None:
         return {}
-    from contactlib import profiles
+    from contactlib.model import profiles
 
     exponent = None if args.exponent is None else to_float(args.exponent)
     flat = None if args.flat_ratio is None else to_float(args.flat_ratio)
@@ -235,9 +235,9 @@ def _shape_usage(exc: ValueError, source: str) -> UsageError:
 
 def parse_history_path(args: argparse.Namespace, physical: bool) -> dict[str, Any]:
     """The shape (``--load-shape`` and its options) or table (``--load-table``, read here)
-    of a history, as the mapping of :mod:`contactlib.load_paths` (levels) or of
+    of a history, as the mapping of :mod:`contactlib.model.load_paths` (levels) or of
     :func:`contactlib.physical.force_shape` (forces, SI)."""
-    from contactlib import load_paths
+    from contactlib.model import load_paths
 
     if args.load_table is not None:
         from contactlib import io

@@ -85,7 +85,7 @@ def _k_digits(error: float) -> int:
 
 
 def _indenter(geometry: str) -> Any:
-    from contactlib.indenter import indenter
+    from contactlib.model.indenter import indenter
 
     return indenter(geometry)
 
@@ -163,7 +163,7 @@ def format_history(res: Any) -> str:
     head = (f"{res.geometry}, nu = {res.nu:.10g}, k = {_g(res.friction)}, n = {res.n}, "
             f"{res.steps} steps per "
             f"{'load travel of P_max' if getattr(res, 'segment_steps', ()) else 'segment'}")
-    if getattr(res, "load_shape", None):  # a shape or table (contactlib.load_paths)
+    if getattr(res, "load_shape", None):  # a shape or table (contactlib.model.load_paths)
         head += ", path " + ", ".join(f"{k} {_g(v) if not isinstance(v, str) else v}"
                                       for k, v in res.load_shape.items())
     if getattr(res, "profile", "paraboloid") != "paraboloid":  # h = A r^d, or the flat punch

@@ -30,7 +30,7 @@ if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-u
     import xarray as xr
 
 from contactlib.checks import FLAG_NAMES, VIOLATION_NAMES
-from contactlib.indenter import indenter
+from contactlib.model.indenter import indenter
 from contactlib.io.conventions import (BOOL_FLAGS, CONVENTIONS, POINT_BOOL_ATTRS,
                                        POINT_FLOAT_ATTRS, PROFILE_ATTRS, cf_attrs,
                                        layer_attrs, set_provenance, version, work_comment)
@@ -199,7 +199,7 @@ def to_dataset(solutions: Solution | Sequence[Solution]) -> xr.Dataset:
         attrs["max_error"] = max(max_errors)
     attrs.update(layer_attrs(ind, first))
     if getattr(first, "profile", "paraboloid") != "paraboloid":  # Hertz's files stay as they were
-        attrs["profile"] = str(first.profile)  # h = A r^d (contactlib.profiles)
+        attrs["profile"] = str(first.profile)  # h = A r^d (contactlib.model.profiles)
         attrs["profile_exponent"] = float(first.exponent)
     for name in ("indenter_modulus_ratio", "indenter_poisson_ratio", "dundurs_beta"):
         attrs[name] = float(getattr(first, name, float("nan")))  # E1/E2 = inf: rigid
@@ -410,7 +410,7 @@ def history_to_dataset(result: HistoryResult) -> xr.Dataset:
         "load_path": np.asarray(r.load_path, dtype=float),
         "steps": int(r.steps),
     }
-    if getattr(r, "segment_steps", ()):  # a shape or table (contactlib.load_paths)
+    if getattr(r, "segment_steps", ()):  # a shape or table (contactlib.model.load_paths)
         attrs["segment_steps"] = np.asarray(r.segment_steps, dtype=np.int32)
         attrs["steps_meaning"] = ("steps a unit of load travel (P_max); segment_steps: the "
                                   "steps of each segment, a monotone piece of the path, "

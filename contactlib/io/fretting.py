@@ -47,7 +47,7 @@ def fretting_to_dataset(result: Any) -> xr.Dataset:
     import xarray as xr
 
     from contactlib.solvers import fretting_solver as fs
-    from contactlib import profiles
+    from contactlib.model import profiles
 
     r = result
     sphere = r.geometry == "sphere"
@@ -208,7 +208,7 @@ def fretting_study_to_dataset(results: Sequence[Any]) -> xr.Dataset:
     """
     import xarray as xr
 
-    from contactlib.theory import cylinder_cycle_work
+    from contactlib.model.theory import cylinder_cycle_work
 
     rows = len(results)
     ncyc = min(len(r.cycles) for r in results)

@@ -103,7 +103,7 @@ _TABLE_COLUMNS = ("load", "force")
 
 def read_load_table(path: str | os.PathLike[str], *, physical: bool = False
                     ) -> dict[str, list[float]]:
-    """A load path sampled in time, from a CSV file (:mod:`contactlib.load_paths`).
+    """A load path sampled in time, from a CSV file (:mod:`contactlib.model.load_paths`).
 
     The file has a header row naming two columns, ``time`` first, then
     ``load`` (levels P/P_max, time in the unit of tau) or ``force`` (with
@@ -123,7 +123,7 @@ def read_load_table(path: str | os.PathLike[str], *, physical: bool = False
     dict
         ``{"time": [...], "load" or "force": [...]}`` in the file's order, in
         the unit of tau and levels, or in s and N. The values are checked
-        further by :func:`contactlib.load_paths.load_path` (or
+        further by :func:`contactlib.model.load_paths.load_path` (or
         :func:`contactlib.physical.physical_history`).
 
     Raises

@@ -19,7 +19,7 @@ import numpy as np
 if TYPE_CHECKING:  # xarray is imported where a dataset is made or read (start-up time)
     import xarray as xr
 
-from contactlib.indenter import indenter
+from contactlib.model.indenter import indenter
 from contactlib.io.conventions import cf_attrs
 from contactlib.io.datasets import history_to_dataset, to_dataset
 from contactlib.io.fretting import fretting_to_dataset

@@ -57,7 +57,7 @@ Cost: ~60 (pressure) and ~110 (shear) array operations a point, in passes of
 ``_CHUNK`` points over per-thread scratch rows (no large temporaries); the
 three outputs of a call share one allocation. Points inside (r <= s) and
 outside the disc use different functions: they are evaluated on slices when
-they come in two runs (as :func:`contactlib.influence.element_integrals`
+they come in two runs (as :func:`contactlib.discretization.influence.element_integrals`
 orders them), on gathered copies otherwise.
 """
 
@@ -78,7 +78,7 @@ __all__ = ["beta_of_nu", "pressure_disc", "shear_disc", "axis_w_disc", "w_differ
 
 def beta_of_nu(nu: float) -> float:
     """Dundurs-type coupling beta = (1 - 2 nu) / (2 (1 - nu)) for a rigid indenter
-    (defined here, with the closed forms that use it; :mod:`contactlib.theory` shows it)."""
+    (defined here, with the closed forms that use it; :mod:`contactlib.model.theory` shows it)."""
     return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
 
 
@@ -520,7 +520,7 @@ def axis_w_disc(r, s, nu: float, part: str) -> tuple[np.ndarray, np.ndarray, np.
     -------
     dw, zero, zero : ndarray
         w(r) - w(0) (into the body, E* = 1, units of length) and two zero
-        arrays (the kernel triple of :func:`contactlib.influence.element_integrals`).
+        arrays (the kernel triple of :func:`contactlib.discretization.influence.element_integrals`).
 
     Notes
     -----

@@ -1228,7 +1228,7 @@ def axis_w_strip(x: ArrayLike, s: ArrayLike, nu: float, part: str, h: float = np
     -------
     dw, zero, zero : ndarray
         w(x) - w(0) (into the body, E* = 1, length units) and two zero arrays
-        (the kernel triple of :func:`contactlib.influence.element_integrals`).
+        (the kernel triple of :func:`contactlib.discretization.influence.element_integrals`).
 
     Notes
     -----

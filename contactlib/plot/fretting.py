@@ -15,7 +15,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from contactlib.theory import cylinder_cycle_work
+from contactlib.model.theory import cylinder_cycle_work
 from contactlib.plot.base import finish, palette, style_context
 
 __all__ = ["fig_fretting", "fig_fretting_path", "fig_stick_zone_map"]

@@ -66,7 +66,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter, NullLocator
 
-from contactlib.indenter import indenter
+from contactlib.model.indenter import indenter
 from contactlib.validate import GEOMETRIES
 from contactlib.plot.base import (
     MARKERS,

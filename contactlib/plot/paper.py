@@ -75,8 +75,8 @@ from contactlib.plot.base import (
     panel_grid,
     style_context,
 )
-from contactlib.indenter import indenter
-from contactlib.theory import hertz_pressure, uncoupled_friction
+from contactlib.model.indenter import indenter
+from contactlib.model.theory import hertz_pressure, uncoupled_friction
 from contactlib.validate import GEOMETRIES, estimates
 
 __all__ = [
@@ -319,7 +319,7 @@ def fig2_friction(datasets: xr.Dataset | Sequence[xr.Dataset], *,
     dataset. Below each panel a strip shows, for each dataset, the c/a
     ranges over which consecutive sampled cases are all consistent and
     converged (a bar; a lone such case is a tick). The uncoupled closed form
-    :func:`contactlib.theory.uncoupled_friction` is drawn dashed for every
+    :func:`contactlib.model.theory.uncoupled_friction` is drawn dashed for every
     Poisson's ratio present, in the colour of the curve of that ratio (of the
     default method's where the paper's scheme shares it): for the sphere, and
     for the cylinder only when a half-plane dataset (``slab_ratio`` 0) is
@@ -775,7 +775,7 @@ def fig5_work(datasets: xr.Dataset | Sequence[xr.Dataset]) -> Figure:
     not-converged case above it is drawn on the top edge (a cross) and its
     value written in the note. Values a log axis cannot show (V <= 0, V NaN,
     c/a = 0) are left out and counted, per dataset, in a text note on the
-    panel. (The small-k asymptote :func:`contactlib.theory.small_k_work_sphere`
+    panel. (The small-k asymptote :func:`contactlib.model.theory.small_k_work_sphere`
     is not drawn: k falls only like 1/ln(a/c), and at c/a = 0.001 the work
     is still 0.8 of it, so it never meets the curve on these axes.)
 

@@ -10,7 +10,7 @@ Discretization (units E* = a = R = 1)
 * Collocation at every node: w = delta - r^2/2 (normal, delta unknown); in the
   stick zone (nodes 1..M, node M at c) u = C r^2 with C unknown (the
   self-similar adherence condition, paper Eq. 8); for a power-law profile
-  (:mod:`contactlib.profiles`) w = delta - r^d/d and u = C r^d; in the slip zone (nodes
+  (:mod:`contactlib.model.profiles`) w = delta - r^d/d and u = C r^d; in the slip zone (nodes
   M..N-1) q = k p (Coulomb, traction ratio).
 
 With k given, these equations are square; both conditions at c make the
@@ -42,7 +42,7 @@ like 1/N^2 on the graded mesh. This is one scalar equation g(k) = 0, solved by
 Newton's method with the derivative from the same LU factorization.
 
 The collocation operators (:func:`operator_part`, :func:`operators`,
-:func:`nodal_operator_part`) are built by :mod:`contactlib.operators` and
+:func:`nodal_operator_part`) are built by :mod:`contactlib.discretization.operators` and
 re-exported here; the model (indenter and body) is a
 :class:`~contactlib.model.Contact`.
 """
@@ -57,11 +57,10 @@ from scipy import linalg
 
 from .. import checks
 from ..discrete import SelfSimilarSolution
-from ..elements import Mesh, graded_mesh
+from ..discretization.elements import Mesh, graded_mesh
 from ..energy import slip_points
 from ..model import Contact
-from ..operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators,
-                        operator_part, operators, u_difference_rows)
+from ..discretization.operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators, operator_part, operators, u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "band_references",
            "BAND_REF_RATIO", "BAND_REF_INNER", "start_k",
@@ -69,13 +68,13 @@ __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "
            "operators", "operator_part", "nodal_operator_part"]
 
 try:  # Newton's set-up on large systems compiled (setup.py; optional): the same bits
-    from .. import solver_fused as _fused
+    from . import solver_fused as _fused
 except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 FUSED = _fused is not None
 """Whether :func:`newton_on_k` with ``overwrite`` (n >= 1024) equilibrates the system,
 forms its first A(k) and computes the extended-precision residuals compiled
-(``contactlib/solver_fused.c``, built by ``pip install``): two passes over the matrix where
+(``contactlib/solvers/solver_fused.c``, built by ``pip install``): two passes over the matrix where
 numpy makes six, and einsum's own long-double loop without its buffered casts; the same
 operations on the same operands, so the same bits (``tests/test_kernels_fused.py``). False
 selects the numpy route."""
@@ -489,15 +488,15 @@ def assemble(geometry: Contact, mesh: Mesh, pw: np.ndarray, qw: np.ndarray,
     stick condition u = C r^2 at nodes 1 ... M. The slip-zone shear is
     eliminated by Coulomb's law, phi_i = k p_i / shape_i. ``axis`` (the
     rows w(r_i) - w(0) of the pressure and of the shear at nodes 1 ... M,
-    :func:`~contactlib.operators.axis_w_rows`) replaces the normal rows
+    :func:`~contactlib.discretization.operators.axis_w_rows`) replaces the normal rows
     1 ... M by w(r_i) - w(0) = -r_i^2/2: the same equations, without the
     cancellation of O(1) displacements near the axis of a tiny stick zone.
     ``edge`` = (i0, w rows of the pressure and of the shear, u rows of the
     pressure and of the shear) replaces the normal rows i0 + 1 ... N by
     w(r_i) - w(r_i0) = -(r_i^2 - r_i0^2)/2 and the stick rows i0 + 1 ... M by
     u(r_i) - u(r_i0) = C (r_i^2 - r_i0^2) (a thin slip annulus), from
-    :func:`~contactlib.operators.axis_w_rows` and
-    :func:`~contactlib.operators.u_difference_rows` with ``ref = r_i0``. A sixth
+    :func:`~contactlib.discretization.operators.axis_w_rows` and
+    :func:`~contactlib.discretization.operators.u_difference_rows` with ``ref = r_i0``. A sixth
     element, an int array, gives each of those rows its own reference node instead of
     i0 (the band around c, :func:`band_references`): w(r_i) - w(r_ref) = -(r_i^2 -
     r_ref^2)/2 and u(r_i) - u(r_ref) = C (r_i^2 - r_ref^2).
@@ -863,7 +862,7 @@ def difference_rows(geometry: Contact, mesh: Mesh, band: bool | None = None,
     min(c, a - c)); None where the plain rows are kept, or the
     indenter has no kernel differences. Their kernels are evaluated here (only in those
     three cases). ``quadrature``: the element rules of the band's rows
-    (:data:`contactlib.influence.QUADRATURES`); the axis and edge rows keep the standard
+    (:data:`contactlib.discretization.influence.QUADRATURES`); the axis and edge rows keep the standard
     ones (with the fine rules the edge rows were worse: cylinder, nu = 0.499,
     c/a = 1 - 1e-5, extrapolated at n = 2048, k error -1.5e-3 against -9.7e-5).
     """
@@ -983,7 +982,7 @@ def solve_default(geometry: Contact, stick_ratio: float, n: int, *, power: float
         when stick_ratio = 0); computed here when not given.
     cache : StickBlocks, optional
         The caller's store of stick blocks (see
-        :func:`~contactlib.operators.nodal_operator_part`) and of graded
+        :func:`~contactlib.discretization.operators.nodal_operator_part`) and of graded
         meshes (its ``meshes``), shared by the cases of a sweep; the numbers
         do not depend on it.
     mesh : Mesh, optional

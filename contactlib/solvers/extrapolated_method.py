@@ -22,7 +22,7 @@ Cost
 ----
 Only the finest mesh's operators are computed from the kernels; those of
 n/2, n/4, n/8 are restricted from them exactly
-(:func:`~contactlib.operators.restrict_nested`), so the coarse solves cost
+(:func:`~contactlib.discretization.operators.restrict_nested`), so the coarse solves cost
 small factorizations. The finest level starts Newton's method from the
 expansion fitted to the coarse roots (within 2e-6 ... 5e-6 of its own root),
 and one factorization with one step of extended-precision refinement
@@ -60,10 +60,9 @@ from ..estimates import estimate
 from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
                              NEAR_ROWS_WIDTH, REFINED_FINAL_STEP, DiscreteSolution, assemble,
                              difference_rows, newton_on_k, solve_default)
-from ..elements import Mesh, graded_mesh
+from ..discretization.elements import Mesh, graded_mesh
 from ..model import Contact
-from ..operators import (StickBlocks, nodal_operators, restrict_nested,
-                        restrict_with_slip_samples, slip_zone_samples)
+from ..discretization.operators import (StickBlocks, nodal_operators, restrict_nested, restrict_with_slip_samples, slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LOG_LEVEL_FROM_N",
@@ -495,7 +494,7 @@ def resolving_n(n: int, error: float, max_error: float, max_n: int) -> int | Non
 # tests/test_influence_speedup.py (the fine rules' cost)
 FINE_QUADRATURE_FROM_N = 1024
 """From this finest n on, the band of difference rows around c of every level is
-integrated with :mod:`contactlib.influence`'s ``"fine"`` rules (:func:`quadrature_for`);
+integrated with :mod:`contactlib.discretization.influence`'s ``"fine"`` rules (:func:`quadrature_for`);
 the operators and the axis and edge rows (c/a <= 1e-4, 1 - c/a <= 5e-4) keep the standard
 ones (:func:`~contactlib.solvers.default_method.difference_rows`). A difference row is small
 (w(x) - w(ref) is O(|x - ref|)) while the standard classes' bias is a fraction of the

@@ -73,7 +73,7 @@ import numpy as np
 from scipy import linalg
 
 from ..model import Contact
-from ..profiles import Profile
+from ..model.profiles import Profile
 
 __all__ = ["SEPARATED", "STICK", "SLIP_POSITIVE", "SLIP_NEGATIVE", "STATE_MEANINGS",
            "MESH_EXTENT", "StripOperators", "strip_operators", "FrettingStep",
@@ -432,7 +432,7 @@ def zone_edges(ops: StripOperators, k: float, step: FrettingStep
 
 def _frictionless_width(ops: StripOperators, load: float) -> float:
     """Frictionless half-width at load P (units a_max): P/P_max = a^d for h = |x|^d/d (the
-    profile's :meth:`~contactlib.profiles.Profile.frictionless_radius`)."""
+    profile's :meth:`~contactlib.model.profiles.Profile.frictionless_radius`)."""
     return ops.shape.frictionless_radius(max(load, 0.0) / ops.p_max, False)
 
 

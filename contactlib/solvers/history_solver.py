@@ -25,8 +25,8 @@ odd in x), with ``r_j`` the element midpoint. The influence matrices are exact
 differences of the closed-form disc/strip kernels at the element edges,
 evaluated at the midpoints (collocation points, never on an edge, so the
 logarithmic kernel singularities are not met): the step operators of
-:func:`contactlib.operators.step_operator`, with element areas and shear
-resultants from the indenter (:mod:`contactlib.indenter`).
+:func:`contactlib.discretization.operators.step_operator`, with element areas and shear
+resultants from the indenter (:mod:`contactlib.model.indenter`).
 
 Conditions at the collocation points (w positive into the body, u outward; the
 indenter is rigid and has no tangential motion):
@@ -89,7 +89,7 @@ from ..energy import (decay_integrals, dot, mean_traction, monotone_work, step_e
                      step_work, stored_energy, viscous_step_work)
 from ..model import Contact
 from ..validate import HISTORY_MESH_EXTENT
-from ..operators import step_operator
+from ..discretization.operators import step_operator
 
 __all__ = ["SEPARATED", "STICK", "SLIP_INWARD", "SLIP_OUTWARD", "STATE_MEANINGS",
            "Operators", "StepResult", "build_operators", "solve_step", "contact_radius",
@@ -297,7 +297,7 @@ def _scales(ops: Operators, state: np.ndarray, p: np.ndarray, du: np.ndarray,
 
     The gap scale is the larger of the largest gap and the profile's gap scale
     at the outermost contact element (r^2 for the paraboloid, the approach for
-    the flat punch: :meth:`~contactlib.profiles.Profile.gap_scale`); the slip
+    the flat punch: :meth:`~contactlib.model.profiles.Profile.gap_scale`); the slip
     scale is the largest slip increment, floored at 1e-6 of the gap scale
     (a^2/R) so that a step with no motion has a finite scale.
     """
@@ -541,7 +541,7 @@ def stick_radius(ops: Operators, k: float, state: np.ndarray, p: np.ndarray, q: 
       one (the flat punch's under a monotonic load, whose solution is
       proportional to the load) has ``d ~ (c - r)^(1/2)``, and ``d^2`` is
       linear (:data:`STANDING_EDGE_POWER`,
-      :attr:`contactlib.profiles.Profile.stick_edge_power`).
+      :attr:`contactlib.model.profiles.Profile.stick_edge_power`).
 
     With ``t = d^power`` of that law, the last two slopes of ``t`` over the
     three elements must agree within a factor 1.5; then ``t`` of the last two
@@ -644,10 +644,10 @@ def run_history(ops: Operators, k: float, levels: np.ndarray,
     those that slipped before it and separate in it); the cumulative work is
     :func:`contactlib.energy.monotone_work` of its sums, so it never falls.
     A step from no contact starts from the Hertz contact radius of its load
-    (:meth:`contactlib.indenter.Indenter.hertz_radius`).
+    (:meth:`contactlib.model.indenter.Indenter.hertz_radius`).
 
     A viscoelastic body (``ops.model.body`` a
-    :class:`~contactlib.body.ViscoelasticBody`) needs the ``times`` of the
+    :class:`~contactlib.model.body.ViscoelasticBody`) needs the ``times`` of the
     steps (``times[0] = 0``, unit of its tau). Its displacements are
     d = K e, K the elastic operator at E(0) (``ops``) and e the
     elastic-equivalent traction, and sigma = g_inf e + sum g_i h_i

@@ -35,16 +35,16 @@ import numpy as np
 from scipy import linalg
 
 from ..discrete import SelfSimilarSolution
-from ..elements import uniform_mesh
+from ..discretization.elements import uniform_mesh
 from ..model import Contact
-from ..operators import step_operator
+from ..discretization.operators import step_operator
 
 __all__ = ["PaperSolution", "solve_paper", "ring_operator", "collocation_points"]
 
 
 ring_operator = step_operator
 """Displacements (3, len(x), n) of unit step pressures (``part="normal"``) or unit
-shear elements (``part="shear"``) on the rings: :func:`contactlib.operators.step_operator`."""
+shear elements (``part="shear"``) on the rings: :func:`contactlib.discretization.operators.step_operator`."""
 
 
 def _ring_operators(geometry: Contact, nodes: np.ndarray,

@@ -576,7 +576,7 @@ def _model_of(result: Any, indenter_modulus: float, indenter_nu: float | None) -
     """The contact of a sphere's FrettingResult, with the indenter's material given."""
     from .. import validate
     from ..model import contact
-    from ..profiles import profile as make_profile
+    from ..model.profiles import profile as make_profile
 
     e1, nu1 = validate.indenter_material(indenter_modulus, indenter_nu)
     prof = make_profile(result.profile,

@@ -58,7 +58,7 @@ def history_stresses(result: Any, step: int, x: Any, z: Any, *, body: str = "bod
 
     from ..validate import InputError
 
-    from ..profiles import takes
+    from ..model.profiles import takes
 
     if not takes(getattr(result, "profile", "paraboloid"), "stresses"):
         raise InputError("result", "a history of a power-law profile", "profile 'flat'",

@@ -1,18 +1,18 @@
 r"""The model: an indenter pressed into a body.
 
-A :class:`Contact` joins an :class:`~contactlib.indenter.Indenter` (what is
-pressed: sphere or cylinder) and an :class:`~contactlib.body.ElasticBody`
+A :class:`Contact` joins an :class:`~contactlib.model.indenter.Indenter` (what is
+pressed: sphere or cylinder) and an :class:`~contactlib.model.body.ElasticBody`
 (what it is pressed into). It is all a solver needs to know about the
 physics: the kernels of the basic loads (the indenter chooses rings or
 strips, the body answers them), the Hertz references and the measures of an
-element. :mod:`contactlib.operators` turns it into influence matrices, and
+element. :mod:`contactlib.discretization.operators` turns it into influence matrices, and
 every solver (default, paper, history) takes it.
 
 Units and scalings
 ------------------
 E* = R = 1, lengths in units of the contact radius a (a_max in the
-incremental solver): see :mod:`contactlib.indenter` and
-:mod:`contactlib.body`. E* is the composite modulus every scaling uses,
+incremental solver): see :mod:`contactlib.model.indenter` and
+:mod:`contactlib.model.body`. E* is the composite modulus every scaling uses,
 
     1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,
 
@@ -20,7 +20,7 @@ incremental solver): see :mod:`contactlib.indenter` and
 
 Two elastic bodies
 ------------------
-The kernels of :mod:`contactlib.body` are in units of each body's own
+The kernels of :mod:`contactlib.model.body` are in units of each body's own
 E*_i = E_i/(1 - nu_i^2); in units of the composite E* they carry the weights
 c_i = E*/E*_i (c1 + c2 = 1). The gap closes by the normal displacements of
 both bodies, and the relative tangential displacement is that of the body
@@ -59,7 +59,7 @@ import numpy as np
 from .body import ElasticBody, ViscoelasticBody
 from .indenter import Displacements, Indenter, indenter
 from .profiles import PARABOLOID, Profile
-from .validate import InputError
+from ..validate import InputError
 
 # convention: the scale of k on a layer whose material has |beta| below it (beta of
 # nu = 0.45, about 0.09); only starting guesses use it (tests/test_layer_incompressible.py)
@@ -80,8 +80,8 @@ class Contact:
     body : ElasticBody
         The body under it (its ``slab_ratio`` in units of the contact radius).
     profile : Profile
-        The indenter's shape, keyword only (default :data:`~contactlib.profiles.PARABOLOID`:
-        Hertz's r^2/(2R)); see :mod:`contactlib.profiles`.
+        The indenter's shape, keyword only (default :data:`~contactlib.model.profiles.PARABOLOID`:
+        Hertz's r^2/(2R)); see :mod:`contactlib.model.profiles`.
 
     Notes
     -----
@@ -202,7 +202,7 @@ class Contact:
         :meth:`Indenter.smooth_remainder`), in units of the composite E*
         (weight c2): the
         kernels of :meth:`pressure_kernel` / :meth:`shear_kernel` are those of
-        :attr:`half_space_twin` plus this (:mod:`contactlib.operators`
+        :attr:`half_space_twin` plus this (:mod:`contactlib.discretization.operators`
         integrates the two parts with different rules).
         """
         rem = self.indenter.smooth_remainder(self.body, part, x, s, weights, owner)
@@ -223,7 +223,7 @@ class Contact:
         The closing of the gap relative to the axis (centre line): where w
         is O(s) and the difference O(x^2/s), this keeps its relative accuracy
         (a tiny stick zone's normal rows, see
-        :func:`contactlib.operators.axis_w_rows`).
+        :func:`contactlib.discretization.operators.axis_w_rows`).
         """
         def kernel(body, xx, ss):
             return self.indenter.axis_w_kernel(body, xx, ss, part, ref)
@@ -287,7 +287,7 @@ class Contact:
         """Hertz peak pressure at a = 1 (units E* a/R): the pressure unit.
 
         For another profile, the peak pressure of the paraboloid with the same
-        frictionless load (:meth:`~contactlib.profiles.Profile.reference_pressure`)."""
+        frictionless load (:meth:`~contactlib.model.profiles.Profile.reference_pressure`)."""
         if self.profile.is_paraboloid:
             return self.indenter.p0
         return self.profile.reference_pressure(self.indenter.name == "sphere")
@@ -297,7 +297,7 @@ class Contact:
         """Hertz load at a = 1 (E* a^3/R, or E* a^2/R per unit length): the load unit.
 
         For another profile, its own frictionless load at a = 1
-        (:meth:`~contactlib.profiles.Profile.frictionless_load`)."""
+        (:meth:`~contactlib.model.profiles.Profile.frictionless_load`)."""
         if self.profile.is_paraboloid:
             return self.indenter.hertz_load
         return self.profile.frictionless_load(self.indenter.name == "sphere")
@@ -392,10 +392,10 @@ def contact(geometry: str, nu: float, slab_ratio: float = 0.0,
     base : {"smooth", "bonded", "elastic"}
         The layer's base (default smooth; "elastic": a coated body).
     relaxation : tuple of (g, tau), optional
-        Prony terms of a viscoelastic body (:class:`~contactlib.body.ViscoelasticBody`;
+        Prony terms of a viscoelastic body (:class:`~contactlib.model.body.ViscoelasticBody`;
         its kernels are the elastic ones at E(0)); empty: elastic.
     profile : Profile
-        The indenter's shape (default the paraboloid; :func:`contactlib.profiles.profile`).
+        The indenter's shape (default the paraboloid; :func:`contactlib.model.profiles.profile`).
     substrate_modulus, substrate_nu : float
         E2/E1 and Poisson's ratio (None: the layer's) of the elastic substrate
         of a coated body (``base="elastic"``).

@@ -15,7 +15,7 @@ at ``edges`` (``nodes``) 0 = s_0 < ... < s_N:
   shear coefficient ``phi`` (``q = shape(r) phi(r)``), linear between nodal
   values with ``p_N = phi_N = 0``. The operator acts on the nodal values;
   its entries are element integrals of the kernels
-  (:func:`contactlib.influence.element_integrals`). The default method's.
+  (:func:`contactlib.discretization.influence.element_integrals`). The default method's.
   On a layer under rings the kernels are the half-space's plus a smooth
   (analytic) remainder: the first part gets the singularity-aware rules of
   ``element_integrals``, the remainder a plain Gauss rule on panels of at
@@ -50,11 +50,11 @@ import numpy as np
 
 from .elements import Mesh, MeshStore, Store
 from .influence import apply_difference, element_integrals
-from .kernels import thin_layer
-from .kernels.disc import gauss_tiers
+from ..kernels import thin_layer
+from ..kernels.disc import gauss_tiers
 
 if TYPE_CHECKING:
-    from .model import Contact
+    from ..model import Contact
 
 __all__ = ["PARTS", "parts_needed", "step_operator", "operator_part", "operators",
            "nodal_operator_part", "nodal_operators", "StickBlocks", "smooth_integrals",
@@ -76,7 +76,7 @@ except ImportError:  # pragma: no cover - a build without a C compiler
     _fused = None
 FUSED = _fused is not None
 """Whether :func:`restrict_nested` combines the columns compiled
-(``contactlib/operators_fused.c``, built by ``pip install``): the same products and sums on
+(``contactlib/discretization/operators_fused.c``, built by ``pip install``): the same products and sums on
 the same operands as its numpy route, so the same bits, in one pass a row
 (``tests/test_kernels_fused.py``). False selects the numpy route."""
 
@@ -195,7 +195,7 @@ def _joint_kernel(model: Contact, with_w: bool = True,
                   with_du: bool = True) -> tuple[Kernel, Kernel]:
     """The pressure's and the shear's kernels, integrated together on the same points.
 
-    :func:`~contactlib.influence.element_integrals` then classifies the (point, element)
+    :func:`~contactlib.discretization.influence.element_integrals` then classifies the (point, element)
     pairs and places the quadrature points once for both parts; each kernel is evaluated
     on exactly the points it would see alone, so each part's integrals are bit for bit
     those of its own call.
@@ -243,7 +243,7 @@ class StickBlocks(Store):
     :func:`nodal_operator_part` computes once per distinct (kernels, part,
     reference stick mesh). Memory: at most ``size`` blocks of 3 (M + 1) M
     doubles (64 blocks at n = 256: 19 MB). It carries the computation's
-    graded meshes too (``meshes``, a :class:`~contactlib.elements.MeshStore`),
+    graded meshes too (``meshes``, a :class:`~contactlib.discretization.elements.MeshStore`),
     so that the one store a caller threads through its solves serves both.
     """
 
@@ -441,7 +441,7 @@ def axis_w_rows(model: Contact, nodes: np.ndarray, x: np.ndarray, part: str,
     method's normal rows there, see :func:`contactlib.solvers.default_method.assemble`).
     A node ``ref`` > 0 gives the rows relative to it (a thin slip annulus).
     Units as :func:`operator_part` (a^2/R per unit traction). ``quadrature``: the
-    element rules (:data:`contactlib.influence.QUADRATURES`).
+    element rules (:data:`contactlib.discretization.influence.QUADRATURES`).
     """
     if part not in PARTS:
         raise ValueError(f"part must be 'normal' or 'shear', got {part!r}")

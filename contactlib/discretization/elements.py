@@ -122,7 +122,7 @@ class Store:
     Oldest entry dropped first; ``hits`` and ``misses`` count the requests
     answered from the store and the values computed. There is no
     process-wide store in contactlib: whoever owns a computation owns its
-    stores (:class:`MeshStore`, :class:`contactlib.operators.StickBlocks`).
+    stores (:class:`MeshStore`, :class:`contactlib.discretization.operators.StickBlocks`).
     """
 
     def __init__(self, size: int) -> None:
@@ -168,7 +168,7 @@ class MeshStore(Store):
     It holds (nodes, stick index) by the arguments of :func:`graded_mesh`,
     at most ``size`` of them (33 kB each at 4096 elements), and
     :func:`graded_mesh` hands out copies. The caller owns it
-    (:class:`contactlib.operators.StickBlocks` carries one, so a sweep's
+    (:class:`contactlib.discretization.operators.StickBlocks` carries one, so a sweep's
     store of stick blocks brings its meshes along).
     """
 

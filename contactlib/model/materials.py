@@ -12,7 +12,7 @@ repository's ``config/materials.yaml`` is a link to it.
 
 Examples
 --------
->>> from contactlib.materials import pair
+>>> from contactlib.model.materials import pair
 >>> ratio, nu1, nu2 = pair("steel", "aluminium")
 >>> round(ratio, 4), nu1, nu2
 (3.0, 0.3, 0.33)
@@ -24,7 +24,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import Any
 
-from . import validate
+from .. import validate
 
 __all__ = ["MATERIALS_FILE", "materials", "pair", "scene_indenter"]
 

@@ -2,17 +2,17 @@
  * several. Both are the numpy routes' operations on the same operands in the same order, so
  * the same bits (tests/test_kernels_fused.py); built with -ffp-contract=off.
  *
- * difference: contactlib.influence.apply_difference, element integrals -> nodal operators
+ * difference: contactlib.discretization.influence.apply_difference, element integrals -> nodal operators
  * (numpy: scale, subtract, negate).
  * For each row: s_l = g_l / h_l, then out_0 = s_0, out_l = s_l - s_{l-1}, out_N = -s_{N-1}:
  * the numpy route's operations on the same operands, so the same bits
  * (tests/test_kernels_fused.py). `g` may be the first N columns of `out` (the operator built
  * in place): a row's g_l is read before out_l is written, and out_l is never read again.
  */
-#include "fused_buffers.h"
+#include "../fused_buffers.h"
 #include <math.h>
 
-/* restrict: contactlib.operators.restrict_nested, the fine columns of rows combined into the
+/* restrict: contactlib.discretization.operators.restrict_nested, the fine columns of rows combined into the
  * coarse ones, out_j = (even_j + odd_j left_j) + odd_{j-1} right_{j-1} (numpy: copy, two
  * products, two shifted additions). */
 
@@ -168,17 +168,17 @@ static PyObject *py_classify(PyObject *Py_UNUSED(self), PyObject *args)
 static PyMethodDef methods[] = {
     {"classify", py_classify, METH_VARARGS,
      "classify(x, lo, hi, inv_len, dist_ref, thresholds, order, offsets): the pairs of a row "
-     "block grouped by key (see contactlib.influence.element_integrals)."},
+     "block grouped by key (see contactlib.discretization.influence.element_integrals)."},
     {"restrict", py_restrict, METH_VARARGS,
      "restrict(rows, left, right, out): the nested coarse columns of fine rows (see "
-     "contactlib.operators.restrict_nested)."},
+     "contactlib.discretization.operators.restrict_nested)."},
     {"difference", py_difference, METH_VARARGS,
      "difference(g, h, out): out[:, l] = g[:, l]/h[l] - g[:, l-1]/h[l-1] (see "
-     "contactlib.influence.apply_difference)."},
+     "contactlib.discretization.influence.apply_difference)."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "operators_fused",
-                                    "Fused steps of the nodal operators (see contactlib.influence, contactlib.operators).", -1,
+                                    "Fused steps of the nodal operators (see contactlib.discretization.influence, contactlib.discretization.operators).", -1,
                                     methods, NULL, NULL, NULL, NULL};
 
 PyMODINIT_FUNC PyInit_operators_fused(void) { return PyModule_Create(&module); }

@@ -6,7 +6,7 @@
  * operations are numpy's, on the same operands in the same order (maxima are exact), so the
  * same bits (tests/test_kernels_fused.py); built with -ffp-contract=off.
  */
-#include "fused_buffers.h"
+#include "../fused_buffers.h"
 #include <math.h>
 
 /* the larger of m and v, NaN kept (np.max, np.maximum propagate NaN) */

@@ -61,7 +61,7 @@ except ImportError:  # pragma: no cover - a build without a C compiler
 
 FUSED = _fused is not None
 """Whether :func:`apply_difference` and the classification of :func:`element_integrals` run
-compiled (``contactlib/operators_fused.c``, built by ``pip install``): the same divisions
+compiled (``contactlib/discretization/operators_fused.c``, built by ``pip install``): the same divisions
 and subtractions on the same operands as the numpy route, one pass a row; the same keys of
 the (point, element) pairs, grouped by one counting sort in the order the numpy route's
 ``flatnonzero`` gives; so the same bits (``tests/test_kernels_fused.py``). False selects

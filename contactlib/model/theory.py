@@ -5,7 +5,7 @@ indenter radius R = 1, so that lengths are r/a, tractions are in E* a/R and
 displacements in a^2/R.
 
 The formulas that depend on the shape live with the indenter
-(:mod:`contactlib.indenter`); the functions here look the indenter up by its
+(:mod:`contactlib.model.indenter`); the functions here look the indenter up by its
 geometry name, for callers that hold a name (figures, tests).
 """
 
@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from .indenter import indenter
-from .kernels.disc import beta_of_nu  # the kernels' closed forms own it
+from ..kernels.disc import beta_of_nu  # the kernels' closed forms own it
 
 __all__ = ["cylinder_cycle_work", "beta_of_nu", "hertz_p0", "hertz_load", "hertz_pressure",
            "uncoupled_friction", "small_k_work_sphere"]
@@ -43,13 +43,13 @@ def uncoupled_friction(geometry: str, nu: float, gamma):
     k = beta K(g) / K'(g), with K the complete elliptic integral of modulus g
     and K'(g) = K(sqrt(1 - g^2)) (Spence 1973, 1975); beta of a rigid
     indenter on a body of Poisson's ratio ``nu``. The formulas are
-    :meth:`contactlib.indenter.Indenter.uncoupled_friction`.
+    :meth:`contactlib.model.indenter.Indenter.uncoupled_friction`.
 
     Examples
     --------
     At g = 1/sqrt(2), K(g) = K'(g), so the cylinder's k is beta:
 
-    >>> from contactlib.theory import beta_of_nu, uncoupled_friction
+    >>> from contactlib.model.theory import beta_of_nu, uncoupled_friction
     >>> k = uncoupled_friction("cylinder", 0.3, 2**-0.5)
     >>> round(float(k), 12) == round(beta_of_nu(0.3), 12)
     True

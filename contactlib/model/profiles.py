@@ -409,7 +409,7 @@ def profile(name: str = "paraboloid", exponent: float | None = None,
         On an unknown name, a missing or out-of-range exponent or flat ratio, or either
         given with a profile that does not take it.
     """
-    from . import validate
+    from .. import validate
 
     name = validate.choice("profile", name, PROFILES)
     if name != "rounded" and flat_ratio is not None:

@@ -27,7 +27,7 @@ strip, positive away from the axis).
 
 Examples
 --------
->>> from contactlib.indenter import indenter
+>>> from contactlib.model.indenter import indenter
 >>> sphere = indenter("sphere")
 >>> round(sphere.hertz_load, 6), sphere.hertz_radius(0.125)
 (1.333333, 0.5)
@@ -44,7 +44,7 @@ from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
 
-from .validate import GEOMETRIES
+from ..validate import GEOMETRIES
 
 if TYPE_CHECKING:  # the body is passed in, never built here
     from .body import ElasticBody

@@ -60,7 +60,7 @@ estimate covers the sampling of the shape as well as the solver's steps.
 
 Examples
 --------
->>> from contactlib.load_paths import load_path, plan
+>>> from contactlib.model.load_paths import load_path, plan
 >>> path = load_path({"shape": "haversine", "amplitude": 0.5, "mean": 0.5, "cycles": 2})
 >>> steps = plan(path, 20, viscoelastic=False)
 >>> steps.knots, steps.counts          # four half-cycles of 20 steps
@@ -75,7 +75,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from . import validate
+from .. import validate
 
 __all__ = ["LoadShape", "LoadTable", "SHAPES", "load_path", "is_shaped", "plan", "sample",
            "StepPlan", "piece_steps", "interpolation_error", "MIN_PIECE_STEPS"]

@@ -6,7 +6,7 @@ layer of thickness h on a rigid base, smooth (frictionless, the paper's
 slab) or bonded, or on an elastic half-space / half-plane (``base="elastic"``, a
 coated body: the layer bonded to a substrate of its own modulus and Poisson's
 ratio; rings only). It answers the basic loads the indenter puts on it (see
-:mod:`contactlib.indenter`): a uniform pressure, or a shear element, on a disc
+:mod:`contactlib.model.indenter`): a uniform pressure, or a shear element, on a disc
 or a symmetric strip of radius ``s``, with the closed-form kernels of
 :mod:`contactlib.kernels`.
 
@@ -29,7 +29,7 @@ problems decouple.
 
 Examples
 --------
->>> from contactlib.body import ElasticBody
+>>> from contactlib.model.body import ElasticBody
 >>> body = ElasticBody(0.3)
 >>> round(body.beta, 12), body.is_half_space
 (0.285714285714, True)
@@ -46,7 +46,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .indenter import Displacements
-from .kernels import disc, layer, strip
+from ..kernels import disc, layer, strip
 from .theory import beta_of_nu
 
 __all__ = ["ElasticBody"]

@@ -4,7 +4,7 @@
 (a rigid indenter on an elastic body) that also keeps the three names it was
 made from as fields. New code builds the model with
 :func:`contactlib.model.contact`; what differs between the sphere and the
-cylinder is in :mod:`contactlib.indenter`.
+cylinder is in :mod:`contactlib.model.indenter`.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from .body import ElasticBody
 from .indenter import Indenter, indenter
-from .model import Contact
+from . import Contact
 
 __all__ = ["Geometry"]
 
@@ -38,7 +38,7 @@ class Geometry(Contact):
         The layer's base (default smooth; irrelevant at slab_ratio 0).
     substrate_modulus, substrate_nu : float
         E2/E1 and Poisson's ratio of the elastic substrate (``base="elastic"``;
-        see :class:`~contactlib.body.ElasticBody`).
+        see :class:`~contactlib.model.body.ElasticBody`).
     """
 
     indenter: Indenter = field(init=False, repr=False, compare=False)

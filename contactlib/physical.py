@@ -55,7 +55,7 @@ from __future__ import annotations
 import math
 import re
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, Sequence
 
 import numpy as np
@@ -68,7 +68,8 @@ __all__ = ["physical_solve", "physical_history", "PhysicalSolution", "PhysicalHi
            "Material", "material", "composite_modulus", "parse_quantity", "parse_force_path",
            "hertz_peak_pressure", "hertz_load", "hertz_radius", "contact_radius_of_load",
            "work_scale", "check_history", "SMALL_STRAIN_LIMIT", "SmallStrainWarning",
-           "UNITS", "format_si", "PHYSICAL_PROFILES", "HALF_ANGLE_RANGE", "parse_half_angle"]
+           "UNITS", "format_si", "PHYSICAL_PROFILES", "HALF_ANGLE_RANGE", "parse_half_angle",
+           "PhysicalProblem", "physical_problem"]
 
 # convention: the usual bound of the small-strain Hertz theory, a/R <= 0.1 (a warning, not a
 # refusal)
@@ -325,7 +326,16 @@ def work_scale(geometry: str, e_star: float, radius: float, a: float) -> float:
 
 # ----------------------------------------------------------------------------- problem
 @dataclass(frozen=True)
-class _Problem:
+class PhysicalProblem:
+    """A checked problem in SI, made by :func:`physical_problem`: the bodies' materials,
+    the profile with its SI parameter, and the scales at a contact radius.
+
+    ``radius`` R [m] is the paraboloid's (NaN for the cone), ``half_angle`` alpha
+    [degrees] the cone's (NaN for the paraboloid); ``slope`` is A d of the profile
+    z = A r^d in both cases (1/R, cot alpha), so that every scale below is one formula
+    for every profile.
+    """
+
     geometry: str
     radius: float
     indenter: Material
@@ -338,6 +348,28 @@ class _Problem:
     shape: Profile = PARABOLOID  # the indenter's profile (paraboloid: z = r^2/(2R))
     slope: float = math.nan  # A d of z = A r^d [m^(1-d)]: 1/R, or cot(alpha) for the cone
     half_angle: float = math.nan  # the cone's (wedge's) half-angle alpha [degrees]
+
+    def describe(self) -> str:
+        """``sphere R = 5 mm: indenter ..., body ...`` (the cone: its half-angle; the layer
+        and the substrate where there are any)."""
+        if self.shape.is_paraboloid:
+            shape = f"{self.geometry} R = {format_si(self.radius, 'm')}"
+        else:
+            shape = (f"{'cone' if self.geometry == 'sphere' else 'wedge'}, half-angle "
+                     f"{self.half_angle:g} deg")
+        if self.geometry == "cylinder":
+            shape += f", length {format_si(self.length, 'm')}"
+        layer = "" if self.thickness == math.inf else \
+            f", layer h = {format_si(self.thickness, 'm')} ({self.base} base)"
+        if self.substrate is not None:
+            layer += f" on substrate {self.substrate}"
+        return f"{shape}: indenter {self.indenter}, body {self.body}{layer}"
+
+    @property
+    def reference_name(self) -> str:
+        """The frictionless solution the load is compared with: ``"Hertz"`` for the
+        paraboloid, ``"frictionless"`` (Love's cone, Sneddon's wedge) otherwise."""
+        return "Hertz" if self.shape.is_paraboloid else "frictionless"
 
     @property
     def per_length(self) -> float:
@@ -409,7 +441,7 @@ class _Problem:
 
 def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
              thickness: Any, base: Any, substrate: Any = None,
-             profile: str = "paraboloid", half_angle: Any = None) -> _Problem:
+             profile: str = "paraboloid", half_angle: Any = None) -> PhysicalProblem:
     """The checked problem; ``substrate`` (a material) only with ``base="elastic"`` (a
     coated body: ``body`` the coating, of ``thickness`` h), E2/E1 in
     :data:`contactlib.validate.SUBSTRATE_MODULUS_RANGE`. ``profile`` is ``"paraboloid"``
@@ -443,7 +475,7 @@ def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, lengt
     h = math.inf if thickness is None else parse_quantity(thickness, "length", "thickness")
     base = validate.base(base, coated=True)
     sub = _substrate(base, substrate, bod, h)
-    return _Problem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base, sub,
+    return PhysicalProblem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base, sub,
                     shape, slope, alpha)
 
 
@@ -499,7 +531,7 @@ def _substrate(base: str, substrate: Any, body: Material, thickness: float) -> M
     return sub
 
 
-def validity_notes(problem: _Problem, a: float) -> list[str]:
+def validity_notes(problem: PhysicalProblem, a: float) -> list[str]:
     """Warnings (issued, and returned as lines) where the contact leaves the theory."""
     notes = []
     if problem.shape.is_paraboloid and a / problem.radius > SMALL_STRAIN_LIMIT:
@@ -534,32 +566,14 @@ class _Setup:
     composite_modulus: float
     substrate: Material | None
 
-    def scales(self) -> _Problem:
+    def scales(self) -> PhysicalProblem:
         """The problem behind the result, whose methods give its scales at a contact radius
         (``load_unit``, ``pressure_unit``, ``displacement_unit``, ``work_unit``)."""
-        alpha = getattr(self, "half_angle", math.nan)
-        cone = getattr(self, "profile", "paraboloid") == "cone"
-        return _Problem(self.geometry, self.radius, self.indenter, self.body,
-                        self.composite_modulus, self.length, self.thickness, self.base,
-                        self.substrate, profiles.profile("cone") if cone else PARABOLOID,
-                        1.0 / math.tan(math.radians(alpha)) if cone else 1.0 / self.radius,
-                        alpha)
+        return self.problem
 
     def _head(self) -> str:
         """``sphere R = 5 mm: indenter ..., body ...`` (and the layer)."""
-        if getattr(self, "profile", "paraboloid") == "cone":
-            shape = (f"cone, half-angle {self.half_angle:g} deg" if self.geometry == "sphere"
-                     else f"wedge, half-angle {self.half_angle:g} deg, length "
-                     f"{format_si(self.length, 'm')}")
-        else:
-            shape = (f"sphere R = {format_si(self.radius, 'm')}" if self.geometry == "sphere"
-                     else f"cylinder R = {format_si(self.radius, 'm')}, length "
-                     f"{format_si(self.length, 'm')}")
-        layer = "" if self.thickness == math.inf else \
-            f", layer h = {format_si(self.thickness, 'm')} ({self.base} base)"
-        if self.substrate is not None:
-            layer += f" on substrate {self.substrate}"
-        return f"{shape}: indenter {self.indenter}, body {self.body}{layer}"
+        return self.problem.describe()
 
 
 @dataclass(repr=False)
@@ -602,6 +616,8 @@ class PhysicalSolution(_Setup):
     half_angle : float
         The cone's half-angle alpha [degrees] (NaN for the paraboloid; ``radius`` is NaN
         for the cone).
+    problem : PhysicalProblem
+        The checked problem it solved; ``scales()`` returns it.
     errors : dict
         Estimated relative error of each quantity above, by name (see
         :func:`physical_solve`); 0 where exact, NaN where not estimated.
@@ -630,6 +646,7 @@ class PhysicalSolution(_Setup):
     solution: Any
     profile: str = "paraboloid"
     half_angle: float = math.nan
+    problem: PhysicalProblem | None = field(default=None, repr=False, compare=False)
 
     @property
     def resolved(self) -> bool:
@@ -680,14 +697,15 @@ class PhysicalSolution(_Setup):
             row("mean pressure", format_si(self.mean_pressure, "Pa"), "mean_pressure"),
             row("approach", format_si(self.approach, "m") if math.isfinite(self.approach)
                 else "undefined on a half-plane", "approach"),
-            row("P/P_Hertz(a)" if self.profile == "paraboloid" else "P/P_frictionless(a)",
+            row(f"P/P_{self.problem.reference_name}(a)",
                 f"{self.load_ratio:.6g}", "load_ratio"),
             row("frictional energy", format_si(self.frictional_energy, "J") +
                 " (loading 0 -> P)", "frictional_energy"),
-            f"  {'Hertz (frictionless)' if self.profile == 'paraboloid' else 'frictionless'} "
+            f"  {self.problem.reference_name}"
+            f"{' (frictionless)' if self.problem.shape.is_paraboloid else ''} "
             f"a = {format_si(self.hertz_contact_radius, 'm')}, p0(a) = "
             f"{format_si(self.p0, 'Pa')}"
-            + ("" if self.profile == "paraboloid" else
+            + ("" if self.problem.shape.is_paraboloid else
                " (the paraboloid's peak pressure at this load)")
             + f"; resolved: {'yes' if self.resolved else 'no'} "
             f"(max error {self.solution.max_error:g})",
@@ -851,10 +869,10 @@ def physical_solve(geometry: str, radius: float | str | None, load: float | str,
         hertz_contact_radius=a_hertz, p0=p0,
         hertz_load=prob.load_unit(a) * prob.per_length,
         slab_ratio=slab, errors=errors, notes=validity_notes(prob, a), solution=sol,
-        profile=prob.shape.name, half_angle=prob.half_angle)
+        profile=prob.shape.name, half_angle=prob.half_angle, problem=prob)
 
 
-def _layer_radius(prob: _Problem, a_hertz: float,
+def _layer_radius(prob: PhysicalProblem, a_hertz: float,
                   run: Callable[[float], tuple[Any, float]]) -> tuple[float, Any, float]:
     """(a/h, solution, a) on a layer of thickness h: the root of s = a(L(s))/h by secant
     steps from s = a_Hertz/h (a/h and a agree to 1e-12)."""
@@ -894,7 +912,8 @@ class PhysicalHistory(_Setup):
     Attributes
     ----------
     geometry, radius, length, thickness, base, indenter, body, composite_modulus
-        As for :class:`PhysicalSolution`.
+        As for :class:`PhysicalSolution`; so are ``profile``, ``half_angle`` and
+        ``problem``.
     load_path : tuple of float
         The path's forces [N].
     times : ndarray or None
@@ -952,6 +971,7 @@ class PhysicalHistory(_Setup):
     result: Any
     profile: str = "paraboloid"
     half_angle: float = math.nan
+    problem: PhysicalProblem | None = field(default=None, repr=False, compare=False)
 
     @property
     def hertz_load(self) -> float:
@@ -983,12 +1003,12 @@ class PhysicalHistory(_Setup):
         lines = [self._head(),
                  f"  E* = {format_si(self.composite_modulus, 'Pa')}, k = {self.friction:g}, "
                  f"a_max = {format_si(self.a_max, 'm')} "
-                 f"({'Hertz' if self.profile == 'paraboloid' else 'frictionless'} at "
+                 f"({self.problem.reference_name} at "
                  f"{format_si(self.max_load, 'N')}), p0(a_max) = {format_si(self.p0, 'Pa')}, "
                  f"n = {res.n}, {res.steps} steps a "
                  f"{'load travel of P_max' if res.segment_steps else 'segment'}",
                  f"  {'point':>5} {'P':>10} {'a':>11} {'c':>11} {'p_max':>11} "
-                 f"{'P/P_H(a)' if self.profile == 'paraboloid' else 'P/P_f(a)':>9} "
+                 f"{'P/P_' + self.problem.reference_name[0] + '(a)':>9} "
                  f"{'E_friction':>11}"]
         for i in range(len(self.load_path)):
             j = res.segment_end(i) if i else 0
@@ -1286,4 +1306,5 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
         cycles=cycles, cycle_frictional_energy=np.array(cyc_f),
         cycle_energy_error=np.array(cyc_e), cycle_viscous_energy=np.array(cyc_v),
         segment_frictional_energy=np.asarray(res.segment_work()) * w_unit,
-        notes=notes, result=res, profile=prob.shape.name, half_angle=prob.half_angle)
+        notes=notes, result=res, profile=prob.shape.name, half_angle=prob.half_angle,
+        problem=prob)

@@ -24,7 +24,7 @@ from typing import Any
 from . import validate
 from .fretting_api import FrettingResult, fretting
 from .physical import (contact_radius_of_load, format_si, physical_problem, validity_notes,
-                       hertz_peak_pressure, parse_force_path, parse_quantity, work_scale)
+                       hertz_peak_pressure, parse_force_path, parse_quantity)
 from .validate import PATH_DEFAULT_MAX_ERROR as DEFAULT_MAX_ERROR
 
 __all__ = ["PhysicalFretting", "physical_fretting", "parse_signed_path"]
@@ -241,22 +241,18 @@ def physical_fretting(radius: float | str, length: float | str, load_path: Any,
     if not (math.isfinite(k) and k > 0):
         raise validate.InputError("friction", "a finite coefficient k > 0", friction)
     kwargs.update(prob.dimensionless())
-    shift_unit = a_max * a_max / prob.radius
+    shift_unit = prob.displacement_unit(a_max)  # a_max^2/R
     res = fretting(prob.geometry, prob.body.nu, k, [f / load_max for f in forces],
                    [t / shift_unit for t in tangential] if tangential_displacement
                    else [q / (k * load_max) for q in tangential], steps, n=n,
                    max_error=max_error, progress=progress,
                    tangential_displacement=tangential_displacement, **kwargs)
     notes = validity_notes(prob, a_max)
-    heading = (f"cylinder R = {format_si(prob.radius, 'm')}, length "
-               f"{format_si(prob.length, 'm')}: indenter {prob.indenter}, body {prob.body}"
-               if prob.geometry == "cylinder" else
-               f"sphere R = {format_si(prob.radius, 'm')}: indenter {prob.indenter}, body "
-               f"{prob.body}")
+    heading = prob.describe()
     return PhysicalFretting(result=res, radius=prob.radius, length=prob.length,
                             composite_modulus=prob.e_star, a_max=a_max, p0=p0,
                             load_max=load_max,
-                            work_unit=work_scale(prob.geometry, prob.e_star, prob.radius, a_max)
-                            * prob.length, heading=heading, notes=notes,
+                            work_unit=prob.work_unit(a_max) * prob.length,
+                            heading=heading, notes=notes,
                             shift_unit=shift_unit)
 

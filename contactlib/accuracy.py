@@ -267,7 +267,7 @@ def predicted_error(geometry: str, stick_ratio: float, n: int) -> float:
 
 
 def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
-         methods: Sequence[str] = ("default",)) -> tuple[str, int]:
+         methods: Sequence[str] = (validate.DEFAULT_METHOD,)) -> tuple[str, int]:
     """The cheapest (method, n) predicted to meet ``tolerance`` at every stick ratio.
 
     With ``methods = ("default",)``: ``("default", n)`` with n a multiple of
@@ -290,10 +290,10 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     tol = check_tolerance(tolerance)
     layer_note = ""
     if not planned_body(geometry):
-        methods = ("default",)
+        methods = (validate.DEFAULT_METHOD,)
         layer_note = (" (on this layer only the default method is planned: the error models "
                       "were measured on the half-space)")
-    if tuple(methods) != ("default",):
+    if tuple(methods) != (validate.DEFAULT_METHOD,):
         options = []
         for method in methods:
             n = _cheapest_n(method, geometry, stick_ratios, tol)
@@ -321,7 +321,7 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
     worst = max(stick_ratios, key=lambda c: predicted_error(geometry.indenter.name, c, 256))
     e256 = predicted_error(geometry.indenter.name, worst, 256)
     if e256 == 0.0:
-        return "default", MIN_N
+        return validate.DEFAULT_METHOD, MIN_N
     need = 256.0 * math.sqrt(SAFETY * e256 / tol)
     n = max(MIN_N, 64 * math.ceil(need / 64))
     if n > MAX_N:
@@ -329,7 +329,7 @@ def plan(geometry: Contact, stick_ratios: Sequence[float], tolerance: float,
                          f"{worst:g} (measured k error {e256:.1e} at n = 256, falling like "
                          f"n^-2), beyond the "
                          f"largest supported n = {MAX_N}{layer_note}")
-    return "default", n
+    return validate.DEFAULT_METHOD, n
 
 
 def resolving_n(n: int, error: float, max_error: float) -> int | None:

@@ -422,8 +422,8 @@ def _fine_operators(geometry: Contact, n: int, c: float, normal, shear,
                     cache: StickBlocks | None = None) -> tuple:
     """Collocation operators (normal, shear) of a partial-slip case on its mesh n."""
     mesh = graded_mesh(n, c, store=_meshes(cache))
-    pw = _lookup(normal, "default", c, mesh.nodes)
-    qw = _lookup(shear, "default", c, mesh.nodes)
+    pw = _lookup(normal, validate.DEFAULT_METHOD, c, mesh.nodes)
+    qw = _lookup(shear, validate.DEFAULT_METHOD, c, mesh.nodes)
     if pw is None and qw is None:
         return nodal_operators(geometry, mesh, cache=cache)
     if pw is None:
@@ -527,7 +527,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
     exact_k = method in NODAL_METHODS and not 0.0 < solved < 1.0
     if (exact_k and validate.method_of(method).own_estimate
             and not np.isfinite(rec.load_error_estimate)):
-        method_for_levels = "default"  # (the extrapolated method solved it as the default)
+        method_for_levels = validate.DEFAULT_METHOD  # (the extrapolated method solved it so)
     else:
         method_for_levels = method
     if rec.elements is not None or validate.method_of(method_for_levels).own_estimate:
@@ -816,7 +816,7 @@ def nodal_tractions(geometry: Contact, rec: CaseRecord) -> dict[str, np.ndarray]
     stopping at the interpolation of the 201 output points. Empty for the paper's
     step tractions.
     """
-    if rec.kind != "default" or rec.nodes is None:
+    if rec.kind != DiscreteSolution.kind or rec.nodes is None:
         return {}
     nodes = np.asarray(rec.nodes, dtype=float)
     return {"nodes": nodes, "nodal_pressure": np.asarray(rec.p, dtype=float) / geometry.p0,

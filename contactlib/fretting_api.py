@@ -51,7 +51,8 @@ from .validate import PATH_DEFAULT_MAX_ERROR as DEFAULT_MAX_ERROR
 __all__ = ["FrettingResult", "fretting", "finer_run", "check_input", "amplitude_study",
            "STUDY_AMPLITUDES",
            "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
-           "sphere_fretting", "cylinder_cycle_work", "run_path"]
+           "sphere_fretting", "cylinder_cycle_work", "run_path", "StickShape", "stick_shape",
+           "stick_map_study", "STICK_MAP_CASES", "STICK_MAP_PATH"]
 
 # convention: the cylinder's default elements (element a_max/100)
 DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
@@ -1017,3 +1018,215 @@ def amplitude_study(nus: Sequence[float] = (0.5, 0.3), friction: float = 0.3,
             if progress is not None:
                 progress(len(out), total)
     return out
+
+
+# convention: the stick-zone map's cases: name -> (title, fretting("sphere", ...)'s body and
+# indenter); equal bodies with nu = 0 (beta = gamma = 0) make Cattaneo–Mindlin exact
+STICK_MAP_CASES = {
+    "coupled": ("rigid sphere on ν = 0.3 (β = 0.286)", {"nu": 0.3}),
+    "uncoupled": ("equal bodies, ν = 0 (β = γ = 0)",
+                  {"nu": 0.0, "indenter_modulus": 1.0, "indenter_nu": 0.0}),
+}
+# convention: the stick-zone map's path, P/P_max and Q/(k P_max) at its points
+STICK_MAP_PATH = ((0.0, 1.0, 1.0, 1.0, 1.0, 1.0), (0.0, 0.0, 0.3, 0.5, 0.7, 0.9))
+
+
+def stick_map_study(friction: float = 0.3, n: int = SPHERE_COUPLED_N_MAX, steps: int = 4,
+                    max_error: float = DEFAULT_MAX_ERROR,
+                    progress: Callable[[int, int], None] | None = None
+                    ) -> dict[str, FrettingResult]:
+    """The sphere's stick zone per direction under a growing Q (the stick-zone map).
+
+    Each case of :data:`STICK_MAP_CASES` (a rigid sphere on nu = 0.3, beta = 0.286; equal
+    bodies with nu = 0, beta = gamma = 0, where Cattaneo–Mindlin is exact) follows
+    :data:`STICK_MAP_PATH`: P to P_max, then Q/(kP) 0 -> 0.3 -> 0.5 -> 0.7 -> 0.9 at
+    constant P, with the estimate runs (:func:`sphere_fretting`).
+
+    Parameters
+    ----------
+    friction : float
+        k.
+    n, steps : int
+        Cells a side and steps a segment (default n = 64, the largest a coupled pair takes,
+        and 4 steps: about 30 s for both cases).
+    max_error : float
+        As for :func:`fretting`: a radius per direction is resolved where its estimate
+        (units a_max) is within it.
+    progress : callable, optional
+        ``progress(i, total)`` after each case.
+
+    Returns
+    -------
+    dict of str to FrettingResult
+        By the names of :data:`STICK_MAP_CASES`, in its order.
+    """
+    load, tang = STICK_MAP_PATH
+    out = {}
+    for name, (_, body) in STICK_MAP_CASES.items():
+        kw = dict(body)
+        out[name] = fretting("sphere", kw.pop("nu"), friction, load, tang, steps, n=n,
+                             max_error=max_error, **kw)
+        if progress is not None:
+            progress(len(out), len(STICK_MAP_CASES))
+    return out
+
+
+@dataclass(frozen=True)
+class StickShape:
+    """The sphere's stick zone at one path point, its radius per direction (from
+    :func:`stick_shape`; lengths in units of a_max, directions in degrees from +x, the
+    direction of Q).
+
+    ``smallest`` and ``largest`` are the least and greatest stick radius c(theta)/a_max over
+    the directions (from the stick zone's centroid), at ``smallest_direction`` and
+    ``largest_direction``, with their estimates (absolute, units a_max). In units of a_max,
+    not of the contact's radius a (``contact_radius``, area-equivalent): a's error would add
+    to both, and at P = P_max for beta = 0, a = a_max (Hertz). ``offset`` is the stick zone's
+    centre minus the contact's along x, e/a_max, with its estimate. ``converged``: every step
+    up to the point converged (else no value is data). ``reason``: why this point (empty when
+    it was asked for).
+    """
+
+    point: int
+    step: int
+    force_ratio: float
+    load_ratio: float
+    contact_radius: float
+    smallest: float
+    smallest_error: float
+    smallest_direction: float
+    largest: float
+    largest_error: float
+    largest_direction: float
+    offset: float
+    offset_error: float
+    max_error: float
+    converged: bool
+    reason: str = ""
+
+    @property
+    def full_slip(self) -> bool:
+        """No stick zone (every direction's radius 0)."""
+        return self.largest == 0.0
+
+    @property
+    def radii_resolved(self) -> bool:
+        """Both radii within ``max_error`` (their estimates, units a_max)."""
+        return self.converged and bool(max(self.smallest_error, self.largest_error)
+                                       <= self.max_error)
+
+    @property
+    def offset_resolved(self) -> bool:
+        """e/a_max within ``max_error`` (its estimate)."""
+        return self.converged and bool(self.offset_error <= self.max_error)
+
+    @property
+    def round(self) -> bool:
+        """The spread over the directions within the two estimates: a circle at this grid."""
+        return bool(self.largest - self.smallest <= self.largest_error + self.smallest_error)
+
+    def describe(self, a_max: float | None = None,
+                 si: Callable[[float, str, int], str] | None = None) -> str:
+        """Two lines for a summary: the stick radius's range over the directions and the
+        centre's offset, each with its estimate and to the digits the estimate supports, and
+        whether each is resolved to ``max_error``.
+
+        Parameters
+        ----------
+        a_max : float, optional
+            a_max in m, with ``si``: the radii and the offset in m instead, the estimates in m.
+        si : callable, optional
+            ``si(value, unit, digits)``, the formatter of SI values
+            (:func:`contactlib.physical.format_si`).
+        """
+        head = (f"stick zone at point {self.point} (Q/(kP_max) = {self.force_ratio:.4g}"
+                + (f", {self.reason}" if self.reason else "") + ")")
+        if not self.converged:
+            return head + ": a step up to it did not converge; no value is data"
+        if self.full_slip:
+            return head + ": full slip, no stick zone"
+        physical = a_max is not None and si is not None
+        scale = a_max if physical else 1.0
+
+        def value(x: float, e: float) -> str:
+            if physical:
+                x, e = x * scale, e * scale
+                return f"{si(x, 'm', _si_digits(x, e))} ({e:.1e} m)"
+            return f"{x:.{_decimals(e)}f} ({e:.1e})"
+
+        verdict = ("a circle within the estimates" if self.round else
+                   "not a circle: the spread exceeds the estimates")
+        return (f"{head}, from its centroid: {'radius' if physical else 'c/a_max'} (estimate) "
+                f"{value(self.smallest, self.smallest_error)} at "
+                f"{self.smallest_direction:.0f} deg to "
+                f"{value(self.largest, self.largest_error)} at "
+                f"{self.largest_direction:.0f} deg, {verdict}\n"
+                "  its centre's offset from the contact's along x"
+                f"{'' if physical else ', e/a_max'} (estimate) "
+                f"{value(self.offset, self.offset_error)}; resolved to max_error = "
+                f"{self.max_error:g}: radii {'yes' if self.radii_resolved else 'NO'}, centre "
+                f"{'yes' if self.offset_resolved else 'NO'}")
+
+
+def _decimals(error: float) -> int:
+    """Decimals a value with this absolute estimate supports: its first uncertain digit
+    (6 where the estimate is 0 or not finite)."""
+    if not (math.isfinite(error) and error > 0.0):
+        return 6
+    return int(min(6, max(0, math.floor(-math.log10(error)) + 1)))
+
+
+def _si_digits(value: float, error: float) -> int:
+    """Significant digits of ``value`` down to its first uncertain one (1 to 6), and at
+    least its integer digits under an engineering prefix (152 µm, not 1.5e+02 µm)."""
+    if not (math.isfinite(error) and error > 0.0 and value != 0.0):
+        return 6
+    lead = math.floor(math.log10(abs(value)))
+    return int(min(6, max(1, lead % 3 + 1, lead - math.floor(math.log10(error)) + 1)))
+
+
+def stick_shape(res: FrettingResult, point: int | None = None) -> StickShape | None:
+    """The sphere's stick zone per direction at a path point: its range of c/a and its
+    centre's offset, with their estimates (:class:`StickShape`).
+
+    Parameters
+    ----------
+    res : FrettingResult
+        A sphere's (None is returned for the cylinder's, which has no directions).
+    point : int, optional
+        The path point. Default: the point of the largest |Q|/(kP), the last of equal ones.
+        That is the smallest stick zone of the path, so the widest slip annulus, where the
+        surfaces fret; on a cycled path the last such point is the state the cycles
+        return to, not the first loading.
+
+    Returns
+    -------
+    StickShape or None
+    """
+    if res.stick_radius_directions is None or res.stick_radius_directions_error is None:
+        return None
+    steps = res.point_step
+    reason = ""
+    if point is None:
+        reason = "the largest |Q|/kP"
+        load = res.load_ratio[steps]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            x = np.where(load > 0, np.abs(res.force_ratio[steps]) / load, -1.0)
+        x = np.where(np.isfinite(x), x, -1.0)
+        point = int(np.flatnonzero(x >= x.max() * (1.0 - 1e-9))[-1])
+    j = int(steps[point])
+    ratio = res.stick_radius_directions[j]
+    err = res.stick_radius_directions_error[point]
+    finite = np.isfinite(ratio)
+    converged = bool(res.converged[:j + 1].all()) and bool(finite.any())
+    lo = int(np.nanargmin(np.where(finite, ratio, np.inf))) if finite.any() else 0
+    hi = int(np.nanargmax(np.where(finite, ratio, -np.inf))) if finite.any() else 0
+    deg = np.degrees(res.direction_angles)
+    return StickShape(
+        point=point, step=j, force_ratio=float(res.force_ratio[j]),
+        load_ratio=float(res.load_ratio[j]), contact_radius=float(res.contact_edges[j, 1]),
+        smallest=float(ratio[lo]), smallest_error=float(err[lo]),
+        smallest_direction=float(deg[lo]), largest=float(ratio[hi]),
+        largest_error=float(err[hi]), largest_direction=float(deg[hi]),
+        offset=float(res.stick_offset[j]), offset_error=float(res.stick_offset_error[point]),
+        max_error=float(res.max_error), converged=converged, reason=reason)

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from . import validate
-from .fretting_api import FrettingResult, fretting
+from .fretting_api import FrettingResult, fretting, stick_shape
 from .physical import (contact_radius_of_load, format_si, physical_problem, validity_notes,
                        hertz_peak_pressure, parse_force_path, parse_quantity)
 from .validate import PATH_DEFAULT_MAX_ERROR as DEFAULT_MAX_ERROR
@@ -163,6 +163,9 @@ class PhysicalFretting:
         for i, j, w, e in self.cycles():
             lines.append(f"cycle from point {i} to {j}: {format_si(w, 'J')} "
                          f"(estimate {e:.1e} J)")
+        shape = stick_shape(r)  # the sphere: its stick zone per direction, in m
+        if shape is not None:
+            lines.append(shape.describe(self.a_max, format_si))
         lines += self.notes
         return "\n".join(lines)
 

@@ -50,6 +50,11 @@ def format_fretting(res: Any) -> str:
                      f"(estimate {err:.1e}; units "
                      + ("E* a_max^5/R^2)" if res.geometry == "sphere"
                         else "E* a_max^4/R^2 per unit length)"))
+    from contactlib.fretting_api import stick_shape
+
+    shape = stick_shape(res)  # the sphere: its stick zone per direction at the largest |Q|/kP
+    if shape is not None:
+        lines.append(shape.describe())
     failed = int(res.converged.size - res.converged.sum())
     if failed:
         lines.append(f"{failed} steps did not converge; their values "

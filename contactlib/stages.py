@@ -33,7 +33,8 @@ import numpy as np
 from . import checks, energy, validate
 from .solvers.default_method import DiscreteSolution, nodal_operator_part, solve_default
 from .discrete import SelfSimilarSolution
-from .discretization.operators import (PARTS, StickBlocks, nodal_operators, parts_needed, restrict_with_slip_samples, slip_zone_samples)
+from .discretization.operators import (PARTS, StickBlocks, nodal_operators, parts_needed,
+                                       restrict_with_slip_samples, slip_zone_samples)
 from .discretization.elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .solvers.paper_method import PaperSolution, collocation_points, ring_operator, solve_paper

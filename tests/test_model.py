@@ -23,7 +23,8 @@ from contactlib.model.indenter import GEOMETRIES, Cylinder, Sphere, indenter
 from contactlib.kernels import disc, layer, strip
 from contactlib.model import Contact, contact
 from contactlib.model.profiles import profile
-from contactlib.discretization.operators import (StickBlocks, nodal_operator_part, operator_part, step_operator)
+from contactlib.discretization.operators import (StickBlocks, nodal_operator_part, operator_part,
+                                                 step_operator)
 from contactlib.model.theory import beta_of_nu, hertz_pressure
 
 EDGES = np.array([0.0, 0.1, 0.35, 0.6, 0.95, 1.2])

@@ -60,7 +60,9 @@ from ..discrete import SelfSimilarSolution
 from ..discretization.elements import Mesh, graded_mesh
 from ..energy import slip_points
 from ..model import Contact
-from ..discretization.operators import (StickBlocks, axis_w_rows, nodal_operator_part, nodal_operators, operator_part, operators, u_difference_rows)
+from ..discretization.operators import (StickBlocks, axis_w_rows, nodal_operator_part,
+                                        nodal_operators, operator_part, operators,
+                                        u_difference_rows)
 
 __all__ = ["DiscreteSolution", "solve_default", "assemble", "difference_rows", "band_references",
            "BAND_REF_RATIO", "BAND_REF_INNER", "start_k",

@@ -62,7 +62,8 @@ from .default_method import (AXIS_ROWS_BELOW, EDGE_ROWS_BELOW, NEAR_ROWS_FROM_N,
                              difference_rows, newton_on_k, solve_default)
 from ..discretization.elements import Mesh, graded_mesh
 from ..model import Contact
-from ..discretization.operators import (StickBlocks, nodal_operators, restrict_nested, restrict_with_slip_samples, slip_zone_samples)
+from ..discretization.operators import (StickBlocks, nodal_operators, restrict_nested,
+                                        restrict_with_slip_samples, slip_zone_samples)
 
 __all__ = ["ExtrapolatedSolution", "solve_extrapolated", "extrapolate", "ORDERS", "LEVELS",
            "ONE_STEP", "PREDICTED_FROM_N", "NEXT_FROM_N", "LOG_LEVEL_FROM_N",

@@ -1,13 +1,14 @@
 """The sphere's stick-zone map (docs/img/fretting-stick-map.png) and its shape numbers.
 
-A rigid sphere on nu = 0.3 (Dundurs beta = 0.286, a coupled pair) and, for comparison,
-two equal bodies with nu = 0 (beta = gamma = 0, Cattaneo–Mindlin exact); k = 0.3, P to
-P_max, then Q/kP: 0 -> 0.3 -> 0.5 -> 0.7 -> 0.9 at constant P, n = 64, 4 steps a segment,
-with the estimate runs. Prints per path point the stick zone's radius along +x and -x
-(from the stick zone's centroid), their ratio, max/min over the directions, the mean estimate,
-and for the beta = 0 pair the largest miss of Cattaneo–Mindlin's c = (1 - Q/kP)^(1/3) a_max
-over the directions with its estimate; then the cost of the radii per direction a step
-against the step's solve. About 1 min.
+The workflow's map (``snakemake --cores 1 fretting_stick_map``) from the same library call,
+contactlib.fretting_api.stick_map_study: a rigid sphere on nu = 0.3 (Dundurs beta = 0.286,
+a coupled pair) and, for comparison, two equal bodies with nu = 0 (beta = gamma = 0,
+Cattaneo–Mindlin exact); k = 0.3, P to P_max, then Q/kP: 0 -> 0.3 -> 0.5 -> 0.7 -> 0.9 at
+constant P, n = 64, 4 steps a segment, with the estimate runs. Prints per path point the
+stick zone's radius along +x and -x (from the stick zone's centroid), their ratio, max/min
+over the directions, the mean estimate, and for the beta = 0 pair the largest miss of
+Cattaneo–Mindlin's c = (1 - Q/kP)^(1/3) a_max over the directions with its estimate; then
+the cost of the radii per direction a step against the step's solve. About 1 min.
 
     python benchmarks/figure_fretting_stick_map.py [OUTPUT.png]
 
@@ -27,7 +28,8 @@ import time
 
 import numpy as np
 
-from contactlib import fretting, io, plot
+from contactlib import io, plot
+from contactlib.fretting_api import STICK_MAP_CASES, STICK_MAP_PATH, stick_map_study
 from contactlib.history_api import load_levels
 from contactlib.model import contact
 from contactlib.solvers import fretting_sphere as fs
@@ -62,21 +64,15 @@ if OUTPUT == "--accuracy":
         c = raw.stick_directions[-1, 0]
         print(f"  n = {n:3d}: stick {np.max(np.abs(c - 0.8831)) / ops.h:.2f}")
     sys.exit(0)
-LOAD = [0, 1, 1, 1, 1, 1]
-TANG = [0, 0, 0.3, 0.5, 0.7, 0.9]
-N, STEPS = 64, 4
-
-cases = {"rigid sphere on ν = 0.3 (β = 0.286)": {"nu": 0.3},
-         "equal bodies, ν = 0 (β = γ = 0)": {"nu": 0.0, "indenter_modulus": 1.0,
-                                            "indenter_nu": 0.0}}
+LOAD, TANG = (list(v) for v in STICK_MAP_PATH)
+t = time.perf_counter()
+results = stick_map_study()  # the workflow's rule fretting_stick_map_study computes the same
+print(f"stick_map_study: {time.perf_counter() - t:.1f} s")
 datasets = []
-for name, kw in cases.items():
-    nu = kw.pop("nu")
-    t = time.perf_counter()
-    r = fretting("sphere", nu, K, LOAD, TANG, STEPS, n=N, **kw)
-    dt = time.perf_counter() - t
-    print(f"{name}: beta = {r.beta:.3f}, n = {N}, {STEPS} steps a segment, {dt:.1f} s, "
-          f"all converged: {bool(r.converged.all())}")
+for name, r in results.items():
+    N, STEPS = r.n, r.steps
+    print(f"{STICK_MAP_CASES[name][0]}: beta = {r.beta:.3f}, n = {N}, {STEPS} steps a "
+          f"segment, all converged: {bool(r.converged.all())}")
     d = r.direction_angles.size
     back, up, down = d // 2, d // 4, 3 * d // 4  # the directions -x, +y, -y
     print("  Q/kP   r(0)    r(pi)   r(0)/r(pi)  x/y width  max/min  est.(mean)  area c  centroid x"
@@ -112,6 +108,6 @@ rays = (time.perf_counter() - t) / len(raw.p)
 print(f"cost a step at n = {N}: the radii per direction {1e3 * rays:.2f} ms, the step "
       f"{solve:.3f} s (ratio {rays / solve:.1e})")
 
-fig = fig_stick_zone_map(datasets, titles=list(cases))
+fig = fig_stick_zone_map(datasets, titles=[title for title, _ in STICK_MAP_CASES.values()])
 io.write_figure(fig, OUTPUT, style=plot.style_path())
 print(f"wrote {OUTPUT}")

@@ -52,7 +52,7 @@ __all__ = ["FrettingResult", "fretting", "finer_run", "check_input", "amplitude_
            "STUDY_AMPLITUDES",
            "DEFAULT_N", "DEFAULT_STEPS", "SPHERE_DEFAULT_N", "SPHERE_DEFAULT_STEPS", "defaults",
            "sphere_fretting", "cylinder_cycle_work", "run_path", "StickShape", "stick_shape",
-           "stick_map_study", "STICK_MAP_CASES", "STICK_MAP_PATH"]
+           "stick_map_study", "STICK_MAP_CASES", "STICK_MAP_PATH", "STICK_MAP_MAX_ERROR"]
 
 # convention: the cylinder's default elements (element a_max/100)
 DEFAULT_N = 120  # elements over 1.2 a_max, each side of the axis: element a_max/100
@@ -1032,7 +1032,7 @@ STICK_MAP_PATH = ((0.0, 1.0, 1.0, 1.0, 1.0, 1.0), (0.0, 0.0, 0.3, 0.5, 0.7, 0.9)
 
 
 def stick_map_study(friction: float = 0.3, n: int = SPHERE_COUPLED_N_MAX, steps: int = 4,
-                    max_error: float = DEFAULT_MAX_ERROR,
+                    max_error: float = STICK_MAP_MAX_ERROR,
                     progress: Callable[[int, int], None] | None = None
                     ) -> dict[str, FrettingResult]:
     """The sphere's stick zone per direction under a growing Q (the stick-zone map).
@@ -1050,8 +1050,8 @@ def stick_map_study(friction: float = 0.3, n: int = SPHERE_COUPLED_N_MAX, steps:
         Cells a side and steps a segment (default n = 64, the largest a coupled pair takes,
         and 4 steps: about 30 s for both cases).
     max_error : float
-        As for :func:`fretting`: a radius per direction is resolved where its estimate
-        (units a_max) is within it.
+        As for :func:`fretting` (default :data:`STICK_MAP_MAX_ERROR`, 0.05): a radius per
+        direction is resolved where its estimate (units a_max) is within it.
     progress : callable, optional
         ``progress(i, total)`` after each case.
 
@@ -1103,6 +1103,10 @@ class StickShape:
     max_error: float
     converged: bool
     reason: str = ""
+# convention: the stick-zone map's accuracy asked, units a_max: its departures from a circle
+# are 0.02 to 0.1 a_max; a radius per direction at n = 64 is known to half a cell (1.9e-2
+# a_max) at best, so under 1e-2 none would be resolved
+STICK_MAP_MAX_ERROR = 0.05
 
     @property
     def full_slip(self) -> bool:

@@ -28,7 +28,8 @@ import xarray as xr
 from . import validate
 from .model.indenter import indenter
 
-__all__ = ["layer_rows", "fretting_rows", "fretting_path_rows", "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
+__all__ = ["layer_rows", "fretting_rows", "fretting_path_rows", "stick_direction_rows",
+           "key_numbers", "report_rows", "COLUMNS", "INDENTER_COLUMNS",
            "REPORT_COLUMNS", "WORK_AT_HALF", "LARGEST_WORK", "CYCLE_WORK"]
 
 _WORK_SCALE = "V R^2/(E* a^5); cylinder: V R^2/(E* a^4) per unit length"
@@ -493,6 +494,52 @@ def fretting_path_rows(ds: xr.Dataset) -> list[dict[str, object]]:
                                         ".2g"),
             "cycle work": cell(w), "cycle work error estimate": cell(e, ".2g"),
             "resolved": bool(ds["resolved"].values[i])})
+    return rows
+
+
+def stick_direction_rows(datasets: Sequence[xr.Dataset], cases: Sequence[str]
+                         ) -> list[dict[str, object]]:
+    """Rows of the stick-zone map's table: one a (case, loaded path point, direction) of
+    sphere paths of :func:`contactlib.io.fretting_to_dataset`.
+
+    Columns: the case, beta, the point, P/P_max, Q/(k P_max), the direction (degrees from
+    +x, Q's direction), the stick zone's radius from its centroid and its estimate (units
+    a_max), whether that radius is resolved (its estimate within the dataset's
+    ``max_error``), the contact's radius from its centroid and its estimate, and the stick
+    zone's centroid (x, y over a_max). A value is blank where a step up to the point did not
+    converge (and the radius is then not resolved).
+    """
+    rows: list[dict[str, object]] = []
+    for case, ds in zip(cases, datasets):
+        conv = np.cumprod(ds["converged"].values.astype(bool)).astype(bool)
+        deg = np.degrees(ds["direction"].values)
+        asked = float(ds.attrs["max_error"])
+        for i, step in enumerate(ds["point_step"].values):
+            if float(ds["load_ratio"].values[step]) <= 0.0:
+                continue
+            ok = bool(conv[step])
+            radius = ds["stick_radius_directions"].values[step]
+            err = ds["stick_radius_directions_error_estimate"].values[i]
+            contact = ds["contact_radius_directions"].values[step]
+            c_err = ds["contact_radius_directions_error_estimate"].values[i]
+            cx, cy = ds["stick_centre"].values[step]
+
+            def cell(value: float, fmt: str = ".6g") -> str:
+                return f"{value:{fmt}}" if ok and np.isfinite(value) else ""
+
+            for d, angle in enumerate(deg):
+                rows.append({
+                    "case": case, "beta": f"{float(ds.attrs['dundurs_beta']):.6g}",
+                    "point": i, "P/P_max": float(ds["load_ratio"].values[step]),
+                    "Q/(k P_max)": float(ds["tangential_load_ratio"].values[step]),
+                    "direction [deg]": f"{angle:.6g}",
+                    "stick radius/a_max": cell(float(radius[d])),
+                    "stick radius error estimate": cell(float(err[d]), ".2g"),
+                    "stick radius resolved": bool(ok and err[d] <= asked),
+                    "contact radius/a_max": cell(float(contact[d])),
+                    "contact radius error estimate": cell(float(c_err[d]), ".2g"),
+                    "stick centre x/a_max": cell(float(cx)),
+                    "stick centre y/a_max": cell(float(cy))})
     return rows
 
 

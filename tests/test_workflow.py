@@ -271,10 +271,28 @@ def test_convergence_target(tiny_run):
     assert len(table) == 1 + 4 + 3  # one row a resolution of each study
 
 
+def test_fretting_target_dag(tmp_path):
+    """`fretting` runs the cylinder's amplitude study and the sphere's stick-zone map, each
+    a study job and a figure job; `all` runs neither (the default DAG test)."""
+    counts = job_counts(make_workdir(tmp_path), "fretting")
+    assert counts == {"fretting_study": 1, "fretting_figure": 1,
+                      "fretting_stick_map_study": 1, "fretting_stick_map": 1,
+                      "fretting": 1}, counts
+
+
 @pytest.mark.slow
 def test_fretting_target(tiny_run):
     assert not (tiny_run / "results/fretting").exists()  # not part of the main job
     snakemake(tiny_run, "fretting")
+    # the stick-zone map: its figure, and its table of radii with estimates, one row a
+    # loaded path point (5) and direction (24) of each case (2)
+    assert (tiny_run / "results/figures/fretting-stick-map.png").stat().st_size > 1000
+    assert (tiny_run / "results/figures/fretting-stick-map.pdf").stat().st_size > 1000
+    rows = (tiny_run / "results/tables/fretting-stick-map.csv").read_text().splitlines()
+    assert rows[0].startswith("case,beta,point,P/P_max,Q/(k P_max),direction [deg],"
+                              "stick radius/a_max,stick radius error estimate,"
+                              "stick radius resolved")
+    assert len(rows) == 1 + 2 * 5 * 24
     ds = read_dataset(tiny_run / "results/fretting/fretting.nc")
     beta0 = ds["dundurs_beta"].values == 0.0
     work = ds["cycle_work"].values[beta0, -1]

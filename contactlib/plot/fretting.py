@@ -141,6 +141,30 @@ def _map_steps(ds: xr.Dataset, steps) -> list[int]:
     return [int(j) for j in pts[(q != 0.0) & np.isfinite(q)]]
 
 
+def _estimate_marks(ax, ds: xr.Dataset, step: int, r: np.ndarray, centre, ring,
+                    color) -> None:
+    """A step's band of +- the radii's estimates and its markers (filled: resolved to the
+    dataset's max_error; open: not); markers alone where the step is no path point."""
+    cos, sin = ring
+    hit = np.flatnonzero(ds["point_step"].values == step)
+    name = "stick_radius_directions_error_estimate"
+    x, y = centre[0] + r * cos, centre[1] + r * sin
+    if not hit.size or name not in ds:
+        ax.plot(x, y, "o", color=color, markersize=3, gid="stick-direction")
+        return
+    e = ds[name].values[hit[0]]
+    e = np.append(e, e[0])
+    if np.all(np.isfinite(r) & np.isfinite(e)):
+        outer, inner = r + e, np.maximum(r - e, 0.0)
+        ax.fill(np.concatenate([centre[0] + outer * cos, (centre[0] + inner * cos)[::-1]]),
+                np.concatenate([centre[1] + outer * sin, (centre[1] + inner * sin)[::-1]]),
+                color=color, alpha=0.2, lw=0, gid="stick-estimate")
+    ok = e[:-1] <= float(ds.attrs.get("max_error", np.nan))
+    ax.plot(x[:-1][ok], y[:-1][ok], "o", color=color, markersize=3.5, gid="stick-resolved")
+    ax.plot(x[:-1][~ok], y[:-1][~ok], "o", color=color, mfc="white", markersize=3.5,
+            gid="stick-unresolved")
+
+
 def fig_stick_zone_map(datasets, steps=None, titles=None) -> Figure:
     """The sphere's stick zone per direction at several steps: one panel per path.
 
@@ -160,10 +184,13 @@ def fig_stick_zone_map(datasets, steps=None, titles=None) -> Figure:
     matplotlib.figure.Figure
         In each panel, in units a_max with equal aspect: the stick zone's outline (its
         radius per direction from its centroid, a closed polygon) at each step,
-        labelled with Q/kP; the contact's outline at the last step (grey); and, dashed,
+        labelled with Q/kP, with a band of +- its estimate where the step is a path point
+        (the estimates are per path point) and a marker per direction: filled where the
+        radius is resolved (its estimate within the dataset's ``max_error``), open where it
+        is not; the contact's outline at the last step (grey); and, dashed,
         Cattaneo–Mindlin's circle c = a (1 - Q/kP)^(1/3) at the same Q/kP (exact for
         beta = gamma = 0), a the contact's mean radius. The arrow shows Q's direction.
-        Directions that have no radius (NaN) break the outline.
+        Directions that have no radius (NaN) break the outline and get no band.
     """
     if isinstance(datasets, xr.Dataset):
         datasets = [datasets]
@@ -191,8 +218,9 @@ def fig_stick_zone_map(datasets, steps=None, titles=None) -> Figure:
                 r = np.append(r, r[0])
                 cx, cy = ds["stick_centre"].values[j]
                 color = colors[idx % len(colors)]
-                ax.plot(cx + r * cos, cy + r * sin, color=color, marker="o", markersize=2.5,
-                        gid="stick-outline", label=f"$Q/kP$ = {x[j]:.2g}")
+                ax.plot(cx + r * cos, cy + r * sin, color=color, lw=1.2, gid="stick-outline",
+                        label=f"$Q/kP$ = {x[j]:.2g}")
+                _estimate_marks(ax, ds, j, r, (cx, cy), (cos, sin), color)
                 a = float(np.nanmean(ds["contact_radius_directions"].values[j]))
                 c = a * (1.0 - abs(x[j])) ** (1.0 / 3.0)
                 ax.plot(c * np.cos(circle), c * np.sin(circle), color=color, lw=0.8,
@@ -205,6 +233,12 @@ def fig_stick_zone_map(datasets, steps=None, titles=None) -> Figure:
                         gid="contact-outline",
                         label="contact")
             ax.plot([], [], color="0.3", lw=0.8, ls="--", label="Cattaneo–Mindlin")
+            asked = float(ds.attrs.get("max_error", np.nan))
+            ax.plot([], [], "o", color="0.3", markersize=3.5,
+                    label=f"resolved to {asked:g} $a_{{max}}$")
+            ax.plot([], [], "o", color="0.3", mfc="white", markersize=3.5,
+                    label="not resolved")
+            ax.fill([], [], color="0.3", alpha=0.2, lw=0, label="± estimate")
             ax.annotate("", xy=(1.15, -1.12), xytext=(0.75, -1.12),
                         arrowprops={"arrowstyle": "->", "color": "0.3"})
             ax.text(0.95, -1.06, "$Q$", ha="center", va="bottom", color="0.3")

@@ -93,9 +93,10 @@ def _figure_problems(cfg, scenes, raw_scenes):
 
 # tables/<name>.csv and figures/<name>.png of the workflow's own targets: a physical or
 # fretting scene, which writes its own under its name, must not take one of them
-OWN_OUTPUT_NAMES = {"convergence", "fretting", "layers", "materials", "viscoelastic",
-                    "key-numbers", "materials-key-numbers", "stresses", "stresses-edge",
-                    "stresses-maps", "stresses-maxima", "stresses-tangential", *FIGURES}
+OWN_OUTPUT_NAMES = {"convergence", "fretting", "fretting-stick-map", "layers", "materials",
+                    "viscoelastic", "key-numbers", "materials-key-numbers", "stresses",
+                    "stresses-edge", "stresses-maps", "stresses-maxima", "stresses-tangential",
+                    *FIGURES}
 
 
 def _name_problems(scenes):

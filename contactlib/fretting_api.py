@@ -1116,8 +1116,8 @@ STICK_MAP_MAX_ERROR = 0.05
     @property
     def radii_resolved(self) -> bool:
         """Both radii within ``max_error`` (their estimates, units a_max)."""
-        return self.converged and bool(max(self.smallest_error, self.largest_error)
-                                       <= self.max_error)
+        return self.converged and all(e <= self.max_error
+                                      for e in (self.smallest_error, self.largest_error))
 
     @property
     def offset_resolved(self) -> bool:
@@ -1158,7 +1158,8 @@ STICK_MAP_MAX_ERROR = 0.05
                 return f"{si(x, 'm', _si_digits(x, e))} ({e:.1e} m)"
             return f"{x:.{_decimals(e)}f} ({e:.1e})"
 
-        verdict = ("a circle within the estimates" if self.round else
+        verdict = ("no estimate" if not math.isfinite(self.smallest_error + self.largest_error)
+                   else "a circle within the estimates" if self.round else
                    "not a circle: the spread exceeds the estimates")
         return (f"{head}, from its centroid: {'radius' if physical else 'c/a_max'} (estimate) "
                 f"{value(self.smallest, self.smallest_error)} at "

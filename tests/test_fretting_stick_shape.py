@@ -146,6 +146,9 @@ def test_digits_follow_the_estimate():
     assert "radius (estimate) 151 µm (2.3e-06 m) at 180 deg to 161.5 µm (5.9e-07 m)" in si
     assert "along x (estimate) -59.4 µm (4.2e-07 m)" in si
     assert _shape(largest=0.80).round
+    unknown = _shape(smallest_error=0.001, largest_error=float("nan"), offset_error=float("nan"))
+    assert not unknown.radii_resolved and not unknown.offset_resolved
+    assert "no estimate" in unknown.describe() and "radii NO, centre NO" in unknown.describe()
 
 
 def test_physical_door_prints_metres():

@@ -440,8 +440,8 @@ class PhysicalProblem:
 
 
 def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, length: Any,
-             thickness: Any, base: Any, substrate: Any = None,
-             profile: str = "paraboloid", half_angle: Any = None) -> PhysicalProblem:
+                     thickness: Any, base: Any, substrate: Any = None,
+                     profile: str = "paraboloid", half_angle: Any = None) -> PhysicalProblem:
     """The checked problem; ``substrate`` (a material) only with ``base="elastic"`` (a
     coated body: ``body`` the coating, of ``thickness`` h), E2/E1 in
     :data:`contactlib.validate.SUBSTRATE_MODULUS_RANGE`. ``profile`` is ``"paraboloid"``
@@ -475,8 +475,8 @@ def physical_problem(geometry: Any, radius: Any, indenter: Any, body: Any, lengt
     h = math.inf if thickness is None else parse_quantity(thickness, "length", "thickness")
     base = validate.base(base, coated=True)
     sub = _substrate(base, substrate, bod, h)
-    return PhysicalProblem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base, sub,
-                    shape, slope, alpha)
+    return PhysicalProblem(geometry, r, ind, bod, composite_modulus(ind, bod), ell, h, base,
+                           sub, shape, slope, alpha)
 
 
 def parse_half_angle(value: Any) -> float:
@@ -1298,7 +1298,8 @@ def physical_history(geometry: str, radius: float | str, load_path: Any, indente
     return PhysicalHistory(
         geometry=g, radius=prob.radius, length=prob.length, thickness=prob.thickness,
         base=prob.base, indenter=prob.indenter, body=prob.body, substrate=prob.substrate,
-        composite_modulus=prob.e_star, friction=float(res.friction), load_path=forces, times=t_points, a_max=a_max, p0=p0,
+        composite_modulus=prob.e_star, friction=float(res.friction), load_path=forces,
+        times=t_points, a_max=a_max, p0=p0,
         max_load=p_max, slab_ratio=slab, force=np.asarray(res.load_ratio) * p_max,
         contact_radius=a, stick_radius=c, stick_radius_error=err_c,
         peak_pressure=peak, approach=approach,

@@ -68,6 +68,10 @@ SPHERE_N_MAX = 256
 CYLINDER_N_MAX = 1024
 # convention: the coarsest grid the sphere's estimates use
 SPHERE_N_MIN = 16  # the coarsest grid the sphere's estimates use for a Richardson order
+# measured: benchmarks/report_fretting_sphere_estimate.py (a cycle's work averaged over
+# 4 x 4 placements of the grid under the contact: 1.1e-3 off Mindlin-Deresiewicz at n = 16
+# and 4.1e-4 at n = 32, from 4.3e-2 and 1.7e-2 on the centred grid; over 2 x 2: 1.7e-3)
+SPHERE_OFFSETS = 4  # placements a cell side that average out a sphere cycle's lattice error
 # convention: the distance kept from gross sliding, relative to k P
 _GROSS_SLIP_MARGIN = 1e-6  # |Q| <= (1 - margin) k P
 # tested: tests/test_fretting_sphere_displacement.py (the answered Q/(k P_max) to round-off:
@@ -507,8 +511,10 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         fall in their elements) and with (n/2, steps/2), (n/2, steps), (n/4, steps)
         and (n/2, steps/4) (the mesh's and the steps' errors of the work, apart):
         about 1.3 times the main run. The sphere runs (n/2, steps/2) and, from
-        n = 64, (n/4, steps/4). If False the estimates are NaN and nothing is
-        ``resolved``.
+        n = 64, (n/4, steps/4); for a closed cycle's work also (n/2, steps) and
+        12 placements of the grid at (n/2, steps/4) and, from n = 64, at
+        (n/4, steps/4): about 1.5 to 2.5 times the main run. If False the estimates
+        are NaN and nothing is ``resolved``.
     tangential_displacement : bool
         The sphere only: ``tangential_path`` prescribes the rigid shift (a displacement-
         controlled test); Q is the answer (``force_ratio``, its estimate
@@ -713,9 +719,10 @@ def _refuse_coupled_force(raw: fsph.RawSphereFretting, k: float, n: int, beta: f
 
 
 def _sphere_run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
-                keep: bool, progress=None, displacement: bool = False
+                keep: bool, progress=None, displacement: bool = False,
+                offset: tuple[float, float] = (0.0, 0.0)
                 ) -> tuple[fsph.GridOperators, fsph.RawSphereFretting]:
-    ops = fsph.grid_operators(model, n)
+    ops = fsph.grid_operators(model, n, offset=offset)
     big_p = load_levels(load, steps)[0][1:] * ops.p_max
     path = load_levels(tang, steps)[0][1:]
     if displacement:  # the shift, in a_max^2/R already
@@ -725,6 +732,88 @@ def _sphere_run(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.
         raw = fsph.run_sphere_fretting(ops, k, big_p, path * k * ops.p_max, keep_fields=keep,
                                        progress=progress)
     return ops, _sphere_masked(raw, displacement)
+
+
+def _cycle_works(raw: fsph.RawSphereFretting, steps: int, size: int,
+                 closed: list[tuple[int, int]]) -> np.ndarray:
+    """The frictional work of each closed cycle (point i to point j) of a run."""
+    d = raw.dissipation[np.arange(size) * steps]
+    return np.array([d[j] - d[i] for i, j in closed])
+
+
+def _placements(model, n: int, steps: int, k: float, load: np.ndarray, tang: np.ndarray,
+                displacement: bool, closed: list[tuple[int, int]]
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    """The cycles' works over ``SPHERE_OFFSETS^2`` placements of the grid (the profile's axis
+    moved by i/m and j/m of a cell, m = ``SPHERE_OFFSETS``; y -> -y maps j onto m - j, which
+    halves the runs): their mean, the mean over the 2 x 2 placements among them, the
+    centred grid's works and whether every run converged."""
+    m = SPHERE_OFFSETS
+    works, ok = {}, True
+    for i in range(m):
+        for j in range(m // 2 + 1):
+            _, raw = _sphere_run(model, n, steps, k, load, tang, False,
+                                 displacement=displacement, offset=(i / m, j / m))
+            works[i, j] = _cycle_works(raw, steps, load.size, closed)
+            ok = ok and bool(raw.converged.all())
+
+    def mean(stride: int) -> np.ndarray:
+        cells = [(i, min(j, m - j)) for i in range(0, m, stride) for j in range(0, m, stride)]
+        return np.mean([works[c] for c in cells], axis=0)
+
+    return mean(1), mean(m // 2), works[0, 0], ok
+
+
+def _sphere_cycle_errors(model, n: int, steps: int, k: float, load: np.ndarray,
+                         tang: np.ndarray, displacement: bool, closed: list[tuple[int, int]],
+                         fine: np.ndarray, half_steps: np.ndarray
+                         ) -> tuple[np.ndarray, float, bool]:
+    """Error estimate of the sphere's cycle works ``fine`` (the run with n cells, S steps).
+
+    The mesh's error of a cycle's work is mostly a lattice error: it depends on how the
+    contact and stick discs fall on the cells, changes sign from one n to the next and
+    from one placement of the grid to another (4.3e-2, -1.7e-2 and -7e-4 off Mindlin-
+    Deresiewicz at n = 16, 32 and 64, Q*/kP = 0.5), and the placements' mean converges
+    smoothly (at order 2.3 to 2.6). A twofold difference therefore measures the coarse
+    run's lattice error, up to 20 times the fine one's. The steps' error is separate: 0 at
+    beta = 0 and constant P, the larger part at beta != 0 (order 1 to 2).
+
+    * The steps': ``|W(n/2, S) - W(n/2, S/2)|`` (``half_steps`` the latter), 1 to 3 times
+      the error for an order between 1 and 2; for a lower order, measured with
+      ``W(n/2, S/4)``, the Richardson term at that order.
+    * The mesh's: the fine work's distance to ``M(n/2)``, the n/2 run freed of its lattice
+      error, plus ``M(n/2)``'s own error. ``M(n/2) = W(n/2, S) - L``, ``L`` the centred
+      grid's lattice term measured at S/4 steps (it hardly depends on the steps) as its
+      difference to the mean over the placements (:func:`_placements`). ``M(n/2)``'s error:
+      the placements' mean against the 2 x 2 placements' (the average's), and from n = 64
+      on the means' smooth error at order 2, a third of the mean's difference to the mean
+      at n/4 (also at S/4).
+
+    Returns
+    -------
+    error : ndarray
+        Per closed cycle (units of the work).
+    order : float
+        The steps' order measured at n/2.
+    converged : bool
+        Every run converged.
+    """
+    quarter = max(steps // 4, 1)
+    _, mid = _sphere_run(model, n // 2, steps, k, load, tang, False, displacement=displacement)
+    w_mid = _cycle_works(mid, steps, load.size, closed)
+    mean, mean_2, centred, ok = _placements(model, n // 2, quarter, k, load, tang,
+                                            displacement, closed)
+    ok = ok and bool(mid.converged.all())
+    with np.errstate(invalid="ignore"):
+        mesh = np.abs(fine - (w_mid - (centred - mean))) + np.abs(mean - mean_2)
+        if n // 4 >= SPHERE_N_MIN:
+            coarse_mean, _, _, ok_4 = _placements(model, n // 4, quarter, k, load, tang,
+                                                  displacement, closed)
+            mesh = mesh + np.abs(mean - coarse_mean) / 3.0
+            ok = ok and ok_4
+        order = measured_order(w_mid, half_steps, centred)
+        step = np.abs(w_mid - half_steps) * max(1.0, 1.0 / (2.0**order - 1.0))
+    return mesh + step, order, ok
 
 
 def _sphere_masked(raw: fsph.RawSphereFretting, displacement: bool = False
@@ -824,7 +913,11 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
     the axes (:func:`contactlib.solvers.fretting_sphere.edge_radius`). From ``n = 64``
     the frictional work's estimates
     are Richardson's from a third run with ``n/4`` cells at the measured order
-    (``orders["dissipation"]``, at most 2). Under a prescribed shift
+    (``orders["dissipation"]``, at most 2). A closed cycle's work has its own estimate
+    (:func:`_sphere_cycle_errors`): the steps' error from ``n/2`` cells at S and S/2 steps
+    (``orders["cycle_steps"]`` the order measured with S/4), and the mesh's from the
+    ``n/2`` run freed of its lattice error, measured over 4 x 4 placements of the grid under
+    the contact at S/4 steps (and from ``n = 64`` those at ``n/4``). Under a prescribed shift
     (``displacement``) the force's estimate is its difference to the ``n/2`` run and, from
     ``n = 64``, at least half the ``n/2`` run's difference to the ``n/4`` one (its lattice
     error is not monotonic in n), and at least ``_FORCE_FLOOR`` (round-off).
@@ -910,14 +1003,15 @@ def sphere_fretting(model, k: float, load: np.ndarray, tang: np.ndarray, steps: 
             diss_err, o3 = _estimate(*diss, 2.0)
         else:  # no third run on a useful grid: the twofold difference (order 1)
             diss_err, o3 = np.abs(diss[0] - diss[1]), 1.0
-        works = [np.array([d[j] - d[i] for i, j in closed]) for d in diss]
-        if not closed:
-            cycle_err = works[0]
-        elif len(works) == 3:
-            cycle_err = _estimate(*works, 2.0)[0]
-        else:
-            cycle_err = np.abs(works[0] - works[1])
         orders = {"stick_ratio": 1.0, "stick_offset": 1.0, "dissipation": o3}
+        if closed:
+            cycle_err, orders["cycle_steps"], ok_c = _sphere_cycle_errors(
+                model, n, steps, k, load, tang, displacement, closed,
+                _cycle_works(raw, steps, load.size, closed),
+                _cycle_works(coarse, steps // 2, load.size, closed))
+            ok = ok and ok_c
+        else:
+            cycle_err = np.zeros(0)
         scale = max(float(raw.dissipation[-1]), 1e-300)
         resolved = (_ratio_resolved(ratio[points], ratio_err, raw.load[points], max_error)
                     & (diss_err <= max_error * scale) & raw.converged[points] & ok)

@@ -42,7 +42,7 @@ import numpy as np
 
 from . import validate
 from .api import sweep
-from .history_api import HistoryResult, history
+from .history_api import history
 from .result import short_repr
 
 __all__ = [
@@ -253,7 +253,8 @@ def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
                 # load), not the last step's, which also judges the stick radius
                 work_ok[i, j, r] = bool(res.resolved_quantities["frictional_work"])
                 if not work_ok[i, j, r]:
-                    status[i, j, r] = _unresolved_why(res)
+                    status[i, j, r] = ("unresolved (the work: "
+                                       f"{res.unresolved_reasons['frictional_work']})")
     return CoatingStudy(geometries=geometries, substrate_moduli=moduli, nu=nu,
                         ratios=tuple(float(r) for r in ratios), stick_ratios=cs, n=n,
                         covered=covered,
@@ -264,17 +265,6 @@ def coating_study(geometries: Sequence[str] = validate.GEOMETRIES,
                         history_steps=history_steps, cycle_work=work,
                         cycle_work_error_estimate=work_err, cycle_resolved=work_ok,
                         cycle_refused=refused, cycle_status=status)
-
-
-def _unresolved_why(res: HistoryResult) -> str:
-    """Why a history's work is not resolved: its first failing condition."""
-    loaded = np.asarray(res.load_ratio) > 0.0
-    largest = float(np.nanmax(np.where(loaded, res.work_error_estimate, np.nan)))
-    if not np.all(res.converged):
-        return "unresolved (a step did not converge)"
-    if not largest <= HISTORY_MAX_ERROR:
-        return f"unresolved (the work's estimate reaches {largest:.2g} along the path)"
-    return "unresolved (the slip zone at the top load spans under 12 elements)"
 
 
 def coating_rows(study: CoatingStudy) -> list[dict[str, object]]:

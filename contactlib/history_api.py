@@ -168,6 +168,12 @@ class HistoryResult:
         not judged at the steps that move the contact edge over more than
         an element, from or to no contact, where each step is a one-step
         load that no refinement of equal steps resolves).
+    unresolved_reasons : dict of str to str
+        For each quantity of ``resolved_quantities`` that is not resolved, its
+        first failing condition in words (the contact reaching the mesh's end,
+        steps that did not converge, values that are not finite, a slip zone
+        under 12 elements, or the estimate's largest value at the quantity's
+        scale); resolved quantities are absent.
     max_error : float
         The accuracy a step must reach to be resolved.
     tolerance : float
@@ -263,6 +269,7 @@ class HistoryResult:
     work_scale: float = math.nan
     energy_scale: float = math.nan
     resolved_quantities: dict[str, bool] | None = None
+    unresolved_reasons: dict[str, str] = field(default_factory=dict)
     profile: str = "paraboloid"  # the indenter's shape h ~ r^d (contactlib.model.profiles)
     exponent: float = 2.0
     flat_ratio: float = 0.0  # b/a_max of the rounded flat punch (0 otherwise)
@@ -843,6 +850,20 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         worst = {"frictional_work": (np.max(err_w), "of its total"),
                  "stick_radius": (np.max(err_c[regular]), "a_max"),
                  "energies": (np.max(err_e), "of peak external work")}
+    values = {"frictional_work": np.isfinite(raw.work), "stick_radius": ~np.zeros(
+        levels.size, dtype=bool), "energies": finite}
+    reasons = {}
+    for q in (q for q, ok in verdicts.items() if not ok):  # the first failing condition
+        failed = int(np.count_nonzero(~raw.converged[loaded]))
+        missing = int(np.count_nonzero(~values[q][loaded]))
+        reasons[q] = (
+            "the contact reached the end of the mesh" if overflow else
+            f"{failed} of {levels.size - 1} steps did not converge" if failed else
+            f"not finite at {missing} of {levels.size - 1} steps" if missing else
+            f"the slip zone at the largest load spans {slipping} elements (under "
+            f"{_MIN_SLIP_ELEMENTS})" if q == "frictional_work" and 0 < slipping
+            < _MIN_SLIP_ELEMENTS else
+            f"its estimate reaches {worst[q][0]:.2g} {worst[q][1]} (max_error {max_error:g})")
     if error_estimate:
         parts = [f"{labels[q]} ({worst[q][0]:.2g} {worst[q][1]})"
                  for q, ok in verdicts.items() if not ok]
@@ -887,7 +908,7 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
         iterations=raw.iterations, residual_norm=raw.residual, message="; ".join(notes),
         stick_radius_error_estimate=err_c, work_error_estimate=err_w, resolved=resolved,
         energy_error_estimate=err_e, work_scale=work_scale, energy_scale=energy_scale,
-        resolved_quantities=verdicts,
+        resolved_quantities=verdicts, unresolved_reasons=reasons,
         max_error=max_error, indenter_modulus_ratio=float(ratio),
         indenter_poisson_ratio=float(model.indenter_poisson_ratio),
         dundurs_beta=float(model.beta), relaxation=prony, durations=durations,

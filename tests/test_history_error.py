@@ -100,6 +100,26 @@ def test_thin_slip_zone_steps_are_flagged_and_still_reported():
     thin = (slipping > 0) & (slipping < hs.MIN_SLIP_ELEMENTS)
     assert thin[-1] and not res.resolved[thin].any()
     assert "slip zone at the largest load spans only" in res.message
+    # the work's verdict names this cause, counted from the states, not by elimination
+    assert not res.resolved_quantities["frictional_work"]
+    assert res.unresolved_reasons["frictional_work"] == (
+        f"the slip zone at the largest load spans {slipping[-1]} elements (under "
+        f"{hs.MIN_SLIP_ELEMENTS})")
+
+
+def test_unresolved_reasons_name_the_estimate_and_only_unresolved_quantities():
+    """A coarse cycle asked 1e-4: the quantities whose largest estimate passes it are
+    unresolved, each with that estimate quoted; a resolved quantity has no reason."""
+    res = history("sphere", NU, 0.2, [0, 1, 0], 8, n=80, max_error=1e-4)
+    assert res.converged.all()
+    worst_w = float(np.max(res.work_error_estimate))
+    assert worst_w > 1e-4 and not res.resolved_quantities["frictional_work"]
+    assert res.unresolved_reasons["frictional_work"] == (
+        f"its estimate reaches {worst_w:.2g} of its total (max_error 0.0001)")
+    assert set(res.unresolved_reasons) == {q for q, ok in res.resolved_quantities.items()
+                                           if not ok}
+    loose = history("sphere", NU, 0.2, [0, 1, 0], 8, n=80, max_error=0.5)
+    assert all(loose.resolved_quantities.values()) and loose.unresolved_reasons == {}
 
 
 def test_quantised_stick_edge_has_an_estimate_of_at_least_half_an_element():

@@ -513,7 +513,8 @@ def fretting(geometry: str, nu: float, friction: float, load_path: Sequence[floa
         about 1.3 times the main run. The sphere runs (n/2, steps/2) and, from
         n = 64, (n/4, steps/4); for a closed cycle's work also (n/2, steps) and
         12 placements of the grid at (n/2, steps/4) and, from n = 64, at
-        (n/4, steps/4): about 1.5 to 2.5 times the main run. If False the estimates
+        (n/4, steps/4): the estimates then cost 0.8 to 2.9 times the main run
+        (benchmarks/report_fretting_sphere_estimate.py). If False the estimates
         are NaN and nothing is ``resolved``.
     tangential_displacement : bool
         The sphere only: ``tangential_path`` prescribes the rigid shift (a displacement-

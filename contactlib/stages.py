@@ -39,6 +39,7 @@ from .discretization.elements import Mesh, MeshStore, graded_mesh, uniform_mesh
 from .model import Contact
 from .solvers.paper_method import PaperSolution, collocation_points, ring_operator, solve_paper
 from .result import CaseRecord, Solution
+from .estimates import coated_estimate, edge_zone_resolved
 from .accuracy import (MAX_N, SAFETY, default_noise, estimate, planned_body, predicted_error,
                        resolving_n)
 from .solvers import extrapolated_method
@@ -477,7 +478,7 @@ def _extrapolated_estimates(geometry: Contact, d, rec: CaseRecord,
     return out
 
 
-def _relative(values: Sequence[float]) -> float:
+def _relative(values: Sequence[float], edge: bool | None = None) -> float:
     """Relative error estimate of the last of nested (v(n/4), v(n/2), v(n)) or (v(n/2), v(n)).
 
     Three levels: :func:`contactlib.accuracy.estimate` (Richardson with the
@@ -488,10 +489,14 @@ def _relative(values: Sequence[float]) -> float:
     asymptotic (for k on the measured bodies :func:`_embedded_estimate` floors it by
     the measured n^-2 model: two levels can agree by chance). Measured coverage:
     docs/accuracy.md, tests/test_error_estimate.py, tests/test_estimate_collapse.py.
+    ``edge`` (a coated body's three levels, else None): whether the coarsest level resolves
+    the coating's edge zone, for :func:`contactlib.estimates.coated_estimate`.
     """
     full = values[-1]
     if not np.all(np.isfinite(values)):
         return math.inf
+    if len(values) == 3 and edge is not None:
+        return coated_estimate(*values, edge)
     if len(values) == 3:
         if full == 0.0:
             return 0.0 if values[0] == values[1] == 0.0 else math.inf
@@ -571,6 +576,10 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
         if not 0.0 < solved < 1.0:  # k exact (0 or inf); the load still has an error
             sols = [solve_default(geometry, solved, m, cache=cache)
                     for m in (n // 4, n // 2) if m >= 8]
+        # a coated body's levels: does the coarsest resolve the coating's edge zone?
+        edge = (edge_zone_resolved(sols[0].mesh.nodes, geometry.body.thickness)
+                if geometry.body.base == "elastic" and len(sols) == 2 else None)
+        if not 0.0 < solved < 1.0:
             out["error_estimate"] = 0.0
         elif not sols:
             out["error_estimate"] = math.nan
@@ -580,7 +589,7 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
             notes.append(f"no error estimate: the same case on the nested mesh n = {bad} "
                          "did not converge")
         else:
-            out["error_estimate"] = _relative([s.k for s in sols] + [float(rec.k)])
+            out["error_estimate"] = _relative([s.k for s in sols] + [float(rec.k)], edge)
             if len(sols) == 1 and planned_body(geometry):
                 # two levels (n = 16 ... 31): no observed order to check, and where the
                 # error is not monotone in n the levels n/2 and n agree by chance (cylinder,
@@ -591,10 +600,10 @@ def _embedded_estimate(geometry: Contact, method: str, n: int, rec: CaseRecord,
                 out["error_estimate"] = max(float(out["error_estimate"]), SAFETY * predicted_error(
                     geometry.indenter.name, solved, n))
         loads = [s.load() for s in sols] + [float(rec.load)]
-        out["load_error_estimate"] = _relative(loads) if len(loads) > 1 else math.nan
+        out["load_error_estimate"] = _relative(loads, edge) if len(loads) > 1 else math.nan
         if samples and sols and rec.slip_x.size and 0.0 < solved < 1.0:
             out["work_error_estimate"] = _relative([_work(geometry, s) for s in sols]
-                                                   + [_record_work(geometry, rec)])
+                                                   + [_record_work(geometry, rec)], edge)
         elif samples:  # no slip (full adhesion) or no shear (frictionless): no work
             out["work_error_estimate"] = 0.0
         limit = _below_floor(rec, solved, notes)

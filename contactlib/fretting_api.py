@@ -1124,6 +1124,10 @@ STICK_MAP_CASES = {
 }
 # convention: the stick-zone map's path, P/P_max and Q/(k P_max) at its points
 STICK_MAP_PATH = ((0.0, 1.0, 1.0, 1.0, 1.0, 1.0), (0.0, 0.0, 0.3, 0.5, 0.7, 0.9))
+# convention: the stick-zone map's accuracy asked, units a_max: its departures from a circle
+# are 0.02 to 0.1 a_max; a radius per direction at n = 64 is known to half a cell (1.9e-2
+# a_max) at best, so under 1e-2 none would be resolved
+STICK_MAP_MAX_ERROR = 0.05
 
 
 def stick_map_study(friction: float = 0.3, n: int = SPHERE_COUPLED_N_MAX, steps: int = 4,
@@ -1198,10 +1202,6 @@ class StickShape:
     max_error: float
     converged: bool
     reason: str = ""
-# convention: the stick-zone map's accuracy asked, units a_max: its departures from a circle
-# are 0.02 to 0.1 a_max; a radius per direction at n = 64 is known to half a cell (1.9e-2
-# a_max) at best, so under 1e-2 none would be resolved
-STICK_MAP_MAX_ERROR = 0.05
 
     @property
     def full_slip(self) -> bool:

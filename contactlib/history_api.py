@@ -860,8 +860,8 @@ def history(geometry: str, nu: float, friction: float, load_path: Sequence[float
             "the contact reached the end of the mesh" if overflow else
             f"{failed} of {levels.size - 1} steps did not converge" if failed else
             f"not finite at {missing} of {levels.size - 1} steps" if missing else
-            f"the slip zone at the largest load spans {slipping} elements (under "
-            f"{_MIN_SLIP_ELEMENTS})" if q == "frictional_work" and 0 < slipping
+            f"the slip zone at the largest load spans {slipping} of the "
+            f"{_MIN_SLIP_ELEMENTS} elements it needs" if q == "frictional_work" and 0 < slipping
             < _MIN_SLIP_ELEMENTS else
             f"its estimate reaches {worst[q][0]:.2g} {worst[q][1]} (max_error {max_error:g})")
     if error_estimate:

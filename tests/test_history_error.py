@@ -103,8 +103,8 @@ def test_thin_slip_zone_steps_are_flagged_and_still_reported():
     # the work's verdict names this cause, counted from the states, not by elimination
     assert not res.resolved_quantities["frictional_work"]
     assert res.unresolved_reasons["frictional_work"] == (
-        f"the slip zone at the largest load spans {slipping[-1]} elements (under "
-        f"{hs.MIN_SLIP_ELEMENTS})")
+        f"the slip zone at the largest load spans {slipping[-1]} of the "
+        f"{hs.MIN_SLIP_ELEMENTS} elements it needs")
 
 
 def test_unresolved_reasons_name_the_estimate_and_only_unresolved_quantities():

@@ -1183,7 +1183,8 @@ class StickShape:
     to both, and at P = P_max for beta = 0, a = a_max (Hertz). ``offset`` is the stick zone's
     centre minus the contact's along x, e/a_max, with its estimate. ``converged``: every step
     up to the point converged (else no value is data). ``reason``: why this point (empty when
-    it was asked for).
+    it was asked for). ``floor``: half a cell (units a_max), the least error of a radius per
+    direction on this grid; below it ``describe`` says that max_error cannot be met.
     """
 
     point: int
@@ -1202,6 +1203,7 @@ class StickShape:
     max_error: float
     converged: bool
     reason: str = ""
+    floor: float = math.nan  # half a cell (units a_max): a radius per direction's best error
 
     @property
     def full_slip(self) -> bool:
@@ -1265,7 +1267,11 @@ class StickShape:
                 f"{'' if physical else ', e/a_max'} (estimate) "
                 f"{value(self.offset, self.offset_error)}; resolved to max_error = "
                 f"{self.max_error:g}: radii {'yes' if self.radii_resolved else 'NO'}, centre "
-                f"{'yes' if self.offset_resolved else 'NO'}")
+                f"{'yes' if self.offset_resolved else 'NO'}"
+                + (f" (a radius per direction is known to half a cell at best, "
+                   f"{self.floor * scale:.1e}{' m' if physical else ' a_max'}, above max_error: "
+                   "ask a larger max_error or more cells)"
+                   if not self.radii_resolved and self.max_error < self.floor else ""))
 
 
 def _decimals(error: float) -> int:
@@ -1329,4 +1335,5 @@ def stick_shape(res: FrettingResult, point: int | None = None) -> StickShape | N
         smallest_direction=float(deg[lo]), largest=float(ratio[hi]),
         largest_error=float(err[hi]), largest_direction=float(deg[hi]),
         offset=float(res.stick_offset[j]), offset_error=float(res.stick_offset_error[point]),
-        max_error=float(res.max_error), converged=converged, reason=reason)
+        max_error=float(res.max_error), converged=converged, reason=reason,
+        floor=fsph.MESH_EXTENT / res.n)  # half a cell of 2 L / n

@@ -67,6 +67,8 @@ def test_beta_zero_range_collapses_to_mindlin_s_circle(capsys):
     assert abs(s["e"]) <= s["e_err"] + 1e-6
     assert s["max_error"] == 0.01 and s["radii"] == "NO"
     assert s["lo_err"] > 0.5 * 2.4 / 32 and s["hi_err"] > 0.5 * 2.4 / 32
+    # and says why: max_error is below half a cell, a radius per direction's best
+    assert f"known to half a cell at best, {1.2 / 32:.1e} a_max, above max_error" in out
 
 
 def test_resolved_radii_are_said_so(capsys):
@@ -75,6 +77,9 @@ def test_resolved_radii_are_said_so(capsys):
                         "--n", "32", "--max-error", "0.2"))
     assert s["point"] == 2 and max(s["lo_err"], s["hi_err"]) <= 0.2
     assert (s["radii"], s["centre"], s["max_error"]) == ("yes", "yes", 0.2)
+    assert "half a cell" not in _history(capsys, *EQUAL, "--load-path", "0,1,1",
+                                         "--tangential-path", "0,0,0.5", "--n", "32",
+                                         "--max-error", "0.2")
 
 
 def test_coupled_pair_mirrors_with_q(capsys):
